@@ -1,0 +1,135 @@
+# luxcalc - one plain Makefile. Targets: all test demo bench asan install uninstall clean deps.
+# LX_OPENCL=0 builds without OpenCL. Sources are found by wildcard: src/*.c is the library,
+# src/cli/*.c the command-line tool, tests/test_*.c one cmocka binary each, kernels/*.cl embedded.
+
+LX_OPENCL ?= 1
+PREFIX ?= /usr/local
+DESTDIR ?=
+BUILD ?= build
+CC ?= cc
+CFLAGS ?= -O2 -g
+WARN := -std=c11 -Wall -Wextra -Wpedantic
+ALL_CFLAGS = $(WARN) $(CFLAGS) -fPIC -fvisibility=hidden
+ALL_CPPFLAGS = $(CPPFLAGS) -D_POSIX_C_SOURCE=200809L -Isrc -I$(BUILD)/gen -I/usr/include/OpenEXR \
+  -DLX_OPENCL=$(LX_OPENCL) -DCL_TARGET_OPENCL_VERSION=120
+LIBS := -lpng16 -lOpenEXRCore-3_1 -lm -lpthread
+PKGS := libopenexr-dev libpng-dev libcmocka-dev pkg-config
+ifeq ($(LX_OPENCL),1)
+LIBS += -lOpenCL
+PKGS += pocl-opencl-icd ocl-icd-opencl-dev opencl-headers
+endif
+
+LIB_SRC := $(wildcard src/*.c)
+CLI_SRC := $(wildcard src/cli/*.c)
+TEST_SRC := $(wildcard tests/test_*.c)
+DATA := $(sort $(wildcard src/data/*.csv))
+KERNELS := $(sort $(wildcard kernels/*.cl))
+
+GEN_SRC := $(BUILD)/gen/lx_tables.c $(BUILD)/gen/lx_kernels.c
+LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/obj/%.o) $(GEN_SRC:$(BUILD)/gen/%.c=$(BUILD)/obj/%.o)
+CLI_OBJ := $(CLI_SRC:src/cli/%.c=$(BUILD)/obj/cli/%.o)
+TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
+
+STATIC := $(BUILD)/libluxcalc.a
+SONAME := libluxcalc.so.0
+SHARED := $(BUILD)/$(SONAME)
+CLI := $(BUILD)/luxcalc
+
+.PHONY: all test demo bench asan install uninstall clean deps check-cli
+
+all: $(STATIC) $(SHARED) $(CLI) $(BUILD)/libs.txt
+
+# the link flags a program embedding the static library needs (read by tests/cli/embed.sh)
+$(BUILD)/libs.txt: Makefile | $(BUILD)
+	@echo '$(LIBS)' > $@
+
+# ---- dependencies: install missing Debian packages (root) or say which ----
+deps:
+	@missing=""; \
+	if command -v dpkg-query >/dev/null 2>&1; then \
+	  for p in $(PKGS); do \
+	    dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "ok installed" || missing="$$missing $$p"; \
+	  done; \
+	fi; \
+	if [ -n "$$missing" ]; then \
+	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then \
+	    echo "luxcalc: installing:$$missing"; \
+	    (apt-get install -y -qq --no-install-recommends $$missing >/dev/null 2>&1 || \
+	     (apt-get update -qq >/dev/null 2>&1 && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing >/dev/null)) || \
+	      { echo "luxcalc: apt-get failed; please install:$$missing" >&2; exit 1; }; \
+	  else \
+	    echo "luxcalc: missing packages; please run: sudo apt-get install --no-install-recommends$$missing" >&2; exit 1; \
+	  fi; \
+	fi
+
+# ---- generated sources ----
+$(BUILD)/lxgen: src/tools/lxgen.c | $(BUILD)
+	$(CC) $(WARN) -O1 -o $@ $<
+
+$(BUILD)/gen/lx_tables.c: $(BUILD)/lxgen $(DATA) | $(BUILD)/gen
+	$(BUILD)/lxgen tables $@ $(DATA)
+
+$(BUILD)/gen/lx_kernels.c: $(BUILD)/lxgen $(KERNELS) Makefile | $(BUILD)/gen
+	$(BUILD)/lxgen kernels $@ $(KERNELS)
+
+$(BUILD) $(BUILD)/gen:
+	@mkdir -p $@
+
+# ---- objects ----
+$(BUILD)/obj/%.o: src/%.c
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CPPFLAGS) $(ALL_CFLAGS) -MMD -MP -c -o $@ $<
+
+$(BUILD)/obj/%.o: $(BUILD)/gen/%.c
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CPPFLAGS) $(ALL_CFLAGS) -Wno-overlength-strings -c -o $@ $<
+
+$(STATIC): $(LIB_OBJ)
+	rm -f $@
+	ar rcs $@ $^
+
+$(SHARED): $(LIB_OBJ)
+	$(CC) -shared -Wl,-soname,$(SONAME) $(LDFLAGS) -o $@ $^ $(LIBS)
+	ln -sf $(SONAME) $(BUILD)/libluxcalc.so
+
+$(CLI): $(CLI_OBJ) $(STATIC)
+	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $(CLI_OBJ) $(STATIC) $(LIBS)
+
+$(BUILD)/tests/%: tests/%.c tests/lx_test.h $(STATIC)
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CPPFLAGS) $(ALL_CFLAGS) -Itests -o $@ $< $(STATIC) -lcmocka $(LIBS)
+
+-include $(wildcard $(BUILD)/obj/*.d $(BUILD)/obj/cli/*.d)
+
+# ---- the two README commands, and the rest ----
+test: deps
+	@$(MAKE) --no-print-directory all $(TEST_BIN)
+	@LX_SHARED_DIR=$${LX_SHARED_DIR:-$(CURDIR)/../shared} POCL_CACHE_DIR=$(CURDIR)/$(BUILD)/pocl-cache \
+	  sh tests/run.sh $(BUILD) $(TEST_BIN)
+
+demo: deps
+	@$(MAKE) --no-print-directory all
+	@POCL_CACHE_DIR=$(CURDIR)/$(BUILD)/pocl-cache sh samples/demo.sh $(CLI)
+
+bench: deps
+	@$(MAKE) --no-print-directory all
+	@POCL_CACHE_DIR=$(CURDIR)/$(BUILD)/pocl-cache $(CLI) bench
+
+asan: deps
+	@$(MAKE) --no-print-directory BUILD=build-asan CFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined" \
+	  LDFLAGS="-fsanitize=address,undefined" test
+
+install: all
+	install -d $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/bin
+	install -m 644 $(STATIC) $(DESTDIR)$(PREFIX)/lib/
+	install -m 755 $(SHARED) $(DESTDIR)$(PREFIX)/lib/
+	ln -sf $(SONAME) $(DESTDIR)$(PREFIX)/lib/libluxcalc.so
+	install -m 644 src/luxcalc.h $(DESTDIR)$(PREFIX)/include/
+	install -m 755 $(CLI) $(DESTDIR)$(PREFIX)/bin/
+
+uninstall:
+	rm -f $(DESTDIR)$(PREFIX)/lib/libluxcalc.a $(DESTDIR)$(PREFIX)/lib/$(SONAME) \
+	  $(DESTDIR)$(PREFIX)/lib/libluxcalc.so $(DESTDIR)$(PREFIX)/include/luxcalc.h $(DESTDIR)$(PREFIX)/bin/luxcalc
+
+clean:
+	rm -rf build build-asan

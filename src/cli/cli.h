@@ -1,0 +1,86 @@
+/* cli.h - shared pieces of the luxcalc command-line tool: the command table, result output as
+ * table/csv/json, atomic output files, error reporting. Written only against luxcalc.h. */
+#ifndef LX_CLI_H
+#define LX_CLI_H
+
+#include "luxcalc.h"
+
+#include <stdio.h>
+
+/* Exit codes (../shared/CLI.md). */
+enum { CLI_OK = 0, CLI_USAGE = 1, CLI_INPUT = 2, CLI_RUNTIME = 3 };
+
+typedef struct cli_cmd {
+    const char *name;
+    int (*run)(int argc, char **argv); /* argv[0] is the command name */
+    const char *summary;
+} cli_cmd;
+
+extern const cli_cmd cli_commands[];
+
+/* Global flags set by main before a command runs. */
+extern int cli_verbose; /* -v: 1, -vv: 2 */
+extern int cli_quiet;   /* -q */
+
+/* Prints "luxcalc: CMD: message" on stderr. */
+void cli_error(const char *cmd, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+/* Prints the context's last error as "luxcalc: CMD: FILE:LINE: what" and returns the exit code
+ * that fits the status (2 input, 3 runtime, 1 invalid usage). */
+int cli_fail(const char *cmd, lx_ctx *ctx, lx_status st);
+
+/* Maps a status to an exit code. */
+int cli_exit_code(lx_status st);
+
+/* A log callback that prints library messages on stderr when -v is given. */
+void cli_log(void *user, lx_log_level level, const char *msg);
+
+/* Creates a context with the CLI's log callback installed; prints and returns NULL on failure. */
+lx_ctx *cli_ctx(const char *cmd);
+
+/* ---- output formats ---- */
+typedef enum cli_format { CLI_FMT_TABLE = 0, CLI_FMT_CSV, CLI_FMT_JSON } cli_format;
+
+/* Parses "table", "csv" or "json"; returns -1 for anything else. */
+int cli_format_parse(const char *s);
+
+/* A result table: named columns (with an optional unit shown in the table format), rows of
+ * numbers or strings. NaN numbers print as empty (csv), null (json), "-" (table). */
+typedef struct cli_table cli_table;
+cli_table *cli_table_new(int ncols, const char *const *names, const char *const *units);
+void cli_table_str(cli_table *t, const char *s);
+void cli_table_num(cli_table *t, double v);
+void cli_table_int(cli_table *t, long long v);
+/* Writes every row. json_array: 1 prints an array even for one row, 0 prints one object when
+ * there is exactly one row. Returns 0, or -1 on a write error. */
+int cli_table_write(const cli_table *t, cli_format fmt, FILE *out, int json_array);
+void cli_table_free(cli_table *t);
+int cli_table_rows(const cli_table *t);
+
+/* Prints a double in the shortest form that reads back exactly ("%.17g" trimmed). */
+void cli_print_exact(FILE *out, double v);
+
+/* ---- atomic output: -o FILE ---- */
+/* Opens FILE for writing through a temporary file in the same directory; "-" or NULL is stdout. */
+typedef struct cli_output {
+    FILE *fp;
+    char *path; /* final path, NULL for stdout */
+    char *tmp;  /* temporary path */
+} cli_output;
+int cli_output_open(cli_output *o, const char *path, const char *cmd);
+/* Flushes, fsyncs and renames into place (ok = 1) or removes the temporary file (ok = 0).
+ * Returns 0 on success. */
+int cli_output_close(cli_output *o, int ok, const char *cmd);
+
+/* ---- option helpers ---- */
+/* Parses a whole string as a finite double; returns 0 on success. */
+int cli_parse_double(const char *s, double *out);
+
+/* Standard handling of --help for a command: prints usage text to stdout. */
+void cli_print_help(const char *text);
+
+#endif /* LX_CLI_H */

@@ -1,0 +1,310 @@
+/* common.c - CLI plumbing shared by every command: errors and exit codes, the result table in
+ * table/csv/json, exact number printing, atomic output files. */
+#include "cli.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+int cli_verbose = 0;
+int cli_quiet = 0;
+
+void cli_error(const char *cmd, const char *fmt, ...)
+{
+    va_list ap;
+    fprintf(stderr, "luxcalc: %s: ", cmd);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+}
+
+int cli_exit_code(lx_status st)
+{
+    switch (st) {
+    case LX_OK: return CLI_OK;
+    case LX_EPARSE:
+    case LX_EIO:
+    case LX_ERANGE:
+    case LX_EINVAL:
+    case LX_EUNSUPPORTED: return CLI_INPUT;
+    case LX_ENOMEM:
+    case LX_EDEVICE: return CLI_RUNTIME;
+    }
+    return CLI_RUNTIME;
+}
+
+int cli_fail(const char *cmd, lx_ctx *ctx, lx_status st)
+{
+    const char *msg = lx_ctx_errmsg(ctx);
+    cli_error(cmd, "%s", msg && *msg ? msg : lx_strerror(st));
+    return cli_exit_code(st);
+}
+
+void cli_log(void *user, lx_log_level level, const char *msg)
+{
+    const char *cmd = user ? (const char *)user : "luxcalc";
+    static const char *names[] = {"error", "warning", "info", "debug"};
+    fprintf(stderr, "luxcalc: %s: %s: %s\n", cmd, names[level], msg);
+}
+
+lx_ctx *cli_ctx(const char *cmd)
+{
+    lx_ctx *ctx = NULL;
+    if (lx_ctx_create(&ctx) != LX_OK) {
+        cli_error(cmd, "out of memory");
+        return NULL;
+    }
+    lx_log_level max = cli_quiet ? LX_LOG_ERROR : cli_verbose >= 2 ? LX_LOG_DEBUG : cli_verbose ? LX_LOG_INFO : LX_LOG_WARN;
+    lx_ctx_set_log(ctx, cli_log, (void *)cmd, max);
+    return ctx;
+}
+
+int cli_format_parse(const char *s)
+{
+    if (!strcmp(s, "table")) return CLI_FMT_TABLE;
+    if (!strcmp(s, "csv")) return CLI_FMT_CSV;
+    if (!strcmp(s, "json")) return CLI_FMT_JSON;
+    return -1;
+}
+
+int cli_parse_double(const char *s, double *out)
+{
+    char *end;
+    if (!s || !*s) return -1;
+    errno = 0;
+    double v = strtod(s, &end);
+    while (*end == ' ') end++;
+    if (*end || !isfinite(v) || errno == ERANGE) return -1;
+    *out = v;
+    return 0;
+}
+
+void cli_print_help(const char *text) { fputs(text, stdout); }
+
+void cli_print_exact(FILE *out, double v)
+{
+    char buf[64];
+    for (int prec = 15; prec <= 17; prec++) { /* shortest of %.15g..%.17g that reads back exactly */
+        snprintf(buf, sizeof buf, "%.*g", prec, v);
+        if (strtod(buf, NULL) == v) break;
+    }
+    fputs(buf, out);
+}
+
+/* ---- the result table ---- */
+typedef struct cell {
+    int kind; /* 0 number, 1 string, 2 integer */
+    double num;
+    long long integer;
+    char *str;
+} cell;
+
+struct cli_table {
+    int ncols;
+    const char *const *names;
+    const char *const *units;
+    cell *cells;
+    size_t ncells, cap;
+};
+
+cli_table *cli_table_new(int ncols, const char *const *names, const char *const *units)
+{
+    cli_table *t = calloc(1, sizeof *t);
+    if (!t) return NULL;
+    t->ncols = ncols;
+    t->names = names;
+    t->units = units;
+    return t;
+}
+
+static cell *push(cli_table *t)
+{
+    if (t->ncells == t->cap) {
+        size_t cap = t->cap ? 2 * t->cap : 64;
+        cell *c = realloc(t->cells, cap * sizeof *c);
+        if (!c) {
+            fprintf(stderr, "luxcalc: out of memory\n");
+            exit(CLI_RUNTIME);
+        }
+        t->cells = c;
+        t->cap = cap;
+    }
+    cell *c = &t->cells[t->ncells++];
+    memset(c, 0, sizeof *c);
+    return c;
+}
+
+void cli_table_str(cli_table *t, const char *s)
+{
+    cell *c = push(t);
+    c->kind = 1;
+    c->str = strdup(s ? s : "");
+}
+
+void cli_table_num(cli_table *t, double v) { push(t)->num = v; }
+
+void cli_table_int(cli_table *t, long long v)
+{
+    cell *c = push(t);
+    c->kind = 2;
+    c->integer = v;
+}
+
+int cli_table_rows(const cli_table *t) { return (int)(t->ncells / (size_t)t->ncols); }
+
+void cli_table_free(cli_table *t)
+{
+    if (!t) return;
+    for (size_t i = 0; i < t->ncells; i++) free(t->cells[i].str);
+    free(t->cells);
+    free(t);
+}
+
+static void csv_str(FILE *out, const char *s)
+{
+    if (strpbrk(s, ",\"\n\r")) {
+        fputc('"', out);
+        for (; *s; s++) {
+            if (*s == '"') fputc('"', out);
+            fputc(*s, out);
+        }
+        fputc('"', out);
+    } else {
+        fputs(s, out);
+    }
+}
+
+static void json_str(FILE *out, const char *s)
+{
+    fputc('"', out);
+    for (; *s; s++) {
+        unsigned char ch = (unsigned char)*s;
+        if (ch == '"' || ch == '\\') fprintf(out, "\\%c", ch);
+        else if (ch == '\n') fputs("\\n", out);
+        else if (ch == '\t') fputs("\\t", out);
+        else if (ch < 32) fprintf(out, "\\u%04x", ch);
+        else fputc(ch, out);
+    }
+    fputc('"', out);
+}
+
+static void cell_text(const cell *c, char *buf, size_t cap)
+{
+    if (c->kind == 1) snprintf(buf, cap, "%s", c->str);
+    else if (c->kind == 2) snprintf(buf, cap, "%lld", c->integer);
+    else if (!isfinite(c->num)) snprintf(buf, cap, "-");
+    else if (c->num != 0 && (fabs(c->num) >= 1e7 || fabs(c->num) < 1e-4)) snprintf(buf, cap, "%.6g", c->num);
+    else snprintf(buf, cap, "%.6g", c->num);
+}
+
+int cli_table_write(const cli_table *t, cli_format fmt, FILE *out, int json_array)
+{
+    size_t rows = t->ncells / (size_t)t->ncols;
+    if (fmt == CLI_FMT_CSV) {
+        for (int c = 0; c < t->ncols; c++) fprintf(out, "%s%s", c ? "," : "", t->names[c]);
+        fputc('\n', out);
+        for (size_t r = 0; r < rows; r++) {
+            for (int c = 0; c < t->ncols; c++) {
+                const cell *x = &t->cells[r * t->ncols + c];
+                if (c) fputc(',', out);
+                if (x->kind == 1) csv_str(out, x->str);
+                else if (x->kind == 2) fprintf(out, "%lld", x->integer);
+                else if (isfinite(x->num)) cli_print_exact(out, x->num);
+            }
+            fputc('\n', out);
+        }
+    } else if (fmt == CLI_FMT_JSON) {
+        int array = json_array || rows != 1;
+        if (array) fputs("[\n", out);
+        for (size_t r = 0; r < rows; r++) {
+            fputs(array ? "  {" : "{", out);
+            for (int c = 0; c < t->ncols; c++) {
+                const cell *x = &t->cells[r * t->ncols + c];
+                fprintf(out, "%s\"%s\": ", c ? ", " : "", t->names[c]);
+                if (x->kind == 1) json_str(out, x->str);
+                else if (x->kind == 2) fprintf(out, "%lld", x->integer);
+                else if (isfinite(x->num)) cli_print_exact(out, x->num);
+                else fputs("null", out);
+            }
+            fputs(r + 1 < rows ? "},\n" : "}\n", out);
+        }
+        if (array) fputs("]\n", out);
+    } else {
+        /* people: one block per row, "name  value unit", aligned */
+        int w = 0;
+        for (int c = 0; c < t->ncols; c++) {
+            int l = (int)strlen(t->names[c]);
+            if (l > w) w = l;
+        }
+        for (size_t r = 0; r < rows; r++) {
+            if (r) fputc('\n', out);
+            for (int c = 0; c < t->ncols; c++) {
+                char buf[512];
+                cell_text(&t->cells[r * t->ncols + c], buf, sizeof buf);
+                const char *u = t->units && t->units[c] ? t->units[c] : "";
+                fprintf(out, "%-*s  %s%s%s\n", w, t->names[c], buf, *u && strcmp(buf, "-") ? " " : "",
+                        strcmp(buf, "-") ? u : "");
+            }
+        }
+    }
+    return ferror(out) ? -1 : 0;
+}
+
+/* ---- atomic output ---- */
+int cli_output_open(cli_output *o, const char *path, const char *cmd)
+{
+    memset(o, 0, sizeof *o);
+    if (!path || !strcmp(path, "-")) {
+        o->fp = stdout;
+        return 0;
+    }
+    size_t n = strlen(path);
+    o->path = strdup(path);
+    o->tmp = malloc(n + 16);
+    if (!o->path || !o->tmp) {
+        cli_error(cmd, "out of memory");
+        return -1;
+    }
+    snprintf(o->tmp, n + 16, "%s.tmpXXXXXX", path);
+    int fd = mkstemp(o->tmp);
+    if (fd < 0) {
+        cli_error(cmd, "%s: cannot create: %s", path, strerror(errno));
+        free(o->path);
+        free(o->tmp);
+        o->path = o->tmp = NULL;
+        return -1;
+    }
+    mode_t mask = umask(0); /* give the file the usual permissions, not mkstemp's 0600 */
+    umask(mask);
+    fchmod(fd, 0666 & ~mask);
+    o->fp = fdopen(fd, "w");
+    return 0;
+}
+
+int cli_output_close(cli_output *o, int ok, const char *cmd)
+{
+    int rc = 0;
+    if (!o->path) {
+        if (fflush(stdout) != 0) rc = -1;
+        return rc;
+    }
+    if (ok) {
+        if (fflush(o->fp) != 0 || fsync(fileno(o->fp)) != 0 || ferror(o->fp)) rc = -1;
+    }
+    if (fclose(o->fp) != 0) rc = -1;
+    if (ok && rc == 0 && rename(o->tmp, o->path) != 0) rc = -1;
+    if (!ok || rc != 0) {
+        if (ok) cli_error(cmd, "%s: cannot write: %s", o->path, strerror(errno));
+        unlink(o->tmp);
+    }
+    free(o->path);
+    free(o->tmp);
+    o->path = o->tmp = NULL;
+    return rc;
+}

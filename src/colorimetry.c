@@ -1,0 +1,66 @@
+/* colorimetry.c - all colorimetric and photometric quantities of one spectrum: absolute XYZ,
+ * chromaticities, CCT and Duv, luminous efficacy of radiation, scotopic quantities. */
+#include "lx_private.h"
+
+#include <math.h>
+#include <string.h>
+
+#define LX_KM_2 683.002    /* lm/W, photopic, CIE 015:2018 (683 lm/W at 540 THz) */
+#define LX_KM_10 683.599   /* lm/W, for the 10 deg observer, CIE 015:2018 */
+#define LX_KM_SCOT 1700.06 /* lm/W, scotopic K'm, CIE 018:2019 */
+
+lx_status lx_spd_colorimetry(lx_ctx *ctx, const lx_spd *spd, lx_observer obs, lx_method method, lx_colorimetry *out)
+{
+    if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "output is NULL");
+    if (obs != LX_OBSERVER_2 && obs != LX_OBSERVER_10)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "observer must be 2 or 10 degrees, not %d", (int)obs);
+    lx_status st = lx_spd_check(ctx, spd);
+    if (st != LX_OK) return st;
+    method = lx_method_resolve(spd, method);
+    lx_function f0 = obs == LX_OBSERVER_2 ? LX_FN_XBAR_2 : LX_FN_XBAR_10;
+    double km = obs == LX_OBSERVER_2 ? LX_KM_2 : LX_KM_10;
+    double xyz[3], scot, radiant;
+    for (int k = 0; k < 3; k++) {
+        lx_spd w;
+        if ((st = lx_function_get(ctx, f0 + k, &w)) != LX_OK) return st;
+        if ((st = lx_spd_integrate(ctx, spd, &w, method, &xyz[k])) != LX_OK) return st;
+    }
+    lx_spd vp;
+    if ((st = lx_function_get(ctx, LX_FN_VPRIME, &vp)) != LX_OK) return st;
+    if ((st = lx_spd_integrate(ctx, spd, &vp, method, &scot)) != LX_OK) return st;
+    if ((st = lx_spd_integrate_radiant(ctx, spd, method, &radiant)) != LX_OK) return st;
+
+    lx_colorimetry r;
+    r.method = method;
+    r.X = km * xyz[0];
+    r.Y = km * xyz[1];
+    r.Z = km * xyz[2];
+    double s = r.X + r.Y + r.Z;
+    double d = r.X + 15 * r.Y + 3 * r.Z;
+    r.x = s != 0 ? r.X / s : NAN;
+    r.y = s != 0 ? r.Y / s : NAN;
+    r.u_prime = d != 0 ? 4 * r.X / d : NAN;
+    r.v_prime = d != 0 ? 9 * r.Y / d : NAN;
+    r.radiant = radiant;
+    r.ler_lm_per_W = radiant != 0 ? r.Y / radiant : NAN;
+    r.scotopic_Y = LX_KM_SCOT * scot;
+    r.sp_ratio = r.Y != 0 ? r.scotopic_Y / r.Y : NAN;
+    r.cct_K = r.duv = NAN;
+    r.cct_valid = 0;
+    if (d != 0 && isfinite(r.u_prime)) {
+        double T, duv;
+        lx_ctx saved = *ctx; /* an undefined CCT is a result, not an error: keep the error state */
+        if (lx_cct_from_uv(ctx, obs, r.u_prime, r.v_prime * 2.0 / 3.0, &T, &duv) == LX_OK) {
+            /* the range ends are inclusive to solver precision (a 1000 K blackbody solves to 1000 K - 1e-9) */
+            r.cct_valid = fabs(duv) <= 0.05 && T >= 1000.0 * (1 - 1e-9) && T <= 100000.0 * (1 + 1e-9);
+            if (r.cct_valid) r.cct_K = T, r.duv = duv;
+        } else {
+            ctx->status = saved.status;
+            memcpy(ctx->errmsg, saved.errmsg, sizeof ctx->errmsg);
+            memcpy(ctx->errfile, saved.errfile, sizeof ctx->errfile);
+            ctx->errline = saved.errline;
+        }
+    }
+    *out = r;
+    return LX_OK;
+}

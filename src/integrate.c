@@ -1,0 +1,163 @@
+/* integrate.c - integration of a sampled spectrum against a weighting function: the CIE 015
+ * summation, the exact integral of two piecewise-linear functions, and 1 nm resampling. */
+#include "lx_private.h"
+
+#include <math.h>
+
+/* Uniform step of a spectrum (0 when not uniform): every step equal within 1e-9 relative. */
+static double uniform_step(const lx_spd *s)
+{
+    double step = s->lambda_nm[1] - s->lambda_nm[0];
+    double tol = 1e-9 * step;
+    for (size_t i = 2; i < s->n; i++)
+        if (fabs(s->lambda_nm[i] - s->lambda_nm[i - 1] - step) > tol) return 0.0;
+    return step;
+}
+
+static int whole_nm(const lx_spd *s)
+{
+    for (size_t i = 0; i < s->n; i++)
+        if (fabs(s->lambda_nm[i] - nearbyint(s->lambda_nm[i])) > 1e-9) return 0;
+    return 1;
+}
+
+lx_method lx_method_resolve(const lx_spd *spd, lx_method method)
+{
+    if (method != LX_METHOD_AUTO) return method;
+    if (!spd || spd->n < 2) return LX_METHOD_EXACT;
+    double step = uniform_step(spd);
+    if ((fabs(step - 1.0) < 1e-9 || fabs(step - 5.0) < 1e-9) && whole_nm(spd)) return LX_METHOD_CIE15;
+    return LX_METHOD_EXACT;
+}
+
+lx_status lx_spd_check(lx_ctx *ctx, const lx_spd *s)
+{
+    if (!s || !s->lambda_nm || !s->value) return lx__error(ctx, LX_EINVAL, NULL, 0, "spectrum is NULL");
+    const char *name = s->name ? s->name : "spectrum";
+    if (s->n < 2) return lx__error(ctx, LX_EINVAL, NULL, 0, "%s: needs at least 2 samples, has %zu", name, s->n);
+    for (size_t i = 0; i < s->n; i++) {
+        if (!isfinite(s->lambda_nm[i]) || !isfinite(s->value[i]))
+            return lx__error(ctx, LX_EINVAL, NULL, 0, "%s: sample %zu is not finite", name, i + 1);
+        if (i && !(s->lambda_nm[i] > s->lambda_nm[i - 1]))
+            return lx__error(ctx, LX_EINVAL, NULL, 0, "%s: wavelengths not strictly increasing at sample %zu (%g nm)",
+                             name, i + 1, s->lambda_nm[i]);
+    }
+    return LX_OK;
+}
+
+/* Weight at lambda: direct index on a whole-nm 1 nm table, else linear interpolation. */
+static double weight_at(const lx_spd *w, int unit_grid, double lambda)
+{
+    if (unit_grid) {
+        double k = lambda - w->lambda_nm[0];
+        double kr = nearbyint(k);
+        if (fabs(k - kr) < 1e-9) {
+            if (kr < 0 || kr > (double)(w->n - 1)) return 0.0;
+            return w->value[(size_t)kr];
+        }
+    }
+    return lx__interp(w->lambda_nm, w->value, w->n, lambda);
+}
+
+static int is_unit_grid(const lx_spd *w)
+{
+    return fabs(w->lambda_nm[1] - w->lambda_nm[0] - 1.0) < 1e-12 && uniform_step(w) > 0 && whole_nm(w);
+}
+
+/* Exact integral of the product of two piecewise-linear functions, each zero outside its samples. */
+static double exact_product(const lx_spd *a, const lx_spd *b)
+{
+    double lo = fmax(a->lambda_nm[0], b->lambda_nm[0]);
+    double hi = fmin(a->lambda_nm[a->n - 1], b->lambda_nm[b->n - 1]);
+    if (!(hi > lo)) return 0.0;
+    size_t i = 0, j = 0; /* segments [i, i+1] of a and [j, j+1] of b containing the current point */
+    while (a->lambda_nm[i + 1] <= lo) i++;
+    while (b->lambda_nm[j + 1] <= lo) j++;
+    double sum = 0.0, comp = 0.0; /* Neumaier summation */
+    double l = lo;
+    while (l < hi) {
+        double r = fmin(fmin(a->lambda_nm[i + 1], b->lambda_nm[j + 1]), hi);
+        double ax0 = a->lambda_nm[i], ax1 = a->lambda_nm[i + 1], bx0 = b->lambda_nm[j], bx1 = b->lambda_nm[j + 1];
+        double ta = a->value[i + 1] - a->value[i], tb = b->value[j + 1] - b->value[j];
+        double al = a->value[i] + ta * ((l - ax0) / (ax1 - ax0));
+        double ar = r == ax1 ? a->value[i + 1] : a->value[i] + ta * ((r - ax0) / (ax1 - ax0));
+        double bl = b->value[j] + tb * ((l - bx0) / (bx1 - bx0));
+        double br = r == bx1 ? b->value[j + 1] : b->value[j] + tb * ((r - bx0) / (bx1 - bx0));
+        /* integral over [l, r] of two linear functions = h/6 (2 al bl + al br + ar bl + 2 ar br) */
+        double term = (r - l) / 6.0 * (2.0 * al * bl + al * br + ar * bl + 2.0 * ar * br);
+        double t = sum + term;
+        comp += fabs(sum) >= fabs(term) ? (sum - t) + term : (term - t) + sum;
+        sum = t;
+        l = r;
+        if (l >= a->lambda_nm[i + 1] && i + 2 < a->n) i++;
+        if (l >= b->lambda_nm[j + 1] && j + 2 < b->n) j++;
+    }
+    return sum + comp;
+}
+
+lx_status lx_spd_integrate(lx_ctx *ctx, const lx_spd *spd, const lx_spd *w, lx_method method, double *out)
+{
+    lx_status st = lx_spd_check(ctx, spd);
+    if (st == LX_OK) st = lx_spd_check(ctx, w);
+    if (st != LX_OK) return st;
+    if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "output is NULL");
+    method = lx_method_resolve(spd, method);
+    double sum = 0.0;
+    if (method == LX_METHOD_EXACT) {
+        sum = exact_product(spd, w);
+    } else if (method == LX_METHOD_CIE15) {
+        double step = uniform_step(spd);
+        if (step <= 0)
+            return lx__error(ctx, LX_EINVAL, NULL, 0, "%s: method cie15 needs uniformly spaced wavelengths",
+                             spd->name ? spd->name : "spectrum");
+        int ug = is_unit_grid(w);
+        for (size_t i = 0; i < spd->n; i++) sum += spd->value[i] * weight_at(w, ug, spd->lambda_nm[i]);
+        sum *= step;
+    } else if (method == LX_METHOD_LINEAR1NM) {
+        int ug = is_unit_grid(w);
+        double k0 = ceil(spd->lambda_nm[0]), k1 = floor(spd->lambda_nm[spd->n - 1]);
+        size_t i = 0;
+        for (double k = k0; k <= k1; k += 1.0) {
+            while (i + 2 < spd->n && spd->lambda_nm[i + 1] <= k) i++;
+            double x0 = spd->lambda_nm[i], x1 = spd->lambda_nm[i + 1];
+            double s = spd->value[i] + (spd->value[i + 1] - spd->value[i]) * ((k - x0) / (x1 - x0));
+            sum += s * weight_at(w, ug, k);
+        }
+    } else {
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown integration method %d", (int)method);
+    }
+    *out = sum;
+    return LX_OK;
+}
+
+lx_status lx_spd_integrate_radiant(lx_ctx *ctx, const lx_spd *spd, lx_method method, double *out)
+{
+    lx_status st = lx_spd_check(ctx, spd);
+    if (st != LX_OK) return st;
+    if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "output is NULL");
+    method = lx_method_resolve(spd, method);
+    double sum = 0.0;
+    if (method == LX_METHOD_EXACT) {
+        for (size_t i = 0; i + 1 < spd->n; i++)
+            sum += 0.5 * (spd->lambda_nm[i + 1] - spd->lambda_nm[i]) * (spd->value[i] + spd->value[i + 1]);
+    } else if (method == LX_METHOD_CIE15) {
+        double step = uniform_step(spd);
+        if (step <= 0)
+            return lx__error(ctx, LX_EINVAL, NULL, 0, "%s: method cie15 needs uniformly spaced wavelengths",
+                             spd->name ? spd->name : "spectrum");
+        for (size_t i = 0; i < spd->n; i++) sum += spd->value[i];
+        sum *= step;
+    } else if (method == LX_METHOD_LINEAR1NM) {
+        double k0 = ceil(spd->lambda_nm[0]), k1 = floor(spd->lambda_nm[spd->n - 1]);
+        size_t i = 0;
+        for (double k = k0; k <= k1; k += 1.0) {
+            while (i + 2 < spd->n && spd->lambda_nm[i + 1] <= k) i++;
+            double x0 = spd->lambda_nm[i], x1 = spd->lambda_nm[i + 1];
+            sum += spd->value[i] + (spd->value[i + 1] - spd->value[i]) * ((k - x0) / (x1 - x0));
+        }
+    } else {
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown integration method %d", (int)method);
+    }
+    *out = sum;
+    return LX_OK;
+}

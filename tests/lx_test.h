@@ -1,0 +1,74 @@
+/* lx_test.h - shared helpers for the cmocka test binaries: tolerance asserts, context set-up,
+ * the path of ../shared (LX_SHARED_DIR) and of the built CLI (LX_BUILD_DIR). */
+#ifndef LX_TEST_H
+#define LX_TEST_H
+
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <cmocka.h>
+
+#include "luxcalc.h"
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+/* Passes when |a - b| <= abs_tol or |a - b| <= rel_tol * |b|; NaN never passes. */
+#define lx_assert_near(a, b, abs_tol, rel_tol) \
+    lx_assert_near_(#a, (double)(a), (double)(b), (abs_tol), (rel_tol), __FILE__, __LINE__)
+
+static inline void lx_assert_near_(const char *expr, double a, double b, double abs_tol, double rel_tol,
+                                   const char *file, int line)
+{
+    double d = fabs(a - b);
+    if (!(d <= abs_tol || d <= rel_tol * fabs(b))) {
+        print_error("%s = %.17g, expected %.17g (|diff| %.3g > abs %.3g, rel %.3g)\n", expr, a, b, d,
+                       abs_tol, rel_tol * fabs(b));
+        _fail(file, line);
+    }
+}
+
+/* Asserts a status is LX_OK, printing the context's message otherwise. */
+#define lx_assert_ok(ctx, call) \
+    do { \
+        lx_status st_ = (call); \
+        if (st_ != LX_OK) { \
+            print_error("%s -> %s: %s\n", #call, lx_strerror(st_), lx_ctx_errmsg(ctx)); \
+            _fail(__FILE__, __LINE__); \
+        } \
+    } while (0)
+
+static inline int lx_test_ctx_setup(void **state)
+{
+    lx_ctx *ctx = NULL;
+    if (lx_ctx_create(&ctx) != LX_OK) return -1;
+    *state = ctx;
+    return 0;
+}
+
+static inline int lx_test_ctx_teardown(void **state)
+{
+    lx_ctx_destroy((lx_ctx *)*state);
+    return 0;
+}
+
+/* ../shared (for data the project must not copy, e.g. third-party IES files); NULL if absent. */
+static inline const char *lx_test_shared_dir(void)
+{
+    const char *d = getenv("LX_SHARED_DIR");
+    return d && *d ? d : NULL;
+}
+
+/* The build directory (for the CLI binary: LX_BUILD_DIR/luxcalc). */
+static inline const char *lx_test_build_dir(void)
+{
+    const char *d = getenv("LX_BUILD_DIR");
+    return d && *d ? d : "build";
+}
+
+#endif /* LX_TEST_H */
