@@ -35,13 +35,13 @@ SONAME := libluxcalc.so.0
 SHARED := $(BUILD)/$(SONAME)
 CLI := $(BUILD)/luxcalc
 
-.PHONY: all test demo bench asan install uninstall clean deps check-cli
+.PHONY: all test demo bench asan install uninstall clean deps fuzz
 
 all: $(STATIC) $(SHARED) $(CLI) $(BUILD)/libs.txt
 
 # the link flags a program embedding the static library needs (read by tests/cli/embed.sh)
 $(BUILD)/libs.txt: Makefile | $(BUILD)
-	@echo '$(LIBS)' > $@
+	@echo '$(LDFLAGS) $(LIBS)' > $@
 
 # ---- dependencies: install missing Debian packages (root) or say which ----
 deps:
@@ -89,7 +89,7 @@ $(STATIC): $(LIB_OBJ)
 	ar rcs $@ $^
 
 $(SHARED): $(LIB_OBJ)
-	$(CC) -shared -Wl,-soname,$(SONAME) $(LDFLAGS) -o $@ $^ $(LIBS)
+	$(CC) -shared -Wl,-soname,$(SONAME) -Wl,--no-undefined $(LDFLAGS) -o $@ $^ $(LIBS)
 	ln -sf $(SONAME) $(BUILD)/libluxcalc.so
 
 $(CLI): $(CLI_OBJ) $(STATIC)
@@ -119,17 +119,47 @@ asan: deps
 	@$(MAKE) --no-print-directory BUILD=build-asan CFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined" \
 	  LDFLAGS="-fsanitize=address,undefined" test
 
-install: all
-	install -d $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/bin
-	install -m 644 $(STATIC) $(DESTDIR)$(PREFIX)/lib/
-	install -m 755 $(SHARED) $(DESTDIR)$(PREFIX)/lib/
-	ln -sf $(SONAME) $(DESTDIR)$(PREFIX)/lib/libluxcalc.so
-	install -m 644 src/luxcalc.h $(DESTDIR)$(PREFIX)/include/
-	install -m 755 $(CLI) $(DESTDIR)$(PREFIX)/bin/
+# ---- install: libraries (versioned soname), header, pkg-config, binary, man pages, completion ----
+LIBDIR ?= $(PREFIX)/lib
+INCLUDEDIR ?= $(PREFIX)/include
+BINDIR ?= $(PREFIX)/bin
+MANDIR ?= $(PREFIX)/share/man
+COMPLETIONDIR ?= $(PREFIX)/share/bash-completion/completions
+VERSION := $(shell sed -n 's/^\#define LX_VERSION_STRING "\(.*\)"/\1/p' src/luxcalc.h)
+
+$(BUILD)/luxcalc.1: $(CLI) src/tools/mkman.sh
+	sh src/tools/mkman.sh cli $(CLI) > $@.tmp && mv $@.tmp $@
+
+$(BUILD)/luxcalc.3: src/luxcalc.h src/tools/mkman.sh | $(BUILD)
+	sh src/tools/mkman.sh api src/luxcalc.h > $@.tmp && mv $@.tmp $@
+
+$(BUILD)/luxcalc.bash: $(CLI) src/tools/mkcompletion.sh
+	sh src/tools/mkcompletion.sh $(CLI) > $@.tmp && mv $@.tmp $@
+
+install: all $(BUILD)/luxcalc.1 $(BUILD)/luxcalc.3 $(BUILD)/luxcalc.bash
+	install -d $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(INCLUDEDIR) $(DESTDIR)$(BINDIR) \
+	  $(DESTDIR)$(MANDIR)/man1 $(DESTDIR)$(MANDIR)/man3 $(DESTDIR)$(COMPLETIONDIR)
+	install -m 644 $(STATIC) $(DESTDIR)$(LIBDIR)/
+	install -m 755 $(SHARED) $(DESTDIR)$(LIBDIR)/$(SONAME).$(VERSION:$(firstword $(subst ., ,$(VERSION))).%=%)
+	ln -sf $(SONAME).$(VERSION:$(firstword $(subst ., ,$(VERSION))).%=%) $(DESTDIR)$(LIBDIR)/$(SONAME)
+	ln -sf $(SONAME) $(DESTDIR)$(LIBDIR)/libluxcalc.so
+	install -m 644 src/luxcalc.h $(DESTDIR)$(INCLUDEDIR)/
+	@printf 'prefix=%s\nlibdir=%s\nincludedir=%s\n\nName: luxcalc\nDescription: photometry and radiometry (spectra, lighting, luminaires, radiance maps)\nVersion: %s\nCflags: -I$${includedir}\nLibs: -L$${libdir} -lluxcalc\nLibs.private: %s\n' \
+	  '$(PREFIX)' '$(LIBDIR)' '$(INCLUDEDIR)' '$(VERSION)' '$(LIBS)' > $(DESTDIR)$(LIBDIR)/pkgconfig/luxcalc.pc
+	install -m 755 $(CLI) $(DESTDIR)$(BINDIR)/
+	install -m 644 $(BUILD)/luxcalc.1 $(DESTDIR)$(MANDIR)/man1/
+	install -m 644 $(BUILD)/luxcalc.3 $(DESTDIR)$(MANDIR)/man3/
+	install -m 644 $(BUILD)/luxcalc.bash $(DESTDIR)$(COMPLETIONDIR)/luxcalc
 
 uninstall:
-	rm -f $(DESTDIR)$(PREFIX)/lib/libluxcalc.a $(DESTDIR)$(PREFIX)/lib/$(SONAME) \
-	  $(DESTDIR)$(PREFIX)/lib/libluxcalc.so $(DESTDIR)$(PREFIX)/include/luxcalc.h $(DESTDIR)$(PREFIX)/bin/luxcalc
+	rm -f $(DESTDIR)$(LIBDIR)/libluxcalc.a $(DESTDIR)$(LIBDIR)/$(SONAME)* $(DESTDIR)$(LIBDIR)/libluxcalc.so \
+	  $(DESTDIR)$(LIBDIR)/pkgconfig/luxcalc.pc $(DESTDIR)$(INCLUDEDIR)/luxcalc.h $(DESTDIR)$(BINDIR)/luxcalc \
+	  $(DESTDIR)$(MANDIR)/man1/luxcalc.1 $(DESTDIR)$(MANDIR)/man3/luxcalc.3 $(DESTDIR)$(COMPLETIONDIR)/luxcalc
+
+# fuzz every parser for FUZZ_SECONDS each (libFuzzer, clang); see src/tools/fuzz.sh
+FUZZ_SECONDS ?= 60
+fuzz: deps
+	@sh src/tools/fuzz.sh $(FUZZ_SECONDS) $(FUZZ_TARGETS)
 
 clean:
-	rm -rf build build-asan
+	rm -rf build build-asan build-fuzz

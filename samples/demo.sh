@@ -24,3 +24,29 @@ echo
 echo "== A 532 nm laser line sampled every 0.1 nm: exact (default) vs linear1nm"
 "$LX" spd --unit W/nm --format csv "$here/spd/laser_532nm.csv" | cut -d, -f2,4,12,16
 "$LX" spd --unit W/nm --method linear1nm --format csv "$here/spd/laser_532nm.csv" | tail -n 1 | cut -d, -f2,4,12,16
+
+echo
+echo "== The same FL2 and FL11 read from an Argyll .sp (CGATS) file"
+"$LX" spd --format csv "$here/spd/fl2_fl11_argyll.sp" | cut -d, -f2,6,7,10,11
+
+echo
+echo "== Colour rendering (CIE 13.3 Ra, R9; TM-30 Rf, Rg) and melanopic DER of the CIE illuminants"
+"$LX" spd --metrics cri_ra,cri_r9,tm30_rf,tm30_rg,melanopic_der --format csv "$here/spd/cie_illuminants.csv" | cut -d, -f2,17-
+"$LX" spd --metrics cri_ra,cri_r9,tm30_rf,tm30_rg,melanopic_der --format csv "$here/spd/led_batch.csv" | tail -n +2 | cut -d, -f2,17-
+
+echo
+echo "== Lighting calculations: a 1000 lm lamp 2 m away at 30 deg; a 25 deg spot; a disk and a panel"
+"$LX" point --flux 1000lm --distance 2m --angle 30deg --format csv
+"$LX" spot --flux 800lm --beam-angle 25deg --angle 10deg --distance 2.5m --format csv
+"$LX" disk --luminance 1000cd/m2 --radius 0.5m --distance 1m --offset 0.8m --format csv
+"$LX" rect --luminance 3000cd/m2 --width 0.6m --length 1.2m --distance 2m --at centre --format csv
+"$LX" solve --illuminance 500lx --intensity 2000cd --format csv
+
+echo
+echo "== Luminaires: the project's own samples (written by 'luxcalc ies --write' from analytic models)"
+"$LX" ies --format csv "$here/ies/point_isotropic_1000lm.ies" "$here/ies/downlight_lambert_1000lm.ies" \
+  "$here/ies/spot_warn_30deg_800lm.ies" | cut -d, -f1-7
+echo
+echo "== A grid: the Lambertian downlight at 2.8 m over a 4 m x 4 m work plane at 0.8 m"
+"$LX" grid --ies "$here/ies/downlight_lambert_1000lm.ies" --at 2,2,2.8 --plane z=0.8 --area 0:4,0:4 \
+  --spacing 0.5 --summary

@@ -32,12 +32,18 @@ static void planck_uv(const cmf3 *c, double T, double *u, double *v, double *du,
     double X = 0, Y = 0, Z = 0, dX = 0, dY = 0, dZ = 0;
     /* scale by exp(c2 / (lambda_last T)) so the longest wavelength has factor 1: no underflow */
     double xref = C2_NM_K / (c->y.lambda_nm[c->y.n - 1] * T);
+    /* Above 300 K one exp per wavelength does: exp(xref - x) = exp(xref) exp(-x) cannot overflow
+     * (xref < 58) and 1 - exp(-x) keeps full precision while x > 0.01 (eps / x < 3e-14). */
+    int fast = T >= 300.0;
+    double exref = fast ? exp(xref) : 0.0;
     for (size_t i = 0; i < c->y.n; i++) {
         double l = c->y.lambda_nm[i];
         double x = C2_NM_K / (l * T);
         double l5 = l * l * l * l * l;
-        double b = exp(xref - x) / (l5 * -expm1(-x)); /* B(l, T) up to a constant factor */
-        double db = b * (x / -expm1(-x)) / T; /* dB/dT = B x e^x / ((e^x - 1) T) */
+        double e = fast ? exp(-x) : 0.0;
+        double q = fast && x > 0.01 ? 1.0 - e : -expm1(-x); /* 1 - exp(-x) */
+        double b = (fast ? exref * e : exp(xref - x)) / (l5 * q); /* B(l, T) up to a constant factor */
+        double db = b * (x / q) / T; /* dB/dT = B x e^x / ((e^x - 1) T) */
         X += b * c->x.value[i];
         Y += b * c->y.value[i];
         Z += b * c->z.value[i];
@@ -61,15 +67,16 @@ static lx_status locus(lx_ctx *ctx, lx_observer obs, lx__locus **out, cmf3 *c)
         L->n = LOCUS_NODES;
         L->logt0 = log(LOCUS_T_MIN);
         L->dlogt = (log(LOCUS_T_MAX) - L->logt0) / (L->n - 1);
-        L->u = malloc(sizeof(double) * L->n);
-        L->v = malloc(sizeof(double) * L->n);
-        if (!L->u || !L->v) {
-            free(L->u);
-            free(L->v);
-            L->u = L->v = NULL;
-            return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for the locus table");
+        /* one block: u, v and their derivatives in s = ln T, for the Hermite first guess */
+        L->u = malloc(sizeof(double) * 4 * (size_t)L->n);
+        if (!L->u) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for the locus table");
+        L->v = L->u + L->n;
+        double *du = L->u + 2 * L->n, *dv = L->u + 3 * L->n;
+        for (int k = 0; k < L->n; k++) {
+            double T = exp(L->logt0 + k * L->dlogt);
+            planck_uv(c, T, &L->u[k], &L->v[k], &du[k], &dv[k]);
+            du[k] *= T, dv[k] *= T;
         }
-        for (int k = 0; k < L->n; k++) planck_uv(c, exp(L->logt0 + k * L->dlogt), &L->u[k], &L->v[k], NULL, NULL);
         L->ready = 1;
     }
     *out = L;
@@ -97,6 +104,43 @@ static double gfun(const cmf3 *c, double s, double u, double v)
     return (pu - u) * du + (pv - v) * dv;
 }
 
+/* Point of the Hermite-interpolated locus nearest to (u, v) within the intervals around node k:
+ * a few Newton steps on the squared distance in each interval, starting from its midpoint. */
+static double hermite_guess(const lx__locus *L, int k, double u, double v)
+{
+    const double *du = L->u + 2 * L->n, *dv = L->u + 3 * L->n, h = L->dlogt;
+    double best_s = L->logt0 + k * h, best_d = INFINITY;
+    for (int i = k - 1; i <= k; i++) {
+        double t = 0.5;
+        for (int it = 0; it < 12; it++) {
+            double t2 = t * t, t3 = t2 * t;
+            double h00 = 2 * t3 - 3 * t2 + 1, h10 = t3 - 2 * t2 + t, h01 = -2 * t3 + 3 * t2, h11 = t3 - t2;
+            double d00 = 6 * t2 - 6 * t, d10 = 3 * t2 - 4 * t + 1, d01 = -6 * t2 + 6 * t, d11 = 3 * t2 - 2 * t;
+            double e00 = 12 * t - 6, e10 = 6 * t - 4, e01 = -12 * t + 6, e11 = 6 * t - 2;
+            double pu = h00 * L->u[i] + h10 * h * du[i] + h01 * L->u[i + 1] + h11 * h * du[i + 1];
+            double pv = h00 * L->v[i] + h10 * h * dv[i] + h01 * L->v[i + 1] + h11 * h * dv[i + 1];
+            double qu = d00 * L->u[i] + d10 * h * du[i] + d01 * L->u[i + 1] + d11 * h * du[i + 1];
+            double qv = d00 * L->v[i] + d10 * h * dv[i] + d01 * L->v[i + 1] + d11 * h * dv[i + 1];
+            double ru = e00 * L->u[i] + e10 * h * du[i] + e01 * L->u[i + 1] + e11 * h * du[i + 1];
+            double rv = e00 * L->v[i] + e10 * h * dv[i] + e01 * L->v[i + 1] + e11 * h * dv[i + 1];
+            double g = (pu - u) * qu + (pv - v) * qv, gp = qu * qu + qv * qv + (pu - u) * ru + (pv - v) * rv;
+            if (!(gp > 0)) break;
+            double tn = t - g / gp;
+            tn = tn < 0 ? 0 : tn > 1 ? 1 : tn;
+            if (fabs(tn - t) < 1e-15) break;
+            t = tn;
+        }
+        double t2 = t * t, t3 = t2 * t;
+        double pu = (2 * t3 - 3 * t2 + 1) * L->u[i] + (t3 - 2 * t2 + t) * h * du[i] + (-2 * t3 + 3 * t2) * L->u[i + 1] +
+                    (t3 - t2) * h * du[i + 1];
+        double pv = (2 * t3 - 3 * t2 + 1) * L->v[i] + (t3 - 2 * t2 + t) * h * dv[i] + (-2 * t3 + 3 * t2) * L->v[i + 1] +
+                    (t3 - t2) * h * dv[i + 1];
+        double d = (pu - u) * (pu - u) + (pv - v) * (pv - v);
+        if (d < best_d) best_d = d, best_s = L->logt0 + (i + t) * h;
+    }
+    return best_s;
+}
+
 lx_status lx_cct_from_uv(lx_ctx *ctx, lx_observer obs, double u, double v, double *cct_K, double *duv)
 {
     if (cct_K) *cct_K = NAN;
@@ -115,16 +159,39 @@ lx_status lx_cct_from_uv(lx_ctx *ctx, lx_observer obs, double u, double v, doubl
     if (best == 0 || best == L->n - 1)
         return lx__error(ctx, LX_ERANGE, NULL, 0, "the nearest Planckian point is outside %g-%g K", LOCUS_T_MIN,
                          LOCUS_T_MAX);
-    /* root of g in [s(best-1), s(best+1)] by the Illinois variant of regula falsi */
+    /* First guess: the nearest point of the cubic Hermite interpolant of the locus (nodes and
+     * their exact derivatives in s = ln T) over the two intervals around the nearest node; then
+     * the exact condition g(s) = 0 by secant steps, kept inside the bracket [s(best-1), s(best+1)]
+     * where g changes sign; the Illinois regula falsi takes over if a step leaves it. */
     double a = L->logt0 + (best - 1) * L->dlogt, b = L->logt0 + (best + 1) * L->dlogt;
-    double ga = gfun(&c, a, u, v), gb = gfun(&c, b, u, v);
-    if (ga * gb > 0) {
-        /* not bracketed (a point far off the locus): take the better half and golden-search d^2 */
-        return lx__error(ctx, LX_ERANGE, NULL, 0, "chromaticity (u %g, v %g) is too far from the Planckian locus", u, v);
+    double s = hermite_guess(L, best, u, v);
+    int converged = 0;
+    double s0 = s, g0 = gfun(&c, s0, u, v);
+    double s1 = s0 + 1e-7, g1 = gfun(&c, s1, u, v);
+    for (int it = 0; it < 8 && g1 != g0; it++) {
+        double s2 = s1 - g1 * (s1 - s0) / (g1 - g0);
+        if (!(s2 > a && s2 < b)) break;
+        if (fabs(s2 - s1) < 1e-13) {
+            s = s2;
+            converged = 1;
+            break;
+        }
+        s0 = s1, g0 = g1;
+        s1 = s2, g1 = gfun(&c, s1, u, v);
+        if (g1 == 0) {
+            s = s1;
+            converged = 1;
+            break;
+        }
     }
-    double s = a;
+    double ga = 0, gb = 0;
+    if (!converged) {
+        ga = gfun(&c, a, u, v), gb = gfun(&c, b, u, v);
+        if (ga * gb > 0)
+            return lx__error(ctx, LX_ERANGE, NULL, 0, "chromaticity (u %g, v %g) is too far from the Planckian locus", u, v);
+    }
     int side = 0;
-    for (int it = 0; it < 100; it++) {
+    for (int it = 0; !converged && it < 200; it++) {
         s = (a * gb - b * ga) / (gb - ga);
         double gs = gfun(&c, s, u, v);
         if (gs == 0 || fabs(b - a) < 1e-15) break;

@@ -9,29 +9,15 @@
 #define LX_KM_10 683.599   /* lm/W, for the 10 deg observer, CIE 015:2018 */
 #define LX_KM_SCOT 1700.06 /* lm/W, scotopic K'm, CIE 018:2019 */
 
-lx_status lx_spd_colorimetry(lx_ctx *ctx, const lx_spd *spd, lx_observer obs, lx_method method, lx_colorimetry *out)
+lx_status lx_colorimetry_from_integrals(lx_ctx *ctx, lx_observer obs, const double xyz[3], double vprime,
+                                        double radiant, lx_colorimetry *out)
 {
-    if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "output is NULL");
+    if (!out || !xyz) return lx__error(ctx, LX_EINVAL, NULL, 0, "integrals and output are required");
     if (obs != LX_OBSERVER_2 && obs != LX_OBSERVER_10)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "observer must be 2 or 10 degrees, not %d", (int)obs);
-    lx_status st = lx_spd_check(ctx, spd);
-    if (st != LX_OK) return st;
-    method = lx_method_resolve(spd, method);
-    lx_function f0 = obs == LX_OBSERVER_2 ? LX_FN_XBAR_2 : LX_FN_XBAR_10;
     double km = obs == LX_OBSERVER_2 ? LX_KM_2 : LX_KM_10;
-    double xyz[3], scot, radiant;
-    for (int k = 0; k < 3; k++) {
-        lx_spd w;
-        if ((st = lx_function_get(ctx, f0 + k, &w)) != LX_OK) return st;
-        if ((st = lx_spd_integrate(ctx, spd, &w, method, &xyz[k])) != LX_OK) return st;
-    }
-    lx_spd vp;
-    if ((st = lx_function_get(ctx, LX_FN_VPRIME, &vp)) != LX_OK) return st;
-    if ((st = lx_spd_integrate(ctx, spd, &vp, method, &scot)) != LX_OK) return st;
-    if ((st = lx_spd_integrate_radiant(ctx, spd, method, &radiant)) != LX_OK) return st;
-
     lx_colorimetry r;
-    r.method = method;
+    r.method = out->method;
     r.X = km * xyz[0];
     r.Y = km * xyz[1];
     r.Z = km * xyz[2];
@@ -43,24 +29,55 @@ lx_status lx_spd_colorimetry(lx_ctx *ctx, const lx_spd *spd, lx_observer obs, lx
     r.v_prime = d != 0 ? 9 * r.Y / d : NAN;
     r.radiant = radiant;
     r.ler_lm_per_W = radiant != 0 ? r.Y / radiant : NAN;
-    r.scotopic_Y = LX_KM_SCOT * scot;
+    r.scotopic_Y = LX_KM_SCOT * vprime;
     r.sp_ratio = r.Y != 0 ? r.scotopic_Y / r.Y : NAN;
     r.cct_K = r.duv = NAN;
     r.cct_valid = 0;
     if (d != 0 && isfinite(r.u_prime)) {
         double T, duv;
-        lx_ctx saved = *ctx; /* an undefined CCT is a result, not an error: keep the error state */
+        /* an undefined CCT is a result, not an error: keep the context's error state */
+        lx_status st0 = ctx->status;
+        long line0 = ctx->errline;
+        char msg0[LX__ERRMSG_MAX], file0[sizeof ctx->errfile];
+        memcpy(msg0, ctx->errmsg, sizeof msg0);
+        memcpy(file0, ctx->errfile, sizeof file0);
         if (lx_cct_from_uv(ctx, obs, r.u_prime, r.v_prime * 2.0 / 3.0, &T, &duv) == LX_OK) {
             /* the range ends are inclusive to solver precision (a 1000 K blackbody solves to 1000 K - 1e-9) */
             r.cct_valid = fabs(duv) <= 0.05 && T >= 1000.0 * (1 - 1e-9) && T <= 100000.0 * (1 + 1e-9);
             if (r.cct_valid) r.cct_K = T, r.duv = duv;
         } else {
-            ctx->status = saved.status;
-            memcpy(ctx->errmsg, saved.errmsg, sizeof ctx->errmsg);
-            memcpy(ctx->errfile, saved.errfile, sizeof ctx->errfile);
-            ctx->errline = saved.errline;
+            ctx->status = st0;
+            ctx->errline = line0;
+            memcpy(ctx->errmsg, msg0, sizeof msg0);
+            memcpy(ctx->errfile, file0, sizeof file0);
         }
     }
     *out = r;
     return LX_OK;
+}
+
+lx_status lx_spd_colorimetry(lx_ctx *ctx, const lx_spd *spd, lx_observer obs, lx_method method, lx_colorimetry *out)
+{
+    if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "output is NULL");
+    if (obs != LX_OBSERVER_2 && obs != LX_OBSERVER_10)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "observer must be 2 or 10 degrees, not %d", (int)obs);
+    lx_status st = lx_spd_check(ctx, spd);
+    if (st != LX_OK) return st;
+    method = lx_method_resolve(spd, method);
+    lx_function f0 = obs == LX_OBSERVER_2 ? LX_FN_XBAR_2 : LX_FN_XBAR_10;
+    double xyz[3], scot, radiant;
+    for (int k = 0; k < 3; k++) {
+        lx_spd w;
+        if ((st = lx_function_get(ctx, f0 + k, &w)) != LX_OK) return st;
+        if ((st = lx_spd_integrate(ctx, spd, &w, method, &xyz[k])) != LX_OK) return st;
+    }
+    lx_spd vp;
+    if ((st = lx_function_get(ctx, LX_FN_VPRIME, &vp)) != LX_OK) return st;
+    if ((st = lx_spd_integrate(ctx, spd, &vp, method, &scot)) != LX_OK) return st;
+    if ((st = lx_spd_integrate_radiant(ctx, spd, method, &radiant)) != LX_OK) return st;
+    lx_colorimetry r;
+    r.method = method;
+    st = lx_colorimetry_from_integrals(ctx, obs, xyz, scot, radiant, &r);
+    if (st == LX_OK) *out = r;
+    return st;
 }

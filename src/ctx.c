@@ -36,8 +36,7 @@ void lx_ctx_destroy(lx_ctx *ctx)
     if (!ctx) return;
     if (ctx->cl_release) ctx->cl_release(ctx);
     for (int i = 0; i < 2; i++) {
-        free(ctx->locus[i].u);
-        free(ctx->locus[i].v);
+        free(ctx->locus[i].u); /* one block holds u, v and their derivatives */
     }
     free(ctx);
 }

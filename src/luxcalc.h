@@ -131,7 +131,8 @@ LX_API lx_method lx_method_resolve(const lx_spd *spd, lx_method method);
 LX_API lx_status lx_spd_integrate(lx_ctx *ctx, const lx_spd *spd, const lx_spd *weight,
                                   lx_method method, double *out);
 
-/** Integral of the spectrum alone over its whole range (the radiant integral) with the method's rule. */
+/** Integral of the spectrum alone over its whole range (the radiant integral): the exact integral of
+ * the piecewise-linear spectrum (trapezoid rule) whatever the method (validated, otherwise unused). */
 LX_API lx_status lx_spd_integrate_radiant(lx_ctx *ctx, const lx_spd *spd, lx_method method,
                                           double *out);
 
@@ -154,6 +155,22 @@ typedef struct lx_colorimetry {
  * content gives X = Y = Z = 0 and NaN chromaticities (not an error). */
 LX_API lx_status lx_spd_colorimetry(lx_ctx *ctx, const lx_spd *spd, lx_observer observer,
                                     lx_method method, lx_colorimetry *out);
+
+/** The derived quantities of lx_colorimetry from the integrals of a spectrum: xyz[k] = integral
+ * of S times xbar, ybar, zbar (without Km), vprime = integral of S V', radiant = integral of S.
+ * out->method is kept as given (set it before the call). For batch paths that integrate many
+ * spectra at once (lx_batch_integrate) and need every other column. */
+LX_API lx_status lx_colorimetry_from_integrals(lx_ctx *ctx, lx_observer observer, const double xyz[3],
+                                               double vprime, double radiant, lx_colorimetry *out);
+
+/** Colorimetry of every spectrum of a batch (N spectra on one uniform grid, see lx_batch below)
+ * with the cie15 rule: the integrals by lx_batch_integrate on opts->backend, the derived
+ * quantities (CCT and Duv solved per spectrum) on opts->threads threads. out: n_spectra entries.
+ * Agrees with lx_spd_colorimetry (method cie15) to 1e-9 relative. opts may be NULL. */
+struct lx_batch;
+struct lx_batch_opts;
+LX_API lx_status lx_batch_colorimetry(lx_ctx *ctx, const struct lx_batch *batch, lx_observer observer,
+                                      struct lx_batch_opts *opts, lx_colorimetry *out);
 
 /* ------------------------------------------------------------------------------------------ */
 /* CIE tables, illuminants, Planck and daylight                                                */
@@ -216,6 +233,362 @@ LX_API lx_status lx_cct_from_xy(lx_ctx *ctx, lx_observer observer, double x, dou
 
 /** CIE 1960 uv of the Planckian radiator at T_K with the observer's CMFs. */
 LX_API lx_status lx_planck_uv(lx_ctx *ctx, lx_observer observer, double T_K, double *u, double *v);
+
+/* ---- OpenCL runtime and batches (issue 3) ---- */
+
+/** Where batch work runs. AUTO: the CPU unless the batch is large enough to repay OpenCL
+ * start-up (see README "opencl"); never an error when no OpenCL platform exists. */
+typedef enum lx_backend { LX_BACKEND_AUTO = 0, LX_BACKEND_CPU = 1, LX_BACKEND_OPENCL = 2 } lx_backend;
+
+/** Parses "auto", "cpu" or "opencl" into *out; returns LX_EINVAL (message names the text) otherwise. */
+LX_API lx_status lx_backend_parse(lx_ctx *ctx, const char *text, lx_backend *out);
+
+/** The backend named by the environment variable LX_BACKEND, or LX_BACKEND_AUTO when unset/invalid. */
+LX_API lx_backend lx_backend_from_env(void);
+
+/** OpenCL device types for the device choice. */
+typedef enum lx_cl_type { LX_CL_AUTO = 0, LX_CL_CPU = 1, LX_CL_GPU = 2 } lx_cl_type;
+
+/** Chooses the OpenCL device this context will use, before its first OpenCL work: platform and
+ * device indices (-1: any; then the environment LX_PLATFORM / LX_DEVICE apply) and a type (AUTO
+ * prefers a GPU, then any device). Releases an OpenCL state the context already holds.
+ * Returns LX_EUNSUPPORTED in a build without OpenCL. Does not initialise OpenCL. */
+LX_API lx_status lx_cl_select(lx_ctx *ctx, int platform, int device, lx_cl_type type);
+
+/** Borrows a caller's OpenCL context and command queue (cl_context and cl_command_queue passed
+ * as void*, so this header needs no OpenCL headers). The library retains both and releases them
+ * at lx_ctx_destroy; the device is the queue's. Returns LX_EUNSUPPORTED without OpenCL. */
+LX_API lx_status lx_cl_borrow(lx_ctx *ctx, void *cl_context, void *cl_command_queue);
+
+/** Description of one OpenCL device. */
+typedef struct lx_cl_device_info {
+    int platform, device;           /* indices as LX_PLATFORM / LX_DEVICE count them */
+    char platform_name[128];
+    char device_name[128];
+    char version[64];               /* CL_DEVICE_VERSION */
+    int is_gpu, is_cpu;
+    unsigned compute_units;
+    unsigned long long global_mem_bytes;
+    unsigned long long max_alloc_bytes; /* CL_DEVICE_MAX_MEM_ALLOC_SIZE, the chunk limit */
+    int fp64;                       /* 1 when cl_khr_fp64 (or OpenCL >= 1.2 double) is available */
+    int is_default;                 /* 1 for the device the AUTO choice (and environment) picks */
+} lx_cl_device_info;
+
+/** Lists every OpenCL device of every platform into *out (malloc'ed, free with free()), *n of
+ * them. No platform is not an error: *n = 0. Does not create an OpenCL context. */
+LX_API lx_status lx_cl_devices(lx_ctx *ctx, lx_cl_device_info **out, size_t *n);
+
+/** Initialises OpenCL on ctx if not done yet (device choice, context, queue) and describes the
+ * device in use. LX_EDEVICE when no device can be used, with the OpenCL call and code. */
+LX_API lx_status lx_cl_info(lx_ctx *ctx, lx_cl_device_info *out);
+
+/** 1 when ctx already holds an initialised OpenCL state (start-up already paid), else 0. */
+LX_API int lx_cl_ready(const lx_ctx *ctx);
+
+/** Element type of batch values. */
+typedef enum lx_dtype { LX_F32 = 0, LX_F64 = 1 } lx_dtype;
+
+/** N spectra sampled on one uniform grid start_nm + j * step_nm, j < n_lambda, row-major:
+ * spectrum i starts at element i * row_stride (row_stride 0 means n_lambda). Not owned. */
+typedef struct lx_batch {
+    size_t n_spectra;
+    size_t n_lambda;       /* >= 1 */
+    size_t row_stride;     /* elements between spectra, 0 = n_lambda */
+    double start_nm, step_nm; /* step_nm > 0 */
+    lx_dtype dtype;
+    const void *values;    /* float or double, n_spectra rows */
+} lx_batch;
+
+/** Options of lx_batch_integrate (zero-initialise for defaults). */
+typedef struct lx_batch_opts {
+    lx_backend backend;    /* AUTO (default) also reads LX_BACKEND */
+    int threads;           /* CPU threads; 0 = every online core */
+    size_t chunk_spectra;  /* OpenCL: spectra per chunk; 0 = from CL_DEVICE_MAX_MEM_ALLOC_SIZE */
+    lx_backend used;       /* OUT: the backend that did the work */
+} lx_batch_opts;
+
+/** Integrates N spectra against K weighting functions at once with the cie15 rule:
+ * out[i*k + f] = sum_j value[i][j] * w_f(start_nm + j*step_nm) * step_nm, the weights linearly
+ * interpolated from their tables and zero outside them (no Km factor). Accumulates in double on
+ * both backends (1e-9 relative CPU vs OpenCL for double input, 1e-6 for float). opts may be NULL.
+ * A fall-back from OpenCL to the CPU in AUTO is reported through the log callback (LX_LOG_INFO).
+ * Thread-safe for distinct contexts. Outputs untouched on failure. */
+LX_API lx_status lx_batch_integrate(lx_ctx *ctx, const lx_batch *batch, const lx_function *fns, size_t k,
+                                    lx_batch_opts *opts, double *out);
+
+/** A batch read from a rows-layout CSV: one spectrum per line on the header's uniform grid. */
+typedef struct lx_batch_table {
+    lx_batch batch;  /* owns batch.values */
+    char *names;     /* the rows' first cells, NUL-separated ("" when the file has no name column) */
+    size_t *name_at; /* batch.n_spectra offsets into names */
+} lx_batch_table;
+
+/** Reads a rows-layout batch CSV ("id,380,381,...,780" then "name,v1,v2,..." per line; separators
+ * , ; or tab; '#' comment and blank lines skipped; CRLF; BOM) into a float or double batch, in
+ * parallel on `threads` threads (0 = every core). The header's wavelengths must form a uniform
+ * grid (else LX_EUNSUPPORTED: use lx_spd_read_file). Errors (LX_EPARSE) name file and line.
+ * "-" is standard input. Free *out with lx_batch_table_free. */
+LX_API lx_status lx_batch_table_read(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads,
+                                     lx_batch_table **out);
+LX_API lx_status lx_batch_table_read_mem(lx_ctx *ctx, const char *file, const char *text, size_t len,
+                                         lx_dtype dtype, int threads, lx_batch_table **out);
+LX_API void lx_batch_table_free(lx_batch_table *t);
+
+/** Resamples N spectra given on their own strictly increasing wavelengths (row i: n_in[i]
+ * samples at lambda_nm + offset[i], values at value + offset[i]) onto the uniform grid of dst
+ * (dst->values must point to writable memory of dst->dtype, n_spectra rows) by linear
+ * interpolation, zero outside each spectrum: the piecewise-linear model the exact method uses.
+ * backend as in lx_batch_integrate (OpenCL: the resample kernel). */
+LX_API lx_status lx_batch_resample(lx_ctx *ctx, size_t n_spectra, const double *lambda_nm, const double *value,
+                                   const size_t *offset, const size_t *n_in, lx_batch *dst, lx_batch_opts *opts);
+
+/* ---- colour rendering and photobiology (issue 7) ---- */
+
+/** CIE 13.3-1995 colour rendering of one spectrum. */
+typedef struct lx_cri {
+    double ra;          /* general colour rendering index Ra: mean of R1-R8 */
+    double r[14];       /* special indices: r[0] = R1 ... r[13] = R14 */
+    double cct_K, duv;  /* of the test source: exact solve, CIE 1931 2 deg (lx_cct_from_uv) */
+    double ref_cct_K;   /* temperature of the reference illuminant (= cct_K) */
+    int ref_daylight;   /* 0: Planckian reference (CCT < 5000 K), 1: CIE daylight (>= 5000 K) */
+    double dc;          /* distance test - reference white in CIE 1960 uv (CIE 13.3 "DC") */
+    int valid;          /* 1 when dc <= 5.4e-3; else the CIE says Ra is not meaningful */
+} lx_cri;
+
+/** CIE 13.3-1995 colour rendering index: R1-R14 and Ra with the CIE reference illuminant
+ * (Planckian below 5000 K, CIE D-series from 5000 K), von Kries adaptation in CIE 1960 UCS and
+ * CIE 1964 U*V*W*. Sums at 5 nm over 360-830 nm for data sampled every 5 nm on multiples of
+ * 5 nm, else at 1 nm (spectrum and test colour samples interpolated linearly; spectrum zero
+ * outside its data). Refuses with LX_ERANGE (the message says why): |Duv| > 0.05, CCT above
+ * 25000 K (CIE daylight undefined) or below 500 K, no luminous content, or more than 1 % of the
+ * reference's X, Y or Z outside the spectrum's wavelength range (truncated data). Scale-free.
+ * Thread-safe for distinct contexts. *out untouched on failure. */
+LX_API lx_status lx_cri_compute(lx_ctx *ctx, const lx_spd *spd, lx_cri *out);
+
+/** CIE 224:2017 / ANSI/IES TM-30-20 colour fidelity and gamut of one spectrum. */
+typedef struct lx_tm30 {
+    double rf;          /* fidelity index Rf (CIE 224:2017 Rf and TM-30 Rf are the same number) */
+    double rg;          /* gamut index Rg (NaN when a hue bin holds no sample) */
+    double cct_K, duv;  /* of the test source (2 deg, exact solve) */
+    double rf_ces[99];  /* fidelity of each colour evaluation sample CES1-CES99 */
+    double rf_hue[16];  /* local fidelity Rf,h1..h16 (hue bins of 22.5 deg, reference hue) */
+    double rcs_hue[16]; /* local chroma shift Rcs,h1..h16, in per cent */
+    double rhs_hue[16]; /* local hue shift Rhs,h1..h16 (fraction of the bin radius) */
+    double ref_ab[16][2], test_ab[16][2]; /* bin averages of a', b' (the colour vector graphic) */
+} lx_tm30;
+
+/** CIE 224:2017 Rf and ANSI/IES TM-30-20 Rf, Rg, per-bin Rf/Rcs/Rhs in CAM02-UCS (CIECAM02:
+ * L_A 100 cd/m2, Y_b 20, average surround, D = 1) with the 99 colour evaluation samples over
+ * 380-780 nm (5 nm sums for 5 nm data on multiples of 5 nm, else 1 nm), 10 deg observer for
+ * the samples, 2 deg for the CCT. Reference: Planckian below 4000 K, CIE daylight above
+ * 5000 K, a Y-normalised mix between. Missing data counts as zero (CIE 224); refusals
+ * (LX_ERANGE) as for lx_cri_compute. Thread-safe for distinct contexts. */
+LX_API lx_status lx_tm30_compute(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out);
+
+/** The five CIE S 026 photoreceptors, in the order of every alpha-opic array. */
+typedef enum lx_alphaopic_kind {
+    LX_AO_SC = 0, /* S-cone opic (cyanopic) */
+    LX_AO_MC = 1, /* M-cone opic (chloropic) */
+    LX_AO_LC = 2, /* L-cone opic (erythropic) */
+    LX_AO_RH = 3, /* rhodopic (rods) */
+    LX_AO_MEL = 4 /* melanopic (ipRGC), the headline quantity */
+} lx_alphaopic_kind;
+
+/** CIE S 026:2018 alpha-opic quantities of one spectrum. Units follow the spectrum: for
+ * W/m2/nm input, irradiance is in W/m2, illuminance and edi in lx (W/sr/m2/nm: W/(sr m2) and
+ * cd/m2, i.e. radiance and equivalent daylight luminance; W/nm: W and lm). */
+typedef struct lx_alphaopic {
+    double irradiance[5]; /* alpha-opic irradiance E_alpha = integral E(l) s_alpha(l) dl */
+    double illuminance;   /* E_v = 683.002 lm/W * integral E(l) V(l) dl (2 deg ybar) */
+    double elr[5];        /* alpha-opic efficacy of radiation E_alpha / E_v, W/lm (NaN when E_v = 0) */
+    double edi[5];        /* alpha-opic equivalent daylight (D65) illuminance E_alpha / K_alpha^D65, lx */
+    double der[5];        /* daylight efficacy ratio elr / K_alpha^D65 (NaN when E_v = 0) */
+} lx_alphaopic;
+
+/** K_alpha,v^D65 of CIE S 026:2018 Table 2 in W/lm (melanopic 1.3262e-3); NaN for a bad index. */
+LX_API double lx_alphaopic_d65_efficacy(lx_alphaopic_kind kind);
+
+/** CIE S 026:2018 alpha-opic irradiances, equivalent daylight illuminances and DERs with the
+ * integration method of lx_spd_integrate (action spectra 380-780 nm, 1 nm). Thread-safe for
+ * distinct contexts. */
+LX_API lx_status lx_alphaopic_compute(lx_ctx *ctx, const lx_spd *spd, lx_method method, lx_alphaopic *out);
+
+/** The same for a batch (cie15 rule, see lx_batch_integrate; OpenCL when opts->backend asks for
+ * it or AUTO finds it pays). out[i*6 + k]: the five alpha-opic irradiances (k = 0..4, order of
+ * lx_alphaopic_kind) and the illuminance E_v (k = 5) of spectrum i; EDI = out[k] /
+ * lx_alphaopic_d65_efficacy(k). opts may be NULL. */
+struct lx_batch;      /* defined below (OpenCL runtime and batches) */
+struct lx_batch_opts;
+LX_API lx_status lx_alphaopic_batch(lx_ctx *ctx, const struct lx_batch *batch, struct lx_batch_opts *opts,
+                                    double *out);
+
+/** CIE 191:2010 MES2 mesopic luminance from photopic luminance L_p and scotopic luminance L_s
+ * (cd/m2, L_s with K'm = 1699 lm/W as CIE 191 writes V'(555 nm) = 683/1699): solves
+ * L_mes = (m L_p + (1 - m) L_s V'0) / (m + (1 - m) V'0), m = 0.7670 + 0.3334 log10(L_mes)
+ * clamped to [0, 1], by the standard's iteration from m = 0.5 (bisection if it ever fails to
+ * converge). L_p >= 5 cd/m2 gives m = 1, L_mes = L_p. *m_out (may be NULL) receives m.
+ * LX_EINVAL for negative or non-finite input. Thread-safe. */
+LX_API lx_status lx_mesopic_luminance(lx_ctx *ctx, double photopic_cd_m2, double scotopic_cd_m2,
+                                      double *mesopic_cd_m2, double *m_out);
+
+/* ---- radiance fields (issue 6) ---- */
+
+/* Lat-long (equirectangular) environment maps (envmap.c). Direction convention (CLI.md): +z up,
+ * theta from +z, phi from +x towards +y. In a width x height map, pixel (row j, column i) covers
+ * theta in [j, j+1] pi/height and phi in [i, i+1] 2 pi/width; row 0 touches theta = 0. The map is
+ * read as piecewise constant: each pixel's radiance holds over its whole patch of sphere. */
+
+/** What the channels of a map measure. */
+typedef enum lx_envmap_units {
+    LX_ENV_AUTO = 0,      /* reading: LUMINANCE when the file has a whiteLuminance attribute, else RADIANCE */
+    LX_ENV_RADIANCE = 1,  /* W/(sr m2) per channel; luminance = lum_per_unit * Y (efficacy, default 179 lm/W) */
+    LX_ENV_LUMINANCE = 2  /* relative photometric values: luminance = lum_per_unit * Y in cd/m2 */
+} lx_envmap_units;
+
+/** Luminous efficacy that turns the Y combination of W/(sr m2) channels into cd/m2 by default:
+ * 179 lm/W, the white efficacy of the Radiance system (equal-energy white over 380-780 nm). */
+#define LX_ENV_DEFAULT_EFFICACY 179.0
+
+/** A lat-long map with 1 (Y) or 3 (R, G, B) channels stored as float (as read; all arithmetic on
+ * it is double). Owns data. Create with lx_envmap_create or lx_exr_read, free with lx_envmap_free. */
+typedef struct lx_envmap {
+    int width, height;      /* pixels (any sizes >= 1; lat-long maps are usually width = 2 height) */
+    int channels;           /* 1 or 3 */
+    float *data;            /* row-major, channels interleaved: data[(j * width + i) * channels + c] */
+    double y_weights[3];    /* Y = sum y_weights[c] * channel c: the Y row of RGB->XYZ from the
+                             * file's chromaticities, else Rec.709/sRGB (0.2126729, 0.7151522,
+                             * 0.0721750); {1, 0, 0} for one channel */
+    int has_chromaticities; /* 1 when y_weights came from a chromaticities attribute */
+    double chroma_xy[8];    /* that attribute (rx ry gx gy bx by wx wy), written back by lx_exr_write */
+    lx_envmap_units units;  /* RADIANCE or LUMINANCE (never AUTO once read) */
+    double lum_per_unit;    /* cd/m2 per unit of Y: efficacy (RADIANCE) or whiteLuminance / 1 (LUMINANCE) */
+} lx_envmap;
+
+/** Creates a zero-filled map (Rec.709 weights, RADIANCE, efficacy 179 lm/W). channels 1 or 3. */
+LX_API lx_status lx_envmap_create(lx_ctx *ctx, int width, int height, int channels, lx_envmap **out);
+
+/** Frees a map. Accepts NULL. */
+LX_API void lx_envmap_free(lx_envmap *map);
+
+/** Unit vector of the pixel centre of (row j + 0.5, column i + 0.5) as fractional coordinates
+ * (row, col): theta = row pi / height, phi = col 2 pi / width. Thread-safe. */
+LX_API void lx_envmap_direction(int width, int height, double row, double col, double dir[3]);
+
+/** Exact solid angle of a pixel of row j: (2 pi / width)(cos theta0 - cos theta1), in sr. */
+LX_API double lx_envmap_pixel_sr(int width, int height, int row);
+
+/** Exact first moment of a pixel, m = integral over the pixel of omega d omega (a vector whose
+ * length is slightly below its solid angle): the projected solid angle seen by a normal n that
+ * sees the whole pixel is n . m. Thread-safe. */
+LX_API void lx_envmap_pixel_moment(int width, int height, int row, int col, double m[3]);
+
+/** Luminance Y of a map's channel values: sum y_weights[c] v[c] (no lum_per_unit factor). */
+LX_API double lx_envmap_y(const lx_envmap *map, const float *pixel);
+
+/** Per-pixel luminance in cd/m2 (lum_per_unit * Y) into out (width * height doubles). */
+LX_API lx_status lx_envmap_luminance(lx_ctx *ctx, const lx_envmap *map, double *out);
+
+/** Solid-angle-weighted box filter to a width x height map whose sizes divide the input's: each
+ * output pixel is sum(L d omega) / sum(d omega) over the input pixels it covers, so the radiant
+ * power of every block is kept exactly. *out is a new map (same weights and units). */
+LX_API lx_status lx_envmap_downsample(lx_ctx *ctx, const lx_envmap *in, int width, int height, lx_envmap **out);
+
+/** Luminance weights (the Y row of the RGB -> XYZ matrix) of RGB primaries and white point given
+ * as CIE xy: rx, ry, gx, gy, bx, by, wx, wy. Returns LX_EINVAL for degenerate primaries. */
+LX_API lx_status lx_rgb_y_weights(lx_ctx *ctx, const double xy[8], double weights[3]);
+
+/* OpenEXR input and output (exr_io.c, OpenEXRCore). */
+
+/** Reads a lat-long map from an OpenEXR file: scanline or tiled (level 0 of mip/rip maps), half
+ * or float channels, any compression OpenEXR supports, channels R,G,B[,A] or Y (or a single
+ * channel of any name); A is ignored. The map covers the display window; data-window pixels
+ * outside it are dropped and display pixels without data are 0. chromaticities sets y_weights,
+ * whiteLuminance makes units LUMINANCE (lum_per_unit = its value). Cube maps, deep and
+ * multi-part-only-deep files give LX_EUNSUPPORTED; malformed files LX_EPARSE, unreadable LX_EIO. */
+LX_API lx_status lx_exr_read(lx_ctx *ctx, const char *path, lx_envmap **out);
+
+/** EXR compressions (the values of the file format). */
+typedef enum lx_exr_compression {
+    LX_EXR_NONE = 0, LX_EXR_RLE = 1, LX_EXR_ZIPS = 2, LX_EXR_ZIP = 3, LX_EXR_PIZ = 4,
+    LX_EXR_PXR24 = 5, LX_EXR_B44 = 6, LX_EXR_B44A = 7, LX_EXR_DWAA = 8, LX_EXR_DWAB = 9
+} lx_exr_compression;
+
+/** Options of lx_exr_write (zero-initialise for defaults: float, ZIP, scanlines). */
+typedef struct lx_exr_write_opts {
+    int half;                       /* 1: half channels (values rounded to nearest half), 0: float */
+    int use_compression;            /* 0: ZIP; 1: the compression below */
+    lx_exr_compression compression;
+    int tile_size;                  /* > 0: a tiled file with square tiles of this size */
+} lx_exr_write_opts;
+
+/** Writes a map as an OpenEXR lat-long file (envmap attribute latlong, channels R,G,B or Y,
+ * chromaticities when the map has them, whiteLuminance for LUMINANCE maps) atomically: a
+ * temporary file renamed into place, an existing file replaced only on success. opts may be NULL. */
+LX_API lx_status lx_exr_write(lx_ctx *ctx, const char *path, const lx_envmap *map, const lx_exr_write_opts *opts);
+
+/* Irradiance from radiance (irradiance*.c): E(n) = integral L(omega) max(0, n . omega) d omega. */
+
+/** Irradiance methods (see README "radiance"). */
+typedef enum lx_irr_method {
+    LX_IRR_SH9 = 0,   /* 9 spherical-harmonic coefficients, exact per-pixel basis integrals */
+    LX_IRR_BRUTE = 1, /* every input pixel for every output: sum L_p max(0, n . m_p) (OpenCL or CPU) */
+    LX_IRR_FAST = 2   /* the same sum as BRUTE, by per-row prefix sums: O(rows) per output */
+} lx_irr_method;
+
+/** SH9 windows applied to bands l = 0, 1, 2. */
+typedef enum lx_sh9_window {
+    LX_SH9_WINDOW_NONE = 0,  /* (1, 1, 1): Ramamoorthi-Hanrahan; a point source rings below zero */
+    LX_SH9_WINDOW_NONNEG = 1 /* (1, 6/7, 32/35): point-source response (3/28)(1 + 2 cos g)^2 >= 0 */
+} lx_sh9_window;
+
+/** Options of the irradiance calls (zero-initialise for defaults). */
+typedef struct lx_irr_opts {
+    lx_irr_method method;
+    lx_sh9_window window;    /* SH9 only */
+    lx_backend backend;      /* BRUTE only: AUTO uses OpenCL when the work is large, CPU otherwise */
+    int threads;             /* CPU threads; 0 = every online core */
+    lx_backend used;         /* OUT: where BRUTE ran (CPU for the other methods) */
+} lx_irr_opts;
+
+/** Spherical-harmonic coefficients L_lm of a map (l <= 2, index l^2 + l + m, real orthonormal
+ * basis of Ramamoorthi and Hanrahan 2001), per channel. */
+typedef struct lx_sh9 {
+    int channels;
+    double c[9][3];
+} lx_sh9;
+
+/** Projects a map onto 9 SH coefficients: each pixel's basis integral is exact (closed forms over
+ * its theta and phi range), so the projection of the piecewise-constant map is exact. */
+LX_API lx_status lx_sh9_project(lx_ctx *ctx, const lx_envmap *map, lx_sh9 *out);
+
+/** E(n) per channel from SH9 coefficients: sum_l w_l A_l L_lm Y_lm(n), A = (pi, 2pi/3, pi/4).
+ * n need not be normalised (it is). out has sh->channels values. */
+LX_API lx_status lx_sh9_irradiance(lx_ctx *ctx, const lx_sh9 *sh, lx_sh9_window window, const double n[3], double *out);
+
+/** Irradiance for n_dirs normals (3 doubles each) into out (n_dirs * map->channels doubles, in
+ * the map's unit times sr: W/m2 for RADIANCE maps). opts may be NULL (SH9). */
+LX_API lx_status lx_irradiance_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const double *dirs,
+                                    lx_irr_opts *opts, double *out);
+
+/** Irradiance environment map: E at the pixel centre directions of a width x height lat-long
+ * map (the input's layout when both are 0). *out is a new map with the input's channels,
+ * weights and units. opts may be NULL (SH9). */
+LX_API lx_status lx_irradiance_map(lx_ctx *ctx, const lx_envmap *map, int width, int height,
+                                   lx_irr_opts *opts, lx_envmap **out);
+
+/* PNG pictures of maps (png_plot.c). Both write atomically (temporary file + rename). */
+
+/** A false-colour PNG of w x h values (row-major; NaN drawn grey) with a colour legend titled
+ * legend_title, on a linear or log10 scale between vmin and vmax (NaN: the data's range). Small
+ * maps are enlarged to at least 512 pixels wide. The palette runs dark violet - blue - cyan -
+ * green - yellow - orange - red, the look of Radiance falsecolor. */
+LX_API lx_status lx_png_falsecolor(lx_ctx *ctx, const char *path, int w, int h, const double *values, double vmin,
+                                   double vmax, int log_scale, const char *legend_title);
+
+/** Tone-mapped previews of n maps side by side (each panel 512 pixels wide, its own exposure:
+ * median luminance to 0.18, Reinhard x/(1+x), sRGB), each labelled with labels[k] (may be NULL). */
+LX_API lx_status lx_png_preview(lx_ctx *ctx, const char *path, int n, const lx_envmap *const *maps,
+                                const char *const *labels);
 
 /* ---- lighting (issue 4) ---- */
 
@@ -392,113 +765,387 @@ LX_API lx_status lx_solid_angle_latlong_pixel(lx_ctx *ctx, int width, int height
 LX_API lx_status lx_solid_angle_rect(lx_ctx *ctx, double x0, double x1, double y0, double y1,
                                      double distance_m, double *sr);
 
-/* ---- OpenCL runtime and batches (issue 3) ---- */
+/* ---- luminaires and grids (issue 5) ---- */
 
-/** Where batch work runs. AUTO: the CPU unless the batch is large enough to repay OpenCL
- * start-up (see README "opencl"); never an error when no OpenCL platform exists. */
-typedef enum lx_backend { LX_BACKEND_AUTO = 0, LX_BACKEND_CPU = 1, LX_BACKEND_OPENCL = 2 } lx_backend;
+/* Photometric files (ies_read.c, ldt_read.c), the intensity model (photometry.c) and the writer
+ * (ies_write.c). Angles in the luminaire's own frame: type C, gamma from the nadir (-z, gamma 0)
+ * to the zenith (180), C from +x (C0) towards +y (C90). Type B (floodlights): the B axis (H 0,
+ * V 0) is the nadir, H is the angle towards +y (the polar axis), V the rotation about +y from
+ * the nadir towards +x; a direction is (cos H sin V, sin H, -cos H cos V). */
 
-/** Parses "auto", "cpu" or "opencl" into *out; returns LX_EINVAL (message names the text) otherwise. */
-LX_API lx_status lx_backend_parse(lx_ctx *ctx, const char *text, lx_backend *out);
+/** The file formats read (and the version of an LM-63 file). */
+typedef enum lx_lum_format {
+    LX_LUM_LM63_1986 = 0, /* no version line */
+    LX_LUM_LM63_1991,     /* "IESNA91" */
+    LX_LUM_LM63_1995,     /* "IESNA:LM-63-1995" (also the non-standard "IESNA95") */
+    LX_LUM_LM63_2002,     /* "IESNA:LM-63-2002" */
+    LX_LUM_LM63_2019,     /* "IES:LM-63-2019" */
+    LX_LUM_EULUMDAT       /* EULUMDAT .ldt */
+} lx_lum_format;
 
-/** The backend named by the environment variable LX_BACKEND, or LX_BACKEND_AUTO when unset/invalid. */
-LX_API lx_backend lx_backend_from_env(void);
+/** Symmetry of the stored data, which the model expands to the full sphere. */
+typedef enum lx_lum_symmetry {
+    LX_SYM_AXIAL = 0,   /* one plane: rotationally symmetric about the vertical axis */
+    LX_SYM_QUADRANT,    /* C0-C90 stored: symmetric about the C0-C180 and C90-C270 planes */
+    LX_SYM_C0_C180,     /* C0-C180 stored: symmetric about the C0-C180 plane */
+    LX_SYM_C90_C270,    /* C90-C270 stored: symmetric about the C90-C270 plane (C -> 180 - C) */
+    LX_SYM_NONE,        /* C0-C360 stored */
+    LX_SYM_B_LATERAL    /* type B with H 0..90 stored: symmetric about H = 0 */
+} lx_lum_symmetry;
 
-/** OpenCL device types for the device choice. */
-typedef enum lx_cl_type { LX_CL_AUTO = 0, LX_CL_CPU = 1, LX_CL_GPU = 2 } lx_cl_type;
+/** Static names: "LM-63-1986" ... "LM-63-2019", "EULUMDAT"; "axial", "quadrant", "C0-C180",
+ * "C90-C270", "none", "B-lateral". Thread-safe. */
+LX_API const char *lx_lum_format_name(lx_lum_format f);
+LX_API const char *lx_lum_symmetry_name(lx_lum_symmetry s);
 
-/** Chooses the OpenCL device this context will use, before its first OpenCL work: platform and
- * device indices (-1: any; then the environment LX_PLATFORM / LX_DEVICE apply) and a type (AUTO
- * prefers a GPU, then any device). Releases an OpenCL state the context already holds.
- * Returns LX_EUNSUPPORTED in a build without OpenCL. Does not initialise OpenCL. */
-LX_API lx_status lx_cl_select(lx_ctx *ctx, int platform, int device, lx_cl_type type);
+/** A luminaire read from a file or built from a model. Owns every array and string. The "file"
+ * arrays hold the table as stored (angles in degrees, candela already scaled); the "full" arrays
+ * the table expanded to the whole range of planes (C 0..360 inclusive, or H -90..90) that the
+ * model interpolates (zero outside its gamma or V range). Read-only after creation: evaluating
+ * it is thread-safe. */
+typedef struct lx_luminaire {
+    char *file;                /* the path or name given to the reader */
+    lx_lum_format format;
+    int photometric_type;      /* 1 = C, 2 = B (type A is rejected with LX_EUNSUPPORTED) */
+    lx_lum_symmetry symmetry;
+    size_t n_h, n_v;           /* stored planes (horizontal angles) and vertical angles */
+    double *h_deg, *v_deg;     /* as stored, increasing */
+    double *cd;                /* n_h x n_v, cd[h * n_v + v], candela (multiplier etc. applied) */
+    size_t n_c, n_g;           /* expanded planes and vertical angles */
+    double *c_deg, *g_deg;     /* expanded angles, increasing */
+    double *full_cd;           /* n_c x n_g, full_cd[c * n_g + g] */
+    int absolute;              /* 1: absolute photometry (IES lumens -1, EULUMDAT lamps < 0) */
+    int n_lamps;               /* as stated (absolute value) */
+    double lamp_lumens;        /* IES: lamps x lumens per lamp (NaN when absolute); LDT: set 1 flux */
+    double stated_lumens;      /* the luminaire's own flux when the file states it
+                                * (IES [_ABSOLUTELUMENS]; LDT lamp flux x LORL), else NaN */
+    double multiplier;         /* IES candela multiplier; LDT conversion factor x flux / 1000 */
+    double ballast_factor;     /* applied to cd (IES); 1 for LDT */
+    double ballast_lamp_factor;/* LM-63 <= 1995: applied; 2002: future use, ignored; 2019: NaN */
+    int file_generation_type;  /* LM-63-2019 only (the field older versions call ballast-lamp factor), else 0 */
+    double input_watts;
+    double width_m, length_m, height_m; /* luminous opening: width along C0-C180, length along
+                                * C90-C270 (negative IES values: circular, see lx_luminaire_size) */
+    int tilt_include;          /* 1 when a TILT= table was given (INCLUDE or a file) */
+    int tilt_geometry;         /* lamp-to-luminaire geometry 1, 2 or 3 */
+    size_t n_tilt;
+    double *tilt_deg, *tilt_factor;
+    char *manufacturer, *catalog, *description; /* [MANUFAC], [LUMCAT], [LUMINAIRE] (or LDT lines); may be "" */
+} lx_luminaire;
 
-/** Borrows a caller's OpenCL context and command queue (cl_context and cl_command_queue passed
- * as void*, so this header needs no OpenCL headers). The library retains both and releases them
- * at lx_ctx_destroy; the device is the queue's. Returns LX_EUNSUPPORTED without OpenCL. */
-LX_API lx_status lx_cl_borrow(lx_ctx *ctx, void *cl_context, void *cl_command_queue);
+/** Reads an IES LM-63 file (1986, 1991, 1995, 2002, 2019) or EULUMDAT file ("-" is stdin),
+ * detected by content. Errors name the file and line: LX_EPARSE for malformed data (counts that
+ * do not match, truncated tables, negative candela, angles out of order or incomplete),
+ * LX_EUNSUPPORTED for type A photometry, LX_EIO. On success *out owns the result. */
+LX_API lx_status lx_luminaire_read_file(lx_ctx *ctx, const char *path, lx_luminaire **out);
 
-/** Description of one OpenCL device. */
-typedef struct lx_cl_device_info {
-    int platform, device;           /* indices as LX_PLATFORM / LX_DEVICE count them */
-    char platform_name[128];
-    char device_name[128];
-    char version[64];               /* CL_DEVICE_VERSION */
-    int is_gpu, is_cpu;
-    unsigned compute_units;
-    unsigned long long global_mem_bytes;
-    unsigned long long max_alloc_bytes; /* CL_DEVICE_MAX_MEM_ALLOC_SIZE, the chunk limit */
-    int fp64;                       /* 1 when cl_khr_fp64 (or OpenCL >= 1.2 double) is available */
-    int is_default;                 /* 1 for the device the AUTO choice (and environment) picks */
-} lx_cl_device_info;
+/** Same, from memory; name is used in messages and as lum->file. */
+LX_API lx_status lx_luminaire_read_mem(lx_ctx *ctx, const char *name, const char *text, size_t len,
+                                       lx_luminaire **out);
 
-/** Lists every OpenCL device of every platform into *out (malloc'ed, free with free()), *n of
- * them. No platform is not an error: *n = 0. Does not create an OpenCL context. */
-LX_API lx_status lx_cl_devices(lx_ctx *ctx, lx_cl_device_info **out, size_t *n);
+/** Frees a luminaire. Accepts NULL. */
+LX_API void lx_luminaire_free(lx_luminaire *lum);
 
-/** Initialises OpenCL on ctx if not done yet (device choice, context, queue) and describes the
- * device in use. LX_EDEVICE when no device can be used, with the OpenCL call and code. */
-LX_API lx_status lx_cl_info(lx_ctx *ctx, lx_cl_device_info *out);
+/** Interpolation in the intensity table. */
+typedef enum lx_interp {
+    LX_INTERP_BILINEAR = 0, /* bilinear in (C, gamma) (or (H, V)): the reference model */
+    LX_INTERP_SMOOTH = 1,   /* monotone piecewise-cubic (PCHIP) in both angles: no overshoot */
+    LX_INTERP_TABLE = 2     /* grids only: bilinear resampled on a table indexed by sqrt(1 - |cos gamma|)
+                             * and the diamond angle of C (no acos/atan2; CPU twin of the OpenCL kernel) */
+} lx_interp;
 
-/** 1 when ctx already holds an initialised OpenCL state (start-up already paid), else 0. */
-LX_API int lx_cl_ready(const lx_ctx *ctx);
+/** Intensity in cd towards the unit direction (x, y, z) of the luminaire's frame (nadir -z,
+ * C0 +x). LX_INTERP_TABLE is treated as bilinear here. Tilt factors are not applied. */
+LX_API double lx_luminaire_intensity_dir(const lx_luminaire *lum, lx_interp interp, double x, double y, double z);
 
-/** Element type of batch values. */
-typedef enum lx_dtype { LX_F32 = 0, LX_F64 = 1 } lx_dtype;
+/** Intensity in cd at (C, gamma) in radians (type C), or (H, V) for type B. */
+LX_API double lx_luminaire_intensity(const lx_luminaire *lum, lx_interp interp, double c_rad, double gamma_rad);
 
-/** N spectra sampled on one uniform grid start_nm + j * step_nm, j < n_lambda, row-major:
- * spectrum i starts at element i * row_stride (row_stride 0 means n_lambda). Not owned. */
-typedef struct lx_batch {
-    size_t n_spectra;
-    size_t n_lambda;       /* >= 1 */
-    size_t row_stride;     /* elements between spectra, 0 = n_lambda */
-    double start_nm, step_nm; /* step_nm > 0 */
-    lx_dtype dtype;
-    const void *values;    /* float or double, n_spectra rows */
-} lx_batch;
+/** The TILT factor for a lamp tilt of tilt_rad (linear in the table, clamped at its ends); 1
+ * without a tilt table. */
+LX_API double lx_luminaire_tilt_factor(const lx_luminaire *lum, double tilt_rad);
 
-/** Options of lx_batch_integrate (zero-initialise for defaults). */
-typedef struct lx_batch_opts {
-    lx_backend backend;    /* AUTO (default) also reads LX_BACKEND */
-    int threads;           /* CPU threads; 0 = every online core */
-    size_t chunk_spectra;  /* OpenCL: spectra per chunk; 0 = from CL_DEVICE_MAX_MEM_ALLOC_SIZE */
-    lx_backend used;       /* OUT: the backend that did the work */
-} lx_batch_opts;
+/** Summary of a luminaire. */
+typedef struct lx_lum_summary {
+    double lumens;            /* exact integral over the sphere of the bilinear interpolant, tilt factor at 0 */
+    double max_intensity_cd;  /* largest table value */
+    double peak_c_deg, peak_gamma_deg; /* where it is (expanded table) */
+    double beam_angle_deg;    /* full angle to 50 % of the peak, in the C0-C180 plane through the peak */
+    double field_angle_deg;   /* the same to 10 % */
+    double beam_angle_c90_deg, field_angle_c90_deg; /* the same in the C90-C270 plane */
+    double downward_fraction; /* flux below the horizontal / total */
+} lx_lum_summary;
 
-/** Integrates N spectra against K weighting functions at once with the cie15 rule:
- * out[i*k + f] = sum_j value[i][j] * w_f(start_nm + j*step_nm) * step_nm, the weights linearly
- * interpolated from their tables and zero outside them (no Km factor). Accumulates in double on
- * both backends (1e-9 relative CPU vs OpenCL for double input, 1e-6 for float). opts may be NULL.
- * A fall-back from OpenCL to the CPU in AUTO is reported through the log callback (LX_LOG_INFO).
- * Thread-safe for distinct contexts. Outputs untouched on failure. */
-LX_API lx_status lx_batch_integrate(lx_ctx *ctx, const lx_batch *batch, const lx_function *fns, size_t k,
-                                    lx_batch_opts *opts, double *out);
+/** Integrates and summarises. Beam and field angles are NaN when the intensity in the plane does
+ * not fall to the fraction (or the peak is not in it). */
+LX_API lx_status lx_luminaire_summary(lx_ctx *ctx, const lx_luminaire *lum, lx_lum_summary *out);
 
-/** Resamples N spectra given on their own strictly increasing wavelengths (row i: n_in[i]
- * samples at lambda_nm + offset[i], values at value + offset[i]) onto the uniform grid of dst
- * (dst->values must point to writable memory of dst->dtype, n_spectra rows) by linear
- * interpolation, zero outside each spectrum: the piecewise-linear model the exact method uses.
- * backend as in lx_batch_integrate (OpenCL: the resample kernel). */
-/** A batch read from a rows-layout CSV: one spectrum per line on the header's uniform grid. */
-typedef struct lx_batch_table {
-    lx_batch batch;  /* owns batch.values */
-    char *names;     /* the rows' first cells, NUL-separated ("" when the file has no name column) */
-    size_t *name_at; /* batch.n_spectra offsets into names */
-} lx_batch_table;
+/** Analytic models the writer can sample. */
+typedef enum lx_lum_model_kind {
+    LX_LUM_MODEL_POINT = 0,   /* isotropic: I = F / (4 pi) */
+    LX_LUM_MODEL_WARN = 1,    /* Warn spot: I = (S + 1) F / (2 pi) cos^S gamma, gamma < 90 deg */
+    LX_LUM_MODEL_LAMBERT = 2  /* Lambertian panel: I = (F / pi) cos gamma, gamma < 90 deg */
+} lx_lum_model_kind;
 
-/** Reads a rows-layout batch CSV ("id,380,381,...,780" then "name,v1,v2,..." per line; separators
- * , ; or tab; '#' comment and blank lines skipped; CRLF; BOM) into a float or double batch, in
- * parallel on `threads` threads (0 = every core). The header's wavelengths must form a uniform
- * grid (else LX_EUNSUPPORTED: use lx_spd_read_file). Errors (LX_EPARSE) name file and line.
- * "-" is standard input. Free *out with lx_batch_table_free. */
-LX_API lx_status lx_batch_table_read(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads,
-                                     lx_batch_table **out);
-LX_API lx_status lx_batch_table_read_mem(lx_ctx *ctx, const char *file, const char *text, size_t len,
-                                         lx_dtype dtype, int threads, lx_batch_table **out);
-LX_API void lx_batch_table_free(lx_batch_table *t);
+typedef struct lx_lum_model {
+    lx_lum_model_kind kind;
+    double flux_lm;           /* > 0 */
+    double exponent;          /* Warn S >= 0 */
+    double width_m, length_m; /* luminous opening (0: a point); width along C0 */
+    double step_deg;          /* gamma step of the table (0: 1 deg for point/Lambert, finer for narrow spots) */
+    const char *catalog;      /* [LUMCAT] text (NULL: a description of the model) */
+} lx_lum_model;
 
-LX_API lx_status lx_batch_resample(lx_ctx *ctx, size_t n_spectra, const double *lambda_nm, const double *value,
-                                   const size_t *offset, const size_t *n_in, lx_batch *dst, lx_batch_opts *opts);
+/** Samples a model into an axially symmetric luminaire (absolute photometry, LM-63-2002). */
+LX_API lx_status lx_luminaire_from_model(lx_ctx *ctx, const lx_lum_model *model, lx_luminaire **out);
+
+/** Writes lum as IES LM-63-2002 text (type C; the stored planes and symmetry kept; absolute
+ * photometry when lum->absolute, else its lamps and lumens) into *text (malloc'ed, free with
+ * free()), *len bytes. Numbers are printed so they read back exactly. */
+LX_API lx_status lx_luminaire_write_ies(lx_ctx *ctx, const lx_luminaire *lum, char **text, size_t *len);
+
+/* Illuminance grids (grid.c, OpenCL twin kernels/grid.cl). World frame in metres. */
+
+/** A luminaire in a scene: its position, where its nadir (gamma 0) points, and the turn of its
+ * C0 plane about that axis. With aim (0,0,-1) and rotate 0, C0 is +x and C90 is +y. */
+typedef struct lx_placement {
+    const lx_luminaire *lum;  /* not owned */
+    double pos_m[3];
+    double aim[3];            /* any length > 0 */
+    double rotate_rad;
+} lx_placement;
+
+/** A plane of points: origin + a u + b v for a = a0, a0 + da, ..., a1 and the same for b. */
+typedef struct lx_plane {
+    double origin_m[3];
+    double u[3], v[3];        /* unit, orthogonal axes of the plane */
+    double a0, a1, b0, b1;    /* extents along u and v in m */
+    size_t na, nb;            /* points along each axis (>= 1; 1 puts the point at a0) */
+    double normal[3];         /* the receiver normal (unit) */
+} lx_plane;
+
+/** Fills a plane for "z=H" / "x=H" / "y=H" (axis 'x', 'y' or 'z') with the area A0:A1,B0:B1
+ * along the plane's axes ((x, y), (y, z), (x, z)) and either a spacing (> 0; the count is
+ * floor((A1 - A0) / S + 1e-9) + 1, so A1 is included when it lies on the grid) or na x nb points.
+ * The normal is the plane's axis pointing to +z, +x or +y. */
+LX_API lx_status lx_plane_axis(lx_ctx *ctx, char axis, double level_m, double a0, double a1, double b0,
+                               double b1, double spacing_m, size_t na, size_t nb, lx_plane *out);
+
+/** Options of lx_grid_illuminance (zero-initialise for defaults). */
+typedef struct lx_grid_opts {
+    lx_model model;           /* LX_MODEL_POINT (default 0 = AUTO: subdivide the luminous area
+                               * where the point is closer than 5 x its largest dimension) */
+    lx_interp interp;         /* default bilinear */
+    double maintenance_factor;/* 0 means 1 */
+    lx_backend backend;       /* OpenCL runs LX_INTERP_TABLE only; AUTO (also LX_BACKEND) picks it
+                               * for table work of >= 1e7 point-luminaires */
+    int threads;              /* CPU threads; 0 = every online core */
+    int table_n;              /* LX_INTERP_TABLE: rows per hemisphere (0: 1024) */
+    int fp32;                 /* OpenCL: 1 computes in float (else double where the device has it) */
+    lx_backend used;          /* OUT: the backend that did the work */
+} lx_grid_opts;
+
+/** Illuminance in lx at n points (xyz interleaved) on receivers with the given unit normals (n
+ * normals, or one when shared_normal), summed over m luminaires: E = sum I(C, gamma) cos(xi) / d^2
+ * x tilt factor x maintenance factor. Points behind a receiver's face get 0. Outputs untouched
+ * on failure. Thread-safe for distinct contexts. */
+LX_API lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, const double *points,
+                                     size_t n, const double *normals, int shared_normal, lx_grid_opts *opts,
+                                     double *E_lx);
+
+/** The points of a plane (na x nb, a fastest) into *points (malloc'ed xyz, free with free()). */
+LX_API lx_status lx_plane_points(lx_ctx *ctx, const lx_plane *plane, double **points, size_t *n);
+
+/** E_avg, E_min, E_max and U0 = E_min / E_avg (NaN when E_avg is 0) of n values. */
+typedef struct lx_grid_stats { double avg, min, max, u0; } lx_grid_stats;
+LX_API lx_status lx_grid_stats_compute(lx_ctx *ctx, const double *E, size_t n, lx_grid_stats *out);
+
+/** Writes a false-colour PNG of the illuminance E (na x nb values of the plane, A fastest, as
+ * lx_plane_points orders them): a colour legend in lux, iso-lux contour lines at round levels,
+ * the positions of the m luminaires (projected on the plane, those inside its area) and axis
+ * ticks in metres; title (may be NULL) on top. Written atomically (temporary file + rename). */
+LX_API lx_status lx_grid_write_png(lx_ctx *ctx, const char *path, const lx_plane *plane, const double *E,
+                                   const lx_placement *lums, size_t m, const char *title);
+
+/* ---- scenes (issue 8) ---- */
+
+/* Scene files (scene_read.c), the planner (scene_plan.c) and the evaluation (scene_eval.c,
+ * scene_sky.c, scene_spectral.c). World frame in metres, z up. See README "scenes" for the format. */
+
+/** Work counters: what the library computed, per effect. Every scene evaluation adds to the
+ * context's counters; tests read them to prove that an effect that was off did none of its work. */
+typedef struct lx_counters {
+    unsigned long long point_evaluations;      /* luminaire-receiver evaluations as a point source */
+    unsigned long long spot_evaluations;       /* Warn spot-falloff evaluations (cos^S) */
+    unsigned long long goniometric_lookups;    /* intensity-table (IES/LDT) lookups */
+    unsigned long long nearfield_pairs;        /* luminaire-receiver pairs integrated over the luminous area */
+    unsigned long long nearfield_subdivisions; /* luminous-area patches evaluated by those integrations */
+    unsigned long long environment_evaluations;/* receiver-normal sky evaluations (closed form or numeric) */
+    unsigned long long environment_samples;    /* numerical sky samples (quadrature nodes, map pixels) */
+    unsigned long long spectra_integrated;     /* spectra integrated against weighting functions */
+    unsigned long long kernel_launches;        /* OpenCL kernel launches made by scene evaluation */
+} lx_counters;
+
+/** Copies the context's counters into *out (zeros for a NULL ctx). Thread-safe for distinct contexts. */
+LX_API void lx_ctx_counters(const lx_ctx *ctx, lx_counters *out);
+/** Sets the context's counters to zero. */
+LX_API void lx_ctx_counters_reset(lx_ctx *ctx);
+
+/** The effects a scene may need. */
+typedef enum lx_effect {
+    LX_EFFECT_INVERSE_SQUARE = 0, /* E = I / d^2 from point-like luminaires */
+    LX_EFFECT_COSINE,             /* the receiver's cosine factor cos(xi) (off: every receiver faces the ray) */
+    LX_EFFECT_SPOT_FALLOFF,       /* Warn spot lobes cos^S (off: the peak in the whole front hemisphere) */
+    LX_EFFECT_GONIOMETRIC,        /* intensity tables of IES/LDT files (off: isotropic of the file's flux) */
+    LX_EFFECT_NEAR_FIELD,         /* luminous-area integration where d < 5 x the luminaire's size */
+    LX_EFFECT_SPECTRAL,           /* spectral sums: CCT and melanopic EDI at receivers */
+    LX_EFFECT_ENVIRONMENT,        /* sky and ground irradiance */
+    LX_EFFECT_OPENCL,             /* grid work on an OpenCL device */
+    LX_EFFECT_COUNT
+} lx_effect;
+
+/** "inverse_square", "cosine", "spot_falloff", "goniometric", "near_field", "spectral",
+ * "environment", "opencl" (static storage; NULL for a bad value). */
+LX_API const char *lx_effect_name(lx_effect e);
+
+/** Luminaire kinds of a scene. */
+typedef enum lx_scene_lum_kind {
+    LX_SLUM_POINT = 0, /* isotropic point: flux or intensity */
+    LX_SLUM_SPOT,      /* Warn spot: flux or peak intensity, exponent or beam angle */
+    LX_SLUM_DISK,      /* Lambertian disk: luminance or flux, radius */
+    LX_SLUM_RECT,      /* Lambertian rectangle: luminance or flux, width (local x) x length (local y) */
+    LX_SLUM_FILE       /* IES LM-63 or EULUMDAT file, optionally scaled to a flux */
+} lx_scene_lum_kind;
+
+/** One luminaire of a scene. Its frame is the one lx_grid_illuminance uses: the smallest rotation
+ * taking the nadir (0, 0, -1) to aim (the nadir, spot axis and emitting normal), then a turn by
+ * rotate about the aim; with aim (0, 0, -1) and rotate 0, C0 and the rectangle width are +x. */
+typedef struct lx_scene_luminaire {
+    char *name;
+    char *file;               /* the scene file and line of its section header */
+    long line;
+    lx_scene_lum_kind kind;
+    double pos_m[3];
+    double aim[3];            /* unit */
+    double rotate_rad;
+    double intensity_cd;      /* point: isotropic intensity; spot: peak; derived from flux when given */
+    double flux_lm;           /* emitted flux (point, spot, disk, rect; file: after scaling) */
+    double exponent;          /* spot: Warn S */
+    double luminance_cd_m2;   /* disk, rect */
+    double radius_m;          /* disk */
+    double width_m, length_m; /* rect, and the luminous opening of a file luminaire (0: a point) */
+    double scale;             /* file: candela multiplier applied to the table (flux / table lumens),
+                               * times the file's TILT factor at the tilt of aim from the nadir */
+    char *lum_path;           /* file: the photometric file (resolved against the scene file) */
+    lx_luminaire *lum;        /* file: owned */
+    char *spd_path;           /* the SPD file (resolved), or NULL */
+    lx_spd_set *spd;          /* owned, when spd_path is set (the first spectrum, or `spectrum`) */
+    size_t spd_index;
+    double cct_K;             /* NaN unless cct was given */
+} lx_scene_luminaire;
+
+/** Receiver kinds. */
+typedef enum lx_scene_rec_kind { LX_SREC_POINT = 0, LX_SREC_GRID = 1 } lx_scene_rec_kind;
+
+/** One receiver: a point, or a grid of na x nb points on a plane x, y or z = level. */
+typedef struct lx_scene_receiver {
+    char *name;
+    char *file;
+    long line;
+    lx_scene_rec_kind kind;
+    double normal[3];         /* unit */
+    double reflectance;       /* NaN when none (no luminance output) */
+    char axis;                /* grid: 'x', 'y' or 'z' (the fixed coordinate) */
+    size_t na, nb;            /* grid: points along the first and second free axes (x before y before z) */
+    size_t n;                 /* points */
+    double *points;           /* n x 3 (grids: a fastest), owned */
+} lx_scene_receiver;
+
+/** The sky kinds. */
+typedef enum lx_scene_sky_kind { LX_SKY_NONE = 0, LX_SKY_UNIFORM, LX_SKY_OVERCAST, LX_SKY_MAP } lx_scene_sky_kind;
+
+/** Forced state of an effect in [effects]. */
+typedef enum lx_effect_force { LX_FORCE_AUTO = 0, LX_FORCE_ON = 1, LX_FORCE_OFF = 2 } lx_effect_force;
+
+/** A scene read from a file. Owns everything it points to. Read-only after reading. */
+typedef struct lx_scene {
+    char *file;
+    char *title;                          /* [scene] title, or "" */
+    size_t n_lum, n_rec;
+    lx_scene_luminaire *lum;
+    lx_scene_receiver *rec;
+    lx_scene_sky_kind sky;
+    double sky_luminance_cd_m2;           /* uniform: L; overcast: zenith Lz */
+    double sky_scale;                     /* map: multiplier of the map's values (default 1) */
+    char *sky_path;                       /* map: the EXR file (resolved) */
+    double ground_reflectance;            /* 0..1 (default 0) */
+    double sky_cct_K;                     /* NaN unless given (spectral sky: CIE daylight) */
+    int sky_samples;                      /* overcast quadrature nodes per piece / map: unused (default 64) */
+    int want_luminance, want_cct, want_melanopic; /* [output] */
+    lx_effect_force force[LX_EFFECT_COUNT];       /* [effects] */
+    long force_line[LX_EFFECT_COUNT];
+    double nearfield_tol;                 /* [scene] near_field_tolerance: relative convergence (default 1e-5) */
+    const char *sky_file_at;              /* the scene file and line of [sky] (NULL, 0 when none) */
+    long sky_line;
+    long spectral_line;                   /* the [output] line that first asked for cct or melanopic_edi */
+    char **names;                         /* the file names the entities point to (owned) */
+    size_t n_names;
+} lx_scene;
+
+/** Reads a scene file ('-' is standard input); includes are resolved relative to the including
+ * file. Errors (LX_EPARSE naming file and line: unknown section or key, bare dimensional
+ * number, wrong unit, missing key, include cycle; LX_EIO; errors of referenced IES/SPD files)
+ * leave *out NULL. Referenced photometric and spectral files are read here. */
+LX_API lx_status lx_scene_read_file(lx_ctx *ctx, const char *path, lx_scene **out);
+/** Same from memory; name is used in messages and to resolve includes (its directory). */
+LX_API lx_status lx_scene_read_mem(lx_ctx *ctx, const char *name, const char *text, size_t len, lx_scene **out);
+/** Frees a scene. Accepts NULL. */
+LX_API void lx_scene_free(lx_scene *scene);
+
+/** The planner's decision. */
+typedef struct lx_scene_plan {
+    int on[LX_EFFECT_COUNT];          /* 1 when the effect is simulated */
+    int forced[LX_EFFECT_COUNT];      /* 1 when [effects] decided it */
+    char reason[LX_EFFECT_COUNT][256];/* why, for people */
+    size_t n_points;                  /* receiver points over all receivers */
+    size_t n_pairs;                   /* luminaire x receiver-point pairs */
+    size_t n_near;                    /* pairs that take the near-field path */
+    unsigned char *near;              /* n_lum x n_points (luminaire-major): 1 = near-field path; owned */
+    size_t n_normals;                 /* distinct receiver normals (sky evaluations) */
+    lx_counters estimate;             /* the work the plan expects */
+    int backend;                      /* an lx_backend: CPU or OPENCL for the grid work */
+} lx_scene_plan;
+
+/** Plans a scene: which effects, and which pairs take the near-field path. backend: AUTO lets
+ * the size of the work decide (also LX_BACKEND). LX_EPARSE (naming the [effects] or [output]
+ * line) when a forced effect cannot be honoured (spectral forced on without spectra,
+ * environment forced on without a sky). Free with lx_scene_plan_free. */
+LX_API lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *scene, int backend, lx_scene_plan **out);
+LX_API void lx_scene_plan_free(lx_scene_plan *plan);
+
+/** Results at every receiver point (receiver order, then point order). */
+typedef struct lx_scene_result {
+    size_t n_points, n_lum;
+    size_t *first;              /* n_rec + 1: receiver r has points first[r] .. first[r+1]-1 */
+    double *E_lx;               /* n_points: total illuminance */
+    double *contrib_lx;         /* n_points x (n_lum + 1): each luminaire's part, last the sky's */
+    double *L_cd_m2;            /* n_points: rho E / pi (NaN without a reflectance or not asked) */
+    double *cct_K, *duv;        /* n_points (NaN when spectral is off or CCT undefined) */
+    double *melanopic_edi_lx;   /* n_points (NaN when spectral is off) */
+    lx_counters work;           /* the work this evaluation did */
+    double seconds;             /* wall-clock time of the evaluation */
+} lx_scene_result;
+
+/** Options of lx_scene_eval (zero-initialise, then set only to -1 for all luminaires). */
+typedef struct lx_scene_eval_opts {
+    long only;                  /* >= 0: evaluate luminaire `only` alone (no sky); -1: everything */
+} lx_scene_eval_opts;
+
+/** Evaluates a planned scene (opts may be NULL). Adds its work to the context's counters.
+ * Free *out with lx_scene_result_free. Outputs untouched on failure. */
+LX_API lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *scene, const lx_scene_plan *plan,
+                               const lx_scene_eval_opts *opts, lx_scene_result **out);
+LX_API void lx_scene_result_free(lx_scene_result *res);
 
 #ifdef __cplusplus
 }

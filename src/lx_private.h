@@ -15,7 +15,7 @@ typedef struct lx__locus {
     int ready;
     int n;
     double logt0, dlogt;
-    double *u, *v;
+    double *u, *v; /* v, du/ds and dv/ds follow u in one block of 4n doubles */
 } lx__locus;
 
 struct lx_ctx {
@@ -29,6 +29,7 @@ struct lx_ctx {
     lx__locus locus[2]; /* [0] 2 deg, [1] 10 deg */
     void *cl;                         /* OpenCL state, NULL until first used */
     void (*cl_release)(lx_ctx *ctx);  /* frees cl; set by whoever creates it */
+    lx_counters counters;             /* work counters (scenes, issue 8) */
 };
 
 /* Records an error on ctx and returns status. file may be NULL, line <= 0 when it does not apply. */
@@ -143,5 +144,92 @@ lx_status lx__spd_set_build(lx_ctx *ctx, const char *file, size_t nlam, const do
 /* CGATS / Argyll spectral files (cgats.c): detection by content, and the reader. */
 int lx__cgats_detect(const char *text, size_t len);
 lx_status lx__cgats_read(lx_ctx *ctx, const char *file, const char *text, size_t len, lx_spd_set **out);
+
+/* ---- colour rendering (issue 7: src/cri.c, src/tm30.c) ---- */
+/* The colour-quality grid for spd: step 5 nm for data uniformly sampled at 5 nm on multiples
+ * of 5 nm, else 1 nm. */
+double lx__quality_step(const lx_spd *spd);
+/* Samples spd on the grid start_nm + i*step_nm, i < n (piecewise linear, zero outside). */
+void lx__quality_sample(const lx_spd *spd, double start_nm, double step_nm, int n, double *out);
+/* Samples table column col (linear interpolation, zero outside) on the same kind of grid. */
+void lx__quality_table(const lx__table *t, int col, double start_nm, double step_nm, int n, double *out);
+/* The fraction (max over X, Y, Z with the 2 deg CMFs) of the grid spectrum ref that lies
+ * outside [lo_nm, hi_nm]. */
+double lx__quality_outside(const double *ref, double start_nm, double step_nm, int n, double lo_nm, double hi_nm);
+
+
+/* ---- luminaires and grids (issue 5: ies_read.c, ldt_read.c, photometry.c, grid.c) ---- */
+/* A copy of [s, e) as a NUL-terminated string (NULL on allocation failure). */
+char *lx__strndup(const char *s, const char *e);
+/* The readers behind lx_luminaire_read_mem: LM-63 (any version) and EULUMDAT. */
+lx_status lx__ies_read(lx_ctx *ctx, const char *file, const char *text, size_t len, lx_luminaire **out);
+lx_status lx__ldt_read(lx_ctx *ctx, const char *file, const char *text, size_t len, lx_luminaire **out);
+/* Validates the stored table of a freshly read luminaire (angles in order and complete for its
+ * type, candela >= 0), sets its symmetry and expands it (full arrays). line_h / line_v: the lines
+ * of the horizontal and vertical angle lists for messages. */
+lx_status lx__lum_finish(lx_ctx *ctx, lx_luminaire *lum, long line_h, long line_v, long line_cd);
+/* A luminaire with every field zero / NaN where that means "unknown" (NULL on no memory). */
+lx_luminaire *lx__lum_new(const char *file);
+
+/* ---- radiance fields (issue 6: envmap.c, exr_io.c, irradiance*.c, png_plot.c) ---- */
+/* Per-row and per-column factors of the exact pixel integrals of a w x h lat-long map: a pixel's
+ * solid angle is row_sr[j] * dphi and its first moment (integral of omega) is
+ * (row_s2[j] col_gx[i], row_s2[j] col_gy[i], row_sc[j] dphi). */
+typedef struct lx__llgeom {
+    int w, h;
+    double dphi;    /* 2 pi / w */
+    double *row_sr; /* cos t0 - cos t1 */
+    double *row_s2; /* integral of sin^2 t dt over the row */
+    double *row_sc; /* integral of sin t cos t dt over the row */
+    double *col_gx; /* sin p1 - sin p0 */
+    double *col_gy; /* cos p0 - cos p1 */
+} lx__llgeom;
+lx_status lx__llgeom_init(lx_ctx *ctx, lx__llgeom *g, int w, int h);
+void lx__llgeom_free(lx__llgeom *g);
+/* Threads to use for `asked` (0: every online core), at least 1 and at most `work` (when > 0). */
+int lx__threads(int asked, long work);
+/* Runs fn(arg, i0, i1, t) on `threads` threads (t = 0..threads-1) splitting [0, n) into contiguous
+ * ranges; the calling thread runs the last one. LX_ENOMEM when a thread cannot start. */
+lx_status lx__parallel_for(lx_ctx *ctx, int threads, long n, void (*fn)(void *arg, long i0, long i1, int t), void *arg);
+/* The irradiance back ends: n_dirs unit normals (3 doubles each) -> out[n * channels]. */
+lx_status lx__irr_brute_cpu(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const double *dirs, int threads,
+                            double *out);
+lx_status lx__irr_brute_cl(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const double *dirs, double *out);
+lx_status lx__irr_fast(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const double *dirs, int threads,
+                       double *out);
+lx_status lx__irr_sh9_map(lx_ctx *ctx, const lx_sh9 *sh, lx_sh9_window window, lx_envmap *out);
+
+/* PNG plots (png_plot.c), reusable by any plot writer: an RGB8 canvas, a 5x7 font of our own
+ * (digits, + - . e E / ( ) : = % and upper-case letters; lower case is drawn upper case), a
+ * false-colour scale with a legend, a tone-mapped HDR preview, and an atomic PNG writer. */
+typedef struct lx__canvas {
+    int w, h;
+    unsigned char *rgb; /* w * h * 3 */
+} lx__canvas;
+lx_status lx__canvas_init(lx_ctx *ctx, lx__canvas *c, int w, int h, const unsigned char bg[3]);
+void lx__canvas_free(lx__canvas *c);
+void lx__canvas_fill(lx__canvas *c, int x, int y, int w, int h, const unsigned char rgb[3]);
+/* Text at (x, y) (top-left), each font pixel drawn scale x scale; width in pixels of a string. */
+void lx__canvas_text(lx__canvas *c, int x, int y, int scale, const char *s, const unsigned char rgb[3]);
+int lx__text_width(const char *s, int scale);
+/* The false-colour palette (dark blue - cyan - green - yellow - red, the Radiance falsecolor
+ * look) at t in [0, 1]; the value mapping t = (v - vmin)/(vmax - vmin), or on log10 when log_scale. */
+void lx__falsecolor(double t, unsigned char rgb[3]);
+double lx__falsecolor_t(double v, double vmin, double vmax, int log_scale);
+/* Draws a vw x vh array of values (row-major, NaN drawn grey) scaled to the w x h rectangle. */
+void lx__canvas_values(lx__canvas *c, int x, int y, int w, int h, const double *v, int vw, int vh, double vmin,
+                       double vmax, int log_scale);
+/* A vertical colour bar with labelled ticks and a title, in the rectangle (labels included). */
+void lx__canvas_legend(lx__canvas *c, int x, int y, int w, int h, double vmin, double vmax, int log_scale,
+                       const char *title);
+/* Tone-mapped preview of linear values (1 or 3 channels, vw x vh) into a w x h rectangle:
+ * scaled so that the median luminance maps to 0.18, Reinhard x/(1+x), sRGB encoded. */
+void lx__canvas_tonemap(lx__canvas *c, int x, int y, int w, int h, const float *v, int channels, int vw, int vh);
+/* Writes the canvas as an 8-bit RGB PNG atomically (temporary file + rename). */
+lx_status lx__canvas_write_png(lx_ctx *ctx, const lx__canvas *c, const char *path);
+/* The whole false-colour plot in one call: the w x h values drawn (enlarged to at least 512 px
+ * wide), a legend with title on the right. vmin/vmax NaN: the values' range (positive for log). */
+lx_status lx__png_falsecolor(lx_ctx *ctx, const char *path, int w, int h, const double *values, double vmin,
+                             double vmax, int log_scale, const char *legend_title);
 
 #endif /* LX_PRIVATE_H */

@@ -3,6 +3,7 @@
 #include "lx_private.h"
 
 #include <math.h>
+#include <pthread.h>
 #include <string.h>
 
 const lx__table *lx__table_find(const char *name)
@@ -77,20 +78,23 @@ lx_status lx_illuminant_get(lx_ctx *ctx, const char *name, lx_spd *out)
     return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown illuminant '%s'", name);
 }
 
+static const char *illum_names[64];
+static pthread_once_t illum_once = PTHREAD_ONCE_INIT;
+
+static void fill_illum_names(void)
+{
+    int k = 0;
+    for (size_t i = 0; i < sizeof illum_tables / sizeof *illum_tables; i++) {
+        const lx__table *t = lx__table_find(illum_tables[i]);
+        for (int c = 1; t && c < t->ncols && k < 63; c++) illum_names[k++] = t->colnames[c];
+    }
+    illum_names[k] = NULL;
+}
+
 const char *const *lx_illuminant_names(void)
 {
-    static const char *names[64];
-    static int ready; /* filled once from the tables; the content is constant */
-    if (!ready) {
-        int k = 0;
-        for (size_t i = 0; i < sizeof illum_tables / sizeof *illum_tables; i++) {
-            const lx__table *t = lx__table_find(illum_tables[i]);
-            for (int c = 1; t && c < t->ncols && k < 63; c++) names[k++] = t->colnames[c];
-        }
-        names[k] = NULL;
-        ready = 1;
-    }
-    return names;
+    pthread_once(&illum_once, fill_illum_names); /* thread-safe first call */
+    return illum_names;
 }
 
 double lx__interp(const double *xs, const double *ys, size_t n, double x)

@@ -298,6 +298,22 @@ static void test_scotopic_and_ler(void **state)
     lx_assert_near(c.v_prime, 9 * c.Y / d, 0, 1e-15);
 }
 
+/* Luminous efficacy of radiation of a flat 1 W/nm spectrum, 380-780 nm at 5 nm: the radiant
+ * integral is the exact (trapezoid) 400 W, not the CIE 015 sum 405 W; colour-science 0.4.7
+ * colour.luminous_efficacy gives 182.457480537 lm/W for the same data. */
+static void test_ler_flat(void **state)
+{
+    lx_ctx *ctx = *state;
+    double wl[81], v[81];
+    for (int i = 0; i < 81; i++) wl[i] = 380 + 5 * i, v[i] = 1.0;
+    lx_spd s = {"flat", 81, wl, v};
+    lx_colorimetry c = colorimetry_of(ctx, &s, LX_METHOD_AUTO);
+    lx_assert_near(c.radiant, 400.0, 1e-12, 0);
+    lx_assert_near(c.ler_lm_per_W, 182.457480537, 0, 1e-4);
+    c = colorimetry_of(ctx, &s, LX_METHOD_LINEAR1NM);
+    lx_assert_near(c.radiant, 400.0, 1e-12, 0);
+}
+
 static void test_bad_views(void **state)
 {
     lx_ctx *ctx = *state;
@@ -322,6 +338,7 @@ int main(void)
         cmocka_unit_test(test_blackbody_efficacy),   cmocka_unit_test(test_planck),
         cmocka_unit_test(test_daylight),             cmocka_unit_test(test_observer_10),
         cmocka_unit_test(test_scotopic_and_ler),     cmocka_unit_test(test_bad_views),
+        cmocka_unit_test(test_ler_flat),
     };
     return cmocka_run_group_tests_name("colorimetry", tests, lx_test_ctx_setup, lx_test_ctx_teardown);
 }

@@ -55,11 +55,14 @@ cli_table *cli_table_new(int ncols, const char *const *names, const char *const 
 void cli_table_str(cli_table *t, const char *s);
 void cli_table_num(cli_table *t, double v);
 void cli_table_int(cli_table *t, long long v);
-/* Writes every row. json_array: 1 prints an array even for one row, 0 prints one object when
- * there is exactly one row. Returns 0, or -1 on a write error. */
-int cli_table_write(const cli_table *t, cli_format fmt, FILE *out, int json_array);
+/* Writes every row (the header first) and ends the output. json_array: 1 prints an array even
+ * for one row, 0 prints one object when there is exactly one row. Returns 0, or -1 on a write error. */
+int cli_table_write(cli_table *t, cli_format fmt, FILE *out, int json_array);
+/* Streams: writes the rows added since the last flush and forgets them (final = 1 ends the
+ * output, as cli_table_write). For large batches, so results need not all sit in memory. */
+int cli_table_flush(cli_table *t, cli_format fmt, FILE *out, int json_array, int final);
 void cli_table_free(cli_table *t);
-int cli_table_rows(const cli_table *t);
+int cli_table_rows(const cli_table *t); /* rows added so far, written or not */
 
 /* Prints a double in the shortest form that reads back exactly ("%.17g" trimmed). */
 void cli_print_exact(FILE *out, double v);

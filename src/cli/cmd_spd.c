@@ -1,5 +1,7 @@
 /* cmd_spd.c - `luxcalc spd`: colorimetry and photometry of spectra read from files. */
 #include "cli.h"
+#include "spd_batch.h"
+#include "spd_metrics.h"
 
 #include <getopt.h>
 #include <math.h>
@@ -23,8 +25,26 @@ static const char help[] =
     "                         auto: cie15 for uniform 1 or 5 nm data on whole nm, else exact\n"
     "  --unit U               what the values are: relative (default) | W/nm (Y in lm) |\n"
     "                         W/m2/nm (lx) | W/sr/m2/nm (cd/m2) | W/sr/nm (cd)\n"
+    "  --metrics LIST|all     colour rendering and photobiology columns after the others; LIST is\n"
+    "                         comma-separated groups (cri, tm30, alphaopic, mesopic) or column\n"
+    "                         names: cri_ra,cri_r1..cri_r14 (CIE 13.3), tm30_rf,tm30_rg (CIE 224 /\n"
+    "                         TM-30-20), melanopic_edi_lx,melanopic_der, alphaopic_sc,_mc,_lc,_rh,_mel\n"
+    "                         (CIE S 026), then cri_valid,cri_dc, tm30_rf_h1..16, tm30_rcs_h1..16,\n"
+    "                         tm30_rhs_h1..16, {cyan,chlor,erythr,rhod}opic_edi/_der, mesopic_cd_m2,\n"
+    "                         mesopic_m (CIE 191; only with --unit W/sr/m2/nm). alphaopic_* are\n"
+    "                         irradiances in W/m2 and *_edi illuminances in lx for --unit W/m2/nm\n"
+    "                         (W/sr/m2/nm: W/(sr m2) and equivalent daylight luminance cd/m2; W/nm:\n"
+    "                         W and lm; relative: same arithmetic, no unit). A metric that is\n"
+    "                         undefined for a spectrum (far off the locus, truncated data) is left\n"
+    "                         empty and the reason printed on stderr.\n"
     "  --format F             table (default) | csv | json\n"
     "  -o FILE                write the results to FILE (atomically)\n"
+    "  --backend B            auto (default; also LX_BACKEND) | cpu | opencl: where batches run.\n"
+    "                         A file of >= 1024 spectra on one uniform 1 or 5 nm grid (or any\n"
+    "                         size with --backend) is integrated as a batch (vectorised, threaded;\n"
+    "                         agrees with the per-spectrum path to 1e-9 relative)\n"
+    "  --input-format F       text (default) | f32: raw little-endian float32 spectra, one after\n"
+    "  --grid START:END:STEP  another, on the grid given by --grid (nm); spectra named 1, 2, ...\n"
     "  -v, -q                 more messages / errors only\n"
     "  -h, --help             this help\n"
     "\n"
@@ -34,7 +54,8 @@ static const char help[] =
     "\n"
     "example:\n"
     "  luxcalc spd --format csv samples/spd/cie_illuminants.csv\n"
-    "  luxcalc spd --unit W/nm --observer 10 lamp.csv\n";
+    "  luxcalc spd --unit W/nm --observer 10 lamp.csv\n"
+    "  luxcalc spd --unit W/m2/nm --metrics all --format csv lamp.csv\n";
 
 static const struct {
     const char *name, *photometric, *radiant;
@@ -56,6 +77,32 @@ static const char *method_name(lx_method m)
     }
 }
 
+/* Output opened on the first rows (so a run that computes nothing leaves -o FILE untouched),
+ * then streamed: rows are written as files and chunks complete. */
+typedef struct spd_out {
+    const char *path;
+    cli_table *t;
+    cli_format fmt;
+    int opened, failed;
+    const char *cmd;
+    cli_output o;
+} spd_out;
+
+static int spd_open(spd_out *so)
+{
+    if (cli_output_open(&so->o, so->path, so->cmd) != 0) return so->failed = 1, -1;
+    so->opened = 1;
+    return 0;
+}
+
+static void spd_flush(void *arg)
+{
+    spd_out *so = arg;
+    if (so->failed || cli_table_rows(so->t) == 0) return;
+    if (!so->opened && spd_open(so) != 0) return;
+    if (cli_table_flush(so->t, so->fmt, so->o.fp, 0, 0) != 0) so->failed = 1;
+}
+
 int cmd_spd(int argc, char **argv)
 {
     static const struct option opts[] = {
@@ -63,12 +110,18 @@ int cmd_spd(int argc, char **argv)
         {"unit", required_argument, NULL, 'u'},     {"format", required_argument, NULL, 'f'},
         {"output", required_argument, NULL, 'o'},   {"verbose", no_argument, NULL, 'v'},
         {"quiet", no_argument, NULL, 'q'},          {"help", no_argument, NULL, 'h'},
+        {"metrics", required_argument, NULL, 'M'},
+        {"backend", required_argument, NULL, 'B'},  {"input-format", required_argument, NULL, 'I'},
+        {"grid", required_argument, NULL, 'G'},
         {NULL, 0, NULL, 0},
     };
     const char *cmd = "spd", *outpath = NULL;
     lx_observer obs = LX_OBSERVER_2;
     lx_method method = LX_METHOD_AUTO;
     int fmt = CLI_FMT_TABLE, unit = 0, c;
+    cli_metrics msel = {{0}, 0};
+    int f32 = 0, backend_given = getenv("LX_BACKEND") != NULL;
+    const char *grid = NULL, *backend_text = getenv("LX_BACKEND");
     optind = 1;
     while ((c = getopt_long(argc, argv, "o:vqh", opts, NULL)) != -1) {
         switch (c) {
@@ -96,6 +149,16 @@ int cmd_spd(int argc, char **argv)
             if ((fmt = cli_format_parse(optarg)) < 0)
                 return cli_error(cmd, "--format: expected table, csv or json, not '%s'", optarg), CLI_USAGE;
             break;
+        case 'M':
+            if (cli_metrics_parse(&msel, optarg, cmd) != 0) return CLI_USAGE;
+            break;
+        case 'B': backend_text = optarg, backend_given = 1; break;
+        case 'I':
+            if (!strcmp(optarg, "f32")) f32 = 1;
+            else if (!strcmp(optarg, "text")) f32 = 0;
+            else return cli_error(cmd, "--input-format: expected text or f32, not '%s'", optarg), CLI_USAGE;
+            break;
+        case 'G': grid = optarg; break;
         case 'o': outpath = optarg; break;
         case 'v': cli_verbose++; break;
         case 'q': cli_quiet = 1; break;
@@ -107,8 +170,20 @@ int cmd_spd(int argc, char **argv)
         cli_error(cmd, "no input file (use - for standard input)");
         return CLI_USAGE;
     }
+    double g_start = 0, g_step = 0;
+    size_t g_n = 0;
+    if (f32 && (!grid || cli_spd_parse_grid(grid, &g_start, &g_step, &g_n) != 0))
+        return cli_error(cmd, "--input-format f32 needs --grid START:END:STEP in nm (END - START a whole number of steps), not '%s'",
+                         grid ? grid : ""), CLI_USAGE;
+    if (f32 && msel.any) return cli_error(cmd, "--metrics is not available with --input-format f32"), CLI_USAGE;
     lx_ctx *ctx = cli_ctx(cmd);
     if (!ctx) return CLI_RUNTIME;
+    lx_backend backend = LX_BACKEND_AUTO;
+    if (backend_text && lx_backend_parse(ctx, backend_text, &backend) != LX_OK) {
+        cli_error(cmd, "--backend: expected auto, cpu or opencl, not '%s'", backend_text);
+        lx_ctx_destroy(ctx);
+        return CLI_USAGE;
+    }
 
     const char *pu = units[unit].photometric, *ru = units[unit].radiant;
     static char ler_unit[32];
@@ -117,14 +192,37 @@ int cmd_spd(int argc, char **argv)
                            "ler_lm_per_W", "scotopic_Y", "sp_ratio", "radiant", "method"};
     const char *unitnames[] = {"", "", pu, pu, pu, "", "", "", "", "K", "", ler_unit, pu, "", ru, ""};
     int ncols = (int)(sizeof names / sizeof *names);
-    cli_table *t = cli_table_new(ncols, names, unitnames);
+    const char *allnames[sizeof names / sizeof *names + CLI_METRICS_MAX], *allunits[sizeof allnames / sizeof *allnames];
+    memcpy(allnames, names, sizeof names);
+    memcpy(allunits, unitnames, sizeof unitnames);
+    ncols = cli_metrics_columns(&msel, units[unit].name, allnames, allunits, ncols);
+    cli_table *t = cli_table_new(ncols, allnames, allunits);
     int rc = CLI_OK;
+    spd_out so;
+    memset(&so, 0, sizeof so);
+    so.t = t, so.fmt = (cli_format)fmt, so.cmd = cmd;
+    cli_spd_batch B = {ctx, cmd, t, obs, method, backend, backend_given, spd_flush, &so};
+    so.path = outpath;
     for (int i = optind; i < argc; i++) {
+        if (f32) {
+            lx_status st = cli_spd_f32_file(&B, argv[i], g_start, g_step, g_n);
+            if (st != LX_OK && cli_exit_code(st) > rc) rc = cli_exit_code(st);
+            spd_flush(&so);
+            continue;
+        }
         lx_spd_set *set = NULL;
         lx_status st = lx_spd_read_file(ctx, argv[i], &set);
         if (st != LX_OK) {
             int e = cli_fail(cmd, ctx, st);
             if (e > rc) rc = e;
+            continue;
+        }
+        if (!msel.any && cli_spd_batchable(&B, set)) {
+            if ((st = cli_spd_batch_set(&B, set)) != LX_OK) {
+                int e = cli_fail(cmd, ctx, st);
+                if (e > rc) rc = e;
+            }
+            lx_spd_set_free(set);
             continue;
         }
         for (size_t k = 0; k < set->count; k++) {
@@ -143,17 +241,20 @@ int cmd_spd(int argc, char **argv)
                           r.scotopic_Y, r.sp_ratio, r.radiant};
             for (size_t j = 0; j < sizeof v / sizeof *v; j++) cli_table_num(t, v[j]);
             cli_table_str(t, method_name(r.method));
+            if (msel.any)
+                cli_metrics_row(t, ctx, &msel, &set->spd[k], method, units[unit].name, &r, set->file,
+                                set->line ? set->line[k] : 0L, cmd);
         }
         lx_spd_set_free(set);
+        spd_flush(&so);
     }
-    cli_output o;
-    if (rc != CLI_OK && cli_table_rows(t) == 0) {
-        /* nothing computed: leave any existing output file as it was */
-    } else if (cli_output_open(&o, outpath, cmd) != 0) {
-        rc = CLI_INPUT;
-    } else {
-        int ok = cli_table_write(t, (cli_format)fmt, o.fp, 0) == 0;
-        if (cli_output_close(&o, ok, cmd) != 0 || !ok) rc = rc ? rc : CLI_INPUT;
+    /* nothing computed and something failed: leave any existing output file as it was */
+    if (!(rc != CLI_OK && cli_table_rows(t) == 0)) {
+        if (!so.opened && spd_open(&so) != 0) rc = CLI_INPUT;
+        if (so.opened) {
+            int ok = !so.failed && cli_table_flush(t, so.fmt, so.o.fp, 0, 1) == 0;
+            if (cli_output_close(&so.o, ok, cmd) != 0 || !ok) rc = rc ? rc : CLI_INPUT;
+        }
     }
     cli_table_free(t);
     lx_ctx_destroy(ctx);

@@ -4,6 +4,7 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
@@ -111,6 +112,9 @@ struct cli_table {
     const char *const *units;
     cell *cells;
     size_t ncells, cap;
+    size_t emitted;   /* rows already written by cli_table_flush */
+    int header_done;  /* csv header / json '[' written */
+    int json_array;   /* json: an array was opened */
 };
 
 cli_table *cli_table_new(int ncols, const char *const *names, const char *const *units)
@@ -156,7 +160,7 @@ void cli_table_int(cli_table *t, long long v)
     c->integer = v;
 }
 
-int cli_table_rows(const cli_table *t) { return (int)(t->ncells / (size_t)t->ncols); }
+int cli_table_rows(const cli_table *t) { return (int)(t->emitted + t->ncells / (size_t)t->ncols); }
 
 void cli_table_free(cli_table *t)
 {
@@ -203,38 +207,28 @@ static void cell_text(const cell *c, char *buf, size_t cap)
     else snprintf(buf, cap, "%.6g", c->num);
 }
 
-int cli_table_write(const cli_table *t, cli_format fmt, FILE *out, int json_array)
+static void write_row(const cli_table *t, const cell *row, cli_format fmt, FILE *out, size_t index)
 {
-    size_t rows = t->ncells / (size_t)t->ncols;
     if (fmt == CLI_FMT_CSV) {
-        for (int c = 0; c < t->ncols; c++) fprintf(out, "%s%s", c ? "," : "", t->names[c]);
+        for (int c = 0; c < t->ncols; c++) {
+            const cell *x = &row[c];
+            if (c) fputc(',', out);
+            if (x->kind == 1) csv_str(out, x->str);
+            else if (x->kind == 2) fprintf(out, "%lld", x->integer);
+            else if (isfinite(x->num)) cli_print_exact(out, x->num);
+        }
         fputc('\n', out);
-        for (size_t r = 0; r < rows; r++) {
-            for (int c = 0; c < t->ncols; c++) {
-                const cell *x = &t->cells[r * t->ncols + c];
-                if (c) fputc(',', out);
-                if (x->kind == 1) csv_str(out, x->str);
-                else if (x->kind == 2) fprintf(out, "%lld", x->integer);
-                else if (isfinite(x->num)) cli_print_exact(out, x->num);
-            }
-            fputc('\n', out);
-        }
     } else if (fmt == CLI_FMT_JSON) {
-        int array = json_array || rows != 1;
-        if (array) fputs("[\n", out);
-        for (size_t r = 0; r < rows; r++) {
-            fputs(array ? "  {" : "{", out);
-            for (int c = 0; c < t->ncols; c++) {
-                const cell *x = &t->cells[r * t->ncols + c];
-                fprintf(out, "%s\"%s\": ", c ? ", " : "", t->names[c]);
-                if (x->kind == 1) json_str(out, x->str);
-                else if (x->kind == 2) fprintf(out, "%lld", x->integer);
-                else if (isfinite(x->num)) cli_print_exact(out, x->num);
-                else fputs("null", out);
-            }
-            fputs(r + 1 < rows ? "},\n" : "}\n", out);
+        fputs(t->json_array ? (index ? ",\n  {" : "  {") : "{", out);
+        for (int c = 0; c < t->ncols; c++) {
+            const cell *x = &row[c];
+            fprintf(out, "%s\"%s\": ", c ? ", " : "", t->names[c]);
+            if (x->kind == 1) json_str(out, x->str);
+            else if (x->kind == 2) fprintf(out, "%lld", x->integer);
+            else if (isfinite(x->num)) cli_print_exact(out, x->num);
+            else fputs("null", out);
         }
-        if (array) fputs("]\n", out);
+        fputs(t->json_array ? "}" : "}\n", out);
     } else {
         /* people: one block per row, "name  value unit", aligned */
         int w = 0;
@@ -242,21 +236,85 @@ int cli_table_write(const cli_table *t, cli_format fmt, FILE *out, int json_arra
             int l = (int)strlen(t->names[c]);
             if (l > w) w = l;
         }
-        for (size_t r = 0; r < rows; r++) {
-            if (r) fputc('\n', out);
-            for (int c = 0; c < t->ncols; c++) {
-                char buf[512];
-                cell_text(&t->cells[r * t->ncols + c], buf, sizeof buf);
-                const char *u = t->units && t->units[c] ? t->units[c] : "";
-                fprintf(out, "%-*s  %s%s%s\n", w, t->names[c], buf, *u && strcmp(buf, "-") ? " " : "",
-                        strcmp(buf, "-") ? u : "");
-            }
+        if (index) fputc('\n', out);
+        for (int c = 0; c < t->ncols; c++) {
+            char buf[512];
+            cell_text(&row[c], buf, sizeof buf);
+            const char *u = t->units && t->units[c] ? t->units[c] : "";
+            fprintf(out, "%-*s  %s%s%s\n", w, t->names[c], buf, *u && strcmp(buf, "-") ? " " : "",
+                    strcmp(buf, "-") ? u : "");
         }
     }
+}
+
+int cli_table_flush(cli_table *t, cli_format fmt, FILE *out, int json_array, int final)
+{
+    size_t rows = t->ncells / (size_t)t->ncols;
+    /* json prints one object for exactly one row: hold a lone first row until we know */
+    if (fmt == CLI_FMT_JSON && !t->header_done && !final && !json_array && t->emitted + rows < 2) return 0;
+    if (!t->header_done) {
+        if (fmt == CLI_FMT_CSV) {
+            for (int c = 0; c < t->ncols; c++) fprintf(out, "%s%s", c ? "," : "", t->names[c]);
+            fputc('\n', out);
+        } else if (fmt == CLI_FMT_JSON) {
+            t->json_array = json_array || t->emitted + rows != 1;
+            if (t->json_array) fputs("[\n", out);
+        }
+        t->header_done = 1;
+    }
+    for (size_t r = 0; r < rows; r++) write_row(t, &t->cells[r * t->ncols], fmt, out, t->emitted + r);
+    for (size_t i = 0; i < t->ncells; i++) free(t->cells[i].str);
+    t->emitted += rows;
+    t->ncells = 0;
+    if (final && fmt == CLI_FMT_JSON && t->json_array) fputs(t->emitted ? "\n]\n" : "]\n", out);
     return ferror(out) ? -1 : 0;
 }
 
+int cli_table_write(cli_table *t, cli_format fmt, FILE *out, int json_array)
+{
+    return cli_table_flush(t, fmt, out, json_array, 1);
+}
+
 /* ---- atomic output ---- */
+/* Temporary files being written, removed by the signal handler on SIGINT/SIGTERM/SIGHUP so an
+ * interrupted run leaves no temporary file and the existing output untouched. */
+#define MAX_TMP 8
+static char *volatile pending[MAX_TMP];
+
+static void on_signal(int sig)
+{
+    for (int i = 0; i < MAX_TMP; i++)
+        if (pending[i]) unlink(pending[i]); /* async-signal-safe */
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
+
+static void track(char *tmp)
+{
+    static int installed;
+    if (!installed) {
+        struct sigaction sa;
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = on_signal;
+        sigemptyset(&sa.sa_mask);
+        sigaction(SIGINT, &sa, NULL);
+        sigaction(SIGTERM, &sa, NULL);
+        sigaction(SIGHUP, &sa, NULL);
+        installed = 1;
+    }
+    for (int i = 0; i < MAX_TMP; i++)
+        if (!pending[i]) {
+            pending[i] = tmp;
+            return;
+        }
+}
+
+static void untrack(const char *tmp)
+{
+    for (int i = 0; i < MAX_TMP; i++)
+        if (pending[i] == tmp) pending[i] = NULL;
+}
+
 int cli_output_open(cli_output *o, const char *path, const char *cmd)
 {
     memset(o, 0, sizeof *o);
@@ -284,6 +342,16 @@ int cli_output_open(cli_output *o, const char *path, const char *cmd)
     umask(mask);
     fchmod(fd, 0666 & ~mask);
     o->fp = fdopen(fd, "w");
+    if (!o->fp) {
+        cli_error(cmd, "%s: cannot write: %s", path, strerror(errno));
+        close(fd);
+        unlink(o->tmp);
+        free(o->path);
+        free(o->tmp);
+        o->path = o->tmp = NULL;
+        return -1;
+    }
+    track(o->tmp);
     return 0;
 }
 
@@ -303,6 +371,7 @@ int cli_output_close(cli_output *o, int ok, const char *cmd)
         if (ok) cli_error(cmd, "%s: cannot write: %s", o->path, strerror(errno));
         unlink(o->tmp);
     }
+    untrack(o->tmp);
     free(o->path);
     free(o->tmp);
     o->path = o->tmp = NULL;

@@ -68,3 +68,10 @@ expect_rc 0 "-o success"
 if grep -q '^file,spectrum' "$T/keep.csv" && [ -z "$(ls "$T" | grep tmp)" ]; then ok "-o replaced the file, no temporary left"; else notok "-o" "$(ls "$T")"; fi
 run spd -o /nonexistent-dir/x.csv $S/cie_illuminants.csv
 expect_rc 2 "-o into a missing directory"
+
+# the Argyll .sp sample holds FL2 and FL11: the same results as the CIE columns of the csv sample
+run spd --format csv samples/spd/fl2_fl11_argyll.sp
+a=$(printf '%s\n' "$out" | cut -d, -f2- | sed -n 2,3p)
+run spd --format csv samples/spd/cie_illuminants.csv
+b=$(printf '%s\n' "$out" | cut -d, -f2- | sed -n 4,5p)
+if [ -n "$a" ] && [ "$a" = "$b" ]; then ok "Argyll .sp sample = csv sample, bit for bit"; else notok "Argyll .sp sample" "$a / $b"; fi

@@ -1,0 +1,574 @@
+/* batch.c - batch spectral integration: N spectra on one uniform grid against K weighting
+ * functions (cie15 rule), on the CPU (AVX2/FMA vectorised, pthreads, double accumulation) or on
+ * OpenCL (kernels/spd_batch.cl, chunked by CL_DEVICE_MAX_MEM_ALLOC_SIZE); backend choice; resampling. */
+#include "lx_private.h"
+
+#include <math.h>
+#include <pthread.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#if defined(__GNUC__) && defined(__x86_64__)
+#include <immintrin.h>
+#define LX_HAVE_AVX2_PATH 1
+#else
+#define LX_HAVE_AVX2_PATH 0
+#endif
+
+/* Break-even of LX_BACKEND_AUTO, in samples (spectra x wavelengths), measured with `luxcalc bench
+ * spd` (README "opencl"). Cold: OpenCL not yet initialised on the context (device start-up and
+ * program build, about 0.3-1 s on PoCL); warm: only the per-call overhead remains. A CPU-type
+ * OpenCL device runs on the same cores as the CPU path and never repays anything, so AUTO
+ * keeps the CPU path for it. */
+#define LX_AUTO_COLD_SAMPLES 2000000000.0 /* ~4e6 spectra of 471 samples */
+#define LX_AUTO_WARM_SAMPLES 50000000.0   /* ~1e5 spectra of 471 samples */
+
+/* ---- backend names ---- */
+
+lx_status lx_backend_parse(lx_ctx *ctx, const char *text, lx_backend *out)
+{
+    if (!text || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "backend: NULL argument");
+    if (!strcmp(text, "auto")) *out = LX_BACKEND_AUTO;
+    else if (!strcmp(text, "cpu")) *out = LX_BACKEND_CPU;
+    else if (!strcmp(text, "opencl")) *out = LX_BACKEND_OPENCL;
+    else return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown backend '%s' (expected auto, cpu or opencl)", text);
+    return LX_OK;
+}
+
+lx_backend lx_backend_from_env(void)
+{
+    const char *s = getenv("LX_BACKEND");
+    lx_backend b = LX_BACKEND_AUTO;
+    if (s && *s) lx_backend_parse(NULL, s, &b);
+    return b;
+}
+
+/* ---- weights ---- */
+
+lx_status lx__batch_weights(lx_ctx *ctx, const lx_function *fns, size_t k, double start_nm, double step_nm,
+                            size_t n_lambda, double *w)
+{
+    for (size_t f = 0; f < k; f++) {
+        lx_spd fn;
+        lx_status st = lx_function_get(ctx, fns[f], &fn);
+        if (st) return st;
+        for (size_t j = 0; j < n_lambda; j++)
+            w[f * n_lambda + j] = lx__interp(fn.lambda_nm, fn.value, fn.n, start_nm + (double)j * step_nm) * step_nm;
+    }
+    return LX_OK;
+}
+
+/* ---- the CPU path ---- */
+
+typedef struct cpu_job {
+    const lx_batch *b;
+    size_t stride, k, k4, nb; /* k4: k rounded up to 4; nb: blocks of 4 wavelengths */
+    const double *w;          /* row-major k x n_lambda */
+    const double *w4;         /* AVX2 layout: [group][block][4 functions][4 lanes], zero padded */
+    double *out;
+    size_t i0, i1;
+    int vector;
+} cpu_job;
+
+static void scalar_rows(const cpu_job *J)
+{
+    const lx_batch *b = J->b;
+    size_t n = b->n_lambda;
+    for (size_t i = J->i0; i < J->i1; i++) {
+        for (size_t f = 0; f < J->k; f++) {
+            const double *wf = J->w + f * n;
+            double a0 = 0, a1 = 0, a2 = 0, a3 = 0;
+            size_t j = 0;
+            if (b->dtype == LX_F32) {
+                const float *r = (const float *)b->values + i * J->stride;
+                for (; j + 4 <= n; j += 4) {
+                    a0 += (double)r[j] * wf[j];
+                    a1 += (double)r[j + 1] * wf[j + 1];
+                    a2 += (double)r[j + 2] * wf[j + 2];
+                    a3 += (double)r[j + 3] * wf[j + 3];
+                }
+                for (; j < n; j++) a0 += (double)r[j] * wf[j];
+            } else {
+                const double *r = (const double *)b->values + i * J->stride;
+                for (; j + 4 <= n; j += 4) {
+                    a0 += r[j] * wf[j];
+                    a1 += r[j + 1] * wf[j + 1];
+                    a2 += r[j + 2] * wf[j + 2];
+                    a3 += r[j + 3] * wf[j + 3];
+                }
+                for (; j < n; j++) a0 += r[j] * wf[j];
+            }
+            J->out[i * J->k + f] = (a0 + a1) + (a2 + a3);
+        }
+    }
+}
+
+#if LX_HAVE_AVX2_PATH
+__attribute__((target("avx2,fma"))) static inline double hsum4(__m256d v)
+{
+    __m128d s = _mm_add_pd(_mm256_castpd256_pd128(v), _mm256_extractf128_pd(v, 1));
+    return _mm_cvtsd_f64(_mm_add_sd(s, _mm_unpackhi_pd(s, s)));
+}
+
+/* One spectrum against four functions per pass: per 4 wavelengths one load (+ conversion), four
+ * weight loads, four FMAs into double accumulators. The last partial block uses masked loads. */
+__attribute__((target("avx2,fma"))) static void avx2_rows(const cpu_job *J)
+{
+    const lx_batch *b = J->b;
+    size_t n = b->n_lambda, nb = J->nb, full = n / 4, rem = n % 4;
+    __m256i mask64 = _mm256_setr_epi64x(rem > 0 ? -1 : 0, rem > 1 ? -1 : 0, rem > 2 ? -1 : 0, 0);
+    __m128i mask32 = _mm_setr_epi32(rem > 0 ? -1 : 0, rem > 1 ? -1 : 0, rem > 2 ? -1 : 0, 0);
+    for (size_t i = J->i0; i < J->i1; i++) {
+        const float *rf = (const float *)b->values + i * J->stride;
+        const double *rd = (const double *)b->values + i * J->stride;
+        for (size_t g = 0; g < J->k4 / 4; g++) {
+            const double *wg = J->w4 + g * nb * 16;
+            __m256d a0 = _mm256_setzero_pd(), a1 = a0, a2 = a0, a3 = a0;
+            size_t q = 0;
+            if (b->dtype == LX_F32) {
+                for (; q < full; q++) {
+                    __m256d x = _mm256_cvtps_pd(_mm_loadu_ps(rf + 4 * q));
+                    const double *wq = wg + q * 16;
+                    a0 = _mm256_fmadd_pd(x, _mm256_loadu_pd(wq), a0);
+                    a1 = _mm256_fmadd_pd(x, _mm256_loadu_pd(wq + 4), a1);
+                    a2 = _mm256_fmadd_pd(x, _mm256_loadu_pd(wq + 8), a2);
+                    a3 = _mm256_fmadd_pd(x, _mm256_loadu_pd(wq + 12), a3);
+                }
+            } else {
+                for (; q < full; q++) {
+                    __m256d x = _mm256_loadu_pd(rd + 4 * q);
+                    const double *wq = wg + q * 16;
+                    a0 = _mm256_fmadd_pd(x, _mm256_loadu_pd(wq), a0);
+                    a1 = _mm256_fmadd_pd(x, _mm256_loadu_pd(wq + 4), a1);
+                    a2 = _mm256_fmadd_pd(x, _mm256_loadu_pd(wq + 8), a2);
+                    a3 = _mm256_fmadd_pd(x, _mm256_loadu_pd(wq + 12), a3);
+                }
+            }
+            if (rem) {
+                __m256d x = b->dtype == LX_F32 ? _mm256_cvtps_pd(_mm_maskload_ps(rf + 4 * q, mask32))
+                                               : _mm256_maskload_pd(rd + 4 * q, mask64);
+                const double *wq = wg + q * 16;
+                a0 = _mm256_fmadd_pd(x, _mm256_loadu_pd(wq), a0);
+                a1 = _mm256_fmadd_pd(x, _mm256_loadu_pd(wq + 4), a1);
+                a2 = _mm256_fmadd_pd(x, _mm256_loadu_pd(wq + 8), a2);
+                a3 = _mm256_fmadd_pd(x, _mm256_loadu_pd(wq + 12), a3);
+            }
+            double s[4] = {hsum4(a0), hsum4(a1), hsum4(a2), hsum4(a3)};
+            for (size_t f = 0; f < 4 && 4 * g + f < J->k; f++) J->out[i * J->k + 4 * g + f] = s[f];
+        }
+    }
+}
+
+static int cpu_has_avx2(void)
+{
+    static int cached = -1; /* the answer never changes; a race writes the same value */
+    if (cached < 0) {
+        __builtin_cpu_init();
+        cached = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+    }
+    return cached;
+}
+#endif
+
+static void *cpu_thread(void *arg)
+{
+    const cpu_job *J = arg;
+#if LX_HAVE_AVX2_PATH
+    if (J->vector) {
+        avx2_rows(J);
+        return NULL;
+    }
+#endif
+    scalar_rows(J);
+    return NULL;
+}
+
+static int online_cores(void)
+{
+    long n = sysconf(_SC_NPROCESSORS_ONLN);
+    return n < 1 ? 1 : n > 64 ? 64 : (int)n;
+}
+
+static lx_status batch_cpu(lx_ctx *ctx, const lx_batch *b, const lx_function *fns, size_t k, int threads,
+                           double *out)
+{
+    size_t n = b->n_lambda, nb = (n + 3) / 4, k4 = (k + 3) / 4 * 4;
+    double *w = malloc(k * n * sizeof *w);
+    double *w4 = calloc(k4 / 4 * nb * 16, sizeof *w4);
+    if (!w || !w4) {
+        free(w);
+        free(w4);
+        return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for the batch weights");
+    }
+    lx_status st = lx__batch_weights(ctx, fns, k, b->start_nm, b->step_nm, n, w);
+    if (st) {
+        free(w);
+        free(w4);
+        return st;
+    }
+    for (size_t f = 0; f < k; f++)
+        for (size_t j = 0; j < n; j++) w4[((f / 4) * nb + j / 4) * 16 + (f % 4) * 4 + j % 4] = w[f * n + j];
+    int vector = 0;
+#if LX_HAVE_AVX2_PATH
+    const char *nv = getenv("LX_NOVECTOR");
+    vector = cpu_has_avx2() && !(nv && *nv && strcmp(nv, "0"));
+#endif
+    int T = threads > 0 ? threads : online_cores();
+    size_t per_thread_min = 512; /* below this a thread costs more than it saves */
+    if ((size_t)T > b->n_spectra / per_thread_min) T = (int)(b->n_spectra / per_thread_min);
+    if (T < 1) T = 1;
+    if (T > 64) T = 64;
+    cpu_job jobs[64];
+    pthread_t tid[64];
+    int started[64] = {0};
+    size_t stride = b->row_stride ? b->row_stride : n;
+    for (int t = 0; t < T; t++) {
+        cpu_job *J = &jobs[t];
+        J->b = b;
+        J->stride = stride;
+        J->k = k;
+        J->k4 = k4;
+        J->nb = nb;
+        J->w = w;
+        J->w4 = w4;
+        J->out = out;
+        J->i0 = b->n_spectra * (size_t)t / (size_t)T;
+        J->i1 = b->n_spectra * (size_t)(t + 1) / (size_t)T;
+        J->vector = vector;
+    }
+    for (int t = 1; t < T; t++) started[t] = pthread_create(&tid[t], NULL, cpu_thread, &jobs[t]) == 0;
+    cpu_thread(&jobs[0]);
+    for (int t = 1; t < T; t++) {
+        if (started[t]) pthread_join(tid[t], NULL);
+        else cpu_thread(&jobs[t]); /* could not start a thread: do its share here */
+    }
+    free(w);
+    free(w4);
+    return LX_OK;
+}
+
+/* ---- the OpenCL path ---- */
+
+#if LX_OPENCL
+static lx_status batch_opencl(lx_ctx *ctx, const lx_batch *b, const lx_function *fns, size_t k,
+                              size_t chunk_spectra, double *out)
+{
+    lx__cl *cl = NULL;
+    lx_status st = lx__cl_get(ctx, &cl);
+    if (st) return st;
+    const char *acc = getenv("LX_CL_ACCUM"); /* "kahan": compensated float (measurement switch) */
+    int kahan = !cl->info.fp64 || (acc && !strcmp(acc, "kahan"));
+    if (kahan && b->dtype == LX_F64)
+        return lx__error(ctx, LX_EUNSUPPORTED, NULL, 0, "OpenCL device %s has no fp64 for double input",
+                         cl->info.device_name);
+    cl_kernel kern;
+    st = lx__cl_kernel(ctx, cl, kahan ? "spd_batch_f32_kahan" : b->dtype == LX_F32 ? "spd_batch_f32" : "spd_batch_f64",
+                       &kern);
+    if (st) return st;
+    size_t n = b->n_lambda, stride = b->row_stride ? b->row_stride : n;
+    size_t es = b->dtype == LX_F32 ? sizeof(float) : sizeof(double);
+    double *w = malloc(k * n * sizeof *w);
+    float *wf = kahan ? malloc(k * n * sizeof *wf) : NULL;
+    float *pairs = NULL;
+    cl_mem wbuf = NULL;
+    cl_int err = CL_SUCCESS;
+    if (!w || (kahan && !wf)) {
+        st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+        goto done;
+    }
+    st = lx__batch_weights(ctx, fns, k, b->start_nm, b->step_nm, n, w);
+    if (st) goto done;
+    if (kahan)
+        for (size_t i = 0; i < k * n; i++) wf[i] = (float)w[i];
+    wbuf = clCreateBuffer(cl->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, k * n * (kahan ? sizeof(float) : sizeof(double)),
+                          kahan ? (void *)wf : (void *)w, &err);
+    if ((st = lx__cl_check(ctx, err, "clCreateBuffer(weights)"))) goto done;
+
+    /* Chunk: rows whose input fits CL_DEVICE_MAX_MEM_ALLOC_SIZE (and the caller's cap). */
+    unsigned long long max_alloc = cl->info.max_alloc_bytes ? cl->info.max_alloc_bytes : (128ull << 20);
+    size_t row_bytes = stride * es, out_row = k * (kahan ? 2 * sizeof(float) : sizeof(double));
+    size_t by_alloc = (size_t)(max_alloc / (row_bytes > out_row ? row_bytes : out_row));
+    size_t rows_max = by_alloc;
+    if (chunk_spectra && chunk_spectra < rows_max) rows_max = chunk_spectra;
+    if (rows_max > 0xffffffffu) rows_max = 0xffffffffu;
+    if (rows_max == 0) {
+        st = lx__error(ctx, LX_EDEVICE, NULL, 0, "one spectrum (%zu bytes) exceeds CL_DEVICE_MAX_MEM_ALLOC_SIZE (%llu)",
+                       row_bytes, max_alloc);
+        goto done;
+    }
+    if (kahan) {
+        pairs = malloc(rows_max * out_row);
+        if (!pairs) {
+            st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+            goto done;
+        }
+    }
+    unsigned cu = cl->info.compute_units ? cl->info.compute_units : 1;
+    for (size_t r0 = 0; r0 < b->n_spectra && !st; r0 += rows_max) {
+        size_t rows = b->n_spectra - r0 < rows_max ? b->n_spectra - r0 : rows_max;
+        /* the last row needs only n_lambda elements, not a whole stride */
+        size_t in_bytes = ((rows - 1) * stride + n) * es;
+        const char *src = (const char *)b->values + r0 * stride * es;
+        cl_mem in = clCreateBuffer(cl->context, CL_MEM_READ_ONLY | CL_MEM_USE_HOST_PTR, in_bytes, (void *)src, &err);
+        if ((st = lx__cl_check(ctx, err, "clCreateBuffer(spectra)"))) break;
+        void *host_out = kahan ? (void *)pairs : (void *)(out + r0 * k);
+        cl_mem ob = clCreateBuffer(cl->context, CL_MEM_WRITE_ONLY | CL_MEM_USE_HOST_PTR, rows * out_row, host_out, &err);
+        if ((st = lx__cl_check(ctx, err, "clCreateBuffer(results)"))) {
+            clReleaseMemObject(in);
+            break;
+        }
+        /* CPU devices: a few contiguous runs per compute unit; GPUs: one spectrum per work-item */
+        size_t items = cl->info.is_cpu ? (size_t)cu * 8 : rows;
+        if (items > rows) items = rows;
+        cl_uint per_item = (cl_uint)((rows + items - 1) / items);
+        size_t global = (rows + per_item - 1) / per_item;
+        cl_uint a_n = (cl_uint)rows, a_nl = (cl_uint)n, a_k = (cl_uint)k;
+        cl_ulong a_stride = stride;
+        err = clSetKernelArg(kern, 0, sizeof in, &in);
+        err |= clSetKernelArg(kern, 1, sizeof a_n, &a_n);
+        err |= clSetKernelArg(kern, 2, sizeof a_nl, &a_nl);
+        err |= clSetKernelArg(kern, 3, sizeof a_stride, &a_stride);
+        err |= clSetKernelArg(kern, 4, sizeof wbuf, &wbuf);
+        err |= clSetKernelArg(kern, 5, sizeof a_k, &a_k);
+        err |= clSetKernelArg(kern, 6, sizeof ob, &ob);
+        err |= clSetKernelArg(kern, 7, sizeof per_item, &per_item);
+        if (!(st = lx__cl_check(ctx, err, "clSetKernelArg"))) {
+            err = clEnqueueNDRangeKernel(cl->queue, kern, 1, NULL, &global, NULL, 0, NULL, NULL);
+            st = lx__cl_check(ctx, err, "clEnqueueNDRangeKernel(spd_batch)");
+        }
+        if (!st) {
+            /* mapping the results makes them visible in host_out (zero-copy on CPU devices) */
+            void *p = clEnqueueMapBuffer(cl->queue, ob, CL_TRUE, CL_MAP_READ, 0, rows * out_row, 0, NULL, NULL, &err);
+            if (!(st = lx__cl_check(ctx, err, "clEnqueueMapBuffer(results)"))) {
+                if (p != host_out) memcpy(host_out, p, rows * out_row);
+                clEnqueueUnmapMemObject(cl->queue, ob, p, 0, NULL, NULL);
+                err = clFinish(cl->queue);
+                st = lx__cl_check(ctx, err, "clFinish");
+            }
+        }
+        if (!st && kahan)
+            for (size_t i = 0; i < rows * k; i++) out[r0 * k + i] = (double)pairs[2 * i] + (double)pairs[2 * i + 1];
+        clReleaseMemObject(in);
+        clReleaseMemObject(ob);
+    }
+done:
+    if (wbuf) clReleaseMemObject(wbuf);
+    clReleaseKernel(kern);
+    free(w);
+    free(wf);
+    free(pairs);
+    return st;
+}
+#endif
+
+/* ---- backend choice ---- */
+
+/* The backend to try for `samples` of work: CPU or OPENCL (AUTO resolved). */
+static lx_backend choose_backend(lx_ctx *ctx, lx_backend asked, double samples)
+{
+    if (asked == LX_BACKEND_AUTO) asked = lx_backend_from_env();
+    if (asked != LX_BACKEND_AUTO) return asked;
+#if LX_OPENCL
+    int warm = lx_cl_ready(ctx);
+    double limit = warm ? LX_AUTO_WARM_SAMPLES : LX_AUTO_COLD_SAMPLES;
+    const char *be = getenv("LX_AUTO_BREAK_EVEN"); /* samples; for measuring and tests */
+    if (be && *be) limit = atof(be);
+    else if (warm && ((lx__cl *)ctx->cl)->info.is_cpu) {
+        lx__log(ctx, LX_LOG_DEBUG, "backend auto: the OpenCL device is a CPU (same cores); using the CPU path");
+        return LX_BACKEND_CPU;
+    }
+    if (samples < limit) {
+        lx__log(ctx, LX_LOG_DEBUG, "backend auto: %.3g samples below the OpenCL break-even %.3g; using the CPU path",
+                samples, limit);
+        return LX_BACKEND_CPU;
+    }
+    return LX_BACKEND_OPENCL;
+#else
+    (void)ctx, (void)samples;
+    return LX_BACKEND_CPU;
+#endif
+}
+
+static lx_status check_batch(lx_ctx *ctx, const lx_batch *b, const lx_function *fns, size_t k, const double *out)
+{
+    if (!b || !out || (k && !fns)) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch: NULL argument");
+    if (b->n_spectra && !b->values) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch: NULL values");
+    if (b->n_lambda < 1) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch: n_lambda must be at least 1");
+    if (b->row_stride && b->row_stride < b->n_lambda)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "batch: row_stride %zu < n_lambda %zu", b->row_stride, b->n_lambda);
+    if (!(b->step_nm > 0) || !isfinite(b->step_nm) || !isfinite(b->start_nm))
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "batch: the grid needs a finite start and a positive step");
+    if (b->dtype != LX_F32 && b->dtype != LX_F64) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch: unknown dtype");
+    for (size_t f = 0; f < k; f++)
+        if ((int)fns[f] < 0 || fns[f] >= LX_FN_COUNT)
+            return lx__error(ctx, LX_EINVAL, NULL, 0, "batch: unknown weighting function %d", (int)fns[f]);
+    return LX_OK;
+}
+
+lx_status lx_batch_integrate(lx_ctx *ctx, const lx_batch *b, const lx_function *fns, size_t k,
+                             lx_batch_opts *opts, double *out)
+{
+    lx_status st = check_batch(ctx, b, fns, k, out);
+    if (st) return st;
+    lx_batch_opts defaults = {0};
+    if (!opts) opts = &defaults;
+    if (b->n_spectra == 0 || k == 0) {
+        opts->used = LX_BACKEND_CPU;
+        return LX_OK;
+    }
+    lx_backend asked = opts->backend == LX_BACKEND_AUTO ? lx_backend_from_env() : opts->backend;
+    lx_backend be = choose_backend(ctx, asked, (double)b->n_spectra * (double)b->n_lambda);
+    if (be == LX_BACKEND_OPENCL) {
+#if LX_OPENCL
+        st = batch_opencl(ctx, b, fns, k, opts->chunk_spectra, out);
+        if (st == LX_OK) {
+            opts->used = LX_BACKEND_OPENCL;
+            return LX_OK;
+        }
+        if (asked == LX_BACKEND_OPENCL || st == LX_ENOMEM || st == LX_EINVAL) return st;
+        lx__log(ctx, LX_LOG_INFO, "OpenCL unavailable (%s); falling back to the CPU path", lx_ctx_errmsg(ctx));
+#else
+        if (asked == LX_BACKEND_OPENCL) return lx__error(ctx, LX_EUNSUPPORTED, NULL, 0, "this build has no OpenCL (built with LX_OPENCL=0)");
+#endif
+    }
+    st = batch_cpu(ctx, b, fns, k, opts->threads, out);
+    if (!st) opts->used = LX_BACKEND_CPU;
+    return st;
+}
+
+/* ---- resampling ---- */
+
+static double resample_at(const double *x, const double *y, size_t n, size_t *lo, double xq)
+{
+    if (n < 1 || !(xq >= x[0]) || !(xq <= x[n - 1])) return 0.0;
+    while (*lo + 2 < n && x[*lo + 1] <= xq) (*lo)++;
+    size_t l = *lo, h = l + 1 < n ? l + 1 : l;
+    if (xq == x[l]) return y[l];
+    if (xq == x[h]) return y[h];
+    double t = (xq - x[l]) / (x[h] - x[l]);
+    return y[l] + t * (y[h] - y[l]);
+}
+
+static void resample_cpu(size_t ns, const double *lam, const double *val, const size_t *offset, const size_t *n_in,
+                         lx_batch *dst)
+{
+    size_t stride = dst->row_stride ? dst->row_stride : dst->n_lambda;
+    for (size_t i = 0; i < ns; i++) {
+        size_t lo = 0;
+        const double *x = lam + offset[i], *y = val + offset[i];
+        for (size_t j = 0; j < dst->n_lambda; j++) {
+            double r = resample_at(x, y, n_in[i], &lo, dst->start_nm + (double)j * dst->step_nm);
+            if (dst->dtype == LX_F32) ((float *)(uintptr_t)dst->values)[i * stride + j] = (float)r;
+            else ((double *)(uintptr_t)dst->values)[i * stride + j] = r;
+        }
+    }
+}
+
+#if LX_OPENCL
+static lx_status resample_opencl(lx_ctx *ctx, size_t ns, const double *lam, const double *val, const size_t *offset,
+                                 const size_t *n_in, lx_batch *dst)
+{
+    lx__cl *cl = NULL;
+    lx_status st = lx__cl_get(ctx, &cl);
+    if (st) return st;
+    if (!cl->info.fp64) return lx__error(ctx, LX_EUNSUPPORTED, NULL, 0, "the resample kernel needs fp64");
+    cl_kernel kern;
+    st = lx__cl_kernel(ctx, cl, dst->dtype == LX_F32 ? "spd_resample_f32" : "spd_resample_f64", &kern);
+    if (st) return st;
+    size_t total = 0;
+    for (size_t i = 0; i < ns; i++)
+        if (offset[i] + n_in[i] > total) total = offset[i] + n_in[i];
+    if (total == 0) total = 1;
+    cl_ulong *off = malloc(ns * sizeof *off);
+    cl_uint *cnt = malloc(ns * sizeof *cnt);
+    size_t stride = dst->row_stride ? dst->row_stride : dst->n_lambda;
+    size_t es = dst->dtype == LX_F32 ? sizeof(float) : sizeof(double);
+    size_t out_bytes = ((ns - 1) * stride + dst->n_lambda) * es;
+    cl_mem m[5] = {0};
+    cl_int err = CL_SUCCESS;
+    if (!off || !cnt) {
+        st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+        goto done;
+    }
+    for (size_t i = 0; i < ns; i++) {
+        off[i] = offset[i];
+        cnt[i] = (cl_uint)n_in[i];
+    }
+    cl_mem_flags ro = CL_MEM_READ_ONLY | CL_MEM_USE_HOST_PTR;
+    m[0] = clCreateBuffer(cl->context, ro, total * sizeof(double), (void *)lam, &err);
+    if (!err) m[1] = clCreateBuffer(cl->context, ro, total * sizeof(double), (void *)val, &err);
+    if (!err) m[2] = clCreateBuffer(cl->context, ro, ns * sizeof *off, off, &err);
+    if (!err) m[3] = clCreateBuffer(cl->context, ro, ns * sizeof *cnt, cnt, &err);
+    if (!err) m[4] = clCreateBuffer(cl->context, CL_MEM_WRITE_ONLY | CL_MEM_USE_HOST_PTR, out_bytes, (void *)(uintptr_t)dst->values, &err);
+    if ((st = lx__cl_check(ctx, err, "clCreateBuffer(resample)"))) goto done;
+    cl_uint a_ns = (cl_uint)ns, a_no = (cl_uint)dst->n_lambda;
+    cl_double a_start = dst->start_nm, a_step = dst->step_nm;
+    cl_ulong a_stride = stride;
+    for (int a = 0; a < 4; a++) err |= clSetKernelArg(kern, (cl_uint)a, sizeof(cl_mem), &m[a]);
+    err |= clSetKernelArg(kern, 4, sizeof a_ns, &a_ns);
+    err |= clSetKernelArg(kern, 5, sizeof a_start, &a_start);
+    err |= clSetKernelArg(kern, 6, sizeof a_step, &a_step);
+    err |= clSetKernelArg(kern, 7, sizeof a_no, &a_no);
+    err |= clSetKernelArg(kern, 8, sizeof a_stride, &a_stride);
+    err |= clSetKernelArg(kern, 9, sizeof(cl_mem), &m[4]);
+    if ((st = lx__cl_check(ctx, err, "clSetKernelArg(resample)"))) goto done;
+    size_t global = ns;
+    err = clEnqueueNDRangeKernel(cl->queue, kern, 1, NULL, &global, NULL, 0, NULL, NULL);
+    if ((st = lx__cl_check(ctx, err, "clEnqueueNDRangeKernel(spd_resample)"))) goto done;
+    void *p = clEnqueueMapBuffer(cl->queue, m[4], CL_TRUE, CL_MAP_READ, 0, out_bytes, 0, NULL, NULL, &err);
+    if ((st = lx__cl_check(ctx, err, "clEnqueueMapBuffer(resample)"))) goto done;
+    if (p != dst->values) memcpy((void *)(uintptr_t)dst->values, p, out_bytes);
+    clEnqueueUnmapMemObject(cl->queue, m[4], p, 0, NULL, NULL);
+    st = lx__cl_check(ctx, clFinish(cl->queue), "clFinish");
+done:
+    for (int a = 0; a < 5; a++)
+        if (m[a]) clReleaseMemObject(m[a]);
+    clReleaseKernel(kern);
+    free(off);
+    free(cnt);
+    return st;
+}
+#endif
+
+lx_status lx_batch_resample(lx_ctx *ctx, size_t n_spectra, const double *lambda_nm, const double *value,
+                            const size_t *offset, const size_t *n_in, lx_batch *dst, lx_batch_opts *opts)
+{
+    if (!dst || (n_spectra && (!lambda_nm || !value || !offset || !n_in || !dst->values)))
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "resample: NULL argument");
+    if (dst->n_lambda < 1 || !(dst->step_nm > 0) || (dst->row_stride && dst->row_stride < dst->n_lambda) ||
+        (dst->dtype != LX_F32 && dst->dtype != LX_F64))
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "resample: invalid destination grid");
+    for (size_t i = 0; i < n_spectra; i++) {
+        const double *x = lambda_nm + offset[i];
+        for (size_t j = 1; j < n_in[i]; j++)
+            if (!(x[j] > x[j - 1]))
+                return lx__error(ctx, LX_EINVAL, NULL, 0, "resample: spectrum %zu: wavelengths not strictly increasing at sample %zu", i, j);
+    }
+    lx_batch_opts defaults = {0};
+    if (!opts) opts = &defaults;
+    dst->n_spectra = n_spectra;
+    if (n_spectra == 0) {
+        opts->used = LX_BACKEND_CPU;
+        return LX_OK;
+    }
+    lx_backend asked = opts->backend == LX_BACKEND_AUTO ? lx_backend_from_env() : opts->backend;
+    lx_backend be = choose_backend(ctx, asked, (double)n_spectra * (double)dst->n_lambda);
+    if (be == LX_BACKEND_OPENCL) {
+#if LX_OPENCL
+        lx_status st = resample_opencl(ctx, n_spectra, lambda_nm, value, offset, n_in, dst);
+        if (st == LX_OK) {
+            opts->used = LX_BACKEND_OPENCL;
+            return LX_OK;
+        }
+        if (asked == LX_BACKEND_OPENCL || st == LX_ENOMEM) return st;
+        lx__log(ctx, LX_LOG_INFO, "OpenCL unavailable (%s); falling back to the CPU path", lx_ctx_errmsg(ctx));
+#else
+        if (asked == LX_BACKEND_OPENCL) return lx__error(ctx, LX_EUNSUPPORTED, NULL, 0, "this build has no OpenCL (built with LX_OPENCL=0)");
+#endif
+    }
+    resample_cpu(n_spectra, lambda_nm, value, offset, n_in, dst);
+    opts->used = LX_BACKEND_CPU;
+    return LX_OK;
+}

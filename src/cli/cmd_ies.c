@@ -1,0 +1,228 @@
+/* cmd_ies.c - `luxcalc ies`: summaries of IES LM-63 / EULUMDAT files (flux integrated from the
+ * table, peak, beam and field angles, symmetry) and writing LM-63-2002 from a file or a model. */
+#include "cli.h"
+#include "lighting.h"
+
+#include <getopt.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char help[] =
+    "usage: luxcalc ies [OPTIONS] FILE...\n"
+    "       luxcalc ies --write OUT.ies (FILE | --model point|warn|lambert --flux F [...])\n"
+    "\n"
+    "Reads IES LM-63 files (1986, 1991, 1995, 2002, 2019) and EULUMDAT (.ldt) files and prints,\n"
+    "per file: file,format,lumens,max_intensity_cd,beam_angle_deg,field_angle_deg,symmetry, then\n"
+    "rated_lumens (the header's lamp lumens, or the stated luminaire lumens for absolute photometry),\n"
+    "stated_lumens (the luminaire flux the file states: [_ABSOLUTELUMENS], EULUMDAT lamps x LORL),\n"
+    "lumens_diff (lumens / stated_lumens - 1), photometric_type, planes, angles, the C90-C270 beam\n"
+    "and field angles, downward_fraction, width_m, length_m, height_m.\n"
+    "lumens is the exact integral over the sphere of the bilinear interpolant of the table. Beam and\n"
+    "field angles: full angles to 50 % and 10 % of the peak in the C0-C180 plane.\n"
+    "\n"
+    "options:\n"
+    "  --format table|csv|json   output format (default table)\n"
+    "  -o FILE                   write the results to FILE (atomically)\n"
+    "  --write OUT.ies           write LM-63-2002: the one FILE converted, or the --model\n"
+    "  --model point|warn|lambert  isotropic point, Warn spot (I = (S+1)F/2pi cos^S), Lambertian panel\n"
+    "  --flux F                  model flux (default unit lm)\n"
+    "  --exponent S              Warn exponent (or --beam ANGLE: full 50 % beam angle)\n"
+    "  --beam ANGLE              Warn beam angle (e.g. 30deg)\n"
+    "  --width W, --length L     luminous opening in m (width along C0)\n"
+    "  --step ANGLE              gamma step of the written table (default 1deg, finer for spots)\n"
+    "  --catalog TEXT            the [LUMCAT] text of the written file\n"
+    "\n"
+    "examples:\n"
+    "  luxcalc ies --format csv downlight.ies street.ldt\n"
+    "  luxcalc ies --write spot30.ies --model warn --beam 30deg --flux 1000lm\n";
+
+static int write_ies(lx_ctx *ctx, const lx_luminaire *l, const char *path)
+{
+    char *text = NULL;
+    size_t len = 0;
+    lx_status st = lx_luminaire_write_ies(ctx, l, &text, &len);
+    if (st) return cli_fail("ies", ctx, st);
+    cli_output o;
+    if (cli_output_open(&o, path, "ies")) {
+        free(text);
+        return CLI_RUNTIME;
+    }
+    size_t w = fwrite(text, 1, len, o.fp);
+    free(text);
+    if (cli_output_close(&o, w == len, "ies") || w != len) return CLI_RUNTIME;
+    return CLI_OK;
+}
+
+int cmd_ies(int argc, char **argv)
+{
+    static const struct option opts[] = {
+        {"format", required_argument, NULL, 'f'}, {"output", required_argument, NULL, 'o'},
+        {"write", required_argument, NULL, 'w'},  {"model", required_argument, NULL, 'm'},
+        {"flux", required_argument, NULL, 'F'},   {"exponent", required_argument, NULL, 'S'},
+        {"beam", required_argument, NULL, 'B'},   {"width", required_argument, NULL, 'W'},
+        {"length", required_argument, NULL, 'L'}, {"step", required_argument, NULL, 's'},
+        {"catalog", required_argument, NULL, 'c'}, {"help", no_argument, NULL, 'h'},
+        {NULL, 0, NULL, 0},
+    };
+    cli_format fmt = CLI_FMT_TABLE;
+    const char *outpath = NULL, *write = NULL, *model = NULL;
+    const char *flux_t = NULL, *exp_t = NULL, *beam_t = NULL, *w_t = NULL, *l_t = NULL, *step_t = NULL;
+    lx_lum_model m = {0};
+    int c;
+    optind = 1;
+    while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+        switch (c) {
+        case 'f':
+            if (lt_format("ies", optarg, &fmt)) return CLI_USAGE;
+            break;
+        case 'o': outpath = optarg; break;
+        case 'w': write = optarg; break;
+        case 'm': model = optarg; break;
+        case 'F': flux_t = optarg; break;
+        case 'S': exp_t = optarg; break;
+        case 'B': beam_t = optarg; break;
+        case 'W': w_t = optarg; break;
+        case 'L': l_t = optarg; break;
+        case 's': step_t = optarg; break;
+        case 'c': m.catalog = optarg; break;
+        case 'h': cli_print_help(help); return CLI_OK;
+        default: return CLI_USAGE;
+        }
+    }
+    lx_ctx *ctx = cli_ctx("ies");
+    if (!ctx) return CLI_RUNTIME;
+    int rc = CLI_OK;
+    if (model) {
+        if (!write) {
+            cli_error("ies", "--model needs --write OUT.ies");
+            rc = CLI_USAGE;
+            goto done;
+        }
+        if (optind < argc) {
+            cli_error("ies", "give either FILE or --model, not both");
+            rc = CLI_USAGE;
+            goto done;
+        }
+        if (!strcmp(model, "point")) m.kind = LX_LUM_MODEL_POINT;
+        else if (!strcmp(model, "warn")) m.kind = LX_LUM_MODEL_WARN;
+        else if (!strcmp(model, "lambert")) m.kind = LX_LUM_MODEL_LAMBERT;
+        else {
+            cli_error("ies", "--model: unknown model '%s' (point, warn or lambert)", model);
+            rc = CLI_USAGE;
+            goto done;
+        }
+        if (!flux_t) {
+            cli_error("ies", "--model needs --flux");
+            rc = CLI_USAGE;
+            goto done;
+        }
+        if ((rc = lt_quantity(ctx, "ies", "--flux", flux_t, LX_Q_LUMINOUS_FLUX, NULL, 0, &m.flux_lm))) goto done;
+        if (m.kind == LX_LUM_MODEL_WARN) {
+            if (!!exp_t == !!beam_t) {
+                cli_error("ies", "--model warn needs one of --exponent or --beam");
+                rc = CLI_USAGE;
+                goto done;
+            }
+            if (exp_t && (rc = lt_quantity(ctx, "ies", "--exponent", exp_t, LX_Q_NONE, NULL, 0, &m.exponent))) goto done;
+            if (beam_t) {
+                double b;
+                if ((rc = lt_quantity(ctx, "ies", "--beam", beam_t, LX_Q_ANGLE, "deg", 0, &b))) goto done;
+                lx_status st = lx_warn_exponent_from_beam(ctx, b, &m.exponent);
+                if (st) {
+                    rc = cli_fail("ies", ctx, st);
+                    goto done;
+                }
+            }
+        }
+        if (w_t && (rc = lt_quantity(ctx, "ies", "--width", w_t, LX_Q_LENGTH, NULL, 0, &m.width_m))) goto done;
+        if (l_t && (rc = lt_quantity(ctx, "ies", "--length", l_t, LX_Q_LENGTH, NULL, 0, &m.length_m))) goto done;
+        if (step_t) {
+            double s;
+            if ((rc = lt_quantity(ctx, "ies", "--step", step_t, LX_Q_ANGLE, "deg", 0, &s))) goto done;
+            m.step_deg = s / LT_DEG;
+        }
+        lx_luminaire *l = NULL;
+        lx_status st = lx_luminaire_from_model(ctx, &m, &l);
+        if (st) {
+            rc = cli_fail("ies", ctx, st);
+            goto done;
+        }
+        rc = write_ies(ctx, l, write);
+        lx_luminaire_free(l);
+        goto done;
+    }
+    if (optind >= argc) {
+        cli_error("ies", "no FILE given (luxcalc ies --help)");
+        rc = CLI_USAGE;
+        goto done;
+    }
+    if (write) {
+        if (argc - optind != 1) {
+            cli_error("ies", "--write converts exactly one FILE");
+            rc = CLI_USAGE;
+            goto done;
+        }
+        lx_luminaire *l = NULL;
+        lx_status st = lx_luminaire_read_file(ctx, argv[optind], &l);
+        if (st) {
+            rc = cli_fail("ies", ctx, st);
+            goto done;
+        }
+        rc = write_ies(ctx, l, write);
+        lx_luminaire_free(l);
+        goto done;
+    }
+    static const char *const names[] = {"file", "format", "lumens", "max_intensity_cd", "beam_angle_deg", "field_angle_deg",
+                                        "symmetry", "rated_lumens", "stated_lumens", "lumens_diff", "photometric_type",
+                                        "planes", "angles", "beam_angle_c90_deg", "field_angle_c90_deg",
+                                        "downward_fraction", "width_m", "length_m", "height_m"};
+    static const char *const units[] = {NULL, NULL, "lm", "cd", "deg", "deg", NULL, "lm", "lm", NULL, NULL, NULL, NULL,
+                                        "deg", "deg", NULL, "m", "m", "m"};
+    cli_table *t = cli_table_new(19, names, units);
+    if (!t) {
+        rc = CLI_RUNTIME;
+        goto done;
+    }
+    for (int i = optind; i < argc; i++) {
+        lx_luminaire *l = NULL;
+        lx_lum_summary s;
+        lx_status st = lx_luminaire_read_file(ctx, argv[i], &l);
+        if (!st) st = lx_luminaire_summary(ctx, l, &s);
+        if (st) {
+            int r = cli_fail("ies", ctx, st);
+            if (r > rc) rc = r;
+            lx_luminaire_free(l);
+            continue;
+        }
+        double rated = isfinite(l->lamp_lumens) ? l->lamp_lumens : l->stated_lumens;
+        cli_table_str(t, argv[i]);
+        cli_table_str(t, lx_lum_format_name(l->format));
+        cli_table_num(t, s.lumens);
+        cli_table_num(t, s.max_intensity_cd);
+        cli_table_num(t, s.beam_angle_deg);
+        cli_table_num(t, s.field_angle_deg);
+        cli_table_str(t, lx_lum_symmetry_name(l->symmetry));
+        cli_table_num(t, rated);
+        cli_table_num(t, l->stated_lumens);
+        cli_table_num(t, isfinite(l->stated_lumens) ? s.lumens / l->stated_lumens - 1 : NAN);
+        cli_table_str(t, l->photometric_type == 1 ? "C" : "B");
+        cli_table_int(t, (long long)l->n_h);
+        cli_table_int(t, (long long)l->n_v);
+        cli_table_num(t, s.beam_angle_c90_deg);
+        cli_table_num(t, s.field_angle_c90_deg);
+        cli_table_num(t, s.downward_fraction);
+        cli_table_num(t, l->width_m);
+        cli_table_num(t, l->length_m);
+        cli_table_num(t, l->height_m);
+        lx_luminaire_free(l);
+    }
+    if (cli_table_rows(t) > 0) {
+        int r = lt_write("ies", t, fmt, outpath);
+        if (r > rc) rc = r;
+    }
+    cli_table_free(t);
+done:
+    lx_ctx_destroy(ctx);
+    return rc;
+}

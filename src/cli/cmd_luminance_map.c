@@ -1,0 +1,140 @@
+/* cmd_luminance_map.c - `luxcalc luminance-map`: per-pixel luminance of an HDR map, its
+ * statistics, and a false-colour PNG with a legend (the Radiance falsecolor look). */
+#include "cli.h"
+
+#include <getopt.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char help[] =
+    "usage: luxcalc luminance-map IN.exr [--png FILE] [--scale log|linear] [--range MIN:MAX]\n"
+    "\n"
+    "Per-pixel luminance L = k (wR R + wG G + wB B): weights from the file's chromaticities, else\n"
+    "Rec.709/sRGB (0.2126, 0.7152, 0.0722 with D65); k = whiteLuminance when the file has it\n"
+    "(values are then relative luminance), else the efficacy (179 lm/W) for W/sr/m2 radiance.\n"
+    "Prints min, max, mean and median over the pixels (cd/m2), and with --png draws the map in\n"
+    "false colour with a legend.\n"
+    "\n"
+    "  --png FILE       false-colour PNG with a legend (atomic)\n"
+    "  --scale S        log (default) or linear\n"
+    "  --range MIN:MAX  legend range in cd/m2 (default: the map's; log needs MIN > 0)\n"
+    "  --units U        auto (default), radiance or luminance (see luxcalc irradiance --help)\n"
+    "  --efficacy K     lm/W for radiance maps (default 179)\n"
+    "  --format F       table (default), csv or json\n"
+    "  -o FILE          write the statistics to FILE (atomic)\n"
+    "\n"
+    "csv columns: min,max,mean,median,mean_sr_weighted,width,height,file (luminances in cd/m2;\n"
+    "mean_sr_weighted is the mean over the sphere, each pixel weighted by its solid angle)\n"
+    "\n"
+    "example:\n"
+    "  luxcalc luminance-map samples/envmaps/sky_sun.exr --png /tmp/sky_lum.png --format csv\n";
+
+int cli_envmap_units(const char *cmd, lx_envmap *m, const char *units, const char *eff);
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+int cmd_luminance_map(int argc, char **argv)
+{
+    static const struct option opts[] = {
+        {"png", required_argument, 0, 'p'},    {"scale", required_argument, 0, 's'},
+        {"range", required_argument, 0, 'r'},  {"units", required_argument, 0, 'u'},
+        {"efficacy", required_argument, 0, 'K'}, {"format", required_argument, 0, 'f'},
+        {"output", required_argument, 0, 'o'}, {"help", no_argument, 0, 'h'},
+        {0, 0, 0, 0}};
+    const char *cmd = "luminance-map", *png = NULL, *out = NULL, *units = NULL, *eff = NULL;
+    int log_scale = 1, fmt = CLI_FMT_TABLE, c;
+    double vmin = NAN, vmax = NAN;
+    optind = 1;
+    opterr = 0;
+    while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+        switch (c) {
+        case 'p': png = optarg; break;
+        case 's':
+            if (!strcmp(optarg, "log")) log_scale = 1;
+            else if (!strcmp(optarg, "linear")) log_scale = 0;
+            else return cli_error(cmd, "--scale: '%s' is not log or linear", optarg), CLI_USAGE;
+            break;
+        case 'r': {
+            char *end;
+            vmin = strtod(optarg, &end);
+            if (*end == ':') vmax = strtod(end + 1, &end);
+            if (*end || !isfinite(vmin) || !isfinite(vmax) || !(vmax > vmin))
+                return cli_error(cmd, "--range: '%s' is not MIN:MAX with MIN < MAX", optarg), CLI_USAGE;
+            break;
+        }
+        case 'u': units = optarg; break;
+        case 'K': eff = optarg; break;
+        case 'f':
+            fmt = cli_format_parse(optarg);
+            if (fmt < 0) return cli_error(cmd, "--format: '%s' is not table, csv or json", optarg), CLI_USAGE;
+            break;
+        case 'o': out = optarg; break;
+        case 'h': cli_print_help(help); return CLI_OK;
+        default: return cli_error(cmd, "bad option '%s' (see luxcalc luminance-map --help)", argv[optind - 1]), CLI_USAGE;
+        }
+    }
+    if (optind + 1 != argc) return cli_error(cmd, "give exactly one input map (see --help)"), CLI_USAGE;
+    if (log_scale && !isnan(vmin) && !(vmin > 0)) return cli_error(cmd, "--range: a log scale needs MIN > 0"), CLI_USAGE;
+    const char *in = argv[optind];
+    lx_ctx *ctx = cli_ctx(cmd);
+    if (!ctx) return CLI_RUNTIME;
+    lx_envmap *m = NULL;
+    double *lum = NULL, *sorted = NULL;
+    lx_status st = lx_exr_read(ctx, in, &m);
+    int rc = st ? cli_fail(cmd, ctx, st) : cli_envmap_units(cmd, m, units, eff);
+    if (!rc) {
+        size_t n = (size_t)m->width * m->height;
+        lum = malloc(n * sizeof *lum);
+        sorted = malloc(n * sizeof *sorted);
+        if (!lum || !sorted) rc = CLI_RUNTIME, cli_error(cmd, "out of memory");
+        if (!rc) st = lx_envmap_luminance(ctx, m, lum);
+        if (!rc && st) rc = cli_fail(cmd, ctx, st);
+        if (!rc) {
+            double sum = 0, wsum = 0, wtot = 0;
+            for (size_t p = 0; p < n; p++) {
+                double w = lx_envmap_pixel_sr(m->width, m->height, (int)(p / m->width));
+                sum += lum[p];
+                wsum += w * lum[p];
+                wtot += w;
+            }
+            memcpy(sorted, lum, n * sizeof *sorted);
+            qsort(sorted, n, sizeof *sorted, cmp_double);
+            double med = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+            static const char *const names[] = {"min", "max", "mean", "median", "mean_sr_weighted", "width", "height", "file"};
+            static const char *const unit_s[] = {"cd/m2", "cd/m2", "cd/m2", "cd/m2", "cd/m2", "px", "px", ""};
+            cli_table *t = cli_table_new(8, names, unit_s);
+            cli_table_num(t, sorted[0]);
+            cli_table_num(t, sorted[n - 1]);
+            cli_table_num(t, sum / n);
+            cli_table_num(t, med);
+            cli_table_num(t, wsum / wtot);
+            cli_table_int(t, m->width);
+            cli_table_int(t, m->height);
+            cli_table_str(t, in);
+            if (png) {
+                st = lx_png_falsecolor(ctx, png, m->width, m->height, lum, vmin, vmax, log_scale,
+                                       log_scale ? "LUMINANCE CD/M2 (LOG)" : "LUMINANCE CD/M2");
+                if (st) rc = cli_fail(cmd, ctx, st);
+            }
+            if (!rc) {
+                cli_output o;
+                if (cli_output_open(&o, out, cmd)) rc = CLI_INPUT;
+                else {
+                    int bad = cli_table_write(t, (cli_format)fmt, o.fp, 0);
+                    if (cli_output_close(&o, !bad, cmd) || bad) rc = CLI_INPUT;
+                }
+            }
+            cli_table_free(t);
+        }
+    }
+    free(lum);
+    free(sorted);
+    lx_envmap_free(m);
+    lx_ctx_destroy(ctx);
+    return rc;
+}

@@ -1,0 +1,329 @@
+/* cmd_scene.c - `luxcalc scene FILE [--explain]`: reads a scene, plans which effects it needs,
+ * evaluates it and prints the receivers' results, or (--explain) the plan with its reasons and
+ * the estimated and measured work. */
+#include "cli.h"
+
+#include <getopt.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char help[] =
+    "usage: luxcalc scene FILE [--explain] [--contributions] [--format table|csv|json] [-o FILE]\n"
+    "                     [--png DIR] [--backend auto|cpu|opencl]\n"
+    "\n"
+    "Computes a lighting scene (see README \"Scenes\" for the file format): luminaires (point, spot,\n"
+    "disk, rect, IES/LDT file), receivers (points and grids), an optional sky, the outputs wanted.\n"
+    "Only the effects the scene needs are simulated; --explain says which, why, and what they cost.\n"
+    "\n"
+    "  --explain         print the plan: each effect on or off with its reason, the pairs that take\n"
+    "                    the near-field path, the estimated and the measured work (json: an object\n"
+    "                    with \"effects\", \"reasons\", \"forced\", \"pairs\", \"estimated\", \"measured\")\n"
+    "  --contributions   csv/json: one more column per luminaire (E_NAME_lx) and the sky (E_sky_lx)\n"
+    "  --format F        table (default: a summary per receiver), csv or json (one row per point)\n"
+    "  -o FILE           write to FILE (atomically)\n"
+    "  --png DIR         also draw every grid receiver's illuminance as a false-colour PNG:\n"
+    "                    DIR/SCENE_RECEIVER.png (SCENE: the file name without its extension)\n"
+    "  --backend B       auto (default, also LX_BACKEND), cpu or opencl\n"
+    "\n"
+    "csv columns: receiver,x,y,z,illuminance_lx, then luminance_cd_m2 ([output] luminance = yes),\n"
+    "cct_K,duv (cct = yes), melanopic_edi_lx (melanopic_edi = yes)\n"
+    "\n"
+    "example: the office sample, its plan, then its desk grid as csv:\n"
+    "  luxcalc scene samples/scenes/office.scene --explain\n"
+    "  luxcalc scene samples/scenes/office.scene --format csv -o office.csv\n";
+
+static const char *const counter_names[] = {
+    "point_evaluations",      "spot_evaluations",    "goniometric_lookups",
+    "nearfield_pairs",        "nearfield_subdivisions", "environment_evaluations",
+    "environment_samples",    "spectra_integrated",  "kernel_launches"};
+#define N_COUNTERS 9
+
+static unsigned long long counter(const lx_counters *c, int i)
+{
+    const unsigned long long v[N_COUNTERS] = {c->point_evaluations,     c->spot_evaluations,    c->goniometric_lookups,
+                                              c->nearfield_pairs,       c->nearfield_subdivisions, c->environment_evaluations,
+                                              c->environment_samples,   c->spectra_integrated,  c->kernel_launches};
+    return v[i];
+}
+
+static void json_string(FILE *f, const char *s)
+{
+    fputc('"', f);
+    for (; *s; s++) {
+        unsigned char ch = (unsigned char)*s;
+        if (ch == '"' || ch == '\\') fprintf(f, "\\%c", ch);
+        else if (ch < 32) fprintf(f, "\\u%04x", ch);
+        else fputc(ch, f);
+    }
+    fputc('"', f);
+}
+
+/* Near-field points per luminaire-receiver pair. */
+static size_t near_points(const lx_scene *sc, const lx_scene_plan *p, size_t l, size_t r)
+{
+    size_t g0 = 0, k = 0;
+    for (size_t i = 0; i < r; i++) g0 += sc->rec[i].n;
+    for (size_t i = 0; i < sc->rec[r].n; i++) k += p->near[l * p->n_points + g0 + i];
+    return k;
+}
+
+static void explain(FILE *f, const lx_scene *sc, const lx_scene_plan *p, const lx_scene_result *res, cli_format fmt)
+{
+    if (fmt == CLI_FMT_JSON) {
+        fputs("{\n  \"scene\": ", f);
+        json_string(f, sc->file);
+        fputs(",\n  \"effects\": {", f);
+        for (int e = 0; e < LX_EFFECT_COUNT; e++)
+            fprintf(f, "%s\"%s\": %s", e ? ", " : "", lx_effect_name((lx_effect)e), p->on[e] ? "true" : "false");
+        fputs("},\n  \"reasons\": {", f);
+        for (int e = 0; e < LX_EFFECT_COUNT; e++) {
+            fprintf(f, "%s\n    \"%s\": ", e ? "," : "", lx_effect_name((lx_effect)e));
+            json_string(f, p->reason[e]);
+        }
+        fputs("\n  },\n  \"forced\": {", f);
+        for (int e = 0; e < LX_EFFECT_COUNT; e++)
+            fprintf(f, "%s\"%s\": %s", e ? ", " : "", lx_effect_name((lx_effect)e), p->forced[e] ? "true" : "false");
+        fprintf(f, "},\n  \"pairs\": {\"total\": %zu, \"near_field\": %zu, \"costly\": [", p->n_pairs, p->n_near);
+        int first = 1;
+        for (size_t l = 0; l < sc->n_lum; l++)
+            for (size_t r = 0; r < sc->n_rec; r++) {
+                size_t k = near_points(sc, p, l, r);
+                if (!k) continue;
+                fputs(first ? "\n    {\"luminaire\": " : ",\n    {\"luminaire\": ", f);
+                json_string(f, sc->lum[l].name);
+                fputs(", \"receiver\": ", f);
+                json_string(f, sc->rec[r].name);
+                fprintf(f, ", \"near_field_points\": %zu, \"points\": %zu}", k, sc->rec[r].n);
+                first = 0;
+            }
+        fputs(first ? "]},\n" : "\n  ]},\n", f);
+        for (int pass = 0; pass < 2; pass++) {
+            const lx_counters *c = pass ? &res->work : &p->estimate;
+            fprintf(f, "  \"%s\": {", pass ? "measured" : "estimated");
+            for (int i = 0; i < N_COUNTERS; i++) fprintf(f, "%s\"%s\": %llu", i ? ", " : "", counter_names[i], counter(c, i));
+            fputs("},\n", f);
+        }
+        fputs("  \"seconds\": ", f);
+        cli_print_exact(f, res->seconds);
+        fputs("\n}\n", f);
+        return;
+    }
+    if (fmt == CLI_FMT_CSV) {
+        fputs("effect,on,forced,reason\n", f);
+        for (int e = 0; e < LX_EFFECT_COUNT; e++) {
+            fprintf(f, "%s,%d,%d,\"", lx_effect_name((lx_effect)e), p->on[e], p->forced[e]);
+            for (const char *s = p->reason[e]; *s; s++) {
+                if (*s == '"') fputc('"', f);
+                fputc(*s, f);
+            }
+            fputs("\"\n", f);
+        }
+        return;
+    }
+    fprintf(f, "scene %s%s%s%s\n\neffects:\n", sc->file, *sc->title ? " (" : "", sc->title, *sc->title ? ")" : "");
+    for (int e = 0; e < LX_EFFECT_COUNT; e++)
+        fprintf(f, "  %-15s %-3s %s%s\n", lx_effect_name((lx_effect)e), p->on[e] ? "on" : "off",
+                p->forced[e] ? "[forced] " : "", p->reason[e]);
+    fprintf(f, "\npairs: %zu luminaire-receiver point pairs, %zu on the near-field path\n", p->n_pairs, p->n_near);
+    for (size_t l = 0; l < sc->n_lum; l++)
+        for (size_t r = 0; r < sc->n_rec; r++) {
+            size_t k = near_points(sc, p, l, r);
+            if (k) fprintf(f, "  %s -> %s: %zu of %zu points near field\n", sc->lum[l].name, sc->rec[r].name, k, sc->rec[r].n);
+        }
+    fprintf(f, "\nwork:%*s %14s %14s\n", 19, "", "estimated", "measured");
+    for (int i = 0; i < N_COUNTERS; i++)
+        fprintf(f, "  %-22s %14llu %14llu\n", counter_names[i], counter(&p->estimate, i), counter(&res->work, i));
+    fprintf(f, "  %-22s %14s %14.3g\n", "seconds", "", res->seconds);
+}
+
+/* The result columns. */
+static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_format fmt, int contrib, char ***names_out,
+                          size_t *n_names)
+{
+    size_t nn = 0, cap = 2 * (16 + sc->n_lum);
+    char **names = calloc(2 * cap, sizeof *names); /* the names, then the units */
+    if (!names) return NULL;
+    char **units = names + cap;
+#define COL(n, u) (names[nn] = strdup(n), units[nn] = strdup(u), nn++)
+    int table = fmt == CLI_FMT_TABLE;
+    COL("receiver", "");
+    if (table) {
+        COL("points", "");
+        COL("illuminance_avg_lx", "lx");
+        COL("illuminance_min_lx", "lx");
+        COL("illuminance_max_lx", "lx");
+        COL("uniformity_u0", "");
+        if (sc->want_luminance) COL("luminance_avg_cd_m2", "cd/m2");
+        if (sc->want_cct) COL("cct_avg_K", "K");
+        if (sc->want_melanopic) COL("melanopic_edi_avg_lx", "lx");
+    } else {
+        COL("x", "m");
+        COL("y", "m");
+        COL("z", "m");
+        COL("illuminance_lx", "lx");
+        if (sc->want_luminance) COL("luminance_cd_m2", "cd/m2");
+        if (sc->want_cct) COL("cct_K", "K"), COL("duv", "");
+        if (sc->want_melanopic) COL("melanopic_edi_lx", "lx");
+        if (contrib) {
+            for (size_t l = 0; l < sc->n_lum; l++) {
+                char b[300];
+                snprintf(b, sizeof b, "E_%s_lx", sc->lum[l].name);
+                COL(b, "lx");
+            }
+            COL("E_sky_lx", "lx");
+        }
+    }
+    cli_table *t = cli_table_new((int)nn, (const char *const *)names, (const char *const *)units);
+    if (!t) {
+        for (size_t i = 0; i < 2 * cap; i++) free(names[i]);
+        free(names);
+        return NULL;
+    }
+    for (size_t r = 0; r < sc->n_rec; r++) {
+        size_t a = res->first[r], b = res->first[r + 1];
+        if (table) {
+            double sum = 0, mn = INFINITY, mx = -INFINITY, ls = 0, cs = 0, ms = 0;
+            size_t cn = 0;
+            for (size_t g = a; g < b; g++) {
+                double e = res->E_lx[g];
+                sum += e;
+                mn = e < mn ? e : mn;
+                mx = e > mx ? e : mx;
+                ls += res->L_cd_m2[g];
+                ms += res->melanopic_edi_lx[g];
+                if (isfinite(res->cct_K[g])) cs += res->cct_K[g], cn++;
+            }
+            double n = (double)(b - a), avg = sum / n;
+            cli_table_str(t, sc->rec[r].name);
+            cli_table_int(t, (long long)(b - a));
+            cli_table_num(t, avg);
+            cli_table_num(t, mn);
+            cli_table_num(t, mx);
+            cli_table_num(t, avg > 0 ? mn / avg : NAN);
+            if (sc->want_luminance) cli_table_num(t, ls / n);
+            if (sc->want_cct) cli_table_num(t, cn == b - a ? cs / (double)cn : NAN);
+            if (sc->want_melanopic) cli_table_num(t, ms / n);
+            continue;
+        }
+        for (size_t g = a; g < b; g++) {
+            const double *q = sc->rec[r].points + 3 * (g - a);
+            cli_table_str(t, sc->rec[r].name);
+            for (int k = 0; k < 3; k++) cli_table_num(t, q[k]);
+            cli_table_num(t, res->E_lx[g]);
+            if (sc->want_luminance) cli_table_num(t, res->L_cd_m2[g]);
+            if (sc->want_cct) cli_table_num(t, res->cct_K[g]), cli_table_num(t, res->duv[g]);
+            if (sc->want_melanopic) cli_table_num(t, res->melanopic_edi_lx[g]);
+            if (contrib)
+                for (size_t l = 0; l <= sc->n_lum; l++) cli_table_num(t, res->contrib_lx[g * (sc->n_lum + 1) + l]);
+        }
+    }
+    *names_out = names;
+    *n_names = 2 * cap;
+    return t;
+}
+
+/* Each grid receiver's illuminance as a false-colour PNG, drawn as seen from the side its
+ * normal points to: the first free axis to the right, the second upwards. */
+static lx_status write_pngs(lx_ctx *ctx, const lx_scene *sc, const lx_scene_result *res, const char *scene_path,
+                            const char *dir)
+{
+    const char *base = strrchr(scene_path, '/');
+    base = base ? base + 1 : scene_path;
+    size_t bl = strlen(base);
+    const char *dot = strrchr(base, '.');
+    if (dot && dot != base) bl = (size_t)(dot - base);
+    for (size_t r = 0; r < sc->n_rec; r++) {
+        const lx_scene_receiver *rc = &sc->rec[r];
+        if (rc->kind != LX_SREC_GRID) continue;
+        double *v = malloc(rc->n * sizeof *v);
+        char path[4096], title[512];
+        if (!v) return LX_ENOMEM;
+        for (size_t j = 0; j < rc->nb; j++)
+            for (size_t i = 0; i < rc->na; i++) v[j * rc->na + i] = res->E_lx[res->first[r] + (rc->nb - 1 - j) * rc->na + i];
+        snprintf(path, sizeof path, "%s/%.*s_%s.png", dir, (int)bl, base, rc->name);
+        snprintf(title, sizeof title, "illuminance (lx) on %s", rc->name);
+        lx_status st = lx_png_falsecolor(ctx, path, (int)rc->na, (int)rc->nb, v, NAN, NAN, 0, title);
+        free(v);
+        if (st != LX_OK) return st;
+        if (!cli_quiet) fprintf(stderr, "luxcalc: scene: wrote %s\n", path);
+    }
+    return LX_OK;
+}
+
+int cmd_scene(int argc, char **argv)
+{
+    static const struct option opts[] = {{"explain", no_argument, 0, 'e'},      {"contributions", no_argument, 0, 'c'},
+                                         {"format", required_argument, 0, 'f'}, {"backend", required_argument, 0, 'b'},
+                                         {"png", required_argument, 0, 'p'},
+                                         {"help", no_argument, 0, 'h'},         {0, 0, 0, 0}};
+    const char *cmd = "scene", *out = NULL, *backend_text = NULL, *png_dir = NULL;
+    int do_explain = 0, contrib = 0, c;
+    cli_format fmt = CLI_FMT_TABLE;
+    optind = 1;
+    opterr = 0;
+    while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+        switch (c) {
+        case 'e': do_explain = 1; break;
+        case 'c': contrib = 1; break;
+        case 'o': out = optarg; break;
+        case 'b': backend_text = optarg; break;
+        case 'p': png_dir = optarg; break;
+        case 'f': {
+            int f = cli_format_parse(optarg);
+            if (f < 0) {
+                cli_error(cmd, "--format: expected table, csv or json, got '%s'", optarg);
+                return CLI_USAGE;
+            }
+            fmt = (cli_format)f;
+            break;
+        }
+        case 'h': cli_print_help(help); return CLI_OK;
+        default: cli_error(cmd, "bad option '%s' (see luxcalc scene --help)", argv[optind - 1]); return CLI_USAGE;
+        }
+    }
+    if (optind + 1 != argc) {
+        cli_error(cmd, optind >= argc ? "no scene file given (see luxcalc scene --help)" : "one scene file at a time");
+        return CLI_USAGE;
+    }
+    lx_ctx *ctx = cli_ctx(cmd);
+    if (!ctx) return CLI_RUNTIME;
+    lx_backend backend = lx_backend_from_env();
+    if (backend_text && lx_backend_parse(ctx, backend_text, &backend) != LX_OK) {
+        cli_error(cmd, "--backend: expected auto, cpu or opencl, got '%s'", backend_text);
+        lx_ctx_destroy(ctx);
+        return CLI_USAGE;
+    }
+    lx_scene *sc = NULL;
+    lx_scene_plan *plan = NULL;
+    lx_scene_result *res = NULL;
+    lx_status st = lx_scene_read_file(ctx, argv[optind], &sc);
+    if (st == LX_OK) st = lx_scene_plan_make(ctx, sc, (int)backend, &plan);
+    if (st == LX_OK) st = lx_scene_eval(ctx, sc, plan, NULL, &res);
+    int rc = CLI_OK;
+    if (st == LX_OK && png_dir) st = write_pngs(ctx, sc, res, argv[optind], png_dir);
+    if (st != LX_OK) rc = cli_fail(cmd, ctx, st);
+    else {
+        cli_output o;
+        if (cli_output_open(&o, out, cmd) != 0) rc = CLI_INPUT;
+        else if (do_explain) {
+            explain(o.fp, sc, plan, res, fmt);
+            if (cli_output_close(&o, !ferror(o.fp), cmd) != 0) rc = CLI_INPUT;
+        } else {
+            char **names = NULL;
+            size_t nn = 0;
+            cli_table *t = results(sc, res, fmt, contrib, &names, &nn);
+            int ok = t && cli_table_write(t, fmt, o.fp, 1) == 0;
+            if (!t) cli_error(cmd, "out of memory");
+            if (cli_output_close(&o, ok, cmd) != 0 || !ok) rc = t ? CLI_INPUT : CLI_RUNTIME;
+            cli_table_free(t);
+            for (size_t i = 0; i < nn; i++) free(names[i]);
+            free(names);
+        }
+    }
+    lx_scene_result_free(res);
+    lx_scene_plan_free(plan);
+    lx_scene_free(sc);
+    lx_ctx_destroy(ctx);
+    return rc;
+}

@@ -1,0 +1,81 @@
+/* lighting_opts.c - option helpers of the lighting commands: quantities with units (a bare angle
+ * is in degrees), the --efficacy / --spd pair, and writing one result table (-o atomic). */
+#include "lighting.h"
+
+#include <string.h>
+
+int lt_format(const char *cmd, const char *s, cli_format *fmt)
+{
+    int f = cli_format_parse(s);
+    if (f < 0) {
+        cli_error(cmd, "--format: unknown format '%s' (table, csv or json)", s);
+        return -1;
+    }
+    *fmt = (cli_format)f;
+    return 0;
+}
+
+int lt_quantity(lx_ctx *ctx, const char *cmd, const char *opt, const char *text, lx_quantity q, const char *bare_unit,
+                double efficacy, double *out)
+{
+    double v;
+    lx_quantity got;
+    lx_status st = lx_quantity_parse(ctx, text, LX_Q_NONE, bare_unit ? bare_unit : lx_quantity_si_unit(q), &v, &got);
+    if (st != LX_OK) {
+        cli_error(cmd, "%s: %s", opt, lx_ctx_errmsg(ctx));
+        return CLI_USAGE;
+    }
+    if (got == q) {
+        *out = v;
+        return 0;
+    }
+    if (got == lx_quantity_counterpart(q) && q != LX_Q_NONE) {
+        if (!(efficacy > 0)) {
+            cli_error(cmd, "%s: '%s' is a %s: give --efficacy (e.g. 100lm/W) or --spd FILE to convert it to %s",
+                      opt, text, lx_quantity_name(got), lx_quantity_si_unit(q));
+            return CLI_USAGE;
+        }
+        lx_quantity oq;
+        if (lx_radiometric_convert(ctx, v, got, efficacy, out, &oq) != LX_OK) {
+            cli_error(cmd, "%s: %s", opt, lx_ctx_errmsg(ctx));
+            return CLI_USAGE;
+        }
+        return 0;
+    }
+    const char *u = text + strspn(text, " \t+-.0123456789eE");
+    cli_error(cmd, "%s: unit '%s' is a %s, not a %s", opt, u, lx_quantity_name(got), lx_quantity_name(q));
+    return CLI_USAGE;
+}
+
+int lt_efficacy(lx_ctx *ctx, const char *cmd, const char *eff_text, const char *spd_path, double *efficacy)
+{
+    *efficacy = 0;
+    if (eff_text && spd_path) {
+        cli_error(cmd, "give --efficacy or --spd, not both");
+        return CLI_USAGE;
+    }
+    if (eff_text) {
+        int rc = lt_quantity(ctx, cmd, "--efficacy", eff_text, LX_Q_EFFICACY, "lm/W", 0, efficacy);
+        if (rc) return rc;
+        if (!(*efficacy > 0)) {
+            cli_error(cmd, "--efficacy: must be positive (got %s)", eff_text);
+            return CLI_INPUT;
+        }
+    } else if (spd_path) {
+        lx_status st = lx_efficacy_from_spd_file(ctx, spd_path, efficacy);
+        if (st != LX_OK) return cli_fail(cmd, ctx, st);
+    }
+    return 0;
+}
+
+int lt_write(const char *cmd, cli_table *t, cli_format fmt, const char *out_path)
+{
+    cli_output o;
+    if (cli_output_open(&o, out_path, cmd) != 0) return CLI_INPUT;
+    int ok = cli_table_write(t, fmt, o.fp, 0) == 0;
+    if (cli_output_close(&o, ok, cmd) != 0 || !ok) {
+        if (!ok && !out_path) cli_error(cmd, "cannot write the output");
+        return CLI_RUNTIME;
+    }
+    return CLI_OK;
+}

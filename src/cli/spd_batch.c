@@ -1,0 +1,159 @@
+/* spd_batch.c - the batch paths of `luxcalc spd`: many spectra on one uniform grid go through
+ * lx_batch_colorimetry (vectorised, threaded, OpenCL when asked or large), and raw float32 input
+ * (--input-format f32 --grid START:END:STEP) for pipelines whose data is already numeric. */
+#include "spd_batch.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define CHUNK 65536 /* spectra per batch call: bounds memory, lets output stream */
+
+static void add_row(cli_table *t, const char *file, const char *name, const lx_colorimetry *r)
+{
+    cli_table_str(t, file);
+    cli_table_str(t, name);
+    double v[] = {r->X, r->Y, r->Z, r->x, r->y, r->u_prime, r->v_prime, r->cct_K, r->duv, r->ler_lm_per_W,
+                  r->scotopic_Y, r->sp_ratio, r->radiant};
+    for (size_t j = 0; j < sizeof v / sizeof *v; j++) cli_table_num(t, v[j]);
+    cli_table_str(t, "cie15");
+}
+
+/* Colorimetry of spectra [i0, i0+n) of b, one row each; names[i] or the 1-based index. */
+static lx_status run_chunk(cli_spd_batch *B, const lx_batch *b, const char *file, const char *const *names, size_t i0)
+{
+    lx_colorimetry *res = malloc(sizeof *res * (b->n_spectra ? b->n_spectra : 1));
+    if (!res) return LX_ENOMEM;
+    lx_batch_opts opts;
+    memset(&opts, 0, sizeof opts);
+    opts.backend = B->backend;
+    lx_status st = lx_batch_colorimetry(B->ctx, b, B->observer, &opts, res);
+    if (st == LX_OK) {
+        char idx[32];
+        for (size_t i = 0; i < b->n_spectra; i++) {
+            const char *name = names ? names[i] : (snprintf(idx, sizeof idx, "%zu", i0 + i + 1), idx);
+            add_row(B->table, file, name, &res[i]);
+        }
+        if (B->flush) B->flush(B->flush_arg);
+    }
+    free(res);
+    return st;
+}
+
+int cli_spd_batchable(const cli_spd_batch *B, const lx_spd_set *set)
+{
+    if (set->count == 0) return 0;
+    if (!B->forced && set->count < CLI_SPD_BATCH_MIN) return 0;
+    const lx_spd *s0 = &set->spd[0];
+    if (lx_method_resolve(s0, B->method) != LX_METHOD_CIE15) return 0;
+    for (size_t k = 1; k < set->count; k++) {
+        const lx_spd *s = &set->spd[k];
+        if (s->n != s0->n || memcmp(s->lambda_nm, s0->lambda_nm, s0->n * sizeof(double)) != 0) return 0;
+    }
+    for (size_t k = 0; k < set->count; k++)
+        if (lx_spd_check(B->ctx, &set->spd[k]) != LX_OK) return 0; /* the scalar path reports it */
+    return 1;
+}
+
+lx_status cli_spd_batch_set(cli_spd_batch *B, const lx_spd_set *set)
+{
+    const lx_spd *s0 = &set->spd[0];
+    size_t n = s0->n;
+    double step = (s0->lambda_nm[n - 1] - s0->lambda_nm[0]) / (double)(n - 1);
+    lx_status st = LX_OK;
+    for (size_t i0 = 0; i0 < set->count && st == LX_OK; i0 += CHUNK) {
+        size_t m = set->count - i0 < CHUNK ? set->count - i0 : CHUNK;
+        double *v = malloc(sizeof(double) * m * n);
+        const char **names = malloc(sizeof *names * m);
+        if (!v || !names) {
+            free(v);
+            free(names);
+            return LX_ENOMEM;
+        }
+        for (size_t i = 0; i < m; i++) {
+            memcpy(v + i * n, set->spd[i0 + i].value, n * sizeof(double));
+            names[i] = set->spd[i0 + i].name ? set->spd[i0 + i].name : "";
+        }
+        lx_batch b = {m, n, 0, s0->lambda_nm[0], step, LX_F64, v};
+        st = run_chunk(B, &b, set->file, names, i0);
+        free(v);
+        free(names);
+    }
+    return st;
+}
+
+int cli_spd_parse_grid(const char *s, double *start, double *step, size_t *n)
+{
+    char buf[128], *p1, *p2, *end;
+    snprintf(buf, sizeof buf, "%s", s);
+    if (!(p1 = strchr(buf, ':')) || !(p2 = strchr(p1 + 1, ':'))) return -1;
+    *p1++ = 0;
+    *p2++ = 0;
+    double a = strtod(buf, &end);
+    if (*end) return -1;
+    double b = strtod(p1, &end);
+    if (*end) return -1;
+    double st = strtod(p2, &end);
+    if (*end || !(a > 0) || !(b > a) || !(st > 0) || !isfinite(a + b + st)) return -1;
+    double k = (b - a) / st;
+    if (fabs(k - nearbyint(k)) > 1e-6 * (k > 1 ? k : 1) || k > 1e6) return -1;
+    *start = a;
+    *step = st;
+    *n = (size_t)nearbyint(k) + 1;
+    return 0;
+}
+
+lx_status cli_spd_f32_file(cli_spd_batch *B, const char *path, double start, double step, size_t n)
+{
+    FILE *f = !strcmp(path, "-") ? stdin : fopen(path, "rb");
+    if (!f) {
+        cli_error(B->cmd, "%s: cannot open: %s", path, strerror(errno));
+        return LX_EIO;
+    }
+    size_t per = n * sizeof(float), total = 0;
+    float *buf = malloc(per * CHUNK);
+    if (!buf) {
+        if (f != stdin) fclose(f);
+        return LX_ENOMEM;
+    }
+    lx_status st = LX_OK;
+    for (;;) {
+        size_t got = fread(buf, 1, per * CHUNK, f);
+        if (got % per) {
+            /* read to the end to report the real size */
+            size_t rest = got;
+            while (!feof(f) && !ferror(f)) rest += fread(buf, 1, per * CHUNK, f);
+            cli_error(B->cmd, "%s: %zu bytes is not a whole number of spectra of %zu float32 samples (%zu bytes each)",
+                      path, total + rest, n, per);
+            st = LX_EPARSE;
+            break;
+        }
+        size_t m = got / per;
+        if (m) {
+            /* little-endian on disk; this build's host order is checked at start-up of the command */
+            for (size_t i = 0; i < m * n && st == LX_OK; i++)
+                if (!isfinite(buf[i])) {
+                    cli_error(B->cmd, "%s: spectrum %zu, sample %zu (%g nm): value is not finite", path,
+                              total / per + i / n + 1, i % n + 1, start + (double)(i % n) * step);
+                    st = LX_EPARSE;
+                }
+            if (st != LX_OK) break;
+            lx_batch b = {m, n, 0, start, step, LX_F32, buf};
+            st = run_chunk(B, &b, path, NULL, total / per);
+            if (st != LX_OK) {
+                cli_error(B->cmd, "%s: %s", path, lx_ctx_errmsg(B->ctx));
+                break;
+            }
+            total += got;
+        }
+        if (got < per * CHUNK) break;
+    }
+    if (ferror(f)) {
+        cli_error(B->cmd, "%s: read error", path);
+        st = LX_EIO;
+    }
+    free(buf);
+    if (f != stdin) fclose(f);
+    return st;
+}

@@ -1,0 +1,32 @@
+/* spd_batch.h - the batch paths of `luxcalc spd` (spd_batch.c). */
+#ifndef LX_SPD_BATCH_H
+#define LX_SPD_BATCH_H
+
+#include "cli.h"
+
+/* A file with at least this many spectra on one uniform grid takes the batch path even without
+ * --backend (results agree with the per-spectrum path to 1e-9 relative, not bit for bit). */
+#define CLI_SPD_BATCH_MIN 1024
+
+typedef struct cli_spd_batch {
+    lx_ctx *ctx;
+    const char *cmd;
+    cli_table *table;
+    lx_observer observer;
+    lx_method method;
+    lx_backend backend;
+    int forced;                 /* --backend or LX_BACKEND given: batch even small sets */
+    void (*flush)(void *arg);   /* called after each chunk's rows were added */
+    void *flush_arg;
+} cli_spd_batch;
+
+/* 1 when every spectrum of set shares one uniform grid that the method integrates with cie15. */
+int cli_spd_batchable(const cli_spd_batch *B, const lx_spd_set *set);
+/* Adds one row per spectrum of a batchable set. */
+lx_status cli_spd_batch_set(cli_spd_batch *B, const lx_spd_set *set);
+/* "START:END:STEP" in nm into the grid; 0 on success. */
+int cli_spd_parse_grid(const char *s, double *start, double *step, size_t *n);
+/* Raw little-endian float32 spectra of n samples each ("-" is stdin); errors are printed. */
+lx_status cli_spd_f32_file(cli_spd_batch *B, const char *path, double start, double step, size_t n);
+
+#endif

@@ -1,0 +1,548 @@
+/* grid.c - illuminance on points from placed luminaires: E = I(C, gamma) cos(xi) / d^2 summed over
+ * luminaires, with the exact model (bilinear or smooth interpolation, near-field subdivision of the
+ * luminous area under the five-times rule) and the fast path: a table indexed by sqrt(1 - |cos g|)
+ * and the diamond angle of C (no acos/atan2), run by threads on the CPU or by kernels/grid.cl. */
+#include "lx_private.h"
+
+#include <math.h>
+#include <pthread.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#define PI 3.14159265358979323846
+
+/* ---- planes and statistics ---- */
+
+lx_status lx_plane_axis(lx_ctx *ctx, char axis, double level_m, double a0, double a1, double b0, double b1, double spacing_m,
+                        size_t na, size_t nb, lx_plane *out)
+{
+    if (!ctx || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_plane_axis: NULL argument");
+    if (!isfinite(level_m) || !isfinite(a0) || !isfinite(a1) || !isfinite(b0) || !isfinite(b1) || a1 < a0 || b1 < b0)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "the area must be finite with A0 <= A1 and B0 <= B1");
+    lx_plane p;
+    memset(&p, 0, sizeof p);
+    switch (axis) {
+    case 'z': p.origin_m[2] = level_m; p.u[0] = 1; p.v[1] = 1; p.normal[2] = 1; break;
+    case 'x': p.origin_m[0] = level_m; p.u[1] = 1; p.v[2] = 1; p.normal[0] = 1; break;
+    case 'y': p.origin_m[1] = level_m; p.u[0] = 1; p.v[2] = 1; p.normal[1] = 1; break;
+    default: return lx__error(ctx, LX_EINVAL, NULL, 0, "the plane axis must be x, y or z (got '%c')", axis);
+    }
+    if (spacing_m > 0) {
+        double fa = floor((a1 - a0) / spacing_m + 1e-9) + 1, fb = floor((b1 - b0) / spacing_m + 1e-9) + 1;
+        if (fa * fb > 1e9) return lx__error(ctx, LX_EINVAL, NULL, 0, "the spacing gives more than 1e9 points");
+        na = (size_t)fa;
+        nb = (size_t)fb;
+        a1 = a0 + (double)(na - 1) * spacing_m;
+        b1 = b0 + (double)(nb - 1) * spacing_m;
+    } else if (na < 1 || nb < 1 || (double)na * (double)nb > 1e9) {
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "give a positive spacing or 1 to 1e9 points");
+    }
+    p.a0 = a0;
+    p.a1 = a1;
+    p.b0 = b0;
+    p.b1 = b1;
+    p.na = na;
+    p.nb = nb;
+    *out = p;
+    return LX_OK;
+}
+
+lx_status lx_plane_points(lx_ctx *ctx, const lx_plane *p, double **points, size_t *n)
+{
+    if (!ctx || !p || !points || !n) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_plane_points: NULL argument");
+    if (p->na < 1 || p->nb < 1) return lx__error(ctx, LX_EINVAL, NULL, 0, "a plane needs at least 1 x 1 points");
+    size_t cnt = p->na * p->nb;
+    double *v = malloc(cnt * 3 * sizeof *v);
+    if (!v) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for %zu points", cnt);
+    for (size_t j = 0; j < p->nb; j++) {
+        double b = p->nb > 1 ? p->b0 + (p->b1 - p->b0) * (double)j / (double)(p->nb - 1) : p->b0;
+        for (size_t i = 0; i < p->na; i++) {
+            double a = p->na > 1 ? p->a0 + (p->a1 - p->a0) * (double)i / (double)(p->na - 1) : p->a0;
+            double *q = v + 3 * (j * p->na + i);
+            for (int k = 0; k < 3; k++) q[k] = p->origin_m[k] + a * p->u[k] + b * p->v[k];
+        }
+    }
+    *points = v;
+    *n = cnt;
+    return LX_OK;
+}
+
+lx_status lx_grid_stats_compute(lx_ctx *ctx, const double *E, size_t n, lx_grid_stats *out)
+{
+    if (!ctx || !E || !out || n == 0) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_grid_stats_compute: no values");
+    double sum = 0, c = 0, mn = E[0], mx = E[0];
+    for (size_t i = 0; i < n; i++) { /* Neumaier summation */
+        double t = sum + E[i];
+        c += fabs(sum) >= fabs(E[i]) ? (sum - t) + E[i] : (E[i] - t) + sum;
+        sum = t;
+        if (E[i] < mn) mn = E[i];
+        if (E[i] > mx) mx = E[i];
+    }
+    out->avg = (sum + c) / (double)n;
+    out->min = mn;
+    out->max = mx;
+    out->u0 = out->avg > 0 ? mn / out->avg : NAN;
+    return LX_OK;
+}
+
+/* ---- placed luminaires ---- */
+
+/* The luminaire's frame in world coordinates: ex (C0), ey (C90), ez (up, -aim). */
+static void frame(const lx_placement *pl, double ex[3], double ey[3], double ez[3])
+{
+    double a[3] = {pl->aim[0], pl->aim[1], pl->aim[2]};
+    double r = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    for (int k = 0; k < 3; k++) a[k] /= r;
+    /* the rotation taking the nadir n = (0,0,-1) to a: Rodrigues, R = I + [v]x + [v]x^2 / (1 + c) */
+    double R[3][3];
+    double c = -a[2];
+    if (c < -1 + 1e-12) { /* straight up: half turn about x */
+        double H[3][3] = {{1, 0, 0}, {0, -1, 0}, {0, 0, -1}};
+        memcpy(R, H, sizeof R);
+    } else {
+        double v[3] = {a[1], -a[0], 0}; /* n x a with n = (0, 0, -1) */
+        double K[3][3] = {{0, -v[2], v[1]}, {v[2], 0, -v[0]}, {-v[1], v[0], 0}};
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++) {
+                double k2 = 0;
+                for (int m = 0; m < 3; m++) k2 += K[i][m] * K[m][j];
+                R[i][j] = (i == j) + K[i][j] + k2 / (1 + c);
+            }
+    }
+    double cr = cos(pl->rotate_rad), sr = sin(pl->rotate_rad);
+    for (int i = 0; i < 3; i++) {
+        double x = R[i][0], y = R[i][1];
+        ex[i] = cr * x + sr * y;
+        ey[i] = -sr * x + cr * y;
+        ez[i] = R[i][2];
+    }
+}
+
+/* Per-luminaire data of one computation. */
+typedef struct plum {
+    const lx_luminaire *lum;
+    double pos[3], ex[3], ey[3], ez[3];
+    double scale;       /* tilt factor x maintenance factor */
+    double size_m;      /* largest dimension of the luminous opening (0: a point) */
+    int circular;
+    double w, l;        /* opening along ex and ey */
+    const float *table; /* LX_INTERP_TABLE: rows x cols */
+    int ns, nq, cols;   /* table: rows per hemisphere - 1, columns per quadrant (0: axial), columns */
+    size_t toff;        /* offset of the table in the shared table array */
+} plum;
+
+/* ---- the cosine-indexed table ---- */
+
+/* Row r of hemisphere h (0: below, u = cos g >= 0) is at sqrt(1 - |u|) = r / ns; column k at
+ * diamond angle 4 k / cols. Values: the bilinear model in that direction. */
+static void table_dir(int h, int r, int ns, int k, int nq, double d[3])
+{
+    double s = (double)r / ns, one_u = s * s, au = 1 - one_u; /* |cos g| */
+    double st = sqrt(one_u * (2 - one_u));                    /* sin g = sqrt(1 - u^2) */
+    double cx = 1, cy = 0;
+    if (nq > 0) {
+        double p = (double)k / nq, q = p - floor(p);
+        int quad = (int)floor(p) & 3;
+        double x = 1 - q, y = q, n = sqrt(x * x + y * y);
+        x /= n;
+        y /= n;
+        switch (quad) {
+        case 0: cx = x; cy = y; break;
+        case 1: cx = -y; cy = x; break;
+        case 2: cx = -x; cy = -y; break;
+        default: cx = y; cy = -x; break;
+        }
+    }
+    d[0] = st * cx;
+    d[1] = st * cy;
+    d[2] = h == 0 ? -au : au;
+}
+
+static float *build_table(const lx_luminaire *lum, int ns, int nq, int *cols)
+{
+    int axial = lum->photometric_type == 1 && lum->n_c == 1;
+    if (axial) nq = 0;
+    int nc = nq > 0 ? 4 * nq + 1 : 1;
+    size_t rows = 2 * (size_t)(ns + 1);
+    float *t = malloc(rows * (size_t)nc * sizeof *t);
+    if (!t) return NULL;
+    for (int h = 0; h < 2; h++)
+        for (int r = 0; r <= ns; r++)
+            for (int k = 0; k < nc; k++) {
+                double d[3];
+                table_dir(h, r, ns, k, nq, d);
+                t[((size_t)h * (ns + 1) + r) * nc + k] = (float)lx_luminaire_intensity_dir(lum, LX_INTERP_BILINEAR, d[0], d[1], d[2]);
+            }
+    *cols = nc;
+    return t;
+}
+
+/* The table lookup in local coordinates (x, y, z) at distance d (the CPU twin of grid.cl). */
+static inline double table_eval(const plum *p, double x, double y, double z, double d)
+{
+    /* 1 - |cos g| = (d - |z|) / d = (x^2 + y^2) / (d (d + |z|)): no cancellation near the poles */
+    int h = z > 0;
+    double t = (double)p->ns * sqrt((x * x + y * y) / (d * (d + fabs(z))));
+    if (t > p->ns) t = p->ns;
+    int r = (int)t;
+    if (r > p->ns - 1) r = p->ns - 1;
+    double fr = t - r;
+    const float *row = p->table + ((size_t)h * (p->ns + 1) + r) * p->cols;
+    if (p->cols == 1) return row[0] + fr * (row[1] - row[0]);
+    double ax = fabs(x), ay = fabs(y), s = ax + ay, q;
+    if (s > 0) {
+        /* diamond angle in [0, 4) */
+        if (y >= 0) q = x >= 0 ? y / s : 1 + ax / s;
+        else q = x < 0 ? 2 + ay / s : 3 + ax / s;
+    } else {
+        q = 0;
+    }
+    double tc = q * p->nq;
+    int k = (int)tc;
+    if (k > p->cols - 2) k = p->cols - 2;
+    double fc = tc - k;
+    const float *a = row + k, *b = row + p->cols + k;
+    double va = a[0] + fc * (a[1] - a[0]);
+    double vb = b[0] + fc * (b[1] - b[0]);
+    return va + fr * (vb - va);
+}
+
+/* One pair, point model, exact interpolation or table. n: receiver normal. */
+static inline double pair_point(const plum *p, lx_interp interp, const double *pt, const double *n)
+{
+    double w[3] = {pt[0] - p->pos[0], pt[1] - p->pos[1], pt[2] - p->pos[2]};
+    double d2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+    if (!(d2 > 0)) return 0;
+    double d = sqrt(d2);
+    double cx = -(w[0] * n[0] + w[1] * n[1] + w[2] * n[2]);
+    if (cx <= 0) return 0;
+    double x = w[0] * p->ex[0] + w[1] * p->ex[1] + w[2] * p->ex[2];
+    double y = w[0] * p->ey[0] + w[1] * p->ey[1] + w[2] * p->ey[2];
+    double z = w[0] * p->ez[0] + w[1] * p->ez[1] + w[2] * p->ez[2];
+    double I = interp == LX_INTERP_TABLE ? table_eval(p, x, y, z, d) : lx_luminaire_intensity_dir(p->lum, interp, x, y, z);
+    return p->scale * I * cx / (d2 * d);
+}
+
+/* Near field: the luminous area cut into k x k cells (k so that a cell is smaller than a fifth of
+ * the distance), each a point source carrying its share of the intensity. */
+static double pair_near(const plum *p, lx_interp interp, const double *pt, const double *n, double dist)
+{
+    int k = (int)floor(5 * p->size_m / dist) + 1;
+    if (k > 64) k = 64;
+    if (interp == LX_INTERP_TABLE) interp = LX_INTERP_BILINEAR;
+    double sum = 0;
+    int cnt = 0;
+    plum sub = *p;
+    for (int i = 0; i < k; i++)
+        for (int j = 0; j < k; j++) {
+            double a = ((i + 0.5) / k - 0.5), b = ((j + 0.5) / k - 0.5);
+            if (p->circular && a * a + b * b > 0.25) continue;
+            double ox = a * p->w, oy = b * p->l;
+            for (int m = 0; m < 3; m++) sub.pos[m] = p->pos[m] + ox * p->ex[m] + oy * p->ey[m];
+            sum += pair_point(&sub, interp, pt, n);
+            cnt++;
+        }
+    return cnt ? sum / cnt : pair_point(p, interp, pt, n);
+}
+
+/* ---- the computation ---- */
+
+typedef struct job {
+    const plum *pl;
+    size_t m;
+    const double *pts, *nrm;
+    int shared;
+    size_t i0, i1;
+    lx_interp interp;
+    lx_model model;
+    double *E;
+} job;
+
+static void *run_job(void *arg)
+{
+    job *j = arg;
+    for (size_t i = j->i0; i < j->i1; i++) {
+        const double *pt = j->pts + 3 * i, *n = j->shared ? j->nrm : j->nrm + 3 * i;
+        double e = 0;
+        for (size_t m = 0; m < j->m; m++) {
+            const plum *p = &j->pl[m];
+            if (j->model != LX_MODEL_POINT && p->size_m > 0) {
+                double w0 = pt[0] - p->pos[0], w1 = pt[1] - p->pos[1], w2 = pt[2] - p->pos[2];
+                double dist = sqrt(w0 * w0 + w1 * w1 + w2 * w2);
+                if (dist < 5 * p->size_m) {
+                    e += pair_near(p, j->interp, pt, n, dist);
+                    continue;
+                }
+            }
+            e += pair_point(p, j->interp, pt, n);
+        }
+        j->E[i] = e;
+    }
+    return NULL;
+}
+
+static int online_cores(void)
+{
+    long c = sysconf(_SC_NPROCESSORS_ONLN);
+    return c > 0 ? (int)c : 1;
+}
+
+static lx_status run_cpu(lx_ctx *ctx, const plum *pl, size_t m, const double *pts, size_t n, const double *nrm, int shared,
+                         lx_interp interp, lx_model model, int threads, double *E)
+{
+    int T = threads > 0 ? threads : online_cores();
+    if ((size_t)T > n / 256 + 1) T = (int)(n / 256 + 1);
+    if (T > 64) T = 64;
+    job jobs[64];
+    pthread_t tid[64];
+    int started = 0;
+    for (int t = 0; t < T; t++) {
+        jobs[t] = (job){pl, m, pts, nrm, shared, n * (size_t)t / (size_t)T, n * (size_t)(t + 1) / (size_t)T, interp, model, E};
+        if (t > 0 && pthread_create(&tid[t], NULL, run_job, &jobs[t]) == 0) started |= 1 << (t & 31);
+        else if (t > 0) run_job(&jobs[t]);
+    }
+    run_job(&jobs[0]);
+    for (int t = 1; t < T; t++)
+        if (started & (1 << (t & 31))) pthread_join(tid[t], NULL);
+    (void)ctx;
+    return LX_OK;
+}
+
+#if LX_OPENCL
+lx_status lx__grid_opencl(lx_ctx *ctx, const plum *pl, size_t m, const float *tables, size_t tables_n, const double *pts,
+                          size_t n, const double *nrm, int shared, int fp32, double *E);
+#endif
+
+lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, const double *points, size_t n,
+                              const double *normals, int shared_normal, lx_grid_opts *opts, double *E_lx)
+{
+    if (!ctx || (!lums && m) || !points || !normals || !E_lx)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_grid_illuminance: NULL argument");
+    lx_grid_opts o;
+    memset(&o, 0, sizeof o);
+    if (opts) o = *opts;
+    double mf = o.maintenance_factor == 0 ? 1 : o.maintenance_factor;
+    if (!(mf > 0) || mf > 1) return lx__error(ctx, LX_EINVAL, NULL, 0, "the maintenance factor must be in (0, 1] (got %g)", mf);
+    if (o.interp != LX_INTERP_BILINEAR && o.interp != LX_INTERP_SMOOTH && o.interp != LX_INTERP_TABLE)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown interpolation %d", (int)o.interp);
+    if (o.model != LX_MODEL_AUTO && o.model != LX_MODEL_POINT)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "grids use the point or auto model");
+    int backend = o.backend;
+    if (backend == LX_BACKEND_AUTO) backend = lx_backend_from_env();
+    if (backend == LX_BACKEND_OPENCL && o.interp != LX_INTERP_TABLE)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "the OpenCL backend computes the table interpolation only (interp table)");
+    for (size_t i = 0; i < (shared_normal ? 1 : n); i++) {
+        const double *q = normals + 3 * i;
+        double r = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+        if (!(fabs(r - 1) < 1e-6)) return lx__error(ctx, LX_EINVAL, NULL, 0, "receiver normal %zu is not a unit vector", i);
+    }
+    plum *pl = calloc(m ? m : 1, sizeof *pl);
+    if (!pl) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    float **own = calloc(m ? m : 1, sizeof *own);
+    lx_status st = LX_OK;
+    double *E = malloc((n ? n : 1) * sizeof *E);
+    if (!own || !E) {
+        st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+        goto out;
+    }
+    int ns = o.table_n > 0 ? o.table_n : 1024, nq = 90;
+    size_t tables_n = 0;
+    for (size_t i = 0; i < m; i++) {
+        const lx_placement *p = &lums[i];
+        if (!p->lum || !p->lum->full_cd) {
+            st = lx__error(ctx, LX_EINVAL, NULL, 0, "luminaire %zu has no photometry", i + 1);
+            goto out;
+        }
+        double r = sqrt(p->aim[0] * p->aim[0] + p->aim[1] * p->aim[1] + p->aim[2] * p->aim[2]);
+        if (!(r > 0) || !isfinite(r) || !isfinite(p->pos_m[0] + p->pos_m[1] + p->pos_m[2]) || !isfinite(p->rotate_rad)) {
+            st = lx__error(ctx, LX_EINVAL, NULL, 0, "luminaire %zu: position, aim and rotation must be finite, aim non-zero", i + 1);
+            goto out;
+        }
+        plum *q = &pl[i];
+        q->lum = p->lum;
+        memcpy(q->pos, p->pos_m, sizeof q->pos);
+        frame(p, q->ex, q->ey, q->ez);
+        double tilt = acos(fmax(-1.0, fmin(1.0, -p->aim[2] / r)));
+        q->scale = mf * lx_luminaire_tilt_factor(p->lum, tilt);
+        double w = fabs(p->lum->width_m), l = fabs(p->lum->length_m);
+        q->circular = p->lum->width_m < 0 && (p->lum->length_m < 0 || l == 0);
+        if (q->circular) l = w;
+        q->w = w;
+        q->l = l;
+        q->size_m = q->circular ? w : sqrt(w * w + l * l);
+        if (o.interp == LX_INTERP_TABLE) {
+            for (size_t k = 0; k < i; k++)
+                if (pl[k].lum == p->lum) { /* share the table of the same luminaire */
+                    q->table = pl[k].table;
+                    q->ns = pl[k].ns;
+                    q->nq = pl[k].nq;
+                    q->cols = pl[k].cols;
+                    q->toff = pl[k].toff;
+                    break;
+                }
+            if (!q->table) {
+                own[i] = build_table(p->lum, ns, nq, &q->cols);
+                if (!own[i]) {
+                    st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for the intensity table");
+                    goto out;
+                }
+                q->table = own[i];
+                q->ns = ns;
+                q->nq = q->cols > 1 ? nq : 0;
+                q->toff = tables_n;
+                tables_n += 2 * (size_t)(ns + 1) * (size_t)q->cols;
+            }
+        }
+    }
+    int use_cl = 0;
+    if (o.interp == LX_INTERP_TABLE && m > 0) {
+        if (backend == LX_BACKEND_OPENCL) use_cl = 1;
+        else if (backend == LX_BACKEND_AUTO && (double)n * (double)m >= 1e7 && LX_OPENCL) use_cl = 1;
+    }
+    o.used = LX_BACKEND_CPU;
+#if LX_OPENCL
+    if (use_cl) {
+        float *all = malloc(tables_n * sizeof *all);
+        if (!all) {
+            st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+            goto out;
+        }
+        for (size_t i = 0; i < m; i++)
+            if (own[i]) memcpy(all + pl[i].toff, own[i], 2 * (size_t)(pl[i].ns + 1) * (size_t)pl[i].cols * sizeof *all);
+        st = lx__grid_opencl(ctx, pl, m, all, tables_n, points, n, normals, shared_normal, o.fp32, E);
+        free(all);
+        if (st == LX_OK) {
+            o.used = LX_BACKEND_OPENCL;
+        } else if (backend == LX_BACKEND_OPENCL) {
+            goto out;
+        } else {
+            lx__log(ctx, LX_LOG_INFO, "grid: OpenCL failed (%s); computing on the CPU", lx_ctx_errmsg(ctx));
+            use_cl = 0;
+            st = LX_OK;
+        }
+        if (use_cl && o.model != LX_MODEL_POINT) {
+            /* near-field pairs: replace the kernel's point term by the subdivided area */
+            for (size_t i = 0; i < n; i++) {
+                const double *pt = points + 3 * i, *nn = shared_normal ? normals : normals + 3 * i;
+                for (size_t k = 0; k < m; k++) {
+                    const plum *p = &pl[k];
+                    if (!(p->size_m > 0)) continue;
+                    double w0 = pt[0] - p->pos[0], w1 = pt[1] - p->pos[1], w2 = pt[2] - p->pos[2];
+                    double dist = sqrt(w0 * w0 + w1 * w1 + w2 * w2);
+                    if (dist < 5 * p->size_m) E[i] += pair_near(p, o.interp, pt, nn, dist) - pair_point(p, o.interp, pt, nn);
+                }
+            }
+        }
+    }
+#else
+    if (use_cl && backend == LX_BACKEND_OPENCL) {
+        st = lx__error(ctx, LX_EUNSUPPORTED, NULL, 0, "this build has no OpenCL (built with LX_OPENCL=0)");
+        goto out;
+    }
+    use_cl = 0;
+#endif
+    if (!use_cl) {
+        if (m == 0) memset(E, 0, n * sizeof *E);
+        else st = run_cpu(ctx, pl, m, points, n, normals, shared_normal, o.interp, o.model, o.threads, E);
+    }
+    if (st == LX_OK) {
+        memcpy(E_lx, E, n * sizeof *E);
+        if (opts) opts->used = o.used;
+    }
+out:
+    if (own)
+        for (size_t i = 0; i < m; i++) free(own[i]);
+    free(own);
+    free(pl);
+    free(E);
+    return st;
+}
+
+#if LX_OPENCL
+/* The OpenCL path: kernels lx_grid_f64 / lx_grid_f32 of kernels/grid.cl. Luminaire records of 16
+ * reals: pos, ex, ey, ez, scale, cols, ns, nq, table offset (as reals, exact below 2^24 in float). */
+lx_status lx__grid_opencl(lx_ctx *ctx, const plum *pl, size_t m, const float *tables, size_t tables_n, const double *pts,
+                          size_t n, const double *nrm, int shared, int fp32, double *E)
+{
+    lx__cl *cl = NULL;
+    lx_status st = lx__cl_get(ctx, &cl);
+    if (st) return st;
+    int f64 = !fp32 && cl->info.fp64;
+    size_t rs = f64 ? sizeof(double) : sizeof(float);
+    cl_kernel k = NULL;
+    if ((st = lx__cl_kernel(ctx, cl, f64 ? "lx_grid_f64" : "lx_grid_f32", &k))) return st;
+    size_t nn = shared ? 1 : n;
+    void *hp = malloc(3 * n * rs), *hn = malloc(3 * nn * rs), *hl = malloc(16 * m * rs), *he = malloc(n * rs);
+    cl_mem bp = NULL, bn = NULL, bl = NULL, bt = NULL, be = NULL;
+    cl_int err = CL_SUCCESS;
+    if (!hp || !hn || !hl || !he) {
+        st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+        goto out;
+    }
+    /* points as structure of arrays: x[n], y[n], z[n] */
+    for (size_t i = 0; i < n; i++)
+        for (int c = 0; c < 3; c++) {
+            if (f64) ((double *)hp)[c * n + i] = pts[3 * i + c];
+            else ((float *)hp)[c * n + i] = (float)pts[3 * i + c];
+        }
+    for (size_t i = 0; i < nn; i++)
+        for (int c = 0; c < 3; c++) {
+            if (f64) ((double *)hn)[c * nn + i] = nrm[3 * i + c];
+            else ((float *)hn)[c * nn + i] = (float)nrm[3 * i + c];
+        }
+    for (size_t i = 0; i < m; i++) {
+        double r[16] = {pl[i].pos[0], pl[i].pos[1], pl[i].pos[2], pl[i].ex[0], pl[i].ex[1], pl[i].ex[2],
+                        pl[i].ey[0],  pl[i].ey[1],  pl[i].ey[2],  pl[i].ez[0], pl[i].ez[1], pl[i].ez[2],
+                        pl[i].scale,  pl[i].cols,   pl[i].ns,     (double)pl[i].toff};
+        (void)0;
+        for (int c = 0; c < 16; c++) {
+            if (f64) ((double *)hl)[16 * i + c] = r[c];
+            else ((float *)hl)[16 * i + c] = (float)r[c];
+        }
+        if (!f64 && pl[i].toff >= (1u << 24)) {
+            st = lx__error(ctx, LX_EUNSUPPORTED, NULL, 0, "grid: tables too large for the float kernel");
+            goto out;
+        }
+    }
+    /* nq is implied: cols = 4 nq + 1 */
+    bp = clCreateBuffer(cl->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, 3 * n * rs, hp, &err);
+    if ((st = lx__cl_check(ctx, err, "clCreateBuffer(points)"))) goto out;
+    bn = clCreateBuffer(cl->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, 3 * nn * rs, hn, &err);
+    if ((st = lx__cl_check(ctx, err, "clCreateBuffer(normals)"))) goto out;
+    bl = clCreateBuffer(cl->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, 16 * m * rs, hl, &err);
+    if ((st = lx__cl_check(ctx, err, "clCreateBuffer(luminaires)"))) goto out;
+    bt = clCreateBuffer(cl->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, tables_n * sizeof(float), (void *)tables, &err);
+    if ((st = lx__cl_check(ctx, err, "clCreateBuffer(tables)"))) goto out;
+    be = clCreateBuffer(cl->context, CL_MEM_WRITE_ONLY, n * rs, NULL, &err);
+    if ((st = lx__cl_check(ctx, err, "clCreateBuffer(E)"))) goto out;
+    cl_uint un = (cl_uint)n, um = (cl_uint)m, ush = (cl_uint)(shared != 0);
+    err = clSetKernelArg(k, 0, sizeof bp, &bp);
+    err |= clSetKernelArg(k, 1, sizeof bn, &bn);
+    err |= clSetKernelArg(k, 2, sizeof ush, &ush);
+    err |= clSetKernelArg(k, 3, sizeof bl, &bl);
+    err |= clSetKernelArg(k, 4, sizeof um, &um);
+    err |= clSetKernelArg(k, 5, sizeof bt, &bt);
+    err |= clSetKernelArg(k, 6, sizeof be, &be);
+    err |= clSetKernelArg(k, 7, sizeof un, &un);
+    if ((st = lx__cl_check(ctx, err, "clSetKernelArg(grid)"))) goto out;
+    size_t local = 64, global = (n + local - 1) / local * local;
+    err = clEnqueueNDRangeKernel(cl->queue, k, 1, NULL, &global, &local, 0, NULL, NULL);
+    if ((st = lx__cl_check(ctx, err, "clEnqueueNDRangeKernel(grid)"))) goto out;
+    err = clEnqueueReadBuffer(cl->queue, be, CL_TRUE, 0, n * rs, he, 0, NULL, NULL);
+    if ((st = lx__cl_check(ctx, err, "clEnqueueReadBuffer(grid)"))) goto out;
+    for (size_t i = 0; i < n; i++) E[i] = f64 ? ((double *)he)[i] : (double)((float *)he)[i];
+out:
+    if (bp) clReleaseMemObject(bp);
+    if (bn) clReleaseMemObject(bn);
+    if (bl) clReleaseMemObject(bl);
+    if (bt) clReleaseMemObject(bt);
+    if (be) clReleaseMemObject(be);
+    if (k) clReleaseKernel(k);
+    free(hp);
+    free(hn);
+    free(hl);
+    free(he);
+    return st;
+}
+#endif

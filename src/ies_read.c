@@ -1,0 +1,413 @@
+/* ies_read.c - the IES LM-63 reader: every version seen in practice (1986 without a version line,
+ * IESNA91, LM-63-1995, 2002, 2019), keywords, TILT=NONE/INCLUDE/file, comma or blank separators,
+ * lines of any length, Latin-1 header bytes. The table is checked and expanded by photometry.c. */
+#include "lx_private.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+char *lx__strndup(const char *s, const char *e)
+{
+    size_t n = (size_t)(e - s);
+    char *r = malloc(n + 1);
+    if (!r) return NULL;
+    memcpy(r, s, n);
+    r[n] = 0;
+    return r;
+}
+
+/* The numbers after the TILT= line: one token stream with the line of each token. */
+typedef struct toks {
+    double *v;
+    long *line;
+    size_t n, cap, pos;
+} toks;
+
+static int toks_push(toks *t, double v, long line)
+{
+    if (t->n == t->cap) {
+        size_t cap = t->cap ? 2 * t->cap : 1024;
+        double *nv = realloc(t->v, cap * sizeof *nv);
+        if (!nv) return -1;
+        t->v = nv;
+        long *nl = realloc(t->line, cap * sizeof *nl);
+        if (!nl) return -1;
+        t->line = nl;
+        t->cap = cap;
+    }
+    t->v[t->n] = v;
+    t->line[t->n++] = line;
+    return 0;
+}
+
+static int is_sep(char c) { return c == ' ' || c == '\t' || c == ',' || c == '\r' || c == '\f' || c == '\v'; }
+
+/* Tokenises lines from it to the end of the buffer. A trailing Ctrl-Z (DOS end of file) is ignored. */
+static lx_status tokenize(lx_ctx *ctx, const char *file, lx__lines *it, toks *t)
+{
+    const char *s, *e;
+    while (lx__next_line(it, &s, &e)) {
+        const char *p = s;
+        for (;;) {
+            while (p < e && is_sep(*p)) p++;
+            if (p >= e) break;
+            if (*p == 0x1a) break;
+            const char *q = p;
+            while (q < e && !is_sep(*q)) q++;
+            double v;
+            const char *end = lx__parse_double(p, q, &v);
+            if (end != q || !isfinite(v)) {
+                int n = (int)(q - p) > 40 ? 40 : (int)(q - p);
+                return lx__error(ctx, LX_EPARSE, file, it->line, "'%.*s' is not a number", n, p);
+            }
+            if (toks_push(t, v, it->line)) return lx__error(ctx, LX_ENOMEM, file, it->line, "out of memory");
+            p = q;
+        }
+    }
+    return LX_OK;
+}
+
+/* Takes the next number, or reports the table as truncated. */
+static lx_status take(lx_ctx *ctx, const char *file, toks *t, long last_line, const char *what, double *out)
+{
+    if (t->pos >= t->n)
+        return lx__error(ctx, LX_EPARSE, file, last_line, "the file ends before %s (truncated table)", what);
+    *out = t->v[t->pos++];
+    return LX_OK;
+}
+
+static long tok_line(const toks *t, long last_line)
+{
+    return t->pos == 0 ? last_line : t->line[t->pos - 1];
+}
+
+static lx_status take_count(lx_ctx *ctx, const char *file, toks *t, long last, const char *what, long max, long *out)
+{
+    double v = 0;
+    lx_status st = take(ctx, file, t, last, what, &v);
+    if (st) return st;
+    if (v != floor(v) || v < 1 || v > max)
+        return lx__error(ctx, LX_EPARSE, file, tok_line(t, last), "%s must be a whole number from 1 to %ld (got %g)",
+                         what, max, v);
+    *out = (long)v;
+    return LX_OK;
+}
+
+static int prefix_ci(const char *s, const char *e, const char *p)
+{
+    for (; *p; p++, s++)
+        if (s >= e || toupper((unsigned char)*s) != toupper((unsigned char)*p)) return 0;
+    return 1;
+}
+
+/* Reads the tilt block of a TILT=<file> reference (relative to the IES file's folder). */
+static lx_status tilt_file(lx_ctx *ctx, const char *file, long line, const char *name, toks *t)
+{
+    char path[1024];
+    const char *slash = strrchr(file, '/');
+    if (name[0] != '/' && slash)
+        snprintf(path, sizeof path, "%.*s/%s", (int)(slash - file), file, name);
+    else
+        snprintf(path, sizeof path, "%s", name);
+    FILE *fp = fopen(path, "rb");
+    if (!fp) return lx__error(ctx, LX_EIO, file, line, "TILT file '%s': %s", path, strerror(errno));
+    char *buf = NULL;
+    size_t len = 0, cap = 0;
+    for (;;) {
+        if (len == cap) {
+            cap = cap ? 2 * cap : 4096;
+            char *nb = realloc(buf, cap);
+            if (!nb) {
+                free(buf);
+                fclose(fp);
+                return lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
+            }
+            buf = nb;
+        }
+        size_t got = fread(buf + len, 1, cap - len, fp);
+        if (!got) break;
+        len += got;
+    }
+    fclose(fp);
+    lx__lines it = {buf, buf + len, 0};
+    lx_status st = tokenize(ctx, path, &it, t);
+    free(buf);
+    return st;
+}
+
+static lx_status read_tilt(lx_ctx *ctx, const char *file, toks *t, long last, lx_luminaire *lum)
+{
+    double g = 0;
+    long n = 0;
+    lx_status st = take(ctx, file, t, last, "the TILT lamp-to-luminaire geometry", &g);
+    if (st) return st;
+    if (g != 1 && g != 2 && g != 3)
+        return lx__error(ctx, LX_EPARSE, file, tok_line(t, last), "TILT lamp-to-luminaire geometry must be 1, 2 or 3 (got %g)", g);
+    if ((st = take_count(ctx, file, t, last, "the number of TILT angles", 100000, &n))) return st;
+    lum->tilt_geometry = (int)g;
+    lum->n_tilt = (size_t)n;
+    lum->tilt_deg = malloc((size_t)n * sizeof(double));
+    lum->tilt_factor = malloc((size_t)n * sizeof(double));
+    if (!lum->tilt_deg || !lum->tilt_factor) return lx__error(ctx, LX_ENOMEM, file, last, "out of memory");
+    for (long i = 0; i < n; i++) {
+        if ((st = take(ctx, file, t, last, "the end of the TILT angles", &lum->tilt_deg[i]))) return st;
+        if (i > 0 && !(lum->tilt_deg[i] > lum->tilt_deg[i - 1]))
+            return lx__error(ctx, LX_EPARSE, file, tok_line(t, last), "TILT angles out of order (%g after %g)",
+                             lum->tilt_deg[i], lum->tilt_deg[i - 1]);
+    }
+    for (long i = 0; i < n; i++) {
+        if ((st = take(ctx, file, t, last, "the end of the TILT factors", &lum->tilt_factor[i]))) return st;
+        if (lum->tilt_factor[i] < 0)
+            return lx__error(ctx, LX_EPARSE, file, tok_line(t, last), "negative TILT multiplying factor %g", lum->tilt_factor[i]);
+    }
+    lum->tilt_include = 1;
+    return LX_OK;
+}
+
+/* "[KEY] value" or "[KEY]value"; [MORE] continues the previous keyword. *last: the field the
+ * previous keyword line filled (NULL when it was one we do not keep). Returns -1 on no memory. */
+static int keyword(lx_luminaire *lum, const char *s, const char *e, char ***last)
+{
+    const char *k = s + 1, *ke = k;
+    while (ke < e && *ke != ']') ke++;
+    if (ke >= e) return 0; /* not a keyword line: free text */
+    const char *v = ke + 1;
+    while (v < e && (*v == ' ' || *v == '\t')) v++;
+    while (e > v && (e[-1] == ' ' || e[-1] == '\t')) e--;
+    size_t kl = (size_t)(ke - k);
+    char **dst = NULL;
+    if (kl == 7 && prefix_ci(k, ke, "MANUFAC")) dst = &lum->manufacturer;
+    else if (kl == 6 && prefix_ci(k, ke, "LUMCAT")) dst = &lum->catalog;
+    else if (kl == 9 && prefix_ci(k, ke, "LUMINAIRE")) dst = &lum->description;
+    else if (kl == 4 && prefix_ci(k, ke, "MORE")) dst = *last;
+    else if (kl == 15 && prefix_ci(k, ke, "_ABSOLUTELUMENS")) {
+        double x;
+        if (lx__parse_double(v, e, &x) == e && x > 0) lum->stated_lumens = x;
+    }
+    *last = dst;
+    if (!dst) return 0;
+    if (!*dst) {
+        *dst = lx__strndup(v, e);
+        return *dst ? 0 : -1;
+    }
+    size_t a = strlen(*dst), b = (size_t)(e - v);
+    char *n = realloc(*dst, a + b + 2);
+    if (!n) return -1;
+    n[a] = ' ';
+    memcpy(n + a + 1, v, b);
+    n[a + 1 + b] = 0;
+    *dst = n;
+    return 0;
+}
+
+lx_status lx__ies_read(lx_ctx *ctx, const char *file, const char *text, size_t len, lx_luminaire **out)
+{
+    *out = NULL;
+    lx_luminaire *lum = lx__lum_new(file);
+    if (!lum) return lx__error(ctx, LX_ENOMEM, file, 0, "out of memory");
+    toks t = {0};
+    lx_status st = LX_OK;
+    lx__lines it = {text, text + len, 0};
+    const char *s, *e;
+    if (len >= 3 && (unsigned char)text[0] == 0xEF && (unsigned char)text[1] == 0xBB && (unsigned char)text[2] == 0xBF)
+        it.p += 3;
+    /* version line */
+    lum->format = LX_LUM_LM63_1986;
+    long tilt_line = 0;
+    char **last_kw = NULL;
+    int first = 1;
+    while (lx__next_line(&it, &s, &e)) {
+        const char *p = s;
+        while (p < e && (*p == ' ' || *p == '\t')) p++;
+        if (first) {
+            first = 0;
+            if (prefix_ci(p, e, "IESNA:LM-63-1995") || prefix_ci(p, e, "IESNA95")) {
+                lum->format = LX_LUM_LM63_1995;
+                continue;
+            } else if (prefix_ci(p, e, "IESNA:LM-63-2002")) {
+                lum->format = LX_LUM_LM63_2002;
+                continue;
+            } else if (prefix_ci(p, e, "IES:LM-63-2019") || prefix_ci(p, e, "IESNA:LM-63-2019")) {
+                lum->format = LX_LUM_LM63_2019;
+                continue;
+            } else if (prefix_ci(p, e, "IESNA91") || prefix_ci(p, e, "IESNA:LM-63-1991")) {
+                lum->format = LX_LUM_LM63_1991;
+                continue;
+            }
+        }
+        if (prefix_ci(p, e, "TILT")) {
+            const char *q = p + 4;
+            while (q < e && *q == ' ') q++;
+            if (q < e && *q == '=') {
+                q++;
+                while (q < e && (*q == ' ' || *q == '\t')) q++;
+                const char *qe = e;
+                while (qe > q && (qe[-1] == ' ' || qe[-1] == '\t')) qe--;
+                tilt_line = it.line;
+                if (prefix_ci(q, qe, "NONE") && qe - q == 4) {
+                    /* no tilt table */
+                } else if (prefix_ci(q, qe, "INCLUDE") && qe - q == 7) {
+                    lum->tilt_include = 2; /* read from the stream below */
+                } else if (qe > q) {
+                    char name[512];
+                    snprintf(name, sizeof name, "%.*s", (int)(qe - q), q);
+                    toks tt = {0};
+                    st = tilt_file(ctx, file, it.line, name, &tt);
+                    if (!st) st = read_tilt(ctx, name, &tt, it.line, lum);
+                    free(tt.v);
+                    free(tt.line);
+                    if (st) goto fail;
+                } else {
+                    st = lx__error(ctx, LX_EPARSE, file, it.line, "TILT= names nothing (NONE, INCLUDE or a file)");
+                    goto fail;
+                }
+                break;
+            }
+        }
+        if (*p == '[') {
+            if (keyword(lum, p, e, &last_kw)) {
+                st = lx__error(ctx, LX_ENOMEM, file, it.line, "out of memory");
+                goto fail;
+            }
+        } else if (lum->format == LX_LUM_LM63_1986 && !lum->description && p < e) {
+            /* 1986 files: free text; the first line describes the luminaire */
+            const char *q = e;
+            while (q > p && (q[-1] == ' ' || q[-1] == '\t')) q--;
+            lum->description = lx__strndup(p, q);
+            if (!lum->description) {
+                st = lx__error(ctx, LX_ENOMEM, file, it.line, "out of memory");
+                goto fail;
+            }
+        }
+    }
+    if (!tilt_line) {
+        st = lx__error(ctx, LX_EPARSE, file, it.line, "no TILT= line: not an IES LM-63 file");
+        goto fail;
+    }
+    if ((st = tokenize(ctx, file, &it, &t))) goto fail;
+    long last = it.line;
+    if (lum->tilt_include == 2 && (st = read_tilt(ctx, file, &t, last, lum))) goto fail;
+
+    double h[10], b[3];
+    static const char *names[10] = {"the number of lamps", "lumens per lamp", "the candela multiplier",
+                                    "the number of vertical angles", "the number of horizontal angles",
+                                    "the photometric type", "the units type", "the width", "the length", "the height"};
+    static const char *names2[3] = {"the ballast factor", "the ballast-lamp factor", "the input watts"};
+    long hline = 0;
+    for (int i = 0; i < 10; i++) {
+        if ((st = take(ctx, file, &t, last, names[i], &h[i]))) goto fail;
+        if (i == 0) hline = tok_line(&t, last);
+    }
+    for (int i = 0; i < 3; i++)
+        if ((st = take(ctx, file, &t, last, names2[i], &b[i]))) goto fail;
+    if (h[0] != floor(h[0]) || fabs(h[0]) < 1 || fabs(h[0]) > 1e6) {
+        st = lx__error(ctx, LX_EPARSE, file, hline, "the number of lamps must be a whole number (got %g)", h[0]);
+        goto fail;
+    }
+    lum->n_lamps = (int)fabs(h[0]);
+    if (h[1] == -1) {
+        lum->absolute = 1;
+        lum->lamp_lumens = NAN;
+    } else if (h[1] > 0) {
+        lum->lamp_lumens = h[1] * lum->n_lamps;
+    } else {
+        st = lx__error(ctx, LX_EPARSE, file, hline, "lumens per lamp must be positive or -1 (absolute photometry), got %g", h[1]);
+        goto fail;
+    }
+    if (!(h[2] > 0)) {
+        st = lx__error(ctx, LX_EPARSE, file, hline, "the candela multiplier must be positive (got %g)", h[2]);
+        goto fail;
+    }
+    lum->multiplier = h[2];
+    for (int i = 3; i <= 4; i++)
+        if (h[i] != floor(h[i]) || h[i] < 1 || h[i] > 100000) {
+            st = lx__error(ctx, LX_EPARSE, file, hline, "%s must be a whole number from 1 to 100000 (got %g)", names[i], h[i]);
+            goto fail;
+        }
+    lum->n_v = (size_t)h[3];
+    lum->n_h = (size_t)h[4];
+    if (h[5] == 3) {
+        st = lx__error(ctx, LX_EUNSUPPORTED, file, hline, "type A photometry (photometric type 3) is not supported");
+        goto fail;
+    }
+    if (h[5] != 1 && h[5] != 2) {
+        st = lx__error(ctx, LX_EPARSE, file, hline, "the photometric type must be 1 (C), 2 (B) or 3 (A), got %g", h[5]);
+        goto fail;
+    }
+    lum->photometric_type = (int)h[5];
+    if (h[6] != 1 && h[6] != 2) {
+        st = lx__error(ctx, LX_EPARSE, file, hline, "the units type must be 1 (feet) or 2 (metres), got %g", h[6]);
+        goto fail;
+    }
+    double unit = h[6] == 1 ? 0.3048 : 1.0;
+    lum->width_m = h[7] * unit;
+    lum->length_m = h[8] * unit;
+    lum->height_m = h[9] * unit;
+    if (!(b[0] > 0)) {
+        st = lx__error(ctx, LX_EPARSE, file, tok_line(&t, last), "the ballast factor must be positive (got %g)", b[0]);
+        goto fail;
+    }
+    lum->ballast_factor = b[0];
+    lum->input_watts = b[2];
+    double scale = lum->multiplier * lum->ballast_factor;
+    if (lum->format == LX_LUM_LM63_2019) {
+        /* the field is the file generation type (1.00001 ... 1.10100): it scales nothing */
+        lum->file_generation_type = (int)lround(b[1] * 100000.0) - 100000;
+        lum->ballast_lamp_factor = NAN;
+    } else {
+        lum->ballast_lamp_factor = b[1];
+        if (lum->format <= LX_LUM_LM63_1995) {
+            if (!(b[1] > 0)) {
+                st = lx__error(ctx, LX_EPARSE, file, tok_line(&t, last), "the ballast-lamp photometric factor must be positive (got %g)", b[1]);
+                goto fail;
+            }
+            scale *= b[1];
+        }
+    }
+    size_t nv = lum->n_v, nh = lum->n_h;
+    lum->v_deg = malloc(nv * sizeof(double));
+    lum->h_deg = malloc(nh * sizeof(double));
+    lum->cd = malloc(nv * nh * sizeof(double));
+    if (!lum->v_deg || !lum->h_deg || !lum->cd) {
+        st = lx__error(ctx, LX_ENOMEM, file, last, "out of memory");
+        goto fail;
+    }
+    long line_v = t.pos < t.n ? t.line[t.pos] : last;
+    for (size_t i = 0; i < nv; i++)
+        if ((st = take(ctx, file, &t, last, "the end of the vertical angles", &lum->v_deg[i]))) goto fail;
+    long line_h = t.pos < t.n ? t.line[t.pos] : last;
+    for (size_t i = 0; i < nh; i++)
+        if ((st = take(ctx, file, &t, last, "the end of the horizontal angles", &lum->h_deg[i]))) goto fail;
+    long line_cd = t.pos < t.n ? t.line[t.pos] : last;
+    for (size_t i = 0; i < nh; i++)
+        for (size_t j = 0; j < nv; j++) {
+            double v = 0;
+            char what[160];
+            snprintf(what, sizeof what, "the end of the candela table (plane %zu of %zu, value %zu of %zu)", i + 1, nh, j + 1, nv);
+            if ((st = take(ctx, file, &t, last, what, &v))) goto fail;
+            if (v < 0) {
+                st = lx__error(ctx, LX_EPARSE, file, tok_line(&t, last), "negative candela value %g (plane %zu, angle %zu)", v, i + 1, j + 1);
+                goto fail;
+            }
+            lum->cd[i * nv + j] = v * scale;
+        }
+    if (t.pos < t.n) {
+        st = lx__error(ctx, LX_EPARSE, file, t.line[t.pos], "%zu numbers more than the counts (%zu vertical x %zu horizontal) ask for",
+                       t.n - t.pos, nv, nh);
+        goto fail;
+    }
+    if ((st = lx__lum_finish(ctx, lum, line_h, line_v, line_cd))) goto fail;
+    free(t.v);
+    free(t.line);
+    *out = lum;
+    return LX_OK;
+fail:
+    free(t.v);
+    free(t.line);
+    lx_luminaire_free(lum);
+    return st;
+}

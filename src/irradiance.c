@@ -1,0 +1,124 @@
+/* irradiance.c - the public irradiance calls: argument checks, normalised directions, the choice
+ * of method and (for brute force) of backend, and irradiance maps at lat-long pixel centres. */
+#include "lx_private.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* AUTO runs brute force on OpenCL when it has this many pixel pairs and the device is a GPU. */
+#define LX_IRR_AUTO_CL_PAIRS 2e9
+
+static lx_status check_map(lx_ctx *ctx, const lx_envmap *map)
+{
+    if (!map || !map->data || map->width < 1 || map->height < 1 || (map->channels != 1 && map->channels != 3))
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "invalid radiance map");
+    return LX_OK;
+}
+
+static lx_status run_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n, const double *dirs, lx_irr_opts *o,
+                          double *out)
+{
+    o->used = LX_BACKEND_CPU;
+    switch (o->method) {
+    case LX_IRR_SH9: {
+        lx_sh9 sh;
+        lx_status st = lx_sh9_project(ctx, map, &sh);
+        for (size_t k = 0; k < n && !st; k++) st = lx_sh9_irradiance(ctx, &sh, o->window, dirs + 3 * k, out + k * map->channels);
+        return st;
+    }
+    case LX_IRR_FAST: return lx__irr_fast(ctx, map, n, dirs, o->threads, out);
+    case LX_IRR_BRUTE: {
+        lx_backend b = o->backend == LX_BACKEND_AUTO ? lx_backend_from_env() : o->backend;
+        if (b == LX_BACKEND_AUTO) {
+            b = LX_BACKEND_CPU;
+#if LX_OPENCL
+            double pairs = (double)n * map->width * map->height;
+            if (pairs >= LX_IRR_AUTO_CL_PAIRS) {
+                lx_cl_device_info info;
+                if (lx_cl_info(ctx, &info) == LX_OK && info.is_gpu) b = LX_BACKEND_OPENCL;
+            }
+#endif
+        }
+        if (b == LX_BACKEND_OPENCL) {
+            lx_status st = lx__irr_brute_cl(ctx, map, n, dirs, out);
+            if (!st) o->used = LX_BACKEND_OPENCL;
+            return st;
+        }
+        return lx__irr_brute_cpu(ctx, map, n, dirs, o->threads, out);
+    }
+    }
+    return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown irradiance method %d", (int)o->method);
+}
+
+lx_status lx_irradiance_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const double *dirs, lx_irr_opts *opts,
+                             double *out)
+{
+    lx_status st = check_map(ctx, map);
+    if (st) return st;
+    if ((!dirs || !out) && n_dirs) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_irradiance_dirs: NULL argument");
+    lx_irr_opts local = {0};
+    lx_irr_opts *o = opts ? opts : &local;
+    double *nd = malloc((n_dirs ? n_dirs : 1) * 3 * sizeof *nd);
+    double *res = malloc((n_dirs ? n_dirs : 1) * map->channels * sizeof *res);
+    if (!nd || !res) {
+        free(nd);
+        free(res);
+        return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    }
+    for (size_t k = 0; k < n_dirs && !st; k++) {
+        const double *d = dirs + 3 * k;
+        double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        if (!(len > 0) || !isfinite(len))
+            st = lx__error(ctx, LX_EINVAL, NULL, 0, "normal %zu (%g, %g, %g) is not a non-zero finite vector", k, d[0],
+                           d[1], d[2]);
+        for (int c = 0; c < 3; c++) nd[3 * k + c] = d[c] / len;
+    }
+    if (!st) st = run_dirs(ctx, map, n_dirs, nd, o, res);
+    if (!st) memcpy(out, res, n_dirs * map->channels * sizeof *out);
+    free(nd);
+    free(res);
+    return st;
+}
+
+lx_status lx_irradiance_map(lx_ctx *ctx, const lx_envmap *map, int width, int height, lx_irr_opts *opts,
+                            lx_envmap **out)
+{
+    lx_status st = check_map(ctx, map);
+    if (st) return st;
+    if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_irradiance_map: NULL output");
+    *out = NULL;
+    if (width == 0 && height == 0) {
+        width = map->width;
+        height = map->height;
+    }
+    lx_irr_opts local = {0};
+    lx_irr_opts *o = opts ? opts : &local;
+    lx_envmap *m = NULL;
+    st = lx_envmap_create(ctx, width, height, map->channels, &m);
+    if (st) return st;
+    memcpy(m->y_weights, map->y_weights, sizeof m->y_weights);
+    memcpy(m->chroma_xy, map->chroma_xy, sizeof m->chroma_xy);
+    m->has_chromaticities = map->has_chromaticities;
+    m->units = map->units;
+    m->lum_per_unit = map->lum_per_unit;
+    if (o->method == LX_IRR_SH9) {
+        lx_sh9 sh;
+        o->used = LX_BACKEND_CPU;
+        st = lx_sh9_project(ctx, map, &sh);
+        if (!st) st = lx__irr_sh9_map(ctx, &sh, o->window, m);
+    } else {
+        size_t n = (size_t)width * height;
+        double *dirs = malloc(n * 3 * sizeof *dirs), *res = malloc(n * map->channels * sizeof *res);
+        if (!dirs || !res) st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for a %dx%d map", width, height);
+        for (size_t k = 0; k < n && !st; k++)
+            lx_envmap_direction(width, height, (double)(k / width) + 0.5, (double)(k % width) + 0.5, dirs + 3 * k);
+        if (!st) st = run_dirs(ctx, map, n, dirs, o, res);
+        for (size_t k = 0; k < n * map->channels && !st; k++) m->data[k] = (float)res[k];
+        free(dirs);
+        free(res);
+    }
+    if (st) lx_envmap_free(m);
+    else *out = m;
+    return st;
+}

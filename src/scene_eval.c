@@ -1,0 +1,263 @@
+/* scene_eval.c - evaluates a planned scene: each luminaire's contribution at each receiver point
+ * computed once (point law or near-field patches) and summed (linearity), plus the sky, the
+ * Lambertian luminance and the spectral quantities; counts the work per effect. */
+#include "scene_private.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+void lx_ctx_counters(const lx_ctx *ctx, lx_counters *out)
+{
+    if (!out) return;
+    if (!ctx) memset(out, 0, sizeof *out);
+    else *out = ctx->counters;
+}
+
+void lx_ctx_counters_reset(lx_ctx *ctx)
+{
+    if (ctx) memset(&ctx->counters, 0, sizeof ctx->counters);
+}
+
+void lx_scene_result_free(lx_scene_result *res)
+{
+    if (!res) return;
+    free(res->first);
+    free(res->E_lx);
+    free(res->contrib_lx);
+    free(res->L_cd_m2);
+    free(res->cct_K);
+    free(res->duv);
+    free(res->melanopic_edi_lx);
+    free(res);
+}
+
+/* What a luminaire needs during evaluation. */
+typedef struct lum_eval {
+    const lx_scene_luminaire *l;
+    double ex[3], ey[3], ez[3];
+    double area;
+    int spot_falloff, gonio, cosine;
+} lum_eval;
+
+static double dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+/* Intensity (cd) of the whole luminaire (frac = 1) or of a fraction of its luminous area towards
+ * the unit direction u (from the luminaire to the receiver). */
+static double intensity(lx_ctx *ctx, const lum_eval *le, const double u[3], double frac)
+{
+    const lx_scene_luminaire *l = le->l;
+    switch (l->kind) {
+    case LX_SLUM_POINT: return l->intensity_cd * frac;
+    case LX_SLUM_SPOT: {
+        double c = -dot(u, le->ez); /* cosine of the angle from the spot axis (aim = -ez) */
+        if (!le->spot_falloff) return c > 0 ? l->intensity_cd * frac : 0;
+        ctx->counters.spot_evaluations++;
+        return l->intensity_cd * frac * lx_warn_lobe(l->exponent, acos(c > 1 ? 1 : c < -1 ? -1 : c));
+    }
+    case LX_SLUM_DISK:
+    case LX_SLUM_RECT: {
+        double c = -dot(u, le->ez); /* Lambertian emitter facing aim: I = L A cos(theta) */
+        return c > 0 ? l->luminance_cd_m2 * le->area * c * frac : 0;
+    }
+    case LX_SLUM_FILE:
+        if (!le->gonio) return l->flux_lm / (4 * M_PI) * frac;
+        ctx->counters.goniometric_lookups++;
+        return l->scale * frac *
+               lx_luminaire_intensity_dir(l->lum, LX_INTERP_BILINEAR, dot(u, le->ex), dot(u, le->ey), dot(u, le->ez));
+    }
+    return 0;
+}
+
+/* E at receiver point q (normal n) from a point source at s with intensity I(u) scaled by frac. */
+static double point_E(lx_ctx *ctx, const lum_eval *le, const double s[3], const double q[3], const double n[3],
+                      double frac)
+{
+    double v[3] = {q[0] - s[0], q[1] - s[1], q[2] - s[2]};
+    double d2 = dot(v, v);
+    if (!(d2 > 0)) return 0;
+    double d = sqrt(d2);
+    double u[3] = {v[0] / d, v[1] / d, v[2] / d};
+    double cx = le->cosine ? -dot(n, u) : 1; /* cos(xi): the ray arrives against the normal */
+    if (cx <= 0) return 0;
+    return intensity(ctx, le, u, frac) * cx / d2;
+}
+
+/* Midpoint sum over an n-level subdivision of the luminous area: rectangles n x n patches,
+ * disks n rings of equal area x 2n sectors. */
+static double area_sum(lx_ctx *ctx, const lum_eval *le, const double q[3], const double n[3], int lev,
+                       unsigned long long *patches)
+{
+    const lx_scene_luminaire *l = le->l;
+    double sum = 0;
+    if (l->radius_m > 0) {
+        int ns = 2 * lev;
+        double frac = 1.0 / ((double)lev * ns);
+        for (int i = 0; i < lev; i++) {
+            double r = l->radius_m * sqrt((i + 0.5) / lev);
+            for (int j = 0; j < ns; j++) {
+                double ph = 2 * M_PI * (j + 0.5) / ns, a = r * cos(ph), b = r * sin(ph);
+                double s[3];
+                for (int k = 0; k < 3; k++) s[k] = l->pos_m[k] + a * le->ex[k] + b * le->ey[k];
+                sum += point_E(ctx, le, s, q, n, frac);
+            }
+        }
+        *patches += (unsigned long long)lev * ns;
+    } else {
+        double frac = 1.0 / ((double)lev * lev);
+        for (int i = 0; i < lev; i++) {
+            double a = l->width_m * ((i + 0.5) / lev - 0.5);
+            for (int j = 0; j < lev; j++) {
+                double b = l->length_m * ((j + 0.5) / lev - 0.5);
+                double s[3];
+                for (int k = 0; k < 3; k++) s[k] = l->pos_m[k] + a * le->ex[k] + b * le->ey[k];
+                sum += point_E(ctx, le, s, q, n, frac);
+            }
+        }
+        *patches += (unsigned long long)lev * lev;
+    }
+    return sum;
+}
+
+/* Near-field illuminance: the luminous area subdivided into patches, each a point source
+ * carrying its share of the intensity, refined (4, 8, 16, ... per side) until the Richardson-
+ * extrapolated estimate (the midpoint rule's error is even in the patch size) changes by less
+ * than tol, or 512 per side. */
+static double near_E(lx_ctx *ctx, const lum_eval *le, const double q[3], const double n[3], double tol)
+{
+    unsigned long long patches = 0;
+    double prev = area_sum(ctx, le, q, n, 4, &patches), xprev = NAN, x = prev;
+    for (int lev = 8; lev <= 512; lev *= 2) {
+        double e = area_sum(ctx, le, q, n, lev, &patches);
+        x = (4 * e - prev) / 3;
+        if (lev >= 16 && fabs(x - xprev) <= tol * fabs(x) + 1e-300) break;
+        xprev = x;
+        prev = e;
+    }
+    ctx->counters.nearfield_pairs++;
+    ctx->counters.nearfield_subdivisions += patches;
+    return x > 0 ? x : 0;
+}
+
+static double now_s(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static void counters_diff(const lx_counters *a, const lx_counters *b, lx_counters *out)
+{
+    const unsigned long long *pa = (const unsigned long long *)a, *pb = (const unsigned long long *)b;
+    unsigned long long *po = (unsigned long long *)out;
+    for (size_t i = 0; i < sizeof *out / sizeof *po; i++) po[i] = pa[i] - pb[i];
+}
+
+lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *plan, const lx_scene_eval_opts *opts,
+                        lx_scene_result **out)
+{
+    if (!ctx || !sc || !plan || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_eval: NULL argument");
+    long only = opts ? opts->only : -1;
+    if (only >= (long)sc->n_lum) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_eval: no luminaire %ld", only);
+    double t0 = now_s();
+    lx_counters before = ctx->counters;
+    size_t np = plan->n_points, nl = sc->n_lum, nc = nl + 1;
+    lx_scene_result *res = calloc(1, sizeof *res);
+    lum_eval *le = calloc(nl ? nl : 1, sizeof *le);
+    scene__spec *spec = calloc(nc, sizeof *spec);
+    void *map = NULL;
+    lx_status st = LX_OK;
+    if (!res || !le || !spec) goto nomem;
+    res->n_points = np;
+    res->n_lum = nl;
+    res->first = malloc((sc->n_rec + 1) * sizeof *res->first);
+    res->E_lx = calloc(np ? np : 1, sizeof *res->E_lx);
+    res->contrib_lx = calloc(np * nc > 0 ? np * nc : 1, sizeof *res->contrib_lx);
+    res->L_cd_m2 = malloc((np ? np : 1) * sizeof(double));
+    res->cct_K = malloc((np ? np : 1) * sizeof(double));
+    res->duv = malloc((np ? np : 1) * sizeof(double));
+    res->melanopic_edi_lx = malloc((np ? np : 1) * sizeof(double));
+    if (!res->first || !res->E_lx || !res->contrib_lx || !res->L_cd_m2 || !res->cct_K || !res->duv ||
+        !res->melanopic_edi_lx)
+        goto nomem;
+    for (size_t l = 0; l < nl; l++) {
+        lum_eval *e = &le[l];
+        e->l = &sc->lum[l];
+        lx__scene_frame(e->l, e->ex, e->ey, e->ez);
+        e->area = e->l->radius_m > 0 ? M_PI * e->l->radius_m * e->l->radius_m : e->l->width_m * e->l->length_m;
+        e->spot_falloff = plan->on[LX_EFFECT_SPOT_FALLOFF];
+        e->gonio = plan->on[LX_EFFECT_GONIOMETRIC];
+        e->cosine = plan->on[LX_EFFECT_COSINE];
+    }
+    int sky = plan->on[LX_EFFECT_ENVIRONMENT] && only < 0;
+    int spectral = plan->on[LX_EFFECT_SPECTRAL];
+    if (sky && sc->sky == LX_SKY_MAP && (st = lx__scene_sky_map_load(ctx, sc, &map)) != LX_OK) goto fail;
+    if (spectral) {
+        for (size_t l = 0; l < nl; l++)
+            if ((only < 0 || (long)l == only) &&
+                (st = lx__scene_spectrum_weights(ctx, sc->lum[l].file, sc->lum[l].line,
+                                                 sc->lum[l].spd ? &sc->lum[l].spd->spd[sc->lum[l].spd_index] : NULL,
+                                                 sc->lum[l].cct_K, &spec[l])) != LX_OK)
+                goto fail;
+        if (sky && (st = lx__scene_spectrum_weights(ctx, sc->sky_file_at, sc->sky_line, NULL, sc->sky_cct_K, &spec[nl])) != LX_OK)
+            goto fail;
+    }
+    /* every luminaire's contribution at every point, once */
+    size_t g = 0;
+    for (size_t r = 0; r < sc->n_rec; r++) {
+        const lx_scene_receiver *rc = &sc->rec[r];
+        res->first[r] = g;
+        double E_sky = 0;
+        if (sky && (st = lx__scene_sky_eval(ctx, sc, map, rc->normal, &E_sky)) != LX_OK) goto fail;
+        for (size_t i = 0; i < rc->n; i++, g++) {
+            const double *q = rc->points + 3 * i;
+            double *c = res->contrib_lx + g * nc;
+            for (size_t l = 0; l < nl; l++) {
+                if (only >= 0 && (long)l != only) continue;
+                if (plan->near[l * np + g]) c[l] = near_E(ctx, &le[l], q, rc->normal, sc->nearfield_tol);
+                else {
+                    ctx->counters.point_evaluations++;
+                    c[l] = point_E(ctx, &le[l], sc->lum[l].pos_m, q, rc->normal, 1);
+                }
+            }
+            c[nl] = E_sky;
+            double E = 0;
+            for (size_t k = 0; k < nc; k++) E += c[k];
+            res->E_lx[g] = E;
+            res->L_cd_m2[g] = sc->want_luminance && rc->reflectance >= 0 ? rc->reflectance * E / M_PI : NAN;
+            res->cct_K[g] = res->duv[g] = res->melanopic_edi_lx[g] = NAN;
+            if (spectral && E > 0) {
+                /* linearity: X, Y, Z and the melanopic irradiance of the summed spectral
+                 * irradiance are the sums of each source's, scaled to its illuminance */
+                double X = 0, Z = 0, mel = 0;
+                for (size_t k = 0; k < nc; k++) {
+                    X += c[k] * spec[k].x_per_lx;
+                    Z += c[k] * spec[k].z_per_lx;
+                    mel += c[k] * spec[k].mel_W_per_lx;
+                }
+                res->melanopic_edi_lx[g] = mel / lx_alphaopic_d65_efficacy(LX_AO_MEL);
+                double s = X + E + Z, T, duv;
+                if (s > 0 && lx_cct_from_xy(ctx, LX_OBSERVER_2, X / s, E / s, &T, &duv) == LX_OK && fabs(duv) <= 0.05 &&
+                    T >= 1000 && T <= 100000)
+                    res->cct_K[g] = T, res->duv[g] = duv;
+            }
+        }
+    }
+    res->first[sc->n_rec] = g;
+    lx__scene_sky_map_free(map);
+    free(le);
+    free(spec);
+    counters_diff(&ctx->counters, &before, &res->work);
+    res->seconds = now_s() - t0;
+    *out = res;
+    return LX_OK;
+nomem:
+    st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+fail:
+    lx__scene_sky_map_free(map);
+    lx_scene_result_free(res);
+    free(le);
+    free(spec);
+    return st;
+}

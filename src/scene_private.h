@@ -1,0 +1,91 @@
+/* scene_private.h - internals shared by the scene files (scene_read.c, scene_entities.c,
+ * scene_plan.c, scene_eval.c, scene_sky.c, scene_spectral.c); never installed. */
+#ifndef LX_SCENE_PRIVATE_H
+#define LX_SCENE_PRIVATE_H
+
+#include "lx_private.h"
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+/* Raw keys of a [luminaire] section, checked when the section ends. */
+typedef struct scene__lum_raw {
+    char *name;
+    const char *file;
+    long line;
+    int active;
+    char *type, *lum_file, *spd, *spectrum;
+    long type_line, lum_file_line, spd_line;
+    int has_pos, has_aim, has_rotate, has_flux, has_intensity, has_exponent, has_beam, has_luminance,
+        has_radius, has_width, has_length, has_cct, has_multiplier;
+    double pos[3], aim[3], rotate, flux, intensity, exponent, beam, luminance, radius, width, length, cct,
+        multiplier;
+    long flux_line, cct_line;
+} scene__lum_raw;
+
+/* Raw keys of a [receiver] section. */
+typedef struct scene__rec_raw {
+    char *name;
+    const char *file;
+    long line;
+    int active;
+    char *type;
+    int has_pos, has_normal, has_refl, has_spacing, has_points;
+    int nx, ny, nz; /* values given for x, y, z (0: key absent) */
+    double pos[3], normal[3], refl, spacing, xr[2], yr[2], zr[2];
+    long points[2];
+} scene__rec_raw;
+
+void lx__scene_lum_raw_init(scene__lum_raw *r, const char *name, const char *file, long line);
+void lx__scene_lum_raw_free(scene__lum_raw *r);
+lx_status lx__scene_lum_key(lx_ctx *ctx, scene__lum_raw *r, const char *file, long line, const char *key,
+                            const char *value);
+lx_status lx__scene_lum_finish(lx_ctx *ctx, lx_scene *sc, scene__lum_raw *r);
+
+void lx__scene_rec_raw_init(scene__rec_raw *r, const char *name, const char *file, long line);
+void lx__scene_rec_raw_free(scene__rec_raw *r);
+lx_status lx__scene_rec_key(lx_ctx *ctx, scene__rec_raw *r, const char *file, long line, const char *key,
+                            const char *value);
+lx_status lx__scene_rec_finish(lx_ctx *ctx, lx_scene *sc, scene__rec_raw *r);
+
+lx_status lx__scene_sky_key(lx_ctx *ctx, lx_scene *sc, const char *file, long line, const char *key,
+                            const char *value);
+
+/* A new empty scene (defaults set), its whole-scene checks, and a kept copy of a file name. */
+lx_scene *lx__scene_new(const char *file);
+lx_status lx__scene_finish(lx_ctx *ctx, lx_scene *sc);
+char *lx__scene_keep_name(lx_scene *sc, const char *name);
+
+/* Parses nmin..nmax comma-separated numbers of quantity q (LX_Q_NONE: plain numbers only) into
+ * out; bare numbers take the unit of the last value, else bare_unit, else are an error naming
+ * the key. *count (may be NULL) receives how many. */
+lx_status lx__scene_parse_vec(lx_ctx *ctx, const char *file, long line, const char *key, const char *value,
+                              int nmin, int nmax, lx_quantity q, const char *bare_unit, double *out, int *count);
+
+/* rel resolved against the directory of base_file (malloc'ed). */
+char *lx__scene_resolve(const char *base_file, const char *rel);
+/* Reads a whole file ("-": stdin) into *text (malloc'ed). LX_EIO (errno set) or LX_ENOMEM. */
+lx_status lx__scene_slurp(const char *path, char **text, size_t *len);
+
+/* ---- geometry and evaluation ---- */
+/* The luminaire's frame: ex (C0), ey (C90), ez (= -aim, up from the nadir). */
+void lx__scene_frame(const lx_scene_luminaire *l, double ex[3], double ey[3], double ez[3]);
+/* The size the five-times rule uses: disk diameter, rectangle (or opening) diagonal; 0 for points. */
+double lx__scene_lum_size(const lx_scene_luminaire *l);
+/* Total flux of a file luminaire's table times its scale (lm). */
+double lx__scene_file_flux(const lx_scene_luminaire *l);
+
+/* Sky illuminance on a receiver with unit normal n (lx): sky plus ground. Counts its work. */
+lx_status lx__scene_sky_eval(lx_ctx *ctx, const lx_scene *sc, const void *map, const double n[3], double *E_lx);
+/* Loads the map of a LX_SKY_MAP scene into *map (free with lx__scene_sky_map_free). */
+lx_status lx__scene_sky_map_load(lx_ctx *ctx, const lx_scene *sc, void **map);
+void lx__scene_sky_map_free(void *map);
+
+/* Spectral weights of a source: per lux of its illuminance, the X, Z (Y = 1) and melanopic
+ * irradiance (W/m2). Counts the spectra it integrates. */
+typedef struct scene__spec { double x_per_lx, z_per_lx, mel_W_per_lx; int valid; } scene__spec;
+lx_status lx__scene_spectrum_weights(lx_ctx *ctx, const char *file, long line, const lx_spd *spd, double cct_K,
+                                     scene__spec *out);
+
+#endif /* LX_SCENE_PRIVATE_H */

@@ -1,0 +1,428 @@
+/* scene_read.c - the scene file reader: INI-like sections, `key = value` with units on every
+ * number, `#` comments, includes relative to the including file (cycles detected). Every error
+ * names the scene file and line; unknown sections and keys are errors. */
+#include "lx_private.h"
+#include "scene_private.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#define MAX_DEPTH 16
+
+enum { SEC_NONE = 0, SEC_SCENE, SEC_LUM, SEC_REC, SEC_SKY, SEC_OUTPUT, SEC_EFFECTS };
+
+/* Keys given in the current section (duplicates are errors). */
+#define MAX_KEYS 32
+typedef struct reader {
+    lx_ctx *ctx;
+    lx_scene *sc;
+    int sec;
+    char seen[MAX_KEYS][32];
+    int nseen;
+    int sky_seen, output_seen, effects_seen, scene_seen;
+    struct { dev_t dev; ino_t ino; int known; } stack[MAX_DEPTH]; /* files being read (include cycles) */
+    const char *names[MAX_DEPTH];
+    int depth;
+    long include_line; /* the line of the include being followed */
+    /* raw values of the current luminaire / receiver, checked when its section ends */
+    scene__lum_raw lraw;
+    scene__rec_raw rraw;
+} reader;
+
+static char *xstrdup(const char *s)
+{
+    size_t n = strlen(s) + 1;
+    char *p = malloc(n);
+    if (p) memcpy(p, s, n);
+    return p;
+}
+
+char *lx__scene_resolve(const char *base_file, const char *rel)
+{
+    if (rel[0] == '/' || !base_file || !strchr(base_file, '/')) return xstrdup(rel);
+    const char *slash = strrchr(base_file, '/');
+    size_t nd = (size_t)(slash - base_file) + 1, nr = strlen(rel);
+    char *p = malloc(nd + nr + 1);
+    if (!p) return NULL;
+    memcpy(p, base_file, nd);
+    memcpy(p + nd, rel, nr + 1);
+    return p;
+}
+
+static void trim(char **s, char **e)
+{
+    while (*s < *e && isspace((unsigned char)**s)) (*s)++;
+    while (*e > *s && isspace((unsigned char)(*e)[-1])) (*e)--;
+}
+
+/* The unit text of a component ("2.8 m" -> "m"), "" when it is a bare number. */
+static const char *unit_part(const char *s)
+{
+    while (isspace((unsigned char)*s)) s++;
+    if (*s == '+' || *s == '-') s++;
+    while (isdigit((unsigned char)*s) || *s == '.') s++;
+    if ((*s == 'e' || *s == 'E') &&
+        (isdigit((unsigned char)s[1]) || ((s[1] == '+' || s[1] == '-') && isdigit((unsigned char)s[2])))) {
+        s += 2;
+        while (isdigit((unsigned char)*s)) s++;
+    }
+    while (isspace((unsigned char)*s)) s++;
+    return s;
+}
+
+lx_status lx__scene_parse_vec(lx_ctx *ctx, const char *file, long line, const char *key, const char *value,
+                              int nmin, int nmax, lx_quantity q, const char *bare_unit, double *out, int *count)
+{
+    char buf[512];
+    if (strlen(value) >= sizeof buf) return lx__error(ctx, LX_EPARSE, file, line, "%s: value too long", key);
+    strcpy(buf, value);
+    char *comp[8];
+    int n = 0;
+    for (char *p = buf;;) {
+        char *c = strchr(p, ',');
+        if (n == 8) return lx__error(ctx, LX_EPARSE, file, line, "%s: too many values", key);
+        comp[n++] = p;
+        if (!c) break;
+        *c = '\0';
+        p = c + 1;
+    }
+    if (n < nmin || n > nmax) {
+        if (nmin == nmax)
+            return lx__error(ctx, LX_EPARSE, file, line, "%s: expected %d value%s, got %d", key, nmin,
+                             nmin == 1 ? "" : "s separated by commas", n);
+        return lx__error(ctx, LX_EPARSE, file, line, "%s: expected %d to %d values, got %d", key, nmin, nmax, n);
+    }
+    const char *shared_unit = unit_part(comp[n - 1]); /* "1.5, 1.2, 2.8 m": the last unit applies to all */
+    for (int i = 0; i < n; i++) {
+        char *s = comp[i], *e = s + strlen(s);
+        trim(&s, &e);
+        *e = '\0';
+        if (!*s) return lx__error(ctx, LX_EPARSE, file, line, "%s: empty value", key);
+        double v;
+        lx_quantity got = LX_Q_NONE;
+        lx_status st = lx_quantity_parse(ctx, s, LX_Q_NONE, NULL, &v, &got);
+        if (st != LX_OK) return lx__error(ctx, LX_EPARSE, file, line, "%s: %s", key, lx_ctx_errmsg(ctx));
+        if (q == LX_Q_NONE) {
+            if (got != LX_Q_NONE)
+                return lx__error(ctx, LX_EPARSE, file, line, "%s: '%s' must be a plain number (no unit)", key, s);
+        } else if (got == LX_Q_NONE) {
+            char tmp[600];
+            const char *u = *shared_unit ? shared_unit : bare_unit;
+            if (!u)
+                return lx__error(ctx, LX_EPARSE, file, line, "%s: bare number '%s': give a unit of %s (e.g. '%s %s')",
+                                 key, s, lx_quantity_name(q), s, lx_quantity_si_unit(q));
+            snprintf(tmp, sizeof tmp, "%s %s", s, u);
+            st = lx_quantity_parse(ctx, tmp, LX_Q_NONE, NULL, &v, &got);
+            if (st != LX_OK) return lx__error(ctx, LX_EPARSE, file, line, "%s: %s", key, lx_ctx_errmsg(ctx));
+        }
+        if (q != LX_Q_NONE && got != q)
+            return lx__error(ctx, LX_EPARSE, file, line, "%s: '%s' is a %s, expected a %s", key, s,
+                             lx_quantity_name(got), lx_quantity_name(q));
+        if (!isfinite(v)) return lx__error(ctx, LX_EPARSE, file, line, "%s: '%s' is not finite", key, s);
+        out[i] = v;
+    }
+    if (count) *count = n;
+    return LX_OK;
+}
+
+static lx_status parse_bool(lx_ctx *ctx, const char *file, long line, const char *key, const char *v, int *out)
+{
+    if (!strcmp(v, "yes") || !strcmp(v, "true") || !strcmp(v, "on")) *out = 1;
+    else if (!strcmp(v, "no") || !strcmp(v, "false") || !strcmp(v, "off")) *out = 0;
+    else return lx__error(ctx, LX_EPARSE, file, line, "%s: expected yes or no, got '%s'", key, v);
+    return LX_OK;
+}
+
+/* Ends the current luminaire or receiver section: checks and converts its raw values. */
+static lx_status close_section(reader *r)
+{
+    lx_status st = LX_OK;
+    if (r->sec == SEC_LUM) st = lx__scene_lum_finish(r->ctx, r->sc, &r->lraw);
+    else if (r->sec == SEC_REC) st = lx__scene_rec_finish(r->ctx, r->sc, &r->rraw);
+    r->sec = SEC_NONE;
+    r->nseen = 0;
+    return st;
+}
+
+static lx_status open_section(reader *r, const char *file, long line, char *s, char *e)
+{
+    lx_status st = close_section(r);
+    if (st != LX_OK) return st;
+    trim(&s, &e);
+    char *sp = s;
+    while (sp < e && !isspace((unsigned char)*sp)) sp++;
+    char kind[32];
+    size_t kn = (size_t)(sp - s);
+    if (kn == 0 || kn >= sizeof kind) return lx__error(r->ctx, LX_EPARSE, file, line, "empty or bad section header");
+    memcpy(kind, s, kn);
+    kind[kn] = '\0';
+    char *name = sp, *ne = e;
+    trim(&name, &ne);
+    *ne = '\0';
+    static const char *const known[] = {"scene", "luminaire", "receiver", "sky", "output", "effects"};
+    int k = 0;
+    while (k < 6 && strcmp(kind, known[k])) k++;
+    if (k == 6)
+        return lx__error(r->ctx, LX_EPARSE, file, line,
+                         "unknown section [%s] (sections: scene, luminaire NAME, receiver NAME, sky, output, effects)",
+                         kind);
+    int named = !strcmp(kind, "luminaire") || !strcmp(kind, "receiver");
+    if (named && !*name)
+        return lx__error(r->ctx, LX_EPARSE, file, line, "[%s] needs a name: [%s NAME]", kind, kind);
+    if (!named && *name)
+        return lx__error(r->ctx, LX_EPARSE, file, line, "[%s] takes no name (got '%s')", kind, name);
+    int *once = NULL;
+    if (!strcmp(kind, "scene")) r->sec = SEC_SCENE, once = &r->scene_seen;
+    else if (!strcmp(kind, "sky")) r->sec = SEC_SKY, once = &r->sky_seen;
+    else if (!strcmp(kind, "output")) r->sec = SEC_OUTPUT, once = &r->output_seen;
+    else if (!strcmp(kind, "effects")) r->sec = SEC_EFFECTS, once = &r->effects_seen;
+    else if (!strcmp(kind, "luminaire")) r->sec = SEC_LUM;
+    else if (!strcmp(kind, "receiver")) r->sec = SEC_REC;
+    else
+        return lx__error(r->ctx, LX_EPARSE, file, line,
+                         "unknown section [%s] (sections: scene, luminaire NAME, receiver NAME, sky, output, effects)",
+                         kind);
+    if (once) {
+        if (*once) return lx__error(r->ctx, LX_EPARSE, file, line, "section [%s] given twice", kind);
+        *once = 1;
+    }
+    if (named) {
+        if (strchr(name, ',') || strchr(name, '"'))
+            return lx__error(r->ctx, LX_EPARSE, file, line, "name '%s': no commas or quotes", name);
+        for (size_t i = 0; i < r->sc->n_lum; i++)
+            if (r->sec == SEC_LUM && !strcmp(r->sc->lum[i].name, name))
+                return lx__error(r->ctx, LX_EPARSE, file, line, "luminaire '%s' defined twice", name);
+        for (size_t i = 0; i < r->sc->n_rec; i++)
+            if (r->sec == SEC_REC && !strcmp(r->sc->rec[i].name, name))
+                return lx__error(r->ctx, LX_EPARSE, file, line, "receiver '%s' defined twice", name);
+    }
+    if (r->sec == SEC_LUM) lx__scene_lum_raw_init(&r->lraw, name, file, line);
+    if (r->sec == SEC_REC) lx__scene_rec_raw_init(&r->rraw, name, file, line);
+    if (r->sec == SEC_SKY) r->sc->sky_line = line, r->sc->sky_file_at = file;
+    return LX_OK;
+}
+
+static lx_status read_file(reader *r, const char *path, const char *text, size_t len);
+
+static lx_status do_include(reader *r, const char *file, long line, const char *value)
+{
+    if (!*value) return lx__error(r->ctx, LX_EPARSE, file, line, "include: no file named");
+    char *path = lx__scene_resolve(file, value);
+    if (!path) return lx__error(r->ctx, LX_ENOMEM, file, line, "out of memory");
+    char *text = NULL;
+    size_t len = 0;
+    lx_status st = lx__scene_slurp(path, &text, &len);
+    if (st != LX_OK) {
+        lx__error(r->ctx, st, file, line, "include: cannot read '%s': %s", path, strerror(errno));
+        free(path);
+        return st;
+    }
+    if (r->depth >= MAX_DEPTH) st = lx__error(r->ctx, LX_EPARSE, file, line, "include: nested too deep");
+    else r->include_line = line, st = read_file(r, path, text, len);
+    free(text);
+    free(path);
+    return st;
+}
+
+static lx_status key_value(reader *r, const char *file, long line, const char *key, const char *value)
+{
+    lx_ctx *ctx = r->ctx;
+    if (!strcmp(key, "include")) return do_include(r, file, line, value);
+    if (r->sec == SEC_NONE)
+        return lx__error(ctx, LX_EPARSE, file, line, "'%s' outside a section (start one with [scene], ...)", key);
+    for (int i = 0; i < r->nseen; i++)
+        if (!strcmp(r->seen[i], key)) return lx__error(ctx, LX_EPARSE, file, line, "'%s' given twice in this section", key);
+    if (r->nseen < MAX_KEYS && strlen(key) < sizeof r->seen[0]) strcpy(r->seen[r->nseen++], key);
+    lx_scene *sc = r->sc;
+    switch (r->sec) {
+    case SEC_SCENE:
+        if (!strcmp(key, "title")) {
+            free(sc->title);
+            sc->title = xstrdup(value);
+            return sc->title ? LX_OK : lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
+        }
+        if (!strcmp(key, "near_field_tolerance")) {
+            lx_status st = lx__scene_parse_vec(ctx, file, line, key, value, 1, 1, LX_Q_NONE, NULL,
+                                               &sc->nearfield_tol, NULL);
+            if (st == LX_OK && !(sc->nearfield_tol >= 1e-9 && sc->nearfield_tol <= 0.1))
+                return lx__error(ctx, LX_EPARSE, file, line, "%s: must be from 1e-9 to 0.1", key);
+            return st;
+        }
+        return lx__error(ctx, LX_EPARSE, file, line, "unknown key '%s' in [scene] (keys: title, near_field_tolerance)", key);
+    case SEC_LUM: return lx__scene_lum_key(ctx, &r->lraw, file, line, key, value);
+    case SEC_REC: return lx__scene_rec_key(ctx, &r->rraw, file, line, key, value);
+    case SEC_SKY: return lx__scene_sky_key(ctx, sc, file, line, key, value);
+    case SEC_OUTPUT: {
+        int b = 0;
+        if (!strcmp(key, "illuminance")) {
+            lx_status st = parse_bool(ctx, file, line, key, value, &b);
+            if (st == LX_OK && !b)
+                return lx__error(ctx, LX_EPARSE, file, line, "illuminance is always computed (it cannot be 'no')");
+            return st;
+        }
+        int *dst = !strcmp(key, "luminance") ? &sc->want_luminance
+                   : !strcmp(key, "cct") ? &sc->want_cct
+                   : !strcmp(key, "melanopic_edi") ? &sc->want_melanopic : NULL;
+        if (!dst)
+            return lx__error(ctx, LX_EPARSE, file, line,
+                             "unknown key '%s' in [output] (keys: illuminance, luminance, cct, melanopic_edi)", key);
+        lx_status st = parse_bool(ctx, file, line, key, value, dst);
+        if (st == LX_OK && dst != &sc->want_luminance) sc->spectral_line = sc->spectral_line ? sc->spectral_line : line;
+        return st;
+    }
+    case SEC_EFFECTS:
+        for (int e = 0; e < LX_EFFECT_COUNT; e++)
+            if (!strcmp(key, lx_effect_name((lx_effect)e))) {
+                if (!strcmp(value, "on")) sc->force[e] = LX_FORCE_ON;
+                else if (!strcmp(value, "off")) sc->force[e] = LX_FORCE_OFF;
+                else if (!strcmp(value, "auto")) sc->force[e] = LX_FORCE_AUTO;
+                else return lx__error(ctx, LX_EPARSE, file, line, "%s: expected on, off or auto, got '%s'", key, value);
+                if (e == LX_EFFECT_INVERSE_SQUARE && sc->force[e] == LX_FORCE_OFF)
+                    return lx__error(ctx, LX_EPARSE, file, line,
+                                     "inverse_square cannot be turned off (it is the point-source law itself)");
+                sc->force_line[e] = line;
+                return LX_OK;
+            }
+        return lx__error(ctx, LX_EPARSE, file, line,
+                         "unknown effect '%s' (effects: inverse_square, cosine, spot_falloff, goniometric, "
+                         "near_field, spectral, environment, opencl)", key);
+    }
+    return lx__error(ctx, LX_EPARSE, file, line, "unknown key '%s'", key);
+}
+
+static lx_status read_file(reader *r, const char *path, const char *text, size_t len)
+{
+    lx_ctx *ctx = r->ctx;
+    struct stat sb;
+    int known = strcmp(path, "-") && stat(path, &sb) == 0;
+    for (int i = 0; i < r->depth; i++)
+        if (known && r->stack[i].known && r->stack[i].dev == sb.st_dev && r->stack[i].ino == sb.st_ino)
+            return lx__error(ctx, LX_EPARSE, r->names[r->depth - 1], r->include_line,
+                             "include cycle: '%s' is already being read (included from %s)", path, r->names[i]);
+    /* the file name as given is kept in the scene (messages of later checks name it) */
+    char *keep = lx__scene_keep_name(r->sc, path);
+    if (!keep) return lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
+    r->stack[r->depth].known = known;
+    if (known) r->stack[r->depth].dev = sb.st_dev, r->stack[r->depth].ino = sb.st_ino;
+    r->names[r->depth++] = keep;
+    lx_status st = LX_OK;
+    lx__lines it = {text, text + len, 0};
+    const char *s, *e;
+    if (len >= 3 && !memcmp(text, "\xEF\xBB\xBF", 3)) it.p += 3;
+    while (st == LX_OK && lx__next_line(&it, &s, &e)) {
+        long line = it.line;
+        char buf[1024];
+        const char *hash = memchr(s, '#', (size_t)(e - s));
+        if (hash) e = hash;
+        if ((size_t)(e - s) >= sizeof buf) {
+            st = lx__error(ctx, LX_EPARSE, keep, line, "line too long");
+            break;
+        }
+        memcpy(buf, s, (size_t)(e - s));
+        buf[e - s] = '\0';
+        char *b = buf, *be = buf + (e - s);
+        trim(&b, &be);
+        *be = '\0';
+        if (!*b) continue;
+        if (*b == '[') {
+            if (be[-1] != ']') {
+                st = lx__error(ctx, LX_EPARSE, keep, line, "section header without ']'");
+                break;
+            }
+            be[-1] = '\0';
+            st = open_section(r, keep, line, b + 1, be - 1);
+            continue;
+        }
+        char *eq = strchr(b, '=');
+        if (!eq) {
+            st = lx__error(ctx, LX_EPARSE, keep, line, "expected 'key = value' or '[section]', got '%s'", b);
+            break;
+        }
+        char *ks = b, *ke = eq, *vs = eq + 1, *ve = be;
+        trim(&ks, &ke);
+        trim(&vs, &ve);
+        *ke = '\0';
+        *ve = '\0';
+        if (!*ks) {
+            st = lx__error(ctx, LX_EPARSE, keep, line, "missing key before '='");
+            break;
+        }
+        st = key_value(r, keep, line, ks, vs);
+    }
+    r->depth--;
+    return st;
+}
+
+lx_status lx__scene_slurp(const char *path, char **text, size_t *len)
+{
+    FILE *f = strcmp(path, "-") ? fopen(path, "rb") : stdin;
+    if (!f) return LX_EIO;
+    size_t cap = 4096, n = 0;
+    char *buf = malloc(cap);
+    while (buf) {
+        size_t got = fread(buf + n, 1, cap - n, f);
+        n += got;
+        if (n < cap) break;
+        char *nb = cap > SIZE_MAX / 2 ? NULL : realloc(buf, cap * 2);
+        if (!nb) {
+            free(buf);
+            buf = NULL;
+            break;
+        }
+        buf = nb;
+        cap *= 2;
+    }
+    int err = ferror(f);
+    if (f != stdin) fclose(f);
+    if (!buf) return LX_ENOMEM;
+    if (err) {
+        free(buf);
+        return LX_EIO;
+    }
+    *text = buf;
+    *len = n;
+    return LX_OK;
+}
+
+lx_status lx_scene_read_mem(lx_ctx *ctx, const char *name, const char *text, size_t len, lx_scene **out)
+{
+    if (!ctx || !name || (!text && len) || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_read_mem: NULL argument");
+    *out = NULL;
+    reader r;
+    memset(&r, 0, sizeof r);
+    r.ctx = ctx;
+    r.sc = lx__scene_new(name);
+    if (!r.sc) return lx__error(ctx, LX_ENOMEM, name, 0, "out of memory");
+    lx_status st = read_file(&r, name, text ? text : "", len);
+    if (st == LX_OK) st = close_section(&r);
+    else {
+        lx__scene_lum_raw_free(&r.lraw);
+        lx__scene_rec_raw_free(&r.rraw);
+    }
+    if (st == LX_OK) st = lx__scene_finish(ctx, r.sc);
+    if (st != LX_OK) {
+        lx_scene_free(r.sc);
+        return st;
+    }
+    *out = r.sc;
+    return LX_OK;
+}
+
+lx_status lx_scene_read_file(lx_ctx *ctx, const char *path, lx_scene **out)
+{
+    if (!ctx || !path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_read_file: NULL argument");
+    *out = NULL;
+    char *text = NULL;
+    size_t len = 0;
+    lx_status st = lx__scene_slurp(path, &text, &len);
+    if (st != LX_OK) return lx__error(ctx, st, path, 0, "cannot read: %s", st == LX_EIO ? strerror(errno) : "out of memory");
+    st = lx_scene_read_mem(ctx, path, text, len, out);
+    free(text);
+    return st;
+}

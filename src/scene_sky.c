@@ -1,0 +1,162 @@
+/* scene_sky.c - sky and ground irradiance on a receiver of any orientation: a uniform sky (closed
+ * form), the CIE standard overcast sky (closed form for horizontal receivers, Gauss-Legendre in
+ * zenith angle otherwise) and an EXR lat-long radiance map (pixel sums); the ground below the
+ * horizon is a uniform Lambertian surface of luminance rho E_h / pi. */
+#include "scene_private.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+/* Gauss-Legendre nodes and weights on [-1, 1] (n <= 100000), by Newton on P_n. */
+static void gauss_legendre(int n, double *x, double *w)
+{
+    for (int i = 0; i < (n + 1) / 2; i++) {
+        double z = cos(M_PI * (i + 0.75) / (n + 0.5)), dp = 1;
+        for (int it = 0; it < 100; it++) {
+            double p0 = 1, p1 = z;
+            for (int k = 2; k <= n; k++) {
+                double p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
+                p0 = p1;
+                p1 = p2;
+            }
+            if (n == 1) p1 = z, p0 = 1;
+            dp = n * (z * p1 - p0) / (z * z - 1);
+            double dz = p1 / dp;
+            z -= dz;
+            if (fabs(dz) < 1e-16) break;
+        }
+        x[i] = -z;
+        x[n - 1 - i] = z;
+        w[i] = w[n - 1 - i] = 2 / ((1 - z * z) * dp * dp);
+    }
+}
+
+/* G(theta) = integral over azimuth of max(0, n . omega) for a receiver tilted by beta:
+ * with a = cos(beta) cos(theta), b = sin(beta) sin(theta) >= 0, the integrand is a + b cos(phi). */
+static double azimuth_integral(double a, double b)
+{
+    if (a >= b) return 2 * M_PI * a;
+    if (a <= -b) return 0;
+    double p0 = acos(-a / b);
+    return 2 * (a * p0 + b * sin(p0));
+}
+
+/* CIE overcast sky part for tilt beta: integral over the sky of Lz (1 + 2 cos t)/3 max(0, n.w),
+ * split at the zenith angle where the receiver's horizon meets the sky's (|pi/2 - beta|). */
+static double overcast_tilted(lx_ctx *ctx, double Lz, double beta, int nodes)
+{
+    double *x = malloc(2 * (size_t)nodes * sizeof *x);
+    if (!x) return NAN;
+    double *w = x + nodes;
+    gauss_legendre(nodes, x, w);
+    double cut = fabs(M_PI / 2 - beta), edges[3] = {0, cut, M_PI / 2}, sum = 0;
+    for (int piece = 0; piece < 2; piece++) {
+        double t0 = edges[piece], t1 = edges[piece + 1], h = (t1 - t0) / 2;
+        if (!(h > 0)) continue;
+        for (int i = 0; i < nodes; i++) {
+            double t = t0 + h * (x[i] + 1);
+            double L = Lz * (1 + 2 * cos(t)) / 3;
+            sum += w[i] * h * L * sin(t) * azimuth_integral(cos(beta) * cos(t), sin(beta) * sin(t));
+        }
+        ctx->counters.environment_samples += (unsigned long long)nodes;
+    }
+    free(x);
+    return sum;
+}
+
+typedef struct sky_map {
+    lx_envmap *map;
+    double *L;      /* per-pixel luminance, cd/m2, times the scene's scale */
+    double E_h;     /* horizontal illuminance from the upper hemisphere */
+} sky_map;
+
+void lx__scene_sky_map_free(void *p)
+{
+    sky_map *m = p;
+    if (!m) return;
+    lx_envmap_free(m->map);
+    free(m->L);
+    free(m);
+}
+
+/* Sum over the upper-hemisphere pixels of L max(0, n . m_pixel) (the pixel's first moment: exact
+ * for pixels the receiver sees whole). Rows whose centre is below the horizon are ground. */
+static double map_sum(lx_ctx *ctx, const sky_map *m, const double n[3])
+{
+    int W = m->map->width, H = m->map->height;
+    double sum = 0;
+    for (int j = 0; j < H; j++) {
+        if ((j + 0.5) / H >= 0.5) break;
+        for (int i = 0; i < W; i++) {
+            double mo[3];
+            lx_envmap_pixel_moment(W, H, j, i, mo);
+            double c = n[0] * mo[0] + n[1] * mo[1] + n[2] * mo[2];
+            if (c > 0) sum += m->L[(size_t)j * W + i] * c;
+        }
+        ctx->counters.environment_samples += (unsigned long long)W;
+    }
+    return sum;
+}
+
+lx_status lx__scene_sky_map_load(lx_ctx *ctx, const lx_scene *sc, void **out)
+{
+    sky_map *m = calloc(1, sizeof *m);
+    if (!m) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    lx_status st = lx_exr_read(ctx, sc->sky_path, &m->map);
+    if (st != LX_OK) {
+        char inner[LX__ERRMSG_MAX];
+        snprintf(inner, sizeof inner, "%s", lx_ctx_errmsg(ctx));
+        free(m);
+        return lx__error(ctx, st, sc->sky_file_at, sc->sky_line, "[sky] file: %s", inner);
+    }
+    m->L = malloc((size_t)m->map->width * m->map->height * sizeof *m->L);
+    if (!m->L) {
+        lx__scene_sky_map_free(m);
+        return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    }
+    if ((st = lx_envmap_luminance(ctx, m->map, m->L)) != LX_OK) {
+        lx__scene_sky_map_free(m);
+        return st;
+    }
+    for (size_t k = 0; k < (size_t)m->map->width * m->map->height; k++) m->L[k] *= sc->sky_scale;
+    static const double up[3] = {0, 0, 1};
+    m->E_h = map_sum(ctx, m, up);
+    *out = m;
+    return LX_OK;
+}
+
+lx_status lx__scene_sky_eval(lx_ctx *ctx, const lx_scene *sc, const void *map, const double n[3], double *E_lx)
+{
+    double cb = n[2] > 1 ? 1 : n[2] < -1 ? -1 : n[2], beta = acos(cb);
+    double E_sky, E_h;
+    ctx->counters.environment_evaluations++;
+    switch (sc->sky) {
+    case LX_SKY_UNIFORM:
+        /* isotropic sky: the view factor of the sky dome from a plane tilted by beta is
+         * (1 + cos beta)/2, so E = pi L (1 + cos beta)/2 (horizontal: pi L, vertical: pi L / 2) */
+        E_h = M_PI * sc->sky_luminance_cd_m2;
+        E_sky = E_h * (1 + cb) / 2;
+        break;
+    case LX_SKY_OVERCAST:
+        /* CIE standard overcast sky (Moon & Spencer 1942, CIE S 011 type 1): L = Lz (1 + 2 cos t)/3,
+         * horizontal E = 2 pi Lz/3 (1/2 + 2/3) = 7 pi Lz / 9 */
+        E_h = 7 * M_PI * sc->sky_luminance_cd_m2 / 9;
+        if (cb == 1) E_sky = E_h;
+        else E_sky = overcast_tilted(ctx, sc->sky_luminance_cd_m2, beta, sc->sky_samples);
+        if (!isfinite(E_sky)) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+        break;
+    case LX_SKY_MAP: {
+        const sky_map *m = map;
+        E_h = m->E_h;
+        E_sky = cb == 1 ? E_h : map_sum(ctx, m, n);
+        break;
+    }
+    default: *E_lx = 0; return LX_OK;
+    }
+    /* the ground: uniform Lambertian luminance rho E_h / pi below the horizon, seen with the
+     * view factor (1 - cos beta)/2 */
+    double Lg = sc->ground_reflectance * E_h / M_PI;
+    *E_lx = E_sky + M_PI * Lg * (1 - cb) / 2;
+    return LX_OK;
+}

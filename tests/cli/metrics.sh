@@ -1,0 +1,62 @@
+# metrics.sh - `luxcalc spd --metrics`: the CLI.md column names and order, values against the
+# library's tested references (CIE published Ra, colour-science 0.4.7), refusals, units.
+. tests/cli/lib.sh
+S=samples/spd/cie_illuminants.csv   # A, D65, FL2, FL11 (CIE 015:2018 tables)
+
+run spd --metrics all --format csv "$S"
+expect_rc 0 "metrics all exits 0"
+hdr=$(printf '%s\n' "$out" | head -n 1)
+want='cri_ra,cri_r1,cri_r2,cri_r3,cri_r4,cri_r5,cri_r6,cri_r7,cri_r8,cri_r9,cri_r10,cri_r11,cri_r12,cri_r13,cri_r14,tm30_rf,tm30_rg,melanopic_edi_lx,melanopic_der,alphaopic_sc,alphaopic_mc,alphaopic_lc,alphaopic_rh,alphaopic_mel'
+case "$hdr" in
+  file,spectrum,X,Y,Z,x,y,u_prime,v_prime,cct_K,duv,ler_lm_per_W,scotopic_Y,sp_ratio,*",$want,"*) ok "CLI.md column order" ;;
+  *) notok "CLI.md column order" "header: $hdr" ;;
+esac
+# CIE 13.3 Ra of FL2 is published as 64 (colour-science 0.4.7: 64.2337); FL11 83 (82.8591)
+expect_field 3 cri_ra 64.23 0.3 "FL2 Ra"
+expect_field 4 cri_ra 82.86 0.3 "FL11 Ra"
+# R9 of FL2: -83.6 (colour-science 0.4.7 -83.5875)
+expect_field 3 cri_r9 -83.6 1 "FL2 R9"
+# TM-30 FL2: Rf 70.1, Rg 86.4 (colour-science 0.4.7: 70.1208, 86.4163)
+expect_field 3 tm30_rf 70.12 0.2 "FL2 Rf"
+expect_field 3 tm30_rg 86.42 0.2 "FL2 Rg"
+# A and D65 are their own references: Ra 100 (this file starts at 380 nm: the spectrum is zero
+# in 360-375 nm where the full D65 table and the D-series reference are not, which costs D65 0.02)
+expect_field 1 cri_ra 100 0.01 "A Ra"
+expect_field 2 cri_ra 100 0.03 "D65 Ra"
+# melanopic DER of A 0.4957 +- 0.001 (CIE S 026 toolbox value quoted by the issue); D65: 1
+expect_field 1 melanopic_der 0.4957 0.001 "A melanopic DER"
+expect_field 2 melanopic_der 1 0.001 "D65 melanopic DER"
+expect_field 1 cri_valid 1 0 "A CRI valid"
+
+# groups and single columns
+run spd --metrics tm30_rf,melanopic_edi_lx --format csv "$S"
+hdr=$(printf '%s\n' "$out" | head -n 1)
+case "$hdr" in *",method,tm30_rf,melanopic_edi_lx") ok "selected columns in contract order" ;; *) notok "selected columns in contract order" "$hdr" ;; esac
+run spd --metrics alphaopic --format csv "$S"
+expect_out_match 'alphaopic_mel' "alphaopic group"
+run spd --metrics colour --format csv "$S"
+expect_rc 1 "unknown metric is a usage error"
+expect_err_match "^luxcalc: spd: --metrics: unknown group or column 'colour'" "unknown metric message"
+
+# melanopic EDI of D65 irradiance: E_mel / 1.3262 mW/lm equals E_v for D65 (DER 1, CIE S 026), so
+# melanopic_edi_lx ~ Y in lx with --unit W/m2/nm
+run spd --unit W/m2/nm --metrics melanopic_edi_lx --format csv "$S"
+y=$(printf '%s\n' "$out" | awk -F, 'NR==3{print $4}')
+expect_field 2 melanopic_edi_lx "$y" "$(awk -v y="$y" 'BEGIN{print y*1e-3}')" "D65 EDI equals its illuminance"
+
+# far off the locus: a green narrow band -> cri/tm30 empty, reason on stderr, exit 0
+printf 'wavelength_nm,green\n' >"$T/g.csv"
+awk 'BEGIN{for(l=380;l<=780;l+=5) printf "%d,%.6g\n", l, exp(-0.5*((l-530)/12)^2)}' >>"$T/g.csv"
+run spd --metrics cri_ra,tm30_rf,melanopic_der --format csv "$T/g.csv"
+expect_rc 0 "off-locus spectrum exits 0"
+expect_err_match "Duv" "off-locus reason on stderr"
+row=$(printf '%s\n' "$out" | sed -n 2p)
+case "$row" in *,,,*) ok "off-locus cri/tm30 cells empty" ;; *) notok "off-locus cri/tm30 cells empty" "$row" ;; esac
+
+# mesopic only with radiance input: 0.1 W/(sr m2 nm) flat is photopic (>5 cd/m2) -> m = 1
+awk 'BEGIN{print "wavelength_nm,flat"; for(l=380;l<=780;l+=5) print l ",0.1"}' >"$T/f.csv"
+run spd --unit W/sr/m2/nm --metrics mesopic --format csv "$T/f.csv"
+expect_field 1 mesopic_m 1 0 "mesopic m = 1 in photopic range"
+
+run spd --help
+expect_out_match -- '--metrics LIST\|all' "help mentions --metrics"

@@ -1,0 +1,305 @@
+/* test_batch.c - the batch integration API on the CPU path: published table sums, closed forms,
+ * illuminant A against colour-science, vector/scalar/thread agreement with a naive oracle,
+ * strides, tails, empty batches, argument errors, backend names and resampling. */
+#include "lx_test.h"
+
+#include <string.h>
+
+static const lx_function XYZ[3] = {LX_FN_XBAR_2, LX_FN_YBAR_2, LX_FN_ZBAR_2};
+
+/* Naive oracle: long double, one term at a time, weights from lx_function_get interpolated by
+ * hand (independent of src/batch.c's weight matrix and vector code). */
+static long double oracle(lx_ctx *ctx, const double *row, size_t n, double start, double step, lx_function fn)
+{
+    lx_spd w;
+    lx_assert_ok(ctx, lx_function_get(ctx, fn, &w));
+    long double s = 0;
+    for (size_t j = 0; j < n; j++) {
+        double x = start + (double)j * step, wv = 0;
+        for (size_t m = 0; m + 1 < w.n; m++)
+            if (x >= w.lambda_nm[m] && x <= w.lambda_nm[m + 1]) {
+                double t = (x - w.lambda_nm[m]) / (w.lambda_nm[m + 1] - w.lambda_nm[m]);
+                wv = w.value[m] + t * (w.value[m + 1] - w.value[m]);
+                break;
+            }
+        s += (long double)row[j] * wv * step;
+    }
+    return s;
+}
+
+static void test_table_sums(void **state)
+{
+    lx_ctx *ctx = *state;
+    double ones[471];
+    for (int i = 0; i < 471; i++) ones[i] = 1.0;
+    lx_function fns[4] = {LX_FN_XBAR_2, LX_FN_YBAR_2, LX_FN_ZBAR_2, LX_FN_VPRIME};
+    lx_batch b = {.n_spectra = 1, .n_lambda = 471, .start_nm = 360, .step_nm = 1, .dtype = LX_F64, .values = ones};
+    double out[4];
+    lx_batch_opts o = {.backend = LX_BACKEND_CPU};
+    lx_assert_ok(ctx, lx_batch_integrate(ctx, &b, fns, 4, &o, out));
+    assert_int_equal(o.used, LX_BACKEND_CPU);
+    /* sums of the CIE 1931 2 deg CMFs 360-830 nm at 1 nm: colour-science 0.4.7
+     * MSDS_CMFS["CIE 1931 2 Degree Standard Observer"].values.sum(axis=0); STYLE.md: sum ybar 106.856917 */
+    lx_assert_near(out[0], 106.86546949, 0, 1e-9);
+    lx_assert_near(out[1], 106.8569171, 0, 1e-9);
+    lx_assert_near(out[2], 106.89225128, 0, 1e-9);
+    /* sum of V'(lambda) 380-780 nm at 1 nm: colour-science 0.4.7 SDS_LEFS_SCOTOPIC["CIE 1951 Scotopic
+     * Standard Observer"].values.sum() = 97.071316574 (zero outside its table) */
+    lx_assert_near(out[3], 97.071316574, 0, 1e-9);
+}
+
+static void test_half_nm_grid_is_trapezoid(void **state)
+{
+    lx_ctx *ctx = *state;
+    /* A unit spectrum on 360.5, 361.5, ..., 829.5: each weight is the mean of its two 1 nm neighbours,
+     * so the sum is sum(w) - (w(360) + w(830)) / 2 (trapezoid rule). With colour-science 0.4.7's CMFs:
+     * v.sum(0) - (v[0] + v[-1]) / 2 = 106.86540391, 106.85691492, 106.89194823. */
+    double ones[470];
+    for (int i = 0; i < 470; i++) ones[i] = 1.0;
+    lx_batch b = {.n_spectra = 1, .n_lambda = 470, .start_nm = 360.5, .step_nm = 1, .dtype = LX_F64, .values = ones};
+    double out[3];
+    lx_assert_ok(ctx, lx_batch_integrate(ctx, &b, XYZ, 3, &(lx_batch_opts){.backend = LX_BACKEND_CPU}, out));
+    lx_assert_near(out[0], 106.86540391, 0, 1e-9);
+    lx_assert_near(out[1], 106.85691492, 0, 1e-9);
+    lx_assert_near(out[2], 106.89194823, 0, 1e-9);
+}
+
+static void test_illuminant_a(void **state)
+{
+    lx_ctx *ctx = *state;
+    /* CIE A by CIE 015:2018 eq. 4.1 (c2 = 1.435e-2 m K) times colour-science 0.4.7's CMFs, summed in
+     * numpy: 1 nm -> 11852.36540397, 10789.5575544, 3839.45745787;
+     *        5 nm (x 5) -> 11852.36711593, 10789.5687106, 3839.46352473 */
+    double a1[471], a5[95];
+    float f1[471];
+    for (int i = 0; i < 471; i++) {
+        a1[i] = lx_illuminant_a(360.0 + i);
+        f1[i] = (float)a1[i];
+    }
+    for (int i = 0; i < 95; i++) a5[i] = lx_illuminant_a(360.0 + 5.0 * i);
+    double out[3];
+    lx_batch b = {.n_spectra = 1, .n_lambda = 471, .start_nm = 360, .step_nm = 1, .dtype = LX_F64, .values = a1};
+    lx_assert_ok(ctx, lx_batch_integrate(ctx, &b, XYZ, 3, NULL, out));
+    lx_assert_near(out[0], 11852.36540397, 0, 1e-9);
+    lx_assert_near(out[1], 10789.5575544, 0, 1e-9);
+    lx_assert_near(out[2], 3839.45745787, 0, 1e-9);
+    b.dtype = LX_F32;
+    b.values = f1; /* float input: each value rounded by <= 6e-8 relative, so the sums too */
+    lx_assert_ok(ctx, lx_batch_integrate(ctx, &b, XYZ, 3, NULL, out));
+    lx_assert_near(out[0], 11852.36540397, 0, 1e-6);
+    lx_assert_near(out[1], 10789.5575544, 0, 1e-6);
+    lx_assert_near(out[2], 3839.45745787, 0, 1e-6);
+    b = (lx_batch){.n_spectra = 1, .n_lambda = 95, .start_nm = 360, .step_nm = 5, .dtype = LX_F64, .values = a5};
+    lx_assert_ok(ctx, lx_batch_integrate(ctx, &b, XYZ, 3, NULL, out));
+    lx_assert_near(out[0], 11852.36711593, 0, 1e-9);
+    lx_assert_near(out[1], 10789.5687106, 0, 1e-9);
+    lx_assert_near(out[2], 3839.46352473, 0, 1e-9);
+}
+
+/* Smooth pseudo-random spectra (sum of two Gaussians plus a pedestal), deterministic. */
+static void fill(double *v, size_t ns, size_t n, size_t stride, double start, double step)
+{
+    unsigned s = 12345;
+    for (size_t i = 0; i < ns; i++) {
+        double p[5];
+        for (int q = 0; q < 5; q++) {
+            s = s * 1103515245u + 12345u;
+            p[q] = (double)(s >> 8) / 16777216.0;
+        }
+        for (size_t j = 0; j < stride; j++) {
+            double x = start + (double)j * step;
+            double g1 = exp(-0.5 * pow((x - (400 + 350 * p[0])) / (15 + 100 * p[1]), 2));
+            double g2 = exp(-0.5 * pow((x - (400 + 350 * p[2])) / (20 + 80 * p[3]), 2));
+            v[i * stride + j] = j < n ? p[4] * g1 + g2 + 0.05 : NAN; /* padding is never read */
+        }
+    }
+}
+
+static void parity_case(lx_ctx *ctx, size_t ns, size_t n, size_t stride, double start, double step,
+                        const lx_function *fns, size_t k)
+{
+    double *v = malloc(ns * stride * sizeof *v + 1);
+    float *vf = malloc(ns * stride * sizeof *vf + 1);
+    double *out = malloc(ns * k * sizeof *out + 1), *out2 = malloc(ns * k * sizeof *out + 1);
+    fill(v, ns, n, stride, start, step);
+    for (size_t i = 0; i < ns * stride; i++) vf[i] = (float)v[i];
+    lx_batch b = {.n_spectra = ns, .n_lambda = n, .row_stride = stride, .start_nm = start, .step_nm = step,
+                  .dtype = LX_F64, .values = v};
+    for (int mode = 0; mode < 3; mode++) { /* vector 2 threads, vector 1 thread, scalar */
+        if (mode == 2) setenv("LX_NOVECTOR", "1", 1);
+        lx_batch_opts o = {.backend = LX_BACKEND_CPU, .threads = mode == 1 ? 1 : 2};
+        b.dtype = LX_F64;
+        b.values = v;
+        lx_assert_ok(ctx, lx_batch_integrate(ctx, &b, fns, k, &o, out));
+        b.dtype = LX_F32;
+        b.values = vf;
+        lx_assert_ok(ctx, lx_batch_integrate(ctx, &b, fns, k, &o, out2));
+        unsetenv("LX_NOVECTOR");
+        for (size_t i = 0; i < ns; i += (ns > 50 ? 7 : 1))
+            for (size_t f = 0; f < k; f++) {
+                double ref = (double)oracle(ctx, v + i * stride, n, start, step, fns[f]);
+                lx_assert_near(out[i * k + f], ref, 1e-300, 1e-12);
+                lx_assert_near(out2[i * k + f], ref, 1e-300, 1e-6);
+            }
+    }
+    free(v);
+    free(vf);
+    free(out);
+    free(out2);
+}
+
+static void test_parity_with_oracle(void **state)
+{
+    lx_ctx *ctx = *state;
+    lx_function all[LX_FN_COUNT];
+    for (int f = 0; f < LX_FN_COUNT; f++) all[f] = (lx_function)f;
+    parity_case(ctx, 1, 471, 471, 360, 1, XYZ, 3);
+    parity_case(ctx, 2049, 471, 480, 360, 1, all, LX_FN_COUNT); /* stride padding, K = 12 */
+    parity_case(ctx, 37, 3, 3, 550, 1, XYZ, 3);                  /* only a tail block */
+    parity_case(ctx, 5, 1, 1, 555, 1, all, 5);                   /* one wavelength */
+    parity_case(ctx, 1000, 81, 81, 380, 5, all, 7);              /* 5 nm, K not a multiple of 4 */
+    parity_case(ctx, 64, 400, 401, 340.25, 1.25, XYZ, 3);        /* off-grid: interpolated weights */
+}
+
+static void test_empty_and_errors(void **state)
+{
+    lx_ctx *ctx = *state;
+    double out[3] = {-1, -1, -1};
+    lx_batch b = {.n_spectra = 0, .n_lambda = 471, .start_nm = 360, .step_nm = 1, .dtype = LX_F32, .values = NULL};
+    lx_batch_opts o = {0};
+    assert_int_equal(lx_batch_integrate(ctx, &b, XYZ, 3, &o, out), LX_OK);
+    assert_true(out[0] == -1); /* nothing written for an empty batch */
+    double v[4] = {1, 2, 3, 4};
+    b = (lx_batch){.n_spectra = 1, .n_lambda = 4, .start_nm = 500, .step_nm = 0, .dtype = LX_F64, .values = v};
+    assert_int_equal(lx_batch_integrate(ctx, &b, XYZ, 3, NULL, out), LX_EINVAL);
+    b.step_nm = 1;
+    b.row_stride = 2;
+    assert_int_equal(lx_batch_integrate(ctx, &b, XYZ, 3, NULL, out), LX_EINVAL);
+    b.row_stride = 0;
+    lx_function bad = (lx_function)99;
+    assert_int_equal(lx_batch_integrate(ctx, &b, &bad, 1, NULL, out), LX_EINVAL);
+    assert_non_null(strstr(lx_ctx_errmsg(ctx), "99"));
+    assert_int_equal(lx_batch_integrate(ctx, NULL, XYZ, 3, NULL, out), LX_EINVAL);
+    assert_true(out[0] == -1); /* outputs untouched on failure */
+}
+
+static void test_backend_names(void **state)
+{
+    lx_ctx *ctx = *state;
+    lx_backend b;
+    lx_assert_ok(ctx, lx_backend_parse(ctx, "cpu", &b));
+    assert_int_equal(b, LX_BACKEND_CPU);
+    lx_assert_ok(ctx, lx_backend_parse(ctx, "opencl", &b));
+    assert_int_equal(b, LX_BACKEND_OPENCL);
+    lx_assert_ok(ctx, lx_backend_parse(ctx, "auto", &b));
+    assert_int_equal(b, LX_BACKEND_AUTO);
+    assert_int_equal(lx_backend_parse(ctx, "gpu", &b), LX_EINVAL);
+    assert_non_null(strstr(lx_ctx_errmsg(ctx), "gpu"));
+    setenv("LX_BACKEND", "cpu", 1);
+    assert_int_equal(lx_backend_from_env(), LX_BACKEND_CPU);
+    unsetenv("LX_BACKEND");
+    assert_int_equal(lx_backend_from_env(), LX_BACKEND_AUTO);
+#if !LX_OPENCL
+    double v[2] = {1, 1}, out[1];
+    lx_batch bt = {.n_spectra = 1, .n_lambda = 2, .start_nm = 555, .step_nm = 1, .dtype = LX_F64, .values = v};
+    assert_int_equal(lx_batch_integrate(ctx, &bt, XYZ, 1, &(lx_batch_opts){.backend = LX_BACKEND_OPENCL}, out),
+                     LX_EUNSUPPORTED);
+#endif
+}
+
+static void test_auto_small_batch_stays_on_cpu(void **state)
+{
+    lx_ctx *ctx = *state;
+    double v[471] = {0};
+    lx_batch b = {.n_spectra = 1, .n_lambda = 471, .start_nm = 360, .step_nm = 1, .dtype = LX_F64, .values = v};
+    lx_batch_opts o = {.backend = LX_BACKEND_AUTO};
+    double out[3];
+    unsetenv("LX_BACKEND");
+    lx_assert_ok(ctx, lx_batch_integrate(ctx, &b, XYZ, 3, &o, out));
+    assert_int_equal(o.used, LX_BACKEND_CPU);
+    assert_int_equal(lx_cl_ready(ctx), 0); /* a one-off calculation never starts OpenCL */
+}
+
+static void test_resample_cpu(void **state)
+{
+    lx_ctx *ctx = *state;
+    /* spectrum 0: the line y = 2x - 700 sampled at 400, 410.5, 433, 500 nm: interpolation is exact on
+     * a line, zero outside [400, 500]. spectrum 1: one sample (555 nm, 3): only the grid point 555 gets 3. */
+    double lam[5] = {400, 410.5, 433, 500, 555}, val[5];
+    for (int i = 0; i < 4; i++) val[i] = 2 * lam[i] - 700;
+    val[4] = 3;
+    size_t off[2] = {0, 4}, nin[2] = {4, 1};
+    double dst[2 * 200];
+    lx_batch d = {.n_lambda = 200, .start_nm = 390, .step_nm = 1, .dtype = LX_F64, .values = dst};
+    lx_batch_opts o = {.backend = LX_BACKEND_CPU};
+    lx_assert_ok(ctx, lx_batch_resample(ctx, 2, lam, val, off, nin, &d, &o));
+    assert_int_equal(d.n_spectra, 2);
+    for (int j = 0; j < 200; j++) {
+        double x = 390 + j;
+        double want = x >= 400 && x <= 500 ? 2 * x - 700 : 0;
+        lx_assert_near(dst[j], want, 1e-12, 1e-14);
+        lx_assert_near(dst[200 + j], x == 555 ? 3 : 0, 0, 0);
+    }
+    double bad[2] = {500, 500};
+    size_t off1[1] = {0}, n1[1] = {2};
+    assert_int_equal(lx_batch_resample(ctx, 1, bad, val, off1, n1, &d, &o), LX_EINVAL);
+}
+
+
+static void test_batch_csv(void **state)
+{
+    lx_ctx *ctx = *state;
+    /* named rows, CRLF, a comment and a blank line, values that exercise both number parsers */
+    const char text[] = "# comment\r\nid,500,501,502\r\nlamp a,1,0.1,2.5e-3\r\n\r\nb,-0.000123456789012345,"
+                        "123456.7890123,1e300\r\n";
+    lx_batch_table *t = NULL;
+    lx_assert_ok(ctx, lx_batch_table_read_mem(ctx, "mem.csv", text, sizeof text - 1, LX_F64, 0, &t));
+    assert_int_equal(t->batch.n_spectra, 2);
+    assert_int_equal(t->batch.n_lambda, 3);
+    lx_assert_near(t->batch.start_nm, 500, 0, 0);
+    lx_assert_near(t->batch.step_nm, 1, 0, 0);
+    assert_string_equal(t->names + t->name_at[0], "lamp a");
+    assert_string_equal(t->names + t->name_at[1], "b");
+    const double *v = t->batch.values;
+    /* bit-identical to the C library's correctly rounded strtod (ISO C 7.22.1.3) */
+    const char *lit[6] = {"1", "0.1", "2.5e-3", "-0.000123456789012345", "123456.7890123", "1e300"};
+    for (int i = 0; i < 6; i++) assert_true(v[i] == strtod(lit[i], NULL));
+    lx_batch_table_free(t);
+    /* no name column (numpy-style), float values, tab separated */
+    const char t2[] = "380\t385\t390\n0.5\t0.25\t0.125\n";
+    lx_assert_ok(ctx, lx_batch_table_read_mem(ctx, "t2", t2, sizeof t2 - 1, LX_F32, 1, &t));
+    assert_int_equal(t->batch.n_spectra, 1);
+    lx_assert_near(t->batch.step_nm, 5, 0, 0);
+    assert_true(((const float *)t->batch.values)[2] == 0.125f);
+    lx_batch_table_free(t);
+    /* errors name the line: a short row on line 4, a bad number on line 3, a non-uniform header */
+    const char bad1[] = "id,1,2\na,1,2\n#c\nb,1\n";
+    assert_int_equal(lx_batch_table_read_mem(ctx, "bad1", bad1, sizeof bad1 - 1, LX_F64, 1, &t), LX_EPARSE);
+    assert_int_equal(lx_ctx_errline(ctx), 4);
+    const char bad2[] = "id,1,2\na,1,2\nb,1,x\n";
+    assert_int_equal(lx_batch_table_read_mem(ctx, "bad2", bad2, sizeof bad2 - 1, LX_F64, 1, &t), LX_EPARSE);
+    assert_int_equal(lx_ctx_errline(ctx), 3);
+    const char bad3[] = "id,1,2,4\na,1,2,3\n";
+    assert_int_equal(lx_batch_table_read_mem(ctx, "bad3", bad3, sizeof bad3 - 1, LX_F64, 1, &t), LX_EUNSUPPORTED);
+    assert_int_equal(lx_batch_table_read_mem(ctx, "empty", "", 0, LX_F64, 1, &t), LX_EPARSE);
+    /* header only: an empty batch */
+    lx_assert_ok(ctx, lx_batch_table_read_mem(ctx, "h", "id,1,2\n", 7, LX_F64, 1, &t));
+    assert_int_equal(t->batch.n_spectra, 0);
+    lx_batch_table_free(t);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test_setup_teardown(test_table_sums, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(test_half_nm_grid_is_trapezoid, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(test_illuminant_a, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(test_parity_with_oracle, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(test_empty_and_errors, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(test_backend_names, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(test_auto_small_batch_stays_on_cpu, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(test_resample_cpu, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(test_batch_csv, lx_test_ctx_setup, lx_test_ctx_teardown),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,62 @@
+/* test_fuzz.c - replays the fuzz targets' regression inputs (tests/fuzz/regressions/TARGET/*,
+ * every input that once crashed or misbehaved) and their seed corpora through the same harness
+ * functions the fuzzers run, so a fixed finding stays fixed. */
+#include "lx_test.h"
+
+#include <dirent.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "fuzz/fuzz_spd.c"
+#include "fuzz/fuzz_units.c"
+
+typedef int (*harness)(const uint8_t *, size_t);
+
+static int replay_dir(const char *dir, harness h)
+{
+    DIR *d = opendir(dir);
+    if (!d) return 0;
+    int n = 0;
+    struct dirent *e;
+    while ((e = readdir(d))) {
+        char path[1024];
+        struct stat sb;
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        if (stat(path, &sb) != 0 || !S_ISREG(sb.st_mode) || sb.st_size > (1 << 24)) continue;
+        FILE *f = fopen(path, "rb");
+        if (!f) continue;
+        uint8_t *buf = malloc((size_t)sb.st_size + 1);
+        size_t got = buf ? fread(buf, 1, (size_t)sb.st_size, f) : 0;
+        fclose(f);
+        h(buf, got); /* aborts on a broken property, which fails the test binary */
+        free(buf);
+        n++;
+    }
+    closedir(d);
+    return n;
+}
+
+static void test_spd_inputs(void **state)
+{
+    (void)state;
+    int n = replay_dir("tests/fuzz/regressions/spd", fuzz_spd_one);
+    n += replay_dir("tests/data/spd/good", fuzz_spd_one) + replay_dir("tests/data/spd/bad", fuzz_spd_one);
+    n += replay_dir("samples/spd", fuzz_spd_one);
+    assert_true(n >= 40); /* the readers' corpora are there */
+}
+
+static void test_units_inputs(void **state)
+{
+    (void)state;
+    int n = replay_dir("tests/fuzz/regressions/units", fuzz_units_one) + replay_dir("tests/fuzz/seeds/units", fuzz_units_one);
+    assert_true(n >= 10);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_spd_inputs),
+        cmocka_unit_test(test_units_inputs),
+    };
+    return cmocka_run_group_tests_name("fuzz regressions", tests, NULL, NULL);
+}

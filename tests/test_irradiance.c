@@ -1,0 +1,368 @@
+/* test_irradiance.c - irradiance from lat-long radiance maps: furnace, half-lit sphere, a single
+ * pixel and a sun disc against closed forms, the direction convention, SH9's documented error
+ * bound and window, fast vs brute force, OpenCL vs CPU parity. */
+#include "lx_test.h"
+
+#include <string.h>
+
+static const lx_irr_method methods[3] = {LX_IRR_SH9, LX_IRR_BRUTE, LX_IRR_FAST};
+
+static lx_envmap *make_map(lx_ctx *ctx, int w, int h, int ch)
+{
+    lx_envmap *m = NULL;
+    lx_assert_ok(ctx, lx_envmap_create(ctx, w, h, ch, &m));
+    return m;
+}
+
+/* 26 normals: the axes, the cube diagonals, edge midpoints, and a few odd ones */
+static int test_normals(double n[][3])
+{
+    int k = 0;
+    for (int a = -1; a <= 1; a++)
+        for (int b = -1; b <= 1; b++)
+            for (int c = -1; c <= 1; c++)
+                if (a || b || c) {
+                    double l = sqrt((double)(a * a + b * b + c * c));
+                    n[k][0] = a / l, n[k][1] = b / l, n[k][2] = c / l;
+                    k++;
+                }
+    return k;
+}
+
+/* Furnace: L constant gives E = pi L for every normal (integral of max(0, cos) over the sphere is
+ * pi). SH9 is exact at any size (only the l = 0 coefficient is non-zero and the pixel solid angles
+ * sum to 4 pi exactly); brute force and the fast path clamp each pixel after integrating it,
+ * exact for pixels wholly above or below the horizon of n, error O(dtheta^2) from the pixels the
+ * horizon crosses: measured 8.1e-7 at 2048x1024 (numpy check in the README), so 1e-6 holds there. */
+static void furnace(void **state)
+{
+    lx_ctx *ctx = *state;
+    const double L = 3.5;
+    double n[26][3], E[26];
+    int nn = test_normals(n);
+    lx_envmap *m = make_map(ctx, 2048, 1024, 1);
+    for (size_t k = 0; k < 2048u * 1024u; k++) m->data[k] = (float)L;
+    for (int q = 0; q < 3; q++) {
+        lx_irr_opts o = {.method = methods[q], .backend = LX_BACKEND_CPU};
+        lx_assert_ok(ctx, lx_irradiance_dirs(ctx, m, nn, &n[0][0], &o, E));
+        for (int k = 0; k < nn; k++) lx_assert_near(E[k], M_PI * L, 0, 1e-6);
+    }
+    lx_envmap_free(m);
+    /* SH9 exact (1e-13) even on a 16x8 map */
+    m = make_map(ctx, 16, 8, 1);
+    for (int k = 0; k < 128; k++) m->data[k] = (float)L;
+    lx_irr_opts o = {.method = LX_IRR_SH9};
+    lx_assert_ok(ctx, lx_irradiance_dirs(ctx, m, nn, &n[0][0], &o, E));
+    for (int k = 0; k < nn; k++) lx_assert_near(E[k], M_PI * L, 0, 1e-13);
+    lx_envmap_free(m);
+}
+
+/* Half-lit sphere, L = 1 for z > 0: E(n) = pi (1 + n_z) / 2 (the clamped cosine integrated over the
+ * upper hemisphere; derivation: E is linear in n_z for this field because only the l = 0, 1 terms
+ * survive the clamped-cosine filter, A_l = 0 for odd l >= 3, and the even l >= 2 terms of L - 1/2
+ * vanish). With an even map height the field is exactly piecewise constant, so SH9 with exact
+ * pixel integrals is exact to rounding at any size; brute force is O(dtheta^2) as for the furnace. */
+static void half_lit(void **state)
+{
+    lx_ctx *ctx = *state;
+    double n[26][3], E[26];
+    int nn = test_normals(n);
+    int sizes[2][2] = {{32, 16}, {2048, 1024}};
+    for (int s = 0; s < 2; s++) {
+        int W = sizes[s][0], H = sizes[s][1];
+        lx_envmap *m = make_map(ctx, W, H, 1);
+        for (int j = 0; j < H / 2; j++)
+            for (int i = 0; i < W; i++) m->data[(size_t)j * W + i] = 1.0f;
+        for (int q = 0; q < 3; q++) {
+            if (s == 0 && q > 0) continue;
+            lx_irr_opts o = {.method = methods[q], .backend = LX_BACKEND_CPU};
+            lx_assert_ok(ctx, lx_irradiance_dirs(ctx, m, nn, &n[0][0], &o, E));
+            for (int k = 0; k < nn; k++) lx_assert_near(E[k], M_PI * (1 + n[k][2]) / 2, q == 0 ? 1e-13 : 1e-6 * M_PI, 0);
+        }
+        lx_envmap_free(m);
+    }
+}
+
+/* 16-point Gauss-Legendre nodes and weights on [-1, 1] (Abramowitz and Stegun table 25.4). */
+static const double gl_x[8] = {0.0950125098376374, 0.2816035507792589, 0.4580167776572274, 0.6178762444026438,
+                               0.7554044083550030, 0.8656312023878318, 0.9445750230732326, 0.9894009349916499};
+static const double gl_w[8] = {0.1894506104550685, 0.1826034150449236, 0.1691565193950025, 0.1495959888165767,
+                               0.1246289712555339, 0.0951585116824928, 0.0622535239386479, 0.0271524594117541};
+
+/* Projected solid angle of the patch theta in [t0, t1], phi in [p0, p1] for normal n, by 2-D
+ * Gauss-Legendre quadrature of max(0, n . omega) sin theta (smooth when the patch lies wholly above
+ * the horizon of n, so 16 x 16 nodes are exact to ~1e-15 relative for a patch this small). */
+static double patch_projected_sr(double t0, double t1, double p0, double p1, const double n[3])
+{
+    double s = 0;
+    for (int a = 0; a < 16; a++) {
+        double xa = a < 8 ? -gl_x[7 - a] : gl_x[a - 8], wa = a < 8 ? gl_w[7 - a] : gl_w[a - 8];
+        double t = 0.5 * (t0 + t1) + 0.5 * (t1 - t0) * xa;
+        for (int b = 0; b < 16; b++) {
+            double xb = b < 8 ? -gl_x[7 - b] : gl_x[b - 8], wb = b < 8 ? gl_w[7 - b] : gl_w[b - 8];
+            double p = 0.5 * (p0 + p1) + 0.5 * (p1 - p0) * xb;
+            double c = n[0] * sin(t) * cos(p) + n[1] * sin(t) * sin(p) + n[2] * cos(t);
+            s += wa * wb * (c > 0 ? c : 0) * sin(t);
+        }
+    }
+    return s * 0.25 * (t1 - t0) * (p1 - p0);
+}
+
+/* One bright pixel whose lower edge is at 30 deg zenith: brute force and the fast path equal the
+ * analytic projected solid angle times L for normals that see all of it; SH9 differs by at most
+ * (3/32) L d omega (the SH9 response to a point source is (3/32) + c/2 + (15/32) c^2 against
+ * max(0, c), largest gap 3/32 at c = 0), with the nonneg window by at most (3/28) L d omega and
+ * never below zero ((3/28)(1 + 2c)^2 >= 0). */
+static void single_pixel(void **state)
+{
+    lx_ctx *ctx = *state;
+    const int W = 720, H = 360; /* 0.5 deg pixels */
+    const int row = 60, col = 90; /* theta 30..30.5 deg, phi 45..45.5 deg */
+    const double L = 1000.0;
+    lx_envmap *m = make_map(ctx, W, H, 1);
+    m->data[(size_t)row * W + col] = (float)L;
+    double t0 = row * M_PI / H, t1 = (row + 1) * M_PI / H, p0 = col * 2 * M_PI / W, p1 = (col + 1) * 2 * M_PI / W;
+    double dw = (2 * M_PI / W) * (cos(t0) - cos(t1));
+    double n[26][3], E[3][26];
+    int nn = test_normals(n);
+    for (int q = 0; q < 3; q++) {
+        lx_irr_opts o = {.method = methods[q], .backend = LX_BACKEND_CPU};
+        lx_assert_ok(ctx, lx_irradiance_dirs(ctx, m, nn, &n[0][0], &o, E[q]));
+    }
+    double max_sh9 = 0;
+    for (int k = 0; k < nn; k++) {
+        double ref = L * patch_projected_sr(t0, t1, p0, p1, n[k]);
+        /* skip normals whose horizon crosses the pixel (the clamp-after-integration rule) */
+        double cmin = 1, cmax = -1;
+        for (int a = 0; a <= 4; a++)
+            for (int b = 0; b <= 4; b++) {
+                double t = t0 + (t1 - t0) * a / 4, p = p0 + (p1 - p0) * b / 4;
+                double c = n[k][0] * sin(t) * cos(p) + n[k][1] * sin(t) * sin(p) + n[k][2] * cos(t);
+                cmin = fmin(cmin, c), cmax = fmax(cmax, c);
+            }
+        if (cmin < 0.01 && cmax > -0.01) continue;
+        lx_assert_near(E[1][k], ref, 1e-6 * L * dw, 1e-9);
+        lx_assert_near(E[2][k], ref, 1e-6 * L * dw, 1e-9);
+        double err = fabs(E[0][k] - ref);
+        max_sh9 = fmax(max_sh9, err / (L * dw));
+        assert_true(err <= 3.0 / 32.0 * L * dw * (1 + 1e-9));
+    }
+    print_message("single pixel: max |SH9 - exact| = %.4f L d omega (bound 3/32 = 0.09375)\n", max_sh9);
+    /* the nonneg window */
+    lx_irr_opts o = {.method = LX_IRR_SH9, .window = LX_SH9_WINDOW_NONNEG};
+    lx_assert_ok(ctx, lx_irradiance_dirs(ctx, m, nn, &n[0][0], &o, E[0]));
+    for (int k = 0; k < nn; k++) {
+        assert_true(E[0][k] >= 0);
+        assert_true(fabs(E[0][k] - L * patch_projected_sr(t0, t1, p0, p1, n[k])) <= 3.0 / 28.0 * L * dw * (1 + 1e-6));
+    }
+    lx_envmap_free(m);
+}
+
+/* A sun disc of angular radius 0.2666 deg at 30 deg zenith (phi = 60 deg), drawn by area coverage
+ * (each pixel's radiance = L x fraction of its solid angle inside the disc, by 32 x 32 sub-samples).
+ * Analytic: the first moment of a spherical cap of half-angle d about axis s is pi sin^2(d) s, so
+ * a normal that sees the whole disc gets E = L pi sin^2(d) (n . s). Brute force must give the
+ * projected solid angle E / L within 1e-6 sr (it is within ~1e-8 sr: the residue, ~1e-4 relative,
+ * is the rasterised edge: coverage by sub-samples and the tilt of the cosine across edge pixels);
+ * SH9 prints its error, bounded by (3/32) L x disc solid angle. */
+static void sun_disc(void **state)
+{
+    lx_ctx *ctx = *state;
+    const int W = 4096, H = 2048;
+    const double d = 0.2666 * M_PI / 180, L = 1.0e6, ts = 30 * M_PI / 180, ps = 60 * M_PI / 180;
+    const double s[3] = {sin(ts) * cos(ps), sin(ts) * sin(ps), cos(ts)};
+    lx_envmap *m = make_map(ctx, W, H, 1);
+    int j0 = (int)((ts - 3 * d) / M_PI * H), j1 = (int)((ts + 3 * d) / M_PI * H) + 1;
+    int i0 = (int)((ps - 4 * d) / (2 * M_PI) * W), i1 = (int)((ps + 4 * d) / (2 * M_PI) * W) + 1;
+    const int S = 32;
+    for (int j = j0; j <= j1; j++)
+        for (int i = i0; i <= i1; i++) {
+            double in = 0, all = 0;
+            for (int a = 0; a < S; a++)
+                for (int b = 0; b < S; b++) {
+                    double t = (j + (a + 0.5) / S) * M_PI / H, p = (i + (b + 0.5) / S) * 2 * M_PI / W;
+                    double w = sin(t), c = s[0] * sin(t) * cos(p) + s[1] * sin(t) * sin(p) + s[2] * cos(t);
+                    all += w;
+                    if (c > cos(d)) in += w;
+                }
+            m->data[(size_t)j * W + i] = (float)(L * in / all);
+        }
+    double n[4][3] = {{0, 0, 1}, {s[0], s[1], s[2]}, {1, 0, 0}, {0.3, 0.8, 0.52}};
+    double E[3][4];
+    for (int k = 0; k < 4; k++) {
+        double l = sqrt(n[k][0] * n[k][0] + n[k][1] * n[k][1] + n[k][2] * n[k][2]);
+        for (int c = 0; c < 3; c++) n[k][c] /= l;
+    }
+    for (int q = 0; q < 3; q++) {
+        lx_irr_opts o = {.method = methods[q], .backend = LX_BACKEND_CPU};
+        lx_assert_ok(ctx, lx_irradiance_dirs(ctx, m, 4, &n[0][0], &o, E[q]));
+    }
+    double scale = L * M_PI * sin(d) * sin(d), cap_sr = 2 * M_PI * (1 - cos(d));
+    for (int k = 0; k < 4; k++) {
+        double ref = scale * (n[k][0] * s[0] + n[k][1] * s[1] + n[k][2] * s[2]);
+        print_message("sun n=(%.3f,%.3f,%.3f): exact %.9g brute %+.3e fast %+.3e SH9 %+.3e (relative to L pi sin^2 d)\n",
+                      n[k][0], n[k][1], n[k][2], ref, (E[1][k] - ref) / scale, (E[2][k] - ref) / scale,
+                      (E[0][k] - ref) / scale);
+        /* the criterion: projected solid angle E / L within 1e-6 sr of the analytic one */
+        lx_assert_near(E[1][k] / L, ref / L, 1e-6, 0);
+        lx_assert_near(E[2][k] / L, ref / L, 1e-6, 0);
+        /* tighter: the rasterised disc (32 x 32 coverage sub-samples) is within 2e-4 relative */
+        lx_assert_near(E[1][k], ref, 2e-4 * scale, 0);
+        assert_true(fabs(E[0][k] - ref) <= 3.0 / 32.0 * L * cap_sr * 1.001);
+    }
+    lx_envmap_free(m);
+}
+
+/* Direction convention (CLI.md): +z up, theta from +z, phi from +x towards +y, row 0 at theta = 0. */
+static void convention(void **state)
+{
+    lx_ctx *ctx = *state;
+    double d[3];
+    lx_envmap_direction(360, 180, 0.0, 0.0, d); /* row 0 edge: the zenith */
+    lx_assert_near(d[2], 1.0, 1e-15, 0);
+    lx_envmap_direction(360, 180, 90.0, 90.0, d); /* theta 90, phi 90 deg: +y */
+    lx_assert_near(d[1], 1.0, 1e-15, 0);
+    lx_assert_near(d[0], 0.0, 1e-15, 0);
+    /* a map bright only around +x (theta 90 deg, phi 0): E(+x) largest, E(-x) zero, E(+y) = E(-y) */
+    lx_envmap *m = make_map(ctx, 64, 32, 3);
+    for (int j = 15; j <= 16; j++)
+        for (int i = 0; i < 64; i++)
+            if (i == 0 || i == 63)
+                for (int c = 0; c < 3; c++) m->data[((size_t)j * 64 + i) * 3 + c] = 10.0f;
+    double n[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}}, E[18];
+    for (int q = 0; q < 3; q++) {
+        lx_irr_opts o = {.method = methods[q], .backend = LX_BACKEND_CPU};
+        lx_assert_ok(ctx, lx_irradiance_dirs(ctx, m, 6, &n[0][0], &o, E));
+        for (int k = 1; k < 6; k++) assert_true(E[0] > E[3 * k]);
+        if (q) lx_assert_near(E[3], 0.0, 1e-12, 0);
+        lx_assert_near(E[6], E[9], 1e-9 * E[0], 0);
+        lx_assert_near(E[12], E[15], 1e-9 * E[0], 0);
+    }
+    lx_envmap_free(m);
+}
+
+/* The fast path computes the same sum as brute force (different order): 1e-12 relative on a
+ * random map with three channels, at arbitrary normals and on a lat-long output grid. */
+static void fast_equals_brute(void **state)
+{
+    lx_ctx *ctx = *state;
+    lx_envmap *m = make_map(ctx, 200, 100, 3);
+    unsigned r = 12345;
+    for (size_t k = 0; k < 200u * 100u * 3u; k++) {
+        r = r * 1103515245u + 12345u;
+        m->data[k] = (float)((r >> 8) % 1000) / 100.0f;
+    }
+    m->data[(37 * 200 + 11) * 3] = 5e5f; /* a sun */
+    enum { N = 300 };
+    double n[N][3], Eb[3 * N], Ef[3 * N];
+    for (int k = 0; k < N; k++) {
+        double t = acos(1 - 2 * (k + 0.5) / N), p = k * 2.399963229728653; /* golden-angle spiral */
+        n[k][0] = sin(t) * cos(p), n[k][1] = sin(t) * sin(p), n[k][2] = cos(t);
+    }
+    lx_irr_opts ob = {.method = LX_IRR_BRUTE, .backend = LX_BACKEND_CPU}, of = {.method = LX_IRR_FAST};
+    lx_assert_ok(ctx, lx_irradiance_dirs(ctx, m, N, &n[0][0], &ob, Eb));
+    lx_assert_ok(ctx, lx_irradiance_dirs(ctx, m, N, &n[0][0], &of, Ef));
+    for (int k = 0; k < 3 * N; k++) lx_assert_near(Ef[k], Eb[k], 1e-12 * Eb[k] + 1e-12, 1e-12);
+    lx_envmap *a = NULL, *b = NULL;
+    lx_assert_ok(ctx, lx_irradiance_map(ctx, m, 32, 16, &ob, &a));
+    lx_assert_ok(ctx, lx_irradiance_map(ctx, m, 32, 16, &of, &b));
+    for (int k = 0; k < 32 * 16 * 3; k++) lx_assert_near(b->data[k], a->data[k], 0, 1e-6);
+    lx_envmap_free(a);
+    lx_envmap_free(b);
+    lx_envmap_free(m);
+}
+
+/* SH9 map reconstruction (per-row Fourier form) equals lx_sh9_irradiance at the pixel centres. */
+static void sh9_map_matches_eval(void **state)
+{
+    lx_ctx *ctx = *state;
+    lx_envmap *m = make_map(ctx, 64, 32, 3), *e = NULL;
+    for (size_t k = 0; k < 64u * 32u * 3u; k++) m->data[k] = (float)(1 + sin(0.37 * k) * 0.5);
+    lx_sh9 sh;
+    lx_assert_ok(ctx, lx_sh9_project(ctx, m, &sh));
+    lx_irr_opts o = {.method = LX_IRR_SH9, .window = LX_SH9_WINDOW_NONNEG};
+    lx_assert_ok(ctx, lx_irradiance_map(ctx, m, 24, 12, &o, &e));
+    for (int j = 0; j < 12; j++)
+        for (int i = 0; i < 24; i++) {
+            double d[3], E[3];
+            lx_envmap_direction(24, 12, j + 0.5, i + 0.5, d);
+            lx_assert_ok(ctx, lx_sh9_irradiance(ctx, &sh, LX_SH9_WINDOW_NONNEG, d, E));
+            for (int c = 0; c < 3; c++) lx_assert_near(e->data[(j * 24 + i) * 3 + c], E[c], 0, 1e-6);
+        }
+    lx_envmap_free(e);
+    lx_envmap_free(m);
+}
+
+/* Downsampling keeps the radiant power sum(L d omega) of the map (to float rounding). */
+static void downsample_keeps_power(void **state)
+{
+    lx_ctx *ctx = *state;
+    lx_envmap *m = make_map(ctx, 128, 64, 1), *d = NULL;
+    for (size_t k = 0; k < 128u * 64u; k++) m->data[k] = (float)((k * 7919) % 101);
+    lx_assert_ok(ctx, lx_envmap_downsample(ctx, m, 32, 16, &d));
+    double p0 = 0, p1 = 0;
+    for (int j = 0; j < 64; j++)
+        for (int i = 0; i < 128; i++) p0 += m->data[j * 128 + i] * lx_envmap_pixel_sr(128, 64, j);
+    for (int j = 0; j < 16; j++)
+        for (int i = 0; i < 32; i++) p1 += d->data[j * 32 + i] * lx_envmap_pixel_sr(32, 16, j);
+    lx_assert_near(p1, p0, 0, 1e-6);
+    assert_int_equal(lx_envmap_downsample(ctx, m, 30, 16, &d), LX_EINVAL);
+    lx_envmap_free(d);
+    lx_envmap_free(m);
+}
+
+/* OpenCL brute force against its CPU twin: 1e-9 relative with fp64, 2e-5 with float. */
+static void opencl_parity(void **state)
+{
+    lx_ctx *ctx = *state;
+    lx_cl_device_info info;
+    if (lx_cl_info(ctx, &info) != LX_OK) {
+        print_message("no OpenCL device: %s\n", lx_ctx_errmsg(ctx));
+        skip();
+    }
+    lx_envmap *m = make_map(ctx, 256, 128, 3);
+    for (size_t k = 0; k < 256u * 128u * 3u; k++) m->data[k] = (float)(2 + sin(0.011 * k));
+    m->data[(20 * 256 + 40) * 3 + 1] = 1e4f;
+    enum { N = 257 };
+    double n[N][3], Ec[3 * N], Eg[3 * N];
+    for (int k = 0; k < N; k++) {
+        double t = acos(1 - 2 * (k + 0.5) / N), p = k * 2.399963229728653;
+        n[k][0] = sin(t) * cos(p), n[k][1] = sin(t) * sin(p), n[k][2] = cos(t);
+    }
+    lx_irr_opts oc = {.method = LX_IRR_BRUTE, .backend = LX_BACKEND_CPU}, og = {.method = LX_IRR_BRUTE, .backend = LX_BACKEND_OPENCL};
+    lx_assert_ok(ctx, lx_irradiance_dirs(ctx, m, N, &n[0][0], &oc, Ec));
+    lx_assert_ok(ctx, lx_irradiance_dirs(ctx, m, N, &n[0][0], &og, Eg));
+    assert_int_equal(og.used, LX_BACKEND_OPENCL);
+    double tol = info.fp64 ? 1e-9 : 2e-5;
+    for (int k = 0; k < 3 * N; k++) lx_assert_near(Eg[k], Ec[k], 1e-9, tol);
+    lx_envmap_free(m);
+}
+
+static void bad_args(void **state)
+{
+    lx_ctx *ctx = *state;
+    lx_envmap *m = make_map(ctx, 8, 4, 1);
+    double n[3] = {0, 0, 0}, E[1];
+    assert_int_equal(lx_irradiance_dirs(ctx, m, 1, n, NULL, E), LX_EINVAL);
+    lx_envmap *bad = NULL;
+    assert_int_equal(lx_envmap_create(ctx, 8, 4, 2, &bad), LX_EINVAL);
+    assert_null(bad);
+    lx_envmap_free(m);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test_setup_teardown(furnace, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(half_lit, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(single_pixel, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(sun_disc, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(convention, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(fast_equals_brute, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(sh9_map_matches_eval, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(downsample_keeps_power, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(opencl_parity, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(bad_args, lx_test_ctx_setup, lx_test_ctx_teardown),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
