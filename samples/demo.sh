@@ -50,3 +50,21 @@ echo
 echo "== A grid: the Lambertian downlight at 2.8 m over a 4 m x 4 m work plane at 0.8 m"
 "$LX" grid --ies "$here/ies/downlight_lambert_1000lm.ies" --at 2,2,2.8 --plane z=0.8 --area 0:4,0:4 \
   --spacing 0.5 --summary
+
+echo
+echo "== Scenes: only the effects each scene needs (issue 8); the grids' PNGs go to $out/"
+for s in office street facade spectral; do
+  echo "-- $s: the plan"
+  "$LX" scene --explain "$here/scenes/$s.scene" | sed -n '/^effects:/,/^work:/p' | sed '$d'
+  "$LX" scene --png "$out" "$here/scenes/$s.scene"
+done
+
+echo
+echo "== Radiance fields: irradiance from a lat-long sky with a sun (samples/envmaps/sky_sun.exr)"
+for m in sh9 fast brute; do
+  "$LX" irradiance "$here/envmaps/sky_sun.exr" --normal 0,0,1 --method $m --backend cpu --format csv | tail -n 1 | cut -d, -f1-6
+done
+echo "   (a horizontal receiver: sh9 rings around the sun; fast = brute, the exact sum)"
+"$LX" irradiance "$here/envmaps/sky_sun.exr" -o "$out/sky_irradiance.exr" --png "$out/sky_irradiance.png"
+"$LX" luminance-map "$here/envmaps/sky_sun.exr" --png "$out/sky_luminance.png" --format csv
+echo "   wrote $out/sky_irradiance.exr, $out/sky_irradiance.png, $out/sky_luminance.png"

@@ -237,9 +237,10 @@ lx_status lx_batch_table_read_mem(lx_ctx *ctx, const char *file, const char *tex
     double step = n > 1 ? (lam[n - 1] - lam[0]) / (double)(n - 1) : 1.0, start = lam[0];
     for (size_t j = 1; j < n; j++)
         if (!(fabs(lam[j] - (start + (double)j * step)) <= 1e-9 * fabs(lam[j])) || !(step > 0)) {
+            double bad = lam[j];
             free(lam);
             return lx__error(ctx, LX_EUNSUPPORTED, file, line,
-                             "the header's wavelengths are not a uniform increasing grid (at %.17g nm)", lam[j]);
+                             "the header's wavelengths are not a uniform increasing grid (at %.17g nm)", bad);
         }
     free(lam);
 

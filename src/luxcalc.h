@@ -1078,6 +1078,7 @@ typedef struct lx_scene {
     double sky_luminance_cd_m2;           /* uniform: L; overcast: zenith Lz */
     double sky_scale;                     /* map: multiplier of the map's values (default 1) */
     char *sky_path;                       /* map: the EXR file (resolved) */
+    lx_envmap *sky_map;                   /* map: the map read from it (owned) */
     double ground_reflectance;            /* 0..1 (default 0) */
     double sky_cct_K;                     /* NaN unless given (spectral sky: CIE daylight) */
     int sky_samples;                      /* overcast quadrature nodes per piece / map: unused (default 64) */
@@ -1086,7 +1087,7 @@ typedef struct lx_scene {
     long force_line[LX_EFFECT_COUNT];
     double nearfield_tol;                 /* [scene] near_field_tolerance: relative convergence (default 1e-5) */
     const char *sky_file_at;              /* the scene file and line of [sky] (NULL, 0 when none) */
-    long sky_line;
+    long sky_line, sky_file_line;         /* [sky] and its 'file' key */
     long spectral_line;                   /* the [output] line that first asked for cct or melanopic_edi */
     char **names;                         /* the file names the entities point to (owned) */
     size_t n_names;
@@ -1113,11 +1114,15 @@ typedef struct lx_scene_plan {
     unsigned char *near;              /* n_lum x n_points (luminaire-major): 1 = near-field path; owned */
     size_t n_normals;                 /* distinct receiver normals (sky evaluations) */
     lx_counters estimate;             /* the work the plan expects */
-    int backend;                      /* an lx_backend: CPU or OPENCL for the grid work */
+    int backend;                      /* an lx_backend: OPENCL when some grid work runs on a device */
+    unsigned char *device;            /* n_lum x n_rec: 1 = this IES luminaire's work on this grid (all
+                                       * far field) runs as one lx_grid_illuminance OpenCL batch; owned */
+    int device_required;              /* 1 when asked for explicitly: a device failure is then an error */
 } lx_scene_plan;
 
 /** Plans a scene: which effects, and which pairs take the near-field path. backend: AUTO lets
- * the size of the work decide (also LX_BACKEND). LX_EPARSE (naming the [effects] or [output]
+ * the size of the work decide (OpenCL for >= 1e7 far-field IES evaluations on grids), CPU never
+ * uses a device, OPENCL sends every eligible grid batch to one. LX_EPARSE (naming the [effects] or [output]
  * line) when a forced effect cannot be honoured (spectral forced on without spectra,
  * environment forced on without a sky). Free with lx_scene_plan_free. */
 LX_API lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *scene, int backend, lx_scene_plan **out);
@@ -1136,9 +1141,10 @@ typedef struct lx_scene_result {
     double seconds;             /* wall-clock time of the evaluation */
 } lx_scene_result;
 
-/** Options of lx_scene_eval (zero-initialise, then set only to -1 for all luminaires). */
+/** Options of lx_scene_eval (zero-initialise for defaults: everything). */
 typedef struct lx_scene_eval_opts {
-    long only;                  /* >= 0: evaluate luminaire `only` alone (no sky); -1: everything */
+    int single;                 /* 1: evaluate luminaire `index` alone (no sky) */
+    size_t index;
 } lx_scene_eval_opts;
 
 /** Evaluates a planned scene (opts may be NULL). Adds its work to the context's counters.
@@ -1146,6 +1152,30 @@ typedef struct lx_scene_eval_opts {
 LX_API lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *scene, const lx_scene_plan *plan,
                                const lx_scene_eval_opts *opts, lx_scene_result **out);
 LX_API void lx_scene_result_free(lx_scene_result *res);
+
+/* ---- accuracy plots (issue 9) ---- */
+
+/** A view of CIE 13.3-1995 test colour sample TCS01..TCS14 (index 1..14): spectral reflectance
+ * factor, 360-830 nm at 5 nm, from the embedded table (valid for the life of the program).
+ * LX_EINVAL for another index. Thread-safe. */
+LX_API lx_status lx_tcs_get(lx_ctx *ctx, int index, lx_spd *out);
+
+/** One point of an error-against-time plot: a method's time (s) and error (any unit > 0; 0 or
+ * less is drawn on the bottom edge, marked "=0"), its label and series (marker shape and colour). */
+typedef struct lx_plot_point {
+    double time_s;
+    double error;
+    const char *label;   /* drawn beside the marker (upper case; may be NULL) */
+    int series;          /* 0 .. n_series - 1 */
+} lx_plot_point;
+
+/** A log-log scatter plot as PNG: error (vertical, log10) against time (horizontal, log10), one
+ * marker and label per point, a legend of the series names, axis titles and a title (all may be
+ * NULL). Written atomically (temporary file + rename). LX_EINVAL for n = 0 or a point whose time
+ * is not positive and finite. Thread-safe for distinct contexts. */
+LX_API lx_status lx_png_error_time(lx_ctx *ctx, const char *path, const char *title, const char *x_title,
+                                   const char *y_title, size_t n, const lx_plot_point *pts, int n_series,
+                                   const char *const *series_names);
 
 #ifdef __cplusplus
 }

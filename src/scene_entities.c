@@ -65,6 +65,7 @@ void lx_scene_free(lx_scene *sc)
     free(sc->lum);
     free(sc->rec);
     free(sc->sky_path);
+    lx_envmap_free(sc->sky_map);
     free(sc->title);
     free(sc->file);
     free(sc);
@@ -591,6 +592,7 @@ lx_status lx__scene_sky_key(lx_ctx *ctx, lx_scene *sc, const char *file, long li
     }
     if (!strcmp(key, "file")) {
         if (!*value) return lx__error(ctx, LX_EPARSE, file, line, "file: empty value");
+        sc->sky_file_line = line;
         sc->sky_path = lx__scene_resolve(file, value);
         return sc->sky_path ? LX_OK : lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
     }
@@ -635,6 +637,14 @@ lx_status lx__scene_finish(lx_ctx *ctx, lx_scene *sc)
             return lx__error(ctx, LX_EPARSE, f, sc->sky_line, "[sky]: a map sky needs 'file' (an EXR radiance map)");
         if (sc->sky != LX_SKY_MAP && sc->sky_path)
             return lx__error(ctx, LX_EPARSE, f, sc->sky_line, "[sky]: 'file' applies to type map only");
+        if (sc->sky == LX_SKY_MAP) {
+            lx_status st = lx_exr_read(ctx, sc->sky_path, &sc->sky_map);
+            if (st != LX_OK) {
+                char inner[LX__ERRMSG_MAX];
+                snprintf(inner, sizeof inner, "%s", lx_ctx_errmsg(ctx));
+                return lx__error(ctx, st, f, sc->sky_file_line, "file: %s", inner);
+            }
+        }
         if (sc->sky != LX_SKY_MAP && !(sc->sky_luminance_cd_m2 > 0))
             return lx__error(ctx, LX_EPARSE, f, sc->sky_line, "[sky]: missing 'luminance' (a %s sky needs one)",
                              sc->sky == LX_SKY_UNIFORM ? "uniform" : "overcast (zenith)");

@@ -154,12 +154,71 @@ static void counters_diff(const lx_counters *a, const lx_counters *b, lx_counter
     for (size_t i = 0; i < sizeof *out / sizeof *po; i++) po[i] = pa[i] - pb[i];
 }
 
+/* The device blocks of the plan: each IES luminaire's far-field work on a grid as one
+ * lx_grid_illuminance batch on OpenCL (its table kernel), scaled by the luminaire's flux scale
+ * (the grid engine applies the TILT factor itself). *done (malloc'ed, n_lum x n_rec) marks the
+ * blocks computed; a device failure falls back to the CPU unless the plan requires the device. */
+static lx_status device_blocks(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *plan, long only, double *contrib,
+                               unsigned char **done)
+{
+    size_t nl = sc->n_lum, np = plan->n_points, g0 = 0;
+    unsigned char *d = calloc(nl * sc->n_rec > 0 ? nl * sc->n_rec : 1, 1);
+    double *E = NULL;
+    if (!d) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    for (size_t r = 0; r < sc->n_rec; r++) {
+        const lx_scene_receiver *rc = &sc->rec[r];
+        for (size_t l = 0; l < nl; l++) {
+            if (!plan->device[l * sc->n_rec + r] || (only >= 0 && (long)l != only)) continue;
+            const lx_scene_luminaire *L = &sc->lum[l];
+            lx_placement pl;
+            memset(&pl, 0, sizeof pl);
+            pl.lum = L->lum;
+            memcpy(pl.pos_m, L->pos_m, sizeof pl.pos_m);
+            memcpy(pl.aim, L->aim, sizeof pl.aim);
+            pl.rotate_rad = L->rotate_rad;
+            lx_grid_opts o;
+            memset(&o, 0, sizeof o);
+            o.model = LX_MODEL_POINT;
+            o.interp = LX_INTERP_TABLE;
+            o.backend = LX_BACKEND_OPENCL;
+            if (!E && !(E = malloc(np * sizeof *E))) {
+                free(d);
+                return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+            }
+            lx_status st = lx_grid_illuminance(ctx, &pl, 1, rc->points, rc->n, rc->normal, 1, &o, E);
+            if (st != LX_OK) {
+                if (plan->device_required) {
+                    free(E);
+                    free(d);
+                    return st;
+                }
+                lx__log(ctx, LX_LOG_INFO, "scene: OpenCL failed (%s); computing on the CPU", lx_ctx_errmsg(ctx));
+                free(E);
+                *done = d; /* what was done stays done; the rest runs on the CPU */
+                return LX_OK;
+            }
+            double tilt = lx_luminaire_tilt_factor(L->lum, acos(fmax(-1.0, fmin(1.0, -L->aim[2]))));
+            double k = tilt > 0 ? L->scale / tilt : 0;
+            for (size_t i = 0; i < rc->n; i++) contrib[(g0 + i) * (nl + 1) + l] = E[i] * k;
+            ctx->counters.kernel_launches += o.used == LX_BACKEND_OPENCL;
+            ctx->counters.point_evaluations += rc->n;
+            ctx->counters.goniometric_lookups += rc->n;
+            d[l * sc->n_rec + r] = 1;
+        }
+        g0 += rc->n;
+    }
+    free(E);
+    *done = d;
+    return LX_OK;
+}
+
 lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *plan, const lx_scene_eval_opts *opts,
                         lx_scene_result **out)
 {
     if (!ctx || !sc || !plan || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_eval: NULL argument");
-    long only = opts ? opts->only : -1;
-    if (only >= (long)sc->n_lum) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_eval: no luminaire %ld", only);
+    long only = opts && opts->single ? (long)opts->index : -1;
+    if (opts && opts->single && opts->index >= sc->n_lum)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_eval: no luminaire %zu", opts->index);
     double t0 = now_s();
     lx_counters before = ctx->counters;
     size_t np = plan->n_points, nl = sc->n_lum, nc = nl + 1;
@@ -167,6 +226,7 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
     lum_eval *le = calloc(nl ? nl : 1, sizeof *le);
     scene__spec *spec = calloc(nc, sizeof *spec);
     void *map = NULL;
+    unsigned char *ondev = NULL;
     lx_status st = LX_OK;
     if (!res || !le || !spec) goto nomem;
     res->n_points = np;
@@ -203,7 +263,8 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
         if (sky && (st = lx__scene_spectrum_weights(ctx, sc->sky_file_at, sc->sky_line, NULL, sc->sky_cct_K, &spec[nl])) != LX_OK)
             goto fail;
     }
-    /* every luminaire's contribution at every point, once */
+    /* every luminaire's contribution at every point, once: first the device batches */
+    if (plan->on[LX_EFFECT_OPENCL] && (st = device_blocks(ctx, sc, plan, only, res->contrib_lx, &ondev)) != LX_OK) goto fail;
     size_t g = 0;
     for (size_t r = 0; r < sc->n_rec; r++) {
         const lx_scene_receiver *rc = &sc->rec[r];
@@ -214,7 +275,7 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
             const double *q = rc->points + 3 * i;
             double *c = res->contrib_lx + g * nc;
             for (size_t l = 0; l < nl; l++) {
-                if (only >= 0 && (long)l != only) continue;
+                if ((only >= 0 && (long)l != only) || (ondev && ondev[l * sc->n_rec + r])) continue;
                 if (plan->near[l * np + g]) c[l] = near_E(ctx, &le[l], q, rc->normal, sc->nearfield_tol);
                 else {
                     ctx->counters.point_evaluations++;
@@ -245,6 +306,7 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
         }
     }
     res->first[sc->n_rec] = g;
+    free(ondev);
     lx__scene_sky_map_free(map);
     free(le);
     free(spec);
@@ -255,6 +317,7 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
 nomem:
     st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
 fail:
+    free(ondev);
     lx__scene_sky_map_free(map);
     lx_scene_result_free(res);
     free(le);

@@ -64,6 +64,7 @@ void lx_scene_plan_free(lx_scene_plan *plan)
 {
     if (!plan) return;
     free(plan->near);
+    free(plan->device);
     free(plan);
 }
 
@@ -91,7 +92,10 @@ lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, int backend, lx_sc
     p->n_pairs = p->n_points * sc->n_lum;
     p->n_normals = sc->n_rec;
     p->near = calloc(p->n_pairs ? p->n_pairs : 1, 1);
-    if (!p->near) {
+    p->device = calloc(sc->n_lum * sc->n_rec > 0 ? sc->n_lum * sc->n_rec : 1, 1);
+    if (!p->near || !p->device) {
+        free(p->near);
+        free(p->device);
         free(p);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
@@ -224,6 +228,14 @@ lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, int backend, lx_sc
         why(p, LX_EFFECT_ENVIRONMENT, 1, "%s sky, ground reflectance %g: one evaluation per receiver normal (%zu)",
             sk[sc->sky], sc->ground_reflectance, p->n_normals);
         p->estimate.environment_evaluations = p->n_normals;
+        if (sc->sky == LX_SKY_MAP) {
+            /* the upper half of the map once for the horizontal (the ground term needs it), and
+             * again for every receiver that does not face straight up */
+            unsigned long long half = (unsigned long long)sc->sky_map->width * (unsigned long long)(sc->sky_map->height / 2);
+            p->estimate.environment_samples += half;
+            for (size_t r = 0; r < sc->n_rec; r++)
+                if (sc->rec[r].normal[2] != 1) p->estimate.environment_samples += half;
+        }
         if (sc->sky == LX_SKY_OVERCAST)
             for (size_t r = 0; r < sc->n_rec; r++)
                 if (sc->rec[r].normal[2] != 1) {
@@ -251,24 +263,53 @@ lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, int backend, lx_sc
                         p->estimate.goniometric_lookups += near_patches(size, d, sc->nearfield_tol, sc->lum[l].radius_m > 0);
                     }
         }
-    /* OpenCL: only for work large enough to repay its start-up; the scene's own evaluation is
-     * CPU code (the near-field, sky and spectral paths have no kernels), so OpenCL is used by
-     * no scene today and the planner says why. */
+    /* OpenCL: the far-field work of IES luminaires on grids can run as lx_grid_illuminance
+     * batches on a device (its table kernel); only worth it when large enough to repay the
+     * start-up (the grid engine's threshold: 1e7 point-luminaire evaluations), unless asked for.
+     * Points, spots, areas, near-field pairs, the sky and spectra stay on the CPU. */
     {
-        double work = (double)p->estimate.point_evaluations + (double)p->estimate.nearfield_subdivisions;
         const double threshold = 1e7;
-        if (F[LX_EFFECT_OPENCL] == LX_FORCE_ON) {
+        double eligible = 0;
+        size_t g0 = 0;
+        for (size_t r = 0; r < sc->n_rec; r++) {
+            const lx_scene_receiver *rc = &sc->rec[r];
+            for (size_t l = 0; l < sc->n_lum; l++) {
+                if (rc->kind != LX_SREC_GRID || sc->lum[l].kind != LX_SLUM_FILE || !p->on[LX_EFFECT_GONIOMETRIC] ||
+                    !p->on[LX_EFFECT_COSINE])
+                    continue;
+                size_t k = 0;
+                for (size_t i = 0; i < rc->n; i++) k += p->near[l * p->n_points + g0 + i];
+                if (k == 0) p->device[l * sc->n_rec + r] = 1, eligible += (double)rc->n;
+            }
+            g0 += rc->n;
+        }
+        int explicit_on = F[LX_EFFECT_OPENCL] == LX_FORCE_ON || (backend == LX_BACKEND_OPENCL && F[LX_EFFECT_OPENCL] != LX_FORCE_OFF);
+        if (F[LX_EFFECT_OPENCL] == LX_FORCE_ON && !(eligible > 0)) {
             st = lx__error(ctx, LX_EPARSE, sc->file, sc->force_line[LX_EFFECT_OPENCL],
-                           "opencl forced on, but scene evaluation has no OpenCL path in this version");
+                           "opencl forced on, but no IES luminaire lights a grid entirely in its far field");
             goto fail;
         }
         if (F[LX_EFFECT_OPENCL] == LX_FORCE_OFF) why(p, LX_EFFECT_OPENCL, 0, "forced off in [effects]");
+        else if (!(eligible > 0))
+            why(p, LX_EFFECT_OPENCL, 0, "no device work: only far-field IES luminaires on grids run on OpenCL");
+        else if (explicit_on)
+            why(p, LX_EFFECT_OPENCL, 1, "%s: %.3g far-field IES evaluations on grids",
+                F[LX_EFFECT_OPENCL] == LX_FORCE_ON ? "forced on in [effects]" : "backend opencl", eligible);
         else if (backend == LX_BACKEND_CPU) why(p, LX_EFFECT_OPENCL, 0, "backend cpu");
-        else if (work < threshold)
-            why(p, LX_EFFECT_OPENCL, 0, "%.3g evaluations: below the %.0e that repay OpenCL start-up", work, threshold);
-        else
-            why(p, LX_EFFECT_OPENCL, 0, "%.3g evaluations, but scene evaluation has no OpenCL path yet: CPU", work);
-        p->backend = LX_BACKEND_CPU;
+        else if (eligible < threshold)
+            why(p, LX_EFFECT_OPENCL, 0, "%.3g far-field IES evaluations on grids: below the %.0e that repay OpenCL start-up",
+                eligible, threshold);
+        else why(p, LX_EFFECT_OPENCL, 1, "%.3g far-field IES evaluations on grids: enough to repay OpenCL start-up", eligible);
+        if (!p->on[LX_EFFECT_OPENCL]) memset(p->device, 0, sc->n_lum * sc->n_rec);
+        p->backend = p->on[LX_EFFECT_OPENCL] ? LX_BACKEND_OPENCL : LX_BACKEND_CPU;
+        p->device_required = p->on[LX_EFFECT_OPENCL] && explicit_on;
+        if (p->on[LX_EFFECT_OPENCL]) {
+            /* one batch (at least one kernel launch) per device block; their lookups leave the
+             * CPU estimate of the table work */
+            for (size_t l = 0; l < sc->n_lum; l++)
+                for (size_t r = 0; r < sc->n_rec; r++)
+                    if (p->device[l * sc->n_rec + r]) p->estimate.kernel_launches++;
+        }
     }
     for (int e = 0; e < LX_EFFECT_COUNT; e++) p->forced[e] = F[e] != LX_FORCE_AUTO;
     *out = p;

@@ -66,7 +66,7 @@ static double overcast_tilted(lx_ctx *ctx, double Lz, double beta, int nodes)
 }
 
 typedef struct sky_map {
-    lx_envmap *map;
+    const lx_envmap *map; /* the scene's */
     double *L;      /* per-pixel luminance, cd/m2, times the scene's scale */
     double E_h;     /* horizontal illuminance from the upper hemisphere */
 } sky_map;
@@ -75,7 +75,6 @@ void lx__scene_sky_map_free(void *p)
 {
     sky_map *m = p;
     if (!m) return;
-    lx_envmap_free(m->map);
     free(m->L);
     free(m);
 }
@@ -103,19 +102,14 @@ lx_status lx__scene_sky_map_load(lx_ctx *ctx, const lx_scene *sc, void **out)
 {
     sky_map *m = calloc(1, sizeof *m);
     if (!m) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
-    lx_status st = lx_exr_read(ctx, sc->sky_path, &m->map);
-    if (st != LX_OK) {
-        char inner[LX__ERRMSG_MAX];
-        snprintf(inner, sizeof inner, "%s", lx_ctx_errmsg(ctx));
-        free(m);
-        return lx__error(ctx, st, sc->sky_file_at, sc->sky_line, "[sky] file: %s", inner);
-    }
+    m->map = sc->sky_map;
     m->L = malloc((size_t)m->map->width * m->map->height * sizeof *m->L);
     if (!m->L) {
-        lx__scene_sky_map_free(m);
+        free(m);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
-    if ((st = lx_envmap_luminance(ctx, m->map, m->L)) != LX_OK) {
+    lx_status st = lx_envmap_luminance(ctx, m->map, m->L);
+    if (st != LX_OK) {
         lx__scene_sky_map_free(m);
         return st;
     }

@@ -443,6 +443,93 @@ static void test_goniometric(void **state)
     unlink(ies);
 }
 
+static void test_matches_grid_engine(void **state)
+{
+    lx_ctx *ctx = *state;
+    /* far-field IES luminaires, tilted and turned: the scene must agree with the grid engine of
+     * issue 5 (lx_grid_illuminance, written independently: point model, bilinear, CPU), which
+     * uses the same frame convention and tilt handling */
+    const char *ies = write_model_ies(ctx, LX_LUM_MODEL_WARN, 5000, 0.2, 0.1);
+    char text[2048];
+    snprintf(text, sizeof text,
+             "[luminaire a]\ntype = file\nfile = %s\nposition = 0 m, -1 m, 8 m\naim = 0, 0.3, -1\nrotate = 20 deg\n"
+             "[luminaire b]\ntype = file\nfile = %s\nposition = 20 m, 8 m, 7 m\naim = -0.2, -0.4, -1\n"
+             "[receiver road]\ntype = grid\nx = 0 m, 20 m\ny = 0 m, 7 m\nz = 0 m\npoints = 11, 8\n",
+             ies, ies);
+    run r = must_run(ctx, text);
+    assert_false(r.plan->on[LX_EFFECT_NEAR_FIELD]);
+    lx_luminaire *lum = NULL;
+    lx_assert_ok(ctx, lx_luminaire_read_file(ctx, ies, &lum));
+    unlink(ies);
+    lx_placement pl[2];
+    memset(pl, 0, sizeof pl);
+    for (int k = 0; k < 2; k++) {
+        pl[k].lum = lum;
+        memcpy(pl[k].pos_m, r.sc->lum[k].pos_m, sizeof pl[k].pos_m);
+        memcpy(pl[k].aim, r.sc->lum[k].aim, sizeof pl[k].aim);
+        pl[k].rotate_rad = r.sc->lum[k].rotate_rad;
+    }
+    lx_assert_near(pl[0].rotate_rad, 20 * DEG, 0, 1e-15);
+    size_t n = r.res->n_points;
+    double *E = calloc(n, sizeof *E), normal[3] = {0, 0, 1};
+    lx_grid_opts o;
+    memset(&o, 0, sizeof o);
+    o.model = LX_MODEL_POINT;
+    o.backend = LX_BACKEND_CPU;
+    o.threads = 1;
+    lx_assert_ok(ctx, lx_grid_illuminance(ctx, pl, 2, r.sc->rec[0].points, n, normal, 1, &o, E));
+    /* the scene scales the 5000 lm table by 1 (no flux given) */
+    for (size_t g = 0; g < n; g++) lx_assert_near(r.res->E_lx[g], E[g], 1e-12, 1e-12);
+    free(E);
+    lx_luminaire_free(lum);
+    run_free(&r);
+}
+
+static void test_opencl_blocks(void **state)
+{
+    lx_ctx *ctx = *state;
+    /* far-field IES work on a grid: AUTO keeps it on the CPU below 1e7 evaluations; backend
+     * opencl sends it to the device as one grid batch per luminaire (the grid engine's table
+     * kernel). The oracle is the CPU path (bilinear): tests/test_grid.c bounds the kernel's
+     * resampled-table model at 1e-3 of the peak for a coarse 30-deg table; this Warn table is
+     * tabulated finely (1 deg and finer), so 1e-4 of the largest value is asked here. */
+    const char *ies = write_model_ies(ctx, LX_LUM_MODEL_WARN, 12000, 0.3, 0.3);
+    char text[1024];
+    snprintf(text, sizeof text,
+             "[luminaire a]\ntype = file\nfile = %s\nposition = 0 m, -1 m, 8 m\naim = 0, 0.2, -1\n"
+             "[luminaire b]\ntype = file\nfile = %s\nposition = 30 m, -1 m, 8 m\naim = 0, 0.2, -1\n"
+             "[receiver road]\ntype = grid\nx = 0 m, 30 m\ny = 0 m, 7 m\nz = 0 m\nspacing = 1 m\n",
+             ies, ies);
+    run cpu = must_run(ctx, text);
+    assert_false(cpu.plan->on[LX_EFFECT_OPENCL]);
+    assert_non_null(strstr(cpu.plan->reason[LX_EFFECT_OPENCL], "backend cpu"));
+    lx_scene_plan *autop = NULL;
+    lx_assert_ok(ctx, lx_scene_plan_make(ctx, cpu.sc, LX_BACKEND_AUTO, &autop));
+    assert_false(autop->on[LX_EFFECT_OPENCL]);
+    assert_non_null(strstr(autop->reason[LX_EFFECT_OPENCL], "below the 1e+07"));
+    lx_scene_plan_free(autop);
+    lx_cl_device_info info;
+    if (lx_cl_info(ctx, &info) != LX_OK) {
+        unlink(ies);
+        run_free(&cpu);
+        skip();
+    }
+    lx_scene_plan *clp = NULL;
+    lx_assert_ok(ctx, lx_scene_plan_make(ctx, cpu.sc, LX_BACKEND_OPENCL, &clp));
+    assert_true(clp->on[LX_EFFECT_OPENCL]);
+    lx_scene_result *res = NULL;
+    lx_assert_ok(ctx, lx_scene_eval(ctx, cpu.sc, clp, NULL, &res));
+    assert_int_equal(res->work.kernel_launches, 2);
+    assert_int_equal(cpu.res->work.kernel_launches, 0);
+    double emax = 0;
+    for (size_t g = 0; g < res->n_points; g++) emax = fmax(emax, cpu.res->E_lx[g]);
+    for (size_t g = 0; g < res->n_points; g++) lx_assert_near(res->E_lx[g], cpu.res->E_lx[g], 1e-4 * emax, 0);
+    lx_scene_result_free(res);
+    lx_scene_plan_free(clp);
+    unlink(ies);
+    run_free(&cpu);
+}
+
 /* ---- spectral ---- */
 
 static void test_spectral_planner_and_values(void **state)
@@ -540,7 +627,7 @@ static void test_linearity(void **state)
     size_t np = full.res->n_points, nl = full.sc->n_lum;
     double *sum = calloc(np, sizeof *sum);
     for (size_t l = 0; l < nl; l++) {
-        lx_scene_eval_opts o = {(long)l};
+        lx_scene_eval_opts o = {1, l};
         lx_scene_result *one = NULL;
         lx_assert_ok(ctx, lx_scene_eval(ctx, full.sc, full.plan, &o, &one));
         for (size_t g = 0; g < np; g++) {
@@ -585,6 +672,8 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_sky_uniform_and_overcast, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(test_sky_map, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(test_goniometric, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(test_matches_grid_engine, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(test_opencl_blocks, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(test_spectral_planner_and_values, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(test_linearity, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(test_luminance_output, lx_test_ctx_setup, lx_test_ctx_teardown),

@@ -29,6 +29,8 @@ static int bench_grid(bench_ctx *b) { return cli_bench_grid(b->out); }
 int cli_bench_metrics(FILE *out); /* bench_metrics.c */
 static int bench_metrics(bench_ctx *b) { return cli_bench_metrics(b->out); }
 
+int cli_bench_irradiance(FILE *out); /* bench_irradiance.c */
+static int bench_irradiance(bench_ctx *b) { return cli_bench_irradiance(b->out); }
 static const struct {
     const char *name;
     int (*run)(bench_ctx *b);
@@ -38,6 +40,7 @@ static const struct {
     {"metrics", bench_metrics, "CRI, TM-30 and alpha-opic per second over 1e5 spectra vs colour-science, luxpy"},
     {"grid", bench_grid, "illuminance grid: 1e6 points x 10 luminaires, CPU and OpenCL vs numpy"},
     /* ---- bench topics (one line each: irradiance, grid, accuracy) ---- */
+    {"irradiance", bench_irradiance, "irradiance maps: SH9, exact (fast), brute force vs numpy, 512x256..4096x2048"},
     {NULL, NULL, NULL},
 };
 

@@ -24,7 +24,8 @@ static const char help[] =
     "  -o FILE           write to FILE (atomically)\n"
     "  --png DIR         also draw every grid receiver's illuminance as a false-colour PNG:\n"
     "                    DIR/SCENE_RECEIVER.png (SCENE: the file name without its extension)\n"
-    "  --backend B       auto (default, also LX_BACKEND), cpu or opencl\n"
+    "  --backend B       auto (default, also LX_BACKEND), cpu or opencl: where the far-field work of\n"
+    "                    IES luminaires on grids runs (auto: OpenCL from 1e7 evaluations)\n"
     "\n"
     "csv columns: receiver,x,y,z,illuminance_lx, then luminance_cd_m2 ([output] luminance = yes),\n"
     "cct_K,duv (cct = yes), melanopic_edi_lx (melanopic_edi = yes)\n"
@@ -242,7 +243,7 @@ static lx_status write_pngs(lx_ctx *ctx, const lx_scene *sc, const lx_scene_resu
         for (size_t j = 0; j < rc->nb; j++)
             for (size_t i = 0; i < rc->na; i++) v[j * rc->na + i] = res->E_lx[res->first[r] + (rc->nb - 1 - j) * rc->na + i];
         snprintf(path, sizeof path, "%s/%.*s_%s.png", dir, (int)bl, base, rc->name);
-        snprintf(title, sizeof title, "illuminance (lx) on %s", rc->name);
+        snprintf(title, sizeof title, "E (lx) %s", rc->name);
         lx_status st = lx_png_falsecolor(ctx, path, (int)rc->na, (int)rc->nb, v, NAN, NAN, 0, title);
         free(v);
         if (st != LX_OK) return st;
