@@ -336,8 +336,9 @@ lx_status lx_batch_table_read_mem(lx_ctx *ctx, const char *file, const char *tex
 lx_status lx_batch_table_read(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads, lx_batch_table **out)
 {
     if (!path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch csv: NULL argument");
-    FILE *f = strcmp(path, "-") ? fopen(path, "rb") : stdin;
-    if (!f) return lx__error(ctx, LX_EIO, path, 0, "cannot open: %s", strerror(errno));
+    FILE *f = NULL;
+    lx_status ost = lx__open_read(ctx, path, &f);
+    if (ost) return ost;
     struct stat sb;
     size_t cap = f != stdin && fstat(fileno(f), &sb) == 0 && sb.st_size > 0 ? (size_t)sb.st_size + 1 : 1 << 20;
     size_t len = 0, got;

@@ -121,6 +121,9 @@ lx_status lx_exr_read(lx_ctx *ctx, const char *path, lx_envmap **out)
 {
     if (!path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_exr_read: NULL argument");
     *out = NULL;
+    struct stat sb;
+    if (stat(path, &sb) == 0 && !S_ISREG(sb.st_mode))
+        return lx__error(ctx, LX_EIO, path, 0, "cannot read: not a regular file (OpenEXR files are read by seeking)");
     stream s = {.fd = open(path, O_RDONLY)};
     if (s.fd < 0) return lx__error(ctx, LX_EIO, path, 0, "cannot open: %s", strerror(errno));
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
@@ -196,6 +199,14 @@ lx_status lx_exr_read(lx_ctx *ctx, const char *path, lx_envmap **out)
     long dw_w = (long)dw.max.x - dw.min.x + 1, dw_h = (long)dw.max.y - dw.min.y + 1;
     if (W < 1 || H < 1 || dw_w < 1 || dw_h < 1 || (double)W * H > 1e9 || (double)dw_w * dw_h > 1e9) {
         st = lx__error(ctx, LX_EPARSE, path, 0, "invalid windows: display %ldx%ld, data %ldx%ld", W, H, dw_w, dw_h);
+        goto done;
+    }
+    /* the windows are untrusted counts: before sizing buffers by them, check them against the file
+     * (16 Mpixel, or 64 pixels per byte of file: beyond what real compression reaches on real maps) */
+    double fsize = (double)s_size(e, &s), lim = 16777216.0 + 64.0 * (fsize > 0 ? fsize : 0);
+    if ((double)W * H > lim || (double)dw_w * dw_h > lim) {
+        st = lx__error(ctx, LX_EPARSE, path, 0, "windows (display %ldx%ld, data %ldx%ld) too large for a file of %.0f bytes",
+                       W, H, dw_w, dw_h, fsize);
         goto done;
     }
     st = lx_envmap_create(ctx, (int)W, (int)H, C, &m);

@@ -113,8 +113,9 @@ static lx_status tilt_file(lx_ctx *ctx, const char *file, long line, const char 
         snprintf(path, sizeof path, "%.*s/%s", (int)(slash - file), file, name);
     else
         snprintf(path, sizeof path, "%s", name);
-    FILE *fp = fopen(path, "rb");
-    if (!fp) return lx__error(ctx, LX_EIO, file, line, "TILT file '%s': %s", path, strerror(errno));
+    FILE *fp = NULL;
+    if (!strcmp(path, "-") || lx__open_read(ctx, path, &fp))
+        return lx__error(ctx, LX_EIO, file, line, "TILT file '%s': %s", path, strcmp(path, "-") ? lx_ctx_errmsg(ctx) : "not a file");
     char *buf = NULL;
     size_t len = 0, cap = 0;
     for (;;) {
@@ -369,6 +370,13 @@ lx_status lx__ies_read(lx_ctx *ctx, const char *file, const char *text, size_t l
         }
     }
     size_t nv = lum->n_v, nh = lum->n_h;
+    /* check the counts against the numbers the file holds before sizing anything by them */
+    if (t.n - t.pos < nv + nh + nv * nh) {
+        st = lx__error(ctx, LX_EPARSE, file, last, "the file ends before the end of the candela table: %zu vertical x %zu "
+                       "horizontal angles need %zu numbers, the file has %zu (truncated table or counts that lie)",
+                       nv, nh, nv + nh + nv * nh, t.n - t.pos);
+        goto fail;
+    }
     lum->v_deg = malloc(nv * sizeof(double));
     lum->h_deg = malloc(nh * sizeof(double));
     lum->cd = malloc(nv * nh * sizeof(double));

@@ -161,6 +161,18 @@ lx_status lx__ldt_read(lx_ctx *ctx, const char *file, const char *buf, size_t le
         st = lx__error(ctx, LX_EPARSE, file, isym_line, "Isym %ld needs a number of C-planes divisible by 4 (Mc = %ld)", isym, mc);
         goto fail;
     }
+    {
+        /* one value per line: check the counts against the lines left before sizing the table */
+        long left = 0;
+        for (const char *p = r.it.p; p < r.it.end; p++) left += *p == '\n';
+        if (r.it.p < r.it.end && r.it.end[-1] != '\n') left++;
+        if (left < count * ng) {
+            st = lx__error(ctx, LX_EPARSE, file, r.it.line + left, "the file ends before the end of the intensities: %ld "
+                           "planes x %ld angles need %ld lines, the file has %ld (truncated table or counts that lie)",
+                           count, ng, count * ng, left);
+            goto fail;
+        }
+    }
     l->n_h = (size_t)count;
     l->n_v = (size_t)ng;
     l->h_deg = malloc(l->n_h * sizeof(double));

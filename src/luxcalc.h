@@ -1,6 +1,17 @@
 /* luxcalc.h - the whole public API of luxcalc, a C11 library for photometry and radiometry.
  * All quantities are double, SI units unless a name says otherwise (_nm, _lm, _lx, _cd, _K).
- * The library never prints and never exits: every call that can fail returns an lx_status. */
+ * The library never prints and never exits: every call that can fail returns an lx_status.
+ *
+ * Thread safety, for every function below unless its comment says otherwise:
+ * - a function that takes an lx_ctx may run in several threads at once when each thread uses its
+ *   own context (a context holds the last error, caches and the OpenCL state; it is not locked);
+ * - a function without a context (lx_planck, lx_version, lx_luminaire_intensity, ...) is pure and
+ *   thread-safe;
+ * - objects the library returns (lx_spd_set, lx_luminaire, lx_envmap, ...) are read-only once made:
+ *   several threads may read them (and pass them to functions) at once; freeing is not concurrent;
+ * - the embedded tables and other lazily built globals are initialised safely (pthread_once).
+ * tests/test_threads.c checks this: threads with their own contexts and shared objects give
+ * bit-identical results to a serial run. */
 #ifndef LUXCALC_H
 #define LUXCALC_H
 
@@ -430,6 +441,57 @@ LX_API lx_status lx_alphaopic_batch(lx_ctx *ctx, const struct lx_batch *batch, s
  * LX_EINVAL for negative or non-finite input. Thread-safe. */
 LX_API lx_status lx_mesopic_luminance(lx_ctx *ctx, double photopic_cd_m2, double scotopic_cd_m2,
                                       double *mesopic_cd_m2, double *m_out);
+
+/** One-page PNG report of one spectrum (report_png.c), written atomically (temporary file +
+ * rename; nothing is left at path on failure): the SPD with the area under it in the colour of
+ * each wavelength (approximate sRGB), the colour of the light as a normalised sRGB swatch, the
+ * CIE xy diagram of the observer (spectral locus, Planckian locus with isotemperature ticks at
+ * Duv +-0.02, the point), CIE 13.3 Ra and R1-R14 bars with values, the TM-30 colour vector
+ * graphic, and x, y, CCT, Duv, Ra, R9, Rf, Rg and melanopic DER. A metric that is undefined for
+ * the spectrum (lx_cri_compute or lx_tm30_compute refuse) is shown with its reason instead.
+ * title: the heading (NULL: spd->name). 1100 x 800 pixels. Errors: those of lx_spd_check and
+ * lx_spd_colorimetry, LX_EIO (path not writable), LX_ENOMEM. Thread-safe for distinct contexts. */
+LX_API lx_status lx_spd_report_png(lx_ctx *ctx, const lx_spd *spd, lx_observer observer, const char *title,
+                                   const char *path);
+
+/* ---- spectral OpenEXR images (issue 3: spectral_exr.c) ---- */
+
+/* Spectral EXR images in the layout of Fichet et al. 2021, "An OpenEXR Layout for Spectral
+ * Images" (JCGT 10(3)): emissive channels "S0.<wavelength, comma as decimal point><unit>", e.g.
+ * "S0.550,000000nm" (units nm, um, mm, m, pm); polarised S1-S3 channels are ignored; reflective
+ * "T." channels alone are LX_EUNSUPPORTED. Values are spectral radiance W/(sr m2 nm). */
+
+/** A spectral image integrated per pixel to absolute CIE XYZ. Owns its arrays. */
+typedef struct lx_xyz_image {
+    int width, height;     /* the data window */
+    float *xyz;            /* width * height * 3, row-major, X Y Z interleaved: Km * integral of S xbar
+                            * etc. (cd/m2 for radiance channels; Km 683.002, 10 deg: 683.599) */
+    size_t n_lambda;       /* S0 channels used */
+    double *lambda_nm;     /* their wavelengths, increasing */
+    int resampled;         /* 0: summed on the channels' own uniform grid (cie15 rule, as
+                            * lx_spd_colorimetry with LX_METHOD_CIE15); 1: wavelengths not uniform,
+                            * resampled to 1 nm (lx_batch_resample, the exact method's model) first */
+    int polarised_ignored; /* number of S1-S3 channels ignored */
+} lx_xyz_image;
+
+/** Reads a spectral OpenEXR file (scanline or tiled, half or float, any compression; first part)
+ * and integrates every pixel with lx_batch_integrate (opts may be NULL; opts->backend chooses CPU
+ * or OpenCL). Errors name the file: LX_EPARSE (not EXR, no S0 channels, a malformed wavelength,
+ * a duplicate or non-finite value), LX_EUNSUPPORTED (reflective only, subsampled or integer
+ * channels, deep data), LX_EIO. Free *out with lx_xyz_image_free. */
+LX_API lx_status lx_spectral_exr_read_xyz(lx_ctx *ctx, const char *path, lx_observer observer, lx_batch_opts *opts,
+                                          lx_xyz_image **out);
+
+/** Writes the image as a float OpenEXR with channels X, Y, Z (ZIP), atomically (temporary file +
+ * rename; an existing file is replaced only on success). */
+LX_API lx_status lx_xyz_exr_write(lx_ctx *ctx, const char *path, const lx_xyz_image *img);
+
+/** Writes an sRGB preview PNG (XYZ -> linear sRGB, exposure from the median luminance, Reinhard
+ * tone curve), enlarged to at least 256 pixels wide, atomically. */
+LX_API lx_status lx_xyz_png_write(lx_ctx *ctx, const char *path, const lx_xyz_image *img);
+
+/** Frees an image. Accepts NULL. */
+LX_API void lx_xyz_image_free(lx_xyz_image *img);
 
 /* ---- radiance fields (issue 6) ---- */
 
@@ -982,8 +1044,8 @@ typedef struct lx_counters {
     unsigned long long nearfield_subdivisions; /* luminous-area patches evaluated by those integrations */
     unsigned long long environment_evaluations;/* receiver-normal sky evaluations (closed form or numeric) */
     unsigned long long environment_samples;    /* numerical sky samples (quadrature nodes, map pixels) */
-    unsigned long long spectra_integrated;     /* spectra integrated against weighting functions */
-    unsigned long long kernel_launches;        /* OpenCL kernel launches made by scene evaluation */
+    unsigned long long spectra_integrated;     /* spectrum integrations (colorimetry, alpha-opic: one each per source) */
+    unsigned long long kernel_launches;        /* OpenCL batches run by scene evaluation (each >= 1 kernel launch) */
 } lx_counters;
 
 /** Copies the context's counters into *out (zeros for a NULL ctx). Thread-safe for distinct contexts. */
@@ -1022,7 +1084,7 @@ typedef enum lx_scene_lum_kind {
  * rotate about the aim; with aim (0, 0, -1) and rotate 0, C0 and the rectangle width are +x. */
 typedef struct lx_scene_luminaire {
     char *name;
-    char *file;               /* the scene file and line of its section header */
+    const char *file;         /* the scene file and line of its section header (names kept by the scene) */
     long line;
     lx_scene_lum_kind kind;
     double pos_m[3];
@@ -1050,7 +1112,7 @@ typedef enum lx_scene_rec_kind { LX_SREC_POINT = 0, LX_SREC_GRID = 1 } lx_scene_
 /** One receiver: a point, or a grid of na x nb points on a plane x, y or z = level. */
 typedef struct lx_scene_receiver {
     char *name;
-    char *file;
+    const char *file;         /* the scene file and line of its section header */
     long line;
     lx_scene_rec_kind kind;
     double normal[3];         /* unit */

@@ -232,4 +232,27 @@ lx_status lx__canvas_write_png(lx_ctx *ctx, const lx__canvas *c, const char *pat
 lx_status lx__png_falsecolor(lx_ctx *ctx, const char *path, int w, int h, const double *values, double vmin,
                              double vmax, int log_scale, const char *legend_title);
 
+/* ---- spectrum reports and spectral images (issue 7/3: report_png.c, spectral_exr.c) ---- */
+/* sRGB of XYZ, negative channels desaturated away and normalised to a maximum of 1, encoded. */
+void lx__xyz_to_srgb8(const double xyz[3], unsigned char rgb[3]);
+/* Chromaticity of the spectral locus at lambda_nm (CMFs of obs, interpolated). */
+lx_status lx__locus_xy(lx_ctx *ctx, lx_observer obs, double lambda_nm, double *x, double *y);
+/* Approximate sRGB of monochromatic light (2 deg CMFs; dimmed at the ends; grey outside them). */
+void lx__wavelength_srgb8(lx_ctx *ctx, double lambda_nm, unsigned char rgb[3]);
+/* xy of the point at distance duv (CIE 1960 uv) from the Planckian locus at T_K along its normal,
+ * + towards +v ("above", the sign of Duv): the isotemperature line. */
+lx_status lx__isotemp_xy(lx_ctx *ctx, lx_observer obs, double T_K, double duv, double *x, double *y);
+/* TM-30 colour vector graphic: a hue bin's test point normalised so the reference lies on the
+ * unit circle at its own hue: (test - ref) / |ref| + (cos h_ref, sin h_ref). */
+void lx__cvg_point(const double ref_ab[2], const double test_ab[2], double out[2]);
+/* Parses a Fichet et al. 2021 spectral channel name: *kind 0-3 for S0-S3 (emissive), 4 for T
+ * (reflective), wavelength in nm; returns 0 on success, -1 when the name is not spectral. */
+int lx__spectral_channel(const char *name, int *kind, double *lambda_nm);
+
+/* ---- robustness (issue 10: file_open.c) ---- */
+#include <stdio.h>
+/* Opens path for reading: "-" gives stdin; a directory or a missing file is LX_EIO naming the path;
+ * a FIFO waits at most LX_FIFO_WAIT_S seconds (default 10, 0: for ever) for its first data. */
+lx_status lx__open_read(lx_ctx *ctx, const char *path, FILE **out);
+
 #endif /* LX_PRIVATE_H */

@@ -95,7 +95,7 @@ lx_status lx_luminaire_read_mem(lx_ctx *ctx, const char *name, const char *text,
     if (out) *out = NULL;
     if (!ctx || !out || (!text && len)) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_read_mem: NULL argument");
     if (!name) name = "(memory)";
-    if (len == 0) return lx__error(ctx, LX_EPARSE, name, 0, "empty file");
+    if (len == 0) return lx__error(ctx, LX_EPARSE, name, 1, "empty file");
     if (has_tilt_line(text, len)) return lx__ies_read(ctx, name, text, len, out);
     return lx__ldt_read(ctx, name, text, len, out);
 }
@@ -105,17 +105,11 @@ lx_status lx_luminaire_read_file(lx_ctx *ctx, const char *path, lx_luminaire **o
     if (out) *out = NULL;
     if (!ctx || !path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_read_file: NULL argument");
     int is_stdin = strcmp(path, "-") == 0;
-    FILE *fp = stdin;
-    if (!is_stdin) {
-        struct stat sb;
-        if (stat(path, &sb) != 0) return lx__error(ctx, LX_EIO, path, 0, "cannot open: %s", strerror(errno));
-        if (S_ISDIR(sb.st_mode)) return lx__error(ctx, LX_EIO, path, 0, "cannot read: is a directory");
-        fp = fopen(path, "rb");
-        if (!fp) return lx__error(ctx, LX_EIO, path, 0, "cannot open: %s", strerror(errno));
-    }
+    FILE *fp = NULL;
+    lx_status st = lx__open_read(ctx, path, &fp);
+    if (st) return st;
     size_t cap = 1 << 16, len = 0;
     char *buf = malloc(cap);
-    lx_status st = LX_OK;
     while (buf) {
         if (len == cap) {
             char *nb = realloc(buf, cap * 2);

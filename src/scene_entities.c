@@ -199,7 +199,7 @@ lx_status lx__scene_lum_finish(lx_ctx *ctx, lx_scene *sc, scene__lum_raw *r)
     lx_scene_luminaire l;
     memset(&l, 0, sizeof l);
     l.kind = (lx_scene_lum_kind)kind;
-    l.file = (char *)f;
+    l.file = f;
     l.line = ln;
     memcpy(l.pos_m, r->pos, sizeof l.pos_m);
     l.aim[2] = -1;
@@ -452,7 +452,7 @@ lx_status lx__scene_rec_finish(lx_ctx *ctx, lx_scene *sc, scene__rec_raw *r)
     lx_status st = LX_OK;
     lx_scene_receiver rc;
     memset(&rc, 0, sizeof rc);
-    rc.file = (char *)f;
+    rc.file = f;
     rc.line = ln;
     rc.reflectance = NAN;
     if (!r->type || (strcmp(r->type, "point") && strcmp(r->type, "grid"))) {

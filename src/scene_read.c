@@ -8,6 +8,7 @@
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -361,8 +362,8 @@ static lx_status read_file(reader *r, const char *path, const char *text, size_t
 
 lx_status lx__scene_slurp(const char *path, char **text, size_t *len)
 {
-    FILE *f = strcmp(path, "-") ? fopen(path, "rb") : stdin;
-    if (!f) return LX_EIO;
+    FILE *f = NULL;
+    if (lx__open_read(NULL, path, &f)) return LX_EIO; /* errno says why */
     size_t cap = 4096, n = 0;
     char *buf = malloc(cap);
     while (buf) {

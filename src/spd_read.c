@@ -521,17 +521,11 @@ lx_status lx_spd_read_file(lx_ctx *ctx, const char *path, lx_spd_set **out)
     if (out) *out = NULL;
     if (!ctx || !path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_spd_read_file: NULL argument");
     int is_stdin = strcmp(path, "-") == 0;
-    FILE *fp = stdin;
-    if (!is_stdin) {
-        struct stat sb;
-        if (stat(path, &sb) != 0) return lx__error(ctx, LX_EIO, path, 0, "cannot open: %s", strerror(errno));
-        if (S_ISDIR(sb.st_mode)) return lx__error(ctx, LX_EIO, path, 0, "cannot read: is a directory");
-        fp = fopen(path, "rb");
-        if (!fp) return lx__error(ctx, LX_EIO, path, 0, "cannot open: %s", strerror(errno));
-    }
+    FILE *fp = NULL;
+    lx_status st = lx__open_read(ctx, path, &fp);
+    if (st) return st;
     size_t cap = 1 << 16, len = 0;
     char *buf = malloc(cap);
-    lx_status st = LX_OK;
     if (!buf) {
         st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
         goto out;

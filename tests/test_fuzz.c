@@ -1,4 +1,4 @@
-/* test_fuzz.c - replays the fuzz targets' regression inputs (tests/fuzz/regressions/TARGET/*,
+/* test_fuzz.c - replays the fuzz targets' regression inputs (tests/fuzz/regressions/TARGET/,
  * every input that once crashed or misbehaved) and their seed corpora through the same harness
  * functions the fuzzers run, so a fixed finding stays fixed. */
 #include "lx_test.h"

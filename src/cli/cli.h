@@ -83,6 +83,12 @@ int cli_output_close(cli_output *o, int ok, const char *cmd);
 /* Parses a whole string as a finite double; returns 0 on success. */
 int cli_parse_double(const char *s, double *out);
 
+/* File arguments with shell patterns expanded by luxcalc itself (for lists too long for the
+ * shell, or shells that do not glob): an argument with * ? [ that is not an existing path and
+ * matches files becomes those files, sorted; others stay as given. Free with cli_free_files. */
+char **cli_expand_files(int n, char **args, int *nout);
+void cli_free_files(char **files, int n);
+
 /* Standard handling of --help for a command: prints usage text to stdout. */
 void cli_print_help(const char *text);
 

@@ -21,6 +21,7 @@ typedef struct bench_ctx {
     size_t sizes[8]; /* --sizes */
     int nsizes;
     const char *tmp; /* scratch directory */
+    const char *outpath; /* -o FILE (accuracy writes its PNG plots beside it) */
 } bench_ctx;
 
 static int bench_spd(bench_ctx *b);
@@ -31,6 +32,8 @@ static int bench_metrics(bench_ctx *b) { return cli_bench_metrics(b->out); }
 
 int cli_bench_irradiance(FILE *out); /* bench_irradiance.c */
 static int bench_irradiance(bench_ctx *b) { return cli_bench_irradiance(b->out); }
+int cli_bench_accuracy(FILE *out, const char *outpath); /* bench_accuracy.c */
+static int bench_accuracy(bench_ctx *b) { return cli_bench_accuracy(b->out, b->outpath); }
 static const struct {
     const char *name;
     int (*run)(bench_ctx *b);
@@ -40,6 +43,7 @@ static const struct {
     {"metrics", bench_metrics, "CRI, TM-30 and alpha-opic per second over 1e5 spectra vs colour-science, luxpy"},
     {"grid", bench_grid, "illuminance grid: 1e6 points x 10 luminaires, CPU and OpenCL vs numpy"},
     /* ---- bench topics (one line each: irradiance, grid, accuracy) ---- */
+    {"accuracy", bench_accuracy, "error against a reference vs time of every method: spectra, radiance fields, lighting"},
     {"irradiance", bench_irradiance, "irradiance maps: SH9, exact (fast), brute force vs numpy, 512x256..4096x2048"},
     {NULL, NULL, NULL},
 };
@@ -516,7 +520,7 @@ int cmd_bench(int argc, char **argv)
             }
             break;
         }
-        case 'o': outpath = optarg; break;
+        case 'o': outpath = b.outpath = optarg; break;
         case 'f': break; /* the report is markdown in every format */
         case 'h':
             cli_print_help(help);

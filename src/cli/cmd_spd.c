@@ -2,6 +2,8 @@
 #include "cli.h"
 #include "spd_batch.h"
 #include "spd_metrics.h"
+#include "progress.h"
+#include "spd_report.h"
 
 #include <getopt.h>
 #include <math.h>
@@ -45,7 +47,10 @@ static const char help[] =
     "                         agrees with the per-spectrum path to 1e-9 relative)\n"
     "  --input-format F       text (default) | f32: raw little-endian float32 spectra, one after\n"
     "  --grid START:END:STEP  another, on the grid given by --grid (nm); spectra named 1, 2, ...\n"
-    "  -v, -q                 more messages / errors only\n"
+    "  --report DIR           one PNG report per spectrum: DIR/<file-stem>_<spectrum>.png (SPD,\n"
+    "                         swatch, CIE xy, R1-R14, TM-30 vector graphic, headline numbers)\n"
+    "  IMAGE.exr -o X.exr --png P.png  spectral EXR (S0.<nm>nm channels): per-pixel XYZ in cd/m2\n"
+    "  -v, -q                 more messages / errors only (-q: no progress bar)\n"
     "  -h, --help             this help\n"
     "\n"
     "csv columns: file,spectrum,X,Y,Z,x,y,u_prime,v_prime,cct_K,duv,ler_lm_per_W,scotopic_Y,\n"
@@ -55,7 +60,8 @@ static const char help[] =
     "example:\n"
     "  luxcalc spd --format csv samples/spd/cie_illuminants.csv\n"
     "  luxcalc spd --unit W/nm --observer 10 lamp.csv\n"
-    "  luxcalc spd --unit W/m2/nm --metrics all --format csv lamp.csv\n";
+    "  luxcalc spd --unit W/m2/nm --metrics all --format csv lamp.csv\n"
+    "  luxcalc spd --report reports/ lamp.csv\n";
 
 static const struct {
     const char *name, *photometric, *radiant;
@@ -113,6 +119,7 @@ int cmd_spd(int argc, char **argv)
         {"metrics", required_argument, NULL, 'M'},
         {"backend", required_argument, NULL, 'B'},  {"input-format", required_argument, NULL, 'I'},
         {"grid", required_argument, NULL, 'G'},
+        {"report", required_argument, NULL, 'R'}, {"png", required_argument, NULL, 'P'},
         {NULL, 0, NULL, 0},
     };
     const char *cmd = "spd", *outpath = NULL;
@@ -122,6 +129,7 @@ int cmd_spd(int argc, char **argv)
     cli_metrics msel = {{0}, 0};
     int f32 = 0, backend_given = getenv("LX_BACKEND") != NULL;
     const char *grid = NULL, *backend_text = getenv("LX_BACKEND");
+    const char *report_dir = NULL, *png = NULL;
     optind = 1;
     while ((c = getopt_long(argc, argv, "o:vqh", opts, NULL)) != -1) {
         switch (c) {
@@ -159,6 +167,8 @@ int cmd_spd(int argc, char **argv)
             else return cli_error(cmd, "--input-format: expected text or f32, not '%s'", optarg), CLI_USAGE;
             break;
         case 'G': grid = optarg; break;
+        case 'R': report_dir = optarg; break;
+        case 'P': png = optarg; break;
         case 'o': outpath = optarg; break;
         case 'v': cli_verbose++; break;
         case 'q': cli_quiet = 1; break;
@@ -176,6 +186,12 @@ int cmd_spd(int argc, char **argv)
         return cli_error(cmd, "--input-format f32 needs --grid START:END:STEP in nm (END - START a whole number of steps), not '%s'",
                          grid ? grid : ""), CLI_USAGE;
     if (f32 && msel.any) return cli_error(cmd, "--metrics is not available with --input-format f32"), CLI_USAGE;
+    if (f32 && report_dir)
+        return cli_error(cmd, "--report is not available with --input-format f32 (reports need the text path, one spectrum at a time)"), CLI_USAGE;
+    int exr = !f32 && strcmp(argv[optind], "-") != 0 && cli_is_exr(argv[optind]);
+    if (exr && (argc - optind != 1 || msel.any || report_dir))
+        return cli_error(cmd, "a spectral EXR image is processed alone, without --metrics or --report"), CLI_USAGE;
+    if (png && !exr) return cli_error(cmd, "--png applies to a spectral EXR image input"), CLI_USAGE;
     lx_ctx *ctx = cli_ctx(cmd);
     if (!ctx) return CLI_RUNTIME;
     lx_backend backend = LX_BACKEND_AUTO;
@@ -183,6 +199,15 @@ int cmd_spd(int argc, char **argv)
         cli_error(cmd, "--backend: expected auto, cpu or opencl, not '%s'", backend_text);
         lx_ctx_destroy(ctx);
         return CLI_USAGE;
+    }
+    if (exr) {
+        int e = cli_spd_exr(ctx, cmd, argv[optind], outpath, png, obs, backend, (cli_format)fmt);
+        lx_ctx_destroy(ctx);
+        return e;
+    }
+    if (report_dir && cli_report_dir(cmd, report_dir) != 0) {
+        lx_ctx_destroy(ctx);
+        return CLI_INPUT;
     }
 
     const char *pu = units[unit].photometric, *ru = units[unit].radiant;
@@ -203,21 +228,24 @@ int cmd_spd(int argc, char **argv)
     so.t = t, so.fmt = (cli_format)fmt, so.cmd = cmd;
     cli_spd_batch B = {ctx, cmd, t, obs, method, backend, backend_given, spd_flush, &so};
     so.path = outpath;
-    for (int i = optind; i < argc; i++) {
+    int nfiles = 0;
+    char **files = cli_expand_files(argc - optind, argv + optind, &nfiles);
+    for (int fi = 0; files && fi < nfiles; fi++) {
+        char *arg = files[fi];
         if (f32) {
-            lx_status st = cli_spd_f32_file(&B, argv[i], g_start, g_step, g_n);
+            lx_status st = cli_spd_f32_file(&B, arg, g_start, g_step, g_n);
             if (st != LX_OK && cli_exit_code(st) > rc) rc = cli_exit_code(st);
             spd_flush(&so);
             continue;
         }
         lx_spd_set *set = NULL;
-        lx_status st = lx_spd_read_file(ctx, argv[i], &set);
+        lx_status st = lx_spd_read_file(ctx, arg, &set);
         if (st != LX_OK) {
             int e = cli_fail(cmd, ctx, st);
             if (e > rc) rc = e;
             continue;
         }
-        if (!msel.any && cli_spd_batchable(&B, set)) {
+        if (!msel.any && !report_dir && cli_spd_batchable(&B, set)) {
             if ((st = cli_spd_batch_set(&B, set)) != LX_OK) {
                 int e = cli_fail(cmd, ctx, st);
                 if (e > rc) rc = e;
@@ -225,7 +253,9 @@ int cmd_spd(int argc, char **argv)
             lx_spd_set_free(set);
             continue;
         }
+        if (set->count >= (report_dir ? 8 : 256)) cli_progress_start(set->count, set->file);
         for (size_t k = 0; k < set->count; k++) {
+            cli_progress_update(k);
             lx_colorimetry r;
             st = lx_spd_colorimetry(ctx, &set->spd[k], obs, method, &r);
             if (st != LX_OK) {
@@ -244,7 +274,12 @@ int cmd_spd(int argc, char **argv)
             if (msel.any)
                 cli_metrics_row(t, ctx, &msel, &set->spd[k], method, units[unit].name, &r, set->file,
                                 set->line ? set->line[k] : 0L, cmd);
+            if (report_dir) {
+                int e = cli_spd_report(ctx, cmd, report_dir, set->file, k, &set->spd[k], obs);
+                if (e > rc) rc = e;
+            }
         }
+        cli_progress_end();
         lx_spd_set_free(set);
         spd_flush(&so);
     }
@@ -256,6 +291,7 @@ int cmd_spd(int argc, char **argv)
             if (cli_output_close(&so.o, ok, cmd) != 0 || !ok) rc = rc ? rc : CLI_INPUT;
         }
     }
+    cli_free_files(files, nfiles);
     cli_table_free(t);
     lx_ctx_destroy(ctx);
     return rc;

@@ -4,6 +4,7 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <glob.h>
 #include <signal.h>
 #include <math.h>
 #include <stdarg.h>
@@ -376,4 +377,43 @@ int cli_output_close(cli_output *o, int ok, const char *cmd)
     free(o->tmp);
     o->path = o->tmp = NULL;
     return rc;
+}
+
+/* ---- file arguments ---- */
+char **cli_expand_files(int n, char **args, int *nout)
+{
+    size_t cap = (size_t)n + 16, k = 0;
+    char **out = malloc(cap * sizeof *out);
+    if (!out) return NULL;
+    for (int i = 0; i < n; i++) {
+        struct stat sb;
+        glob_t g;
+        const char *a = args[i];
+        if (strcmp(a, "-") != 0 && strpbrk(a, "*?[") && stat(a, &sb) != 0 && glob(a, 0, NULL, &g) == 0) {
+            for (size_t j = 0; j < g.gl_pathc; j++) {
+                if (k == cap) {
+                    char **o2 = realloc(out, (cap *= 2) * sizeof *out);
+                    if (!o2) break;
+                    out = o2;
+                }
+                out[k++] = strdup(g.gl_pathv[j]);
+            }
+            globfree(&g);
+            continue;
+        }
+        if (k == cap) {
+            char **o2 = realloc(out, (cap *= 2) * sizeof *out);
+            if (!o2) break;
+            out = o2;
+        }
+        out[k++] = strdup(a);
+    }
+    *nout = (int)k;
+    return out;
+}
+
+void cli_free_files(char **files, int n)
+{
+    for (int i = 0; files && i < n; i++) free(files[i]);
+    free(files);
 }

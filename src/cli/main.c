@@ -26,20 +26,20 @@ const cli_cmd cli_commands[] = {
     {"spd", cmd_spd, "colorimetry and photometry of measured spectra (XYZ, xy, CCT, Duv, efficacy)"},
     {"blackbody", cmd_blackbody, "Planck spectral radiance of a blackbody as csv"},
     {"daylight", cmd_daylight, "CIE D-series daylight relative SPD as csv"},
-    {"ies", cmd_ies, "luminaire photometry: IES LM-63 / EULUMDAT summaries, LM-63-2002 from models"},
-    {"grid", cmd_grid, "illuminance on a grid of points from luminaires (csv, summary, PNG)"},
-    /* ---- command table entries (one line per command) ---- */
-    {"irradiance", cmd_irradiance, "irradiance environment map (or one normal) from a lat-long radiance EXR"},
-    {"luminance-map", cmd_luminance_map, "luminance statistics and a false-colour PNG of an HDR map"},
-    {"scene", cmd_scene, "a lighting scene file: only the effects it needs (--explain says which and why)"},
-    {"devices", cmd_devices, "the OpenCL platforms and devices, and which one auto would use"},
-    {"bench", cmd_bench, "measured performance tables (spd: batch integration vs bandwidth and peers)"},
     {"point", cmd_point, "illuminance from an isotropic point source (inverse square, cosine law)"},
     {"spot", cmd_spot, "Warn spotlight: intensity and illuminance off its axis"},
     {"disk", cmd_disk, "Lambertian disk on a parallel receiver: exact, point model and its error"},
     {"rect", cmd_rect, "Lambertian rectangle on a parallel receiver: exact, point model and its error"},
     {"convert", cmd_convert, "a quantity in every unit (lx, fc, cd/m2, fL, ...; W <-> lm with an efficacy)"},
     {"solve", cmd_solve, "inverse problems: distance, intensity or flux for a target illuminance"},
+    {"ies", cmd_ies, "luminaire photometry: IES LM-63 / EULUMDAT summaries, LM-63-2002 from models"},
+    {"grid", cmd_grid, "illuminance on a grid of points from luminaires (csv, summary, PNG)"},
+    {"irradiance", cmd_irradiance, "irradiance environment map (or one normal) from a lat-long radiance EXR"},
+    {"luminance-map", cmd_luminance_map, "luminance statistics and a false-colour PNG of an HDR map"},
+    {"scene", cmd_scene, "a lighting scene file: only the effects it needs (--explain says which and why)"},
+    {"devices", cmd_devices, "the OpenCL platforms and devices, and which one auto would use"},
+    {"bench", cmd_bench, "measured performance and accuracy-against-time tables (spd, metrics, irradiance, grid, accuracy)"},
+    /* ---- command table entries (one line per command) ---- */
     {NULL, NULL, NULL},
 };
 

@@ -1,0 +1,65 @@
+/* spd_report.c - `luxcalc spd --report DIR`: one PNG report per spectrum (lx_spd_report_png),
+ * named DIR/<file-stem>_<spectrum>.png with the names reduced to portable characters. */
+#include "spd_report.h"
+
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+
+int cli_report_dir(const char *cmd, const char *dir)
+{
+    struct stat sb;
+    if (stat(dir, &sb) == 0) {
+        if (S_ISDIR(sb.st_mode)) return 0;
+        cli_error(cmd, "%s: --report: not a directory", dir);
+        return -1;
+    }
+    if (mkdir(dir, 0777) != 0 && errno != EEXIST) {
+        cli_error(cmd, "%s: --report: cannot create the directory: %s", dir, strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+
+/* appends s to buf (cap bytes) with every character outside [A-Za-z0-9._-] as '_' */
+static void put_clean(char *buf, size_t cap, const char *s, size_t n)
+{
+    size_t len = strlen(buf);
+    for (size_t i = 0; i < n && len + 1 < cap; i++) {
+        char ch = s[i];
+        int ok = (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '.' ||
+                 ch == '_' || ch == '-';
+        buf[len++] = ok ? ch : '_';
+    }
+    buf[len] = 0;
+}
+
+int cli_spd_report(lx_ctx *ctx, const char *cmd, const char *dir, const char *file, size_t index, const lx_spd *spd,
+                   lx_observer obs)
+{
+    char name[256] = "", idx[32];
+    const char *base = strrchr(file, '/');
+    base = base ? base + 1 : file;
+    if (!strcmp(file, "-")) base = "stdin";
+    const char *dot = strrchr(base, '.');
+    size_t stem = dot && dot != base ? (size_t)(dot - base) : strlen(base);
+    put_clean(name, 120, base, stem);
+    put_clean(name, sizeof name, "_", 1);
+    const char *sp = spd->name && *spd->name ? spd->name : (snprintf(idx, sizeof idx, "%zu", index + 1), idx);
+    put_clean(name, 240, sp, strlen(sp));
+    if (name[0] == '.') name[0] = '_'; /* never a hidden file */
+    size_t n = strlen(dir) + strlen(name) + 8;
+    char *path = malloc(n);
+    if (!path) return cli_error(cmd, "out of memory"), CLI_RUNTIME;
+    snprintf(path, n, "%s/%s.png", dir, name);
+    char title[200];
+    snprintf(title, sizeof title, "%s: %s", base, sp);
+    lx_status st = lx_spd_report_png(ctx, spd, obs, title, path);
+    int rc = CLI_OK;
+    if (st != LX_OK) rc = cli_fail(cmd, ctx, st);
+    else if (cli_verbose) fprintf(stderr, "luxcalc: %s: wrote %s\n", cmd, path);
+    free(path);
+    return rc;
+}

@@ -1,0 +1,47 @@
+/* fuzz_scene.c - fuzz target: the scene reader (sections, keys with units, includes, references to
+ * IES/LDT/SPD/EXR files) on any bytes through lx_scene_read_mem, then the planner on what it accepts.
+ * The name puts the scene in samples/scenes so that the seeds' references and includes resolve.
+ * Properties: never crash; a parse error names a file; an accepted scene has what its reader promises. */
+#include "luxcalc.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+
+int fuzz_scene_one(const uint8_t *data, size_t size)
+{
+    lx_ctx *ctx;
+    if (lx_ctx_create(&ctx) != LX_OK) return 0;
+    lx_scene *sc = NULL;
+    lx_status st = lx_scene_read_mem(ctx, "samples/scenes/fuzz.scene", (const char *)data, size, &sc);
+    if (st == LX_OK) {
+        if (!sc) abort();
+        size_t points = 0;
+        for (size_t i = 0; i < sc->n_lum; i++) {
+            const lx_scene_luminaire *l = &sc->lum[i];
+            if (!isfinite(l->pos_m[0]) || !isfinite(l->pos_m[1]) || !isfinite(l->pos_m[2])) abort();
+            if (l->kind == LX_SLUM_FILE && !l->lum) abort();
+        }
+        for (size_t i = 0; i < sc->n_rec; i++) {
+            const lx_scene_receiver *r = &sc->rec[i];
+            if (r->n < 1 || !r->points) abort();
+            for (size_t k = 0; k < 3 * r->n; k++)
+                if (!isfinite(r->points[k])) abort();
+            points += r->n;
+        }
+        if (points * (sc->n_lum + 1) <= 100000) { /* the planner's near-field test is per pair */
+            lx_scene_plan *plan = NULL;
+            if (lx_scene_plan_make(ctx, sc, LX_BACKEND_CPU, &plan) == LX_OK) lx_scene_plan_free(plan);
+        }
+        lx_scene_free(sc);
+    } else {
+        if (sc) abort(); /* *out stays NULL on failure */
+        if (st == LX_EPARSE && !lx_ctx_errfile(ctx)) abort();
+    }
+    lx_ctx_destroy(ctx);
+    return 0;
+}
+
+#ifdef LX_FUZZ_MAIN
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) { return fuzz_scene_one(data, size); }
+#endif

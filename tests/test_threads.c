@@ -1,0 +1,104 @@
+/* test_threads.c - thread safety as documented: each thread with its own context gets
+ * bit-identical results to a serial run, while sharing read-only objects (a spectral set, a
+ * luminaire) and the lazily built tables; functions without a context are pure. */
+#include "lx_test.h"
+
+#include <pthread.h>
+#include <string.h>
+
+#define NT 4
+#define NJOBS 40
+
+static lx_spd_set *g_set;
+static lx_luminaire *g_lum;
+
+typedef struct result {
+    double xyz[NJOBS][3], cct[NJOBS], lumens, inten[NJOBS], planck[NJOBS];
+    const char *const *names;
+    int ok;
+} result;
+
+static void work(result *r)
+{
+    lx_ctx *ctx;
+    r->ok = 0;
+    if (lx_ctx_create(&ctx) != LX_OK) return;
+    const char *const *names = lx_illuminant_names();
+    r->names = names;
+    for (int j = 0; j < NJOBS; j++) {
+        lx_spd s;
+        const lx_spd *sp = &s;
+        if (j < 20 && names[j]) {
+            if (lx_illuminant_get(ctx, names[j], &s) != LX_OK) goto out;
+        } else {
+            sp = &g_set->spd[(size_t)j % g_set->count];
+        }
+        lx_colorimetry c;
+        if (lx_spd_colorimetry(ctx, sp, LX_OBSERVER_2, LX_METHOD_AUTO, &c) != LX_OK) goto out;
+        r->xyz[j][0] = c.X, r->xyz[j][1] = c.Y, r->xyz[j][2] = c.Z, r->cct[j] = c.cct_K;
+        r->inten[j] = lx_luminaire_intensity_dir(g_lum, LX_INTERP_BILINEAR, 0.1 * j, 0.05 * j, -1.0);
+        r->planck[j] = lx_planck(400 + 5 * j, 1000 + 100 * j);
+    }
+    lx_lum_summary sum;
+    if (lx_luminaire_summary(ctx, g_lum, &sum) != LX_OK) goto out;
+    r->lumens = sum.lumens;
+    r->ok = 1;
+out:
+    lx_ctx_destroy(ctx);
+}
+
+static void *thread_main(void *arg)
+{
+    work(arg);
+    return NULL;
+}
+
+static void test_threads_match_serial(void **state)
+{
+    lx_ctx *ctx = *state;
+    lx_assert_ok(ctx, lx_spd_read_file(ctx, "samples/spd/led_batch.csv", &g_set));
+    lx_assert_ok(ctx, lx_luminaire_read_file(ctx, "samples/ies/spot_warn_30deg_800lm.ies", &g_lum));
+    static result par[NT], ser;
+    pthread_t tid[NT];
+    /* the threads start first, so the lazily built tables (illuminant names, locus) race */
+    for (int t = 0; t < NT; t++) assert_int_equal(pthread_create(&tid[t], NULL, thread_main, &par[t]), 0);
+    for (int t = 0; t < NT; t++) pthread_join(tid[t], NULL);
+    work(&ser);
+    assert_true(ser.ok);
+    for (int t = 0; t < NT; t++) {
+        assert_true(par[t].ok);
+        assert_ptr_equal(par[t].names, ser.names);
+        assert_memory_equal(par[t].xyz, ser.xyz, sizeof ser.xyz); /* bit-identical */
+        assert_memory_equal(par[t].cct, ser.cct, sizeof ser.cct);
+        assert_memory_equal(par[t].inten, ser.inten, sizeof ser.inten);
+        assert_memory_equal(par[t].planck, ser.planck, sizeof ser.planck);
+        assert_memory_equal(&par[t].lumens, &ser.lumens, sizeof ser.lumens);
+    }
+    lx_spd_set_free(g_set);
+    lx_luminaire_free(g_lum);
+}
+
+/* The CPU path is deterministic: the same input twice gives the same bits (also across the
+ * batch path's threads, whose split does not change any sum). */
+static void test_repeatable(void **state)
+{
+    lx_ctx *ctx = *state;
+    double v[401 * 64];
+    for (int i = 0; i < 64; i++)
+        for (int j = 0; j < 401; j++) v[i * 401 + j] = lx_planck(380 + j, 1500 + 300 * i);
+    lx_batch b = {64, 401, 0, 380, 1, LX_F64, v};
+    lx_colorimetry r1[64], r2[64];
+    lx_batch_opts o1 = {LX_BACKEND_CPU, 1, 0, LX_BACKEND_AUTO}, o2 = {LX_BACKEND_CPU, 2, 0, LX_BACKEND_AUTO};
+    lx_assert_ok(ctx, lx_batch_colorimetry(ctx, &b, LX_OBSERVER_2, &o1, r1));
+    lx_assert_ok(ctx, lx_batch_colorimetry(ctx, &b, LX_OBSERVER_2, &o2, r2));
+    assert_memory_equal(r1, r2, sizeof r1);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_threads_match_serial),
+        cmocka_unit_test(test_repeatable),
+    };
+    return cmocka_run_group_tests_name("threads", tests, lx_test_ctx_setup, lx_test_ctx_teardown);
+}
