@@ -21,7 +21,7 @@ endif
 
 LIB_SRC := $(wildcard src/*.c)
 CLI_SRC := $(wildcard src/cli/*.c)
-TEST_SRC := $(wildcard tests/test_*.c)
+TEST_SRC := $(wildcard tests/test_*.c tests/hard_cases/test_*.c)
 DATA := $(sort $(wildcard src/data/*.csv))
 KERNELS := $(sort $(wildcard kernels/*.cl))
 
@@ -35,7 +35,7 @@ SONAME := libluxcalc.so.0
 SHARED := $(BUILD)/$(SONAME)
 CLI := $(BUILD)/luxcalc
 
-.PHONY: all test demo bench asan install uninstall clean deps fuzz
+.PHONY: all test demo bench asan tsan install uninstall clean deps fuzz
 
 all: $(STATIC) $(SHARED) $(CLI) $(BUILD)/libs.txt
 
@@ -157,10 +157,17 @@ uninstall:
 	  $(DESTDIR)$(LIBDIR)/pkgconfig/luxcalc.pc $(DESTDIR)$(INCLUDEDIR)/luxcalc.h $(DESTDIR)$(BINDIR)/luxcalc \
 	  $(DESTDIR)$(MANDIR)/man1/luxcalc.1 $(DESTDIR)$(MANDIR)/man3/luxcalc.3 $(DESTDIR)$(COMPLETIONDIR)/luxcalc
 
+# the tests that run threads, under ThreadSanitizer (without OpenCL: PoCL's own threads are not ours)
+TSAN_TESTS := test_threads test_batch
+tsan: deps
+	@$(MAKE) --no-print-directory BUILD=build-tsan LX_OPENCL=0 CFLAGS="-O1 -g -fsanitize=thread" \
+	  LDFLAGS="-fsanitize=thread" $(TSAN_TESTS:%=build-tsan/tests/%)
+	@for t in $(TSAN_TESTS); do TSAN_OPTIONS=halt_on_error=1 build-tsan/tests/$$t || exit 1; done
+
 # fuzz every parser for FUZZ_SECONDS each (libFuzzer, clang); see src/tools/fuzz.sh
 FUZZ_SECONDS ?= 60
 fuzz: deps
 	@sh src/tools/fuzz.sh $(FUZZ_SECONDS) $(FUZZ_TARGETS)
 
 clean:
-	rm -rf build build-asan build-fuzz
+	rm -rf build build-asan build-tsan build-fuzz

@@ -5,6 +5,7 @@
 
 #include <math.h>
 #include <pthread.h>
+#include <stdatomic.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -65,12 +66,20 @@ lx_status lx__batch_weights(lx_ctx *ctx, const lx_function *fns, size_t k, doubl
 typedef struct cpu_job {
     const lx_batch *b;
     size_t stride, k, k4, nb; /* k4: k rounded up to 4; nb: blocks of 4 wavelengths */
+    size_t nb8;               /* blocks of 8 wavelengths (AVX-512 layout) */
     const double *w;          /* row-major k x n_lambda */
     const double *w4;         /* AVX2 layout: [group][block][4 functions][4 lanes], zero padded */
+    const double *w8;         /* AVX-512 layout: [group][block][4 functions][8 lanes], 64-byte aligned */
     double *out;
-    size_t i0, i1;
-    int vector;
+    size_t i0, i1;            /* scalar_rows / avx2_rows: this range */
+    _Atomic size_t *next;     /* the shared work counter: threads take LX_CPU_GRAIN spectra at a time */
+    size_t n_total;
+    int vector;               /* 0 scalar, 1 AVX2, 2 AVX-512 */
 } cpu_job;
+
+/* Spectra a thread takes at a time: small enough that a thread descheduled by another process
+ * (the cores are shared) leaves little work behind, large enough that the counter costs nothing. */
+#define LX_CPU_GRAIN 256
 
 static void scalar_rows(const cpu_job *J)
 {
@@ -161,27 +170,110 @@ __attribute__((target("avx2,fma"))) static void avx2_rows(const cpu_job *J)
     }
 }
 
-static int cpu_has_avx2(void)
+/* AVX-512 (8 doubles a vector): NS spectra per pass share every weight load (four functions x
+ * eight wavelengths a block), each spectrum's eight samples loaded (and converted) once for four
+ * FMAs. Accumulation stays in double, one accumulator per spectrum and function: the same terms as
+ * the scalar path summed in another order (the same error bound). The last block is masked. */
+#define LX_AVX512_ROWS(NAME, NS, T, LOADX, LOADXM)                                                       \
+    __attribute__((target("avx512f,avx512vl,avx512dq,fma"))) static void NAME(const cpu_job *J, size_t i) \
+    {                                                                                                    \
+        size_t n = J->b->n_lambda, nb8 = J->nb8, full = n / 8;                                           \
+        __mmask8 m = (__mmask8)((1u << (n % 8)) - 1u);                                                   \
+        const T *r[NS];                                                                                  \
+        _Pragma("GCC unroll 4") for (int s = 0; s < NS; s++) r[s] = (const T *)J->b->values + (i + (size_t)s) * J->stride;       \
+        for (size_t g = 0; g < J->k4 / 4; g++) {                                                         \
+            const double *wg = J->w8 + g * nb8 * 32;                                                     \
+            __m512d acc[NS][4];                                                                          \
+            _Pragma("GCC unroll 4") for (int s = 0; s < NS; s++)                                                                 \
+                _Pragma("GCC unroll 4") for (int f = 0; f < 4; f++) acc[s][f] = _mm512_setzero_pd();                             \
+            size_t q = 0;                                                                                \
+            for (; q < full; q++) {                                                                      \
+                const double *wq = wg + q * 32;                                                          \
+                __m512d w0 = _mm512_load_pd(wq), w1 = _mm512_load_pd(wq + 8);                            \
+                __m512d w2 = _mm512_load_pd(wq + 16), w3 = _mm512_load_pd(wq + 24);                      \
+                _Pragma("GCC unroll 4") for (int s = 0; s < NS; s++) {                                                           \
+                    __m512d x = LOADX(r[s] + 8 * q);                                                     \
+                    acc[s][0] = _mm512_fmadd_pd(x, w0, acc[s][0]);                                       \
+                    acc[s][1] = _mm512_fmadd_pd(x, w1, acc[s][1]);                                       \
+                    acc[s][2] = _mm512_fmadd_pd(x, w2, acc[s][2]);                                       \
+                    acc[s][3] = _mm512_fmadd_pd(x, w3, acc[s][3]);                                       \
+                }                                                                                        \
+            }                                                                                            \
+            if (m) {                                                                                     \
+                const double *wq = wg + q * 32;                                                          \
+                __m512d w0 = _mm512_load_pd(wq), w1 = _mm512_load_pd(wq + 8);                            \
+                __m512d w2 = _mm512_load_pd(wq + 16), w3 = _mm512_load_pd(wq + 24);                      \
+                _Pragma("GCC unroll 4") for (int s = 0; s < NS; s++) {                                                           \
+                    __m512d x = LOADXM(m, r[s] + 8 * q);                                                 \
+                    acc[s][0] = _mm512_fmadd_pd(x, w0, acc[s][0]);                                       \
+                    acc[s][1] = _mm512_fmadd_pd(x, w1, acc[s][1]);                                       \
+                    acc[s][2] = _mm512_fmadd_pd(x, w2, acc[s][2]);                                       \
+                    acc[s][3] = _mm512_fmadd_pd(x, w3, acc[s][3]);                                       \
+                }                                                                                        \
+            }                                                                                            \
+            _Pragma("GCC unroll 4") for (int s = 0; s < NS; s++)                                                                 \
+                for (size_t f = 0; f < 4 && 4 * g + f < J->k; f++)                                       \
+                    J->out[(i + (size_t)s) * J->k + 4 * g + f] = _mm512_reduce_add_pd(acc[s][f]);        \
+        }                                                                                                \
+    }
+#define LX_LD_F32(p) _mm512_cvtps_pd(_mm256_loadu_ps(p))
+#define LX_LDM_F32(m, p) _mm512_cvtps_pd(_mm256_maskz_loadu_ps(m, p))
+#define LX_LD_F64(p) _mm512_loadu_pd(p)
+#define LX_LDM_F64(m, p) _mm512_maskz_loadu_pd(m, p)
+LX_AVX512_ROWS(avx512_f32_x4, 4, float, LX_LD_F32, LX_LDM_F32)
+LX_AVX512_ROWS(avx512_f32_x1, 1, float, LX_LD_F32, LX_LDM_F32)
+LX_AVX512_ROWS(avx512_f64_x4, 4, double, LX_LD_F64, LX_LDM_F64)
+LX_AVX512_ROWS(avx512_f64_x1, 1, double, LX_LD_F64, LX_LDM_F64)
+#undef LX_AVX512_ROWS
+
+static void avx512_rows(const cpu_job *J, size_t i0, size_t i1)
+{
+    int f32 = J->b->dtype == LX_F32;
+    size_t i = i0;
+    for (; i + 4 <= i1; i += 4) f32 ? avx512_f32_x4(J, i) : avx512_f64_x4(J, i);
+    for (; i < i1; i++) f32 ? avx512_f32_x1(J, i) : avx512_f64_x1(J, i);
+}
+
+/* 2: AVX-512 (F, VL, DQ) with FMA; 1: AVX2 with FMA; 0: neither. LX_NOVECTOR=1 forces the scalar
+ * path, LX_NOVECTOR=avx512 the AVX2 one (for tests and measurements). */
+static int cpu_vector_level(void)
 {
     static int cached = -1; /* the answer never changes; a race writes the same value */
     if (cached < 0) {
         __builtin_cpu_init();
-        cached = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+        int avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+        int avx512 = avx2 && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+                     __builtin_cpu_supports("avx512dq");
+        cached = avx512 ? 2 : avx2 ? 1 : 0;
     }
+    const char *nv = getenv("LX_NOVECTOR");
+    if (nv && !strcmp(nv, "avx512")) return cached > 1 ? 1 : cached;
+    if (nv && *nv && strcmp(nv, "0")) return 0;
     return cached;
 }
 #endif
 
 static void *cpu_thread(void *arg)
 {
-    const cpu_job *J = arg;
+    cpu_job J = *(const cpu_job *)arg;
+    for (;;) {
+        size_t i0 = atomic_fetch_add_explicit(J.next, LX_CPU_GRAIN, memory_order_relaxed);
+        if (i0 >= J.n_total) break;
+        size_t i1 = i0 + LX_CPU_GRAIN < J.n_total ? i0 + LX_CPU_GRAIN : J.n_total;
 #if LX_HAVE_AVX2_PATH
-    if (J->vector) {
-        avx2_rows(J);
-        return NULL;
-    }
+        if (J.vector == 2) {
+            avx512_rows(&J, i0, i1);
+            continue;
+        }
+        if (J.vector == 1) {
+            J.i0 = i0, J.i1 = i1;
+            avx2_rows(&J);
+            continue;
+        }
 #endif
-    scalar_rows(J);
+        J.i0 = i0, J.i1 = i1;
+        scalar_rows(&J);
+    }
     return NULL;
 }
 
@@ -194,58 +286,47 @@ static int online_cores(void)
 static lx_status batch_cpu(lx_ctx *ctx, const lx_batch *b, const lx_function *fns, size_t k, int threads,
                            double *out)
 {
-    size_t n = b->n_lambda, nb = (n + 3) / 4, k4 = (k + 3) / 4 * 4;
+    size_t n = b->n_lambda, nb = (n + 3) / 4, nb8 = (n + 7) / 8, k4 = (k + 3) / 4 * 4;
     double *w = malloc(k * n * sizeof *w);
     double *w4 = calloc(k4 / 4 * nb * 16, sizeof *w4);
-    if (!w || !w4) {
-        free(w);
-        free(w4);
-        return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for the batch weights");
-    }
-    lx_status st = lx__batch_weights(ctx, fns, k, b->start_nm, b->step_nm, n, w);
+    double *w8 = aligned_alloc(64, (k4 / 4 * nb8 * 32 * sizeof *w8 + 63) / 64 * 64);
+    lx_status st = !w || !w4 || !w8 ? lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for the batch weights")
+                                    : lx__batch_weights(ctx, fns, k, b->start_nm, b->step_nm, n, w);
     if (st) {
         free(w);
         free(w4);
+        free(w8);
         return st;
     }
+    memset(w8, 0, k4 / 4 * nb8 * 32 * sizeof *w8);
     for (size_t f = 0; f < k; f++)
-        for (size_t j = 0; j < n; j++) w4[((f / 4) * nb + j / 4) * 16 + (f % 4) * 4 + j % 4] = w[f * n + j];
+        for (size_t j = 0; j < n; j++) {
+            w4[((f / 4) * nb + j / 4) * 16 + (f % 4) * 4 + j % 4] = w[f * n + j];
+            w8[((f / 4) * nb8 + j / 8) * 32 + (f % 4) * 8 + j % 8] = w[f * n + j];
+        }
     int vector = 0;
 #if LX_HAVE_AVX2_PATH
-    const char *nv = getenv("LX_NOVECTOR");
-    vector = cpu_has_avx2() && !(nv && *nv && strcmp(nv, "0"));
+    vector = cpu_vector_level();
 #endif
     int T = threads > 0 ? threads : online_cores();
     size_t per_thread_min = 512; /* below this a thread costs more than it saves */
     if ((size_t)T > b->n_spectra / per_thread_min) T = (int)(b->n_spectra / per_thread_min);
     if (T < 1) T = 1;
     if (T > 64) T = 64;
-    cpu_job jobs[64];
     pthread_t tid[64];
     int started[64] = {0};
-    size_t stride = b->row_stride ? b->row_stride : n;
-    for (int t = 0; t < T; t++) {
-        cpu_job *J = &jobs[t];
-        J->b = b;
-        J->stride = stride;
-        J->k = k;
-        J->k4 = k4;
-        J->nb = nb;
-        J->w = w;
-        J->w4 = w4;
-        J->out = out;
-        J->i0 = b->n_spectra * (size_t)t / (size_t)T;
-        J->i1 = b->n_spectra * (size_t)(t + 1) / (size_t)T;
-        J->vector = vector;
-    }
-    for (int t = 1; t < T; t++) started[t] = pthread_create(&tid[t], NULL, cpu_thread, &jobs[t]) == 0;
-    cpu_thread(&jobs[0]);
-    for (int t = 1; t < T; t++) {
+    _Atomic size_t next = 0;
+    cpu_job J = {.b = b, .stride = b->row_stride ? b->row_stride : n, .k = k, .k4 = k4, .nb = nb, .nb8 = nb8,
+                 .w = w, .w4 = w4, .w8 = w8, .out = out, .next = &next, .n_total = b->n_spectra, .vector = vector};
+    /* every thread takes spectra from one counter until none are left: a thread that another
+     * process keeps off its core holds up at most LX_CPU_GRAIN spectra */
+    for (int t = 1; t < T; t++) started[t] = pthread_create(&tid[t], NULL, cpu_thread, &J) == 0;
+    cpu_thread(&J);
+    for (int t = 1; t < T; t++)
         if (started[t]) pthread_join(tid[t], NULL);
-        else cpu_thread(&jobs[t]); /* could not start a thread: do its share here */
-    }
     free(w);
     free(w4);
+    free(w8);
     return LX_OK;
 }
 

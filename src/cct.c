@@ -5,9 +5,11 @@
 #include <math.h>
 #include <stdlib.h>
 
-#define LOCUS_T_MIN 500.0
+#define LOCUS_T_MIN 500.0  /* the range searched (CCT outside it: LX_ERANGE) */
 #define LOCUS_T_MAX 1.0e6
-#define LOCUS_NODES 160
+#define TABLE_T_MIN 400.0  /* the table reaches beyond it, so a CCT near either end is bracketed */
+#define TABLE_T_MAX 1.25e6
+#define LOCUS_NODES 168
 #define C2_NM_K 1.4388e7 /* c2 = 1.4388e-2 m K in nm K */
 
 typedef struct cmf3 {
@@ -65,8 +67,8 @@ static lx_status locus(lx_ctx *ctx, lx_observer obs, lx__locus **out, cmf3 *c)
     lx__locus *L = &ctx->locus[obs == LX_OBSERVER_2 ? 0 : 1];
     if (!L->ready) {
         L->n = LOCUS_NODES;
-        L->logt0 = log(LOCUS_T_MIN);
-        L->dlogt = (log(LOCUS_T_MAX) - L->logt0) / (L->n - 1);
+        L->logt0 = log(TABLE_T_MIN);
+        L->dlogt = (log(TABLE_T_MAX) - L->logt0) / (L->n - 1);
         /* one block: u, v and their derivatives in s = ln T, for the Hermite first guess */
         L->u = malloc(sizeof(double) * 4 * (size_t)L->n);
         if (!L->u) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for the locus table");
@@ -207,6 +209,9 @@ lx_status lx_cct_from_uv(lx_ctx *ctx, lx_observer obs, double u, double v, doubl
         if (fabs(b - a) < 1e-14) break;
     }
     double T = exp(s), pu, pv, du, dv;
+    if (!(T >= LOCUS_T_MIN * (1 - 1e-12) && T <= LOCUS_T_MAX * (1 + 1e-12)))
+        return lx__error(ctx, LX_ERANGE, NULL, 0, "the nearest Planckian point (%.6g K) is outside %g-%g K", T,
+                         LOCUS_T_MIN, LOCUS_T_MAX);
     planck_uv(&c, T, &pu, &pv, &du, &dv);
     double dist = hypot(u - pu, v - pv);
     /* sign: + above the locus (towards green, larger v); the tangent points to lower u as T grows */

@@ -13,6 +13,12 @@ static lx_status check_map(lx_ctx *ctx, const lx_envmap *map)
 {
     if (!map || !map->data || map->width < 1 || map->height < 1 || (map->channels != 1 && map->channels != 3))
         return lx__error(ctx, LX_EINVAL, NULL, 0, "invalid radiance map");
+    /* a NaN or Inf pixel would spread into every irradiance it touches (all of them for SH9): refuse it */
+    size_t n = (size_t)map->width * map->height * map->channels;
+    for (size_t k = 0; k < n; k++)
+        if (!isfinite(map->data[k]))
+            return lx__error(ctx, LX_EINVAL, NULL, 0, "radiance map pixel (column %zu, row %zu) is not finite",
+                             k / map->channels % map->width, k / map->channels / map->width);
     return LX_OK;
 }
 

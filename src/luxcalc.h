@@ -464,7 +464,7 @@ LX_API lx_status lx_spd_report_png(lx_ctx *ctx, const lx_spd *spd, lx_observer o
 /** A spectral image integrated per pixel to absolute CIE XYZ. Owns its arrays. */
 typedef struct lx_xyz_image {
     int width, height;     /* the data window */
-    float *xyz;            /* width * height * 3, row-major, X Y Z interleaved: Km * integral of S xbar
+    double *xyz;           /* width * height * 3, row-major, X Y Z interleaved: Km * integral of S xbar
                             * etc. (cd/m2 for radiance channels; Km 683.002, 10 deg: 683.599) */
     size_t n_lambda;       /* S0 channels used */
     double *lambda_nm;     /* their wavelengths, increasing */

@@ -174,6 +174,12 @@ static int text_wrap(lx__canvas *c, int x, int y, int cols, const char *s, const
     return y;
 }
 
+static void upper(char *s)
+{
+    for (; *s; s++)
+        if (*s >= 'a' && *s <= 'z') *s = (char)(*s - 'a' + 'A'); /* the font draws a lower-case e */
+}
+
 /* ---- the panels ---- */
 
 typedef struct metrics {
@@ -215,8 +221,12 @@ static void panel_spd(lx_ctx *ctx, lx__canvas *c, const lx_spd *spd, int X0, int
     /* the area under the curve, each column in the colour of its wavelength */
     double prev_y = NAN, prev_x = NAN;
     for (int i = 0; i < W; i++) {
-        double l = a + (i + 0.5) / W * (b - a);
-        double v = lx__interp(spd->lambda_nm, spd->value, spd->n, l) / vmax;
+        /* the largest value over the column's wavelengths, so narrow lines keep their peak */
+        double l = a + (i + 0.5) / W * (b - a), la = a + (double)i / W * (b - a), lb = a + (i + 1.0) / W * (b - a);
+        double v = fmax(lx__interp(spd->lambda_nm, spd->value, spd->n, la), lx__interp(spd->lambda_nm, spd->value, spd->n, lb));
+        for (size_t q = 0; q < spd->n; q++)
+            if (spd->lambda_nm[q] >= la && spd->lambda_nm[q] < lb) v = fmax(v, spd->value[q]);
+        v /= vmax;
         if (v < 0) v = 0;
         int hgt = (int)lround(v * (H - 1));
         unsigned char rgb[3];
@@ -273,7 +283,7 @@ static void panel_cie(lx_ctx *ctx, lx__canvas *c, lx_observer obs, const metrics
     lx__canvas_fill(c, X0, Y0 + H, W, 1, INK);
     lx__canvas_fill(c, X0 - 1, Y0, 1, H + 1, INK);
     text(c, X0 + W - 8, Y0 + H + 20, 1, "X");
-    text(c, X0 - 34, Y0 + 2, 1, "Y");
+    text(c, X0 + 6, Y0 + 2, 1, "Y");
     for (int k = 0; k < NL; k++) {
         int q = (k + 1) % NL;
         line(c, PX(lx[k]), PY(ly[k]), PX(lx[q]), PY(ly[q]), 1.5, INK);
@@ -299,13 +309,17 @@ static void panel_cie(lx_ctx *ctx, lx__canvas *c, lx_observer obs, const metrics
         px = x, py = y;
     }
     static const double temps[] = {1500, 2000, 2700, 3000, 4000, 5000, 6500, 10000};
-    static const char *const tlabel[] = {"1500K", "2000K", NULL, "3000K", "4000K", NULL, "6500K", "10000K"};
+    /* labelled ones, staggered along their lines so neighbours do not collide */
+    static const char *const tlabel[] = {NULL, "2000K", NULL, NULL, "4000K", NULL, "6500K", NULL};
+    static const double tdist[] = {0, -0.032, 0, 0, -0.032, 0, -0.052, 0};
     for (size_t k = 0; k < sizeof temps / sizeof *temps; k++) {
         double xa, ya, xb, yb;
         if (lx__isotemp_xy(ctx, obs, temps[k], 0.02, &xa, &ya) || lx__isotemp_xy(ctx, obs, temps[k], -0.02, &xb, &yb))
             return;
         line(c, PX(xa), PY(ya), PX(xb), PY(yb), 1.2, INK);
-        if (tlabel[k]) lx__canvas_text(c, (int)lround(PX(xb)) - 4, (int)lround(PY(yb)) + 4, 1, tlabel[k], INK);
+        /* the label beyond the tick's lower end, on the isotemperature line */
+        if (tlabel[k] && !lx__isotemp_xy(ctx, obs, temps[k], tdist[k], &xb, &yb))
+            text_centred(c, (int)lround(PX(xb)), (int)lround(PY(yb)) - 3, 1, tlabel[k], INK);
     }
     /* the point */
     double x = m->col.x, y = m->col.y;
@@ -398,13 +412,13 @@ static void panel_cvg(lx__canvas *c, const metrics *m, int cx, int cy, int R)
 {
     char buf[128];
     if (!m->tm30_ok) {
-        text(c, cx - R - 40, cy - R - 38, 1, "TM-30 COLOUR VECTOR GRAPHIC: NOT DEFINED");
-        text_wrap(c, cx - R - 40, cy - R - 14, 62, m->tm30_why, INK);
+        text(c, cx - 140, cy - R - 50, 1, "TM-30 COLOUR VECTOR GRAPHIC: NOT DEFINED FOR THIS SPECTRUM");
+        text_wrap(c, cx - 140, cy - R - 26, 50, m->tm30_why, INK);
         return;
     }
     snprintf(buf, sizeof buf, "TM-30 COLOUR VECTOR GRAPHIC: RF %.0f  RG %.0f", m->tm.rf, m->tm.rg);
-    text(c, cx - R - 40, cy - R - 38, 1, buf);
-    double lim = 1.5 * R;
+    text(c, cx - 140, cy - R - 50, 1, buf);
+    double lim = 1.4 * R;
     for (int j = (int)-lim; j <= (int)lim; j++)
         for (int i = (int)-lim; i <= (int)lim; i++) {
             double r = hypot(i, j);
@@ -441,7 +455,8 @@ static void panel_cvg(lx__canvas *c, const metrics *m, int cx, int cy, int R)
         line(c, cx + R * cos(h), cy - R * sin(h), cx + R * pt[b][0], cy - R * pt[b][1], 1.2, INK);
         disc(c, cx + R * pt[b][0], cy - R * pt[b][1], 2.5, RED);
     }
-    text(c, cx - R - 40, cy + (int)lim + 8, 1, "BLACK: REFERENCE   RED: TEST");
+    text(c, cx + (int)lim + 30, cy + 40, 1, "BLACK: REFERENCE");
+    lx__canvas_text(c, cx + (int)lim + 30, cy + 54, 1, "RED: TEST", RED);
 }
 
 static void panel_numbers(lx__canvas *c, const metrics *m, lx_observer obs, int X0, int Y0)
@@ -485,11 +500,11 @@ lx_status lx_spd_report_png(lx_ctx *ctx, const lx_spd *spd, lx_observer observer
     /* undefined metrics are shown with their reason; only memory failures abort */
     st = lx_cri_compute(ctx, spd, &m->cri);
     m->cri_ok = st == LX_OK;
-    if (!m->cri_ok) snprintf(m->cri_why, sizeof m->cri_why, "%s", lx_ctx_errmsg(ctx));
+    if (!m->cri_ok) snprintf(m->cri_why, sizeof m->cri_why, "%s", lx_ctx_errmsg(ctx)), upper(m->cri_why);
     if (st == LX_ENOMEM) goto out;
     st = lx_tm30_compute(ctx, spd, &m->tm);
     m->tm30_ok = st == LX_OK;
-    if (!m->tm30_ok) snprintf(m->tm30_why, sizeof m->tm30_why, "%s", lx_ctx_errmsg(ctx));
+    if (!m->tm30_ok) snprintf(m->tm30_why, sizeof m->tm30_why, "%s", lx_ctx_errmsg(ctx)), upper(m->tm30_why);
     if (st == LX_ENOMEM) goto out;
     m->ao_ok = lx_alphaopic_compute(ctx, spd, LX_METHOD_AUTO, &m->ao) == LX_OK;
 
@@ -498,13 +513,14 @@ lx_status lx_spd_report_png(lx_ctx *ctx, const lx_spd *spd, lx_observer observer
     char head[160];
     const char *t = title ? title : spd->name ? spd->name : "";
     snprintf(head, sizeof head, "LUXCALC SPECTRUM REPORT  %.60s", t);
+    upper(head);
     text(&c, 20, 14, 2, head);
     lx__canvas_fill(&c, 20, 36, 1060, 1, GREY);
     panel_spd(ctx, &c, spd, 70, 78, 520, 230);
     panel_cri(ctx, &c, m, 70, 382, 520, 150);
     panel_numbers(&c, m, observer, 20, 590);
     panel_cie(ctx, &c, observer, m, 680, 78);
-    panel_cvg(&c, m, 820, 648, 90);
+    panel_cvg(&c, m, 810, 660, 92);
     /* the swatch: the colour of the light, normalised (its luminance is not shown) */
     double xyz[3] = {m->col.X, m->col.Y, m->col.Z};
     unsigned char sw[3];

@@ -322,7 +322,7 @@ lx_status lx_spectral_exr_read_xyz(lx_ctx *ctx, const char *path, lx_observer ob
     size_t npix = (size_t)W * H;
     double *res = malloc(sizeof(double) * 3 * (npix < CHUNK_PIX ? npix : CHUNK_PIX));
     if (img) {
-        img->xyz = malloc(sizeof(float) * 3 * npix);
+        img->xyz = malloc(sizeof(double) * 3 * npix);
         img->lambda_nm = malloc(sizeof(double) * (size_t)nl);
     }
     if (!img || !res || !img->xyz || !img->lambda_nm) {
@@ -377,7 +377,7 @@ lx_status lx_spectral_exr_read_xyz(lx_ctx *ctx, const char *path, lx_observer ob
             if ((st = lx_batch_resample(ctx, m, rl, rv, roff, rn, &b, opts))) break;
         }
         if ((st = lx_batch_integrate(ctx, &b, fns, 3, opts, res))) break;
-        for (size_t i = 0; i < 3 * m; i++) img->xyz[3 * p0 + i] = (float)(km * res[i]);
+        for (size_t i = 0; i < 3 * m; i++) img->xyz[3 * p0 + i] = km * res[i];
     }
 done_r:
     free(rl), free(rv), free(rg), free(roff), free(rn);
@@ -412,6 +412,15 @@ lx_status lx_xyz_exr_write(lx_ctx *ctx, const char *path, const lx_xyz_image *im
     exr_encode_pipeline_t enc = EXR_ENCODE_PIPELINE_INITIALIZER;
     int inited = 0, part = 0, W = img->width, H = img->height;
     lx_status st = LX_OK;
+    size_t npix = (size_t)W * H;
+    float *f = malloc(sizeof(float) * 3 * (npix ? npix : 1));
+    if (!f) {
+        close(s.fd);
+        unlink(tmp);
+        free(tmp);
+        return lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
+    }
+    for (size_t i = 0; i < 3 * npix; i++) f[i] = (float)img->xyz[i];
     exr_result_t rv = exr_start_write(&e, path, EXR_WRITE_FILE_DIRECTLY, &init);
     if (!rv) rv = exr_add_part(e, "", EXR_STORAGE_SCANLINE, &part);
     if (!rv) rv = exr_initialize_required_attr_simple(e, part, W, H, EXR_COMPRESSION_ZIP);
@@ -434,7 +443,7 @@ lx_status lx_xyz_exr_write(lx_ctx *ctx, const char *path, const lx_xyz_image *im
         for (int q = 0; q < enc.channel_count; q++) {
             exr_coding_channel_info_t *c = &enc.channels[q];
             int slot = c->channel_name[0] == 'X' ? 0 : c->channel_name[0] == 'Y' ? 1 : 2;
-            c->encode_from_ptr = (const uint8_t *)(img->xyz + (size_t)y0 * W * 3 + slot);
+            c->encode_from_ptr = (const uint8_t *)(f + (size_t)y0 * W * 3 + slot);
             c->user_pixel_stride = (int32_t)(3 * sizeof(float));
             c->user_line_stride = (int32_t)((size_t)W * 3 * sizeof(float));
             c->user_data_type = EXR_PIXEL_FLOAT;
@@ -456,6 +465,7 @@ done:
     if (!st && rename(tmp, path) != 0) st = lx__error(ctx, LX_EIO, path, 0, "cannot rename into place: %s", strerror(errno));
     if (st) unlink(tmp);
     free(tmp);
+    free(f);
     return st;
 }
 
@@ -469,7 +479,7 @@ lx_status lx_xyz_png_write(lx_ctx *ctx, const char *path, const lx_xyz_image *im
     if (!rgb) return lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
     for (size_t p = 0; p < npix; p++)
         for (int i = 0; i < 3; i++) {
-            const float *q = img->xyz + 3 * p;
+            const double *q = img->xyz + 3 * p;
             rgb[3 * p + i] = (float)(M[i][0] * q[0] + M[i][1] * q[1] + M[i][2] * q[2]);
         }
     int w = img->width, h = img->height;

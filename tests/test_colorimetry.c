@@ -129,6 +129,28 @@ static void test_cct_round_trip(void **state)
     lx_assert_near(c.cct_K, 100000, 0.1, 0);
 }
 
+/* The ends of the searched range, 500 K and 1e6 K, solve exactly (the locus table reaches beyond
+ * them); just outside is LX_ERANGE (lx_cct_from_uv's documented range). */
+static void test_cct_range_ends(void **state)
+{
+    lx_ctx *ctx = *state;
+    static const double ok_T[] = {500, 501, 990000, 999999, 1e6};
+    for (size_t i = 0; i < sizeof ok_T / sizeof *ok_T; i++) {
+        double u, v, T, duv;
+        lx_assert_ok(ctx, lx_planck_uv(ctx, LX_OBSERVER_2, ok_T[i], &u, &v));
+        lx_assert_ok(ctx, lx_cct_from_uv(ctx, LX_OBSERVER_2, u, v, &T, &duv));
+        lx_assert_near(T, ok_T[i], 0, 1e-9);
+        lx_assert_near(duv, 0, 1e-12, 0);
+    }
+    static const double bad_T[] = {499, 1.01e6};
+    for (size_t i = 0; i < 2; i++) {
+        double u, v, T, duv;
+        lx_assert_ok(ctx, lx_planck_uv(ctx, LX_OBSERVER_2, bad_T[i], &u, &v));
+        assert_int_equal(lx_cct_from_uv(ctx, LX_OBSERVER_2, u, v, &T, &duv), LX_ERANGE);
+        assert_true(isnan(T) && isnan(duv));
+    }
+}
+
 static void test_cct_of_illuminants(void **state)
 {
     lx_ctx *ctx = *state;
@@ -339,6 +361,7 @@ int main(void)
         cmocka_unit_test(test_daylight),             cmocka_unit_test(test_observer_10),
         cmocka_unit_test(test_scotopic_and_ler),     cmocka_unit_test(test_bad_views),
         cmocka_unit_test(test_ler_flat),
+        cmocka_unit_test(test_cct_range_ends),
     };
     return cmocka_run_group_tests_name("colorimetry", tests, lx_test_ctx_setup, lx_test_ctx_teardown);
 }

@@ -2,11 +2,13 @@
  * lx_batch_colorimetry (vectorised, threaded, OpenCL when asked or large), and raw float32 input
  * (--input-format f32 --grid START:END:STEP) for pipelines whose data is already numeric. */
 #include "spd_batch.h"
+#include "progress.h"
 
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #define CHUNK 65536 /* spectra per batch call: bounds memory, lets output stream */
 
@@ -62,6 +64,7 @@ lx_status cli_spd_batch_set(cli_spd_batch *B, const lx_spd_set *set)
     size_t n = s0->n;
     double step = (s0->lambda_nm[n - 1] - s0->lambda_nm[0]) / (double)(n - 1);
     lx_status st = LX_OK;
+    cli_progress_start(set->count, set->file);
     for (size_t i0 = 0; i0 < set->count && st == LX_OK; i0 += CHUNK) {
         size_t m = set->count - i0 < CHUNK ? set->count - i0 : CHUNK;
         double *v = malloc(sizeof(double) * m * n);
@@ -69,6 +72,7 @@ lx_status cli_spd_batch_set(cli_spd_batch *B, const lx_spd_set *set)
         if (!v || !names) {
             free(v);
             free(names);
+            cli_progress_end();
             return LX_ENOMEM;
         }
         for (size_t i = 0; i < m; i++) {
@@ -79,7 +83,9 @@ lx_status cli_spd_batch_set(cli_spd_batch *B, const lx_spd_set *set)
         st = run_chunk(B, &b, set->file, names, i0);
         free(v);
         free(names);
+        cli_progress_update(i0 + m);
     }
+    cli_progress_end();
     return st;
 }
 
@@ -118,6 +124,8 @@ lx_status cli_spd_f32_file(cli_spd_batch *B, const char *path, double start, dou
         return LX_ENOMEM;
     }
     lx_status st = LX_OK;
+    struct stat sb; /* a bar only where the size is known (a regular file) */
+    if (f != stdin && fstat(fileno(f), &sb) == 0 && S_ISREG(sb.st_mode)) cli_progress_start((size_t)sb.st_size / per, path);
     for (;;) {
         size_t got = fread(buf, 1, per * CHUNK, f);
         if (got % per) {
@@ -146,9 +154,11 @@ lx_status cli_spd_f32_file(cli_spd_batch *B, const char *path, double start, dou
                 break;
             }
             total += got;
+            cli_progress_update(total / per);
         }
         if (got < per * CHUNK) break;
     }
+    cli_progress_end();
     if (ferror(f)) {
         cli_error(B->cmd, "%s: read error", path);
         st = LX_EIO;

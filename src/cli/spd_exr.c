@@ -5,9 +5,12 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 
 int cli_is_exr(const char *path)
 {
+    struct stat sb; /* sniff regular files only: opening a FIFO would block and eat its data */
+    if (stat(path, &sb) != 0 || !S_ISREG(sb.st_mode)) return 0;
     FILE *f = fopen(path, "rb");
     if (!f) return 0;
     unsigned char m[4] = {0, 0, 0, 0};
