@@ -36,6 +36,7 @@ static lx_status run_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n, const dou
     case LX_IRR_FAST: return lx__irr_fast(ctx, map, n, dirs, o->threads, out);
     case LX_IRR_BRUTE: {
         lx_backend b = o->backend == LX_BACKEND_AUTO ? lx_backend_from_env() : o->backend;
+        int automatic = b == LX_BACKEND_AUTO;
         if (b == LX_BACKEND_AUTO) {
             b = LX_BACKEND_CPU;
 #if LX_OPENCL
@@ -49,7 +50,9 @@ static lx_status run_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n, const dou
         if (b == LX_BACKEND_OPENCL) {
             lx_status st = lx__irr_brute_cl(ctx, map, n, dirs, out);
             if (!st) o->used = LX_BACKEND_OPENCL;
-            return st;
+            if (!st || !automatic || st == LX_ENOMEM || st == LX_EINVAL) return st;
+            /* auto: the whole result again on the CPU (never a mix of devices) */
+            lx__log(ctx, LX_LOG_INFO, "irradiance: OpenCL failed (%s); computing on the CPU", lx_ctx_errmsg(ctx));
         }
         return lx__irr_brute_cpu(ctx, map, n, dirs, o->threads, out);
     }

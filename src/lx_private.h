@@ -255,4 +255,27 @@ int lx__spectral_channel(const char *name, int *kind, double *lambda_nm);
  * a FIFO waits at most LX_FIFO_WAIT_S seconds (default 10, 0: for ever) for its first data. */
 lx_status lx__open_read(lx_ctx *ctx, const char *path, FILE **out);
 
+#if LX_OPENCL
+/* OpenCL fault injection for tests (opencl.c): with LX_CL_FAULT=CALL (every call of CALL fails) or
+ * CALL:N (its N-th call in this process fails, counting from 1), the runtime layer makes that call fail
+ * as a real device would: clGetPlatformIDs finds no platform, clBuildProgram fails to build,
+ * clCreateBuffer fails to allocate, clEnqueueNDRangeKernel / clEnqueueReadBuffer / clFinish fail as a
+ * failing kernel does. Every library file goes through these wrappers (the macros below). */
+cl_int lx__clGetPlatformIDs(cl_uint n, cl_platform_id *p, cl_uint *np);
+cl_int lx__clBuildProgram(cl_program p, cl_uint nd, const cl_device_id *d, const char *o,
+                          void (CL_CALLBACK *fn)(cl_program, void *), void *u);
+cl_mem lx__clCreateBuffer(cl_context c, cl_mem_flags f, size_t size, void *host, cl_int *err);
+cl_int lx__clEnqueueNDRangeKernel(cl_command_queue q, cl_kernel k, cl_uint dim, const size_t *off, const size_t *gs,
+                                  const size_t *ls, cl_uint nw, const cl_event *wl, cl_event *ev);
+cl_int lx__clEnqueueReadBuffer(cl_command_queue q, cl_mem b, cl_bool blocking, size_t off, size_t size, void *ptr,
+                               cl_uint nw, const cl_event *wl, cl_event *ev);
+cl_int lx__clFinish(cl_command_queue q);
+#define clGetPlatformIDs(...) lx__clGetPlatformIDs(__VA_ARGS__)
+#define clBuildProgram(...) lx__clBuildProgram(__VA_ARGS__)
+#define clCreateBuffer(...) lx__clCreateBuffer(__VA_ARGS__)
+#define clEnqueueNDRangeKernel(...) lx__clEnqueueNDRangeKernel(__VA_ARGS__)
+#define clEnqueueReadBuffer(...) lx__clEnqueueReadBuffer(__VA_ARGS__)
+#define clFinish(...) lx__clFinish(__VA_ARGS__)
+#endif
+
 #endif /* LX_PRIVATE_H */

@@ -7,6 +7,9 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "fuzz/fuzz_exr.c"
+#include "fuzz/fuzz_ies.c"
+#include "fuzz/fuzz_scene.c"
 #include "fuzz/fuzz_spd.c"
 #include "fuzz/fuzz_units.c"
 
@@ -41,8 +44,33 @@ static void test_spd_inputs(void **state)
     (void)state;
     int n = replay_dir("tests/fuzz/regressions/spd", fuzz_spd_one);
     n += replay_dir("tests/data/spd/good", fuzz_spd_one) + replay_dir("tests/data/spd/bad", fuzz_spd_one);
-    n += replay_dir("samples/spd", fuzz_spd_one);
+    n += replay_dir("samples/spd", fuzz_spd_one) + replay_dir("tests/bad/spd", fuzz_spd_one);
     assert_true(n >= 40); /* the readers' corpora are there */
+}
+
+static void test_ies_inputs(void **state)
+{
+    (void)state;
+    int n = replay_dir("tests/fuzz/regressions/ies", fuzz_ies_one) + replay_dir("samples/ies", fuzz_ies_one);
+    n += replay_dir("tests/data/ies/bad", fuzz_ies_one) + replay_dir("tests/bad/ies", fuzz_ies_one);
+    n += replay_dir("tests/bad/ldt", fuzz_ies_one) + replay_dir("tests/bad/good", fuzz_ies_one);
+    assert_true(n >= 60);
+}
+
+static void test_scene_inputs(void **state)
+{
+    (void)state;
+    int n = replay_dir("tests/fuzz/regressions/scene", fuzz_scene_one) + replay_dir("samples/scenes", fuzz_scene_one);
+    n += replay_dir("tests/data/scenes", fuzz_scene_one) + replay_dir("tests/bad/scene", fuzz_scene_one);
+    assert_true(n >= 15);
+}
+
+static void test_exr_inputs(void **state)
+{
+    (void)state;
+    int n = replay_dir("tests/fuzz/regressions/exr", fuzz_exr_one) + replay_dir("samples/envmaps", fuzz_exr_one);
+    n += replay_dir("tests/bad/exr", fuzz_exr_one);
+    assert_true(n >= 8);
 }
 
 static void test_units_inputs(void **state)
@@ -57,6 +85,9 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_spd_inputs),
         cmocka_unit_test(test_units_inputs),
+        cmocka_unit_test(test_ies_inputs),
+        cmocka_unit_test(test_scene_inputs),
+        cmocka_unit_test(test_exr_inputs),
     };
     return cmocka_run_group_tests_name("fuzz regressions", tests, NULL, NULL);
 }

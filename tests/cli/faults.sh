@@ -60,4 +60,25 @@ expect_rc 0 "a good run with -o exits 0"
 grep -q '^file,spectrum,X' "$OUT" && ok "a good run replaces the output" || notok "a good run replaces the output" "$(head -c 200 "$OUT")"
 l=$(leftovers)
 [ -z "$l" ] && ok "a good run leaves no temporary file" || notok "a good run leaves no temporary file" "$l"
+
+# OpenCL faults through the CLI (LX_CL_FAULT, see tests/test_faults.c for the library): --backend opencl
+# gives exit 3 and names the call; auto (made to pick OpenCL) logs the fall-back with -v and prints the
+# CPU's own numbers
+if [ "$("$LUXCALC" devices 2>/dev/null | grep -c '^device_name')" -gt 0 ]; then
+  run spd "$src" --backend cpu --format csv
+  cpu_out=$out
+  for fault in clGetPlatformIDs clBuildProgram clCreateBuffer clEnqueueNDRangeKernel clFinish; do
+    LX_CL_FAULT=$fault run spd "$src" --backend opencl --format csv
+    expect_rc 3 "$fault: --backend opencl exits 3"
+    case $fault in clGetPlatformIDs) what="no OpenCL platform" ;; *) what=$fault ;; esac
+    expect_err_match "^luxcalc: spd: .*$what" "$fault: --backend opencl names the failure"
+    LX_CL_FAULT=$fault LX_AUTO_BREAK_EVEN=0 run spd "$src" --backend auto --format csv -v
+    expect_rc 0 "$fault: --backend auto still succeeds"
+    expect_err_match "falling back to the CPU path" "$fault: --backend auto logs the fall-back"
+    [ "$out" = "$cpu_out" ] && ok "$fault: --backend auto prints the CPU's numbers" ||
+      notok "$fault: --backend auto prints the CPU's numbers" "differs"
+  done
+else
+  echo "# faults: no OpenCL device: the CLI fault cases are skipped"
+fi
 exit 0
