@@ -164,10 +164,21 @@ tsan: deps
 	  LDFLAGS="-fsanitize=thread" $(TSAN_TESTS:%=build-tsan/tests/%)
 	@for t in $(TSAN_TESTS); do TSAN_OPTIONS=halt_on_error=1 build-tsan/tests/$$t || exit 1; done
 
+# the whole suite under valgrind memcheck (tests/valgrind.supp: the loader's and OpenCL stack's own noise);
+# the native run first fills the PoCL kernel cache, so that valgrind does not run the LLVM compiler
+VG_BUILD := build-valgrind
+valgrind: deps
+	@$(MAKE) --no-print-directory BUILD=$(VG_BUILD) CFLAGS="-O1 -g" all $(TEST_SRC:tests/%.c=$(VG_BUILD)/tests/%)
+	@LX_SHARED_DIR=$${LX_SHARED_DIR:-$(CURDIR)/../shared} POCL_CACHE_DIR=$(CURDIR)/$(VG_BUILD)/pocl-cache \
+	  $(VG_BUILD)/tests/test_opencl >/dev/null 2>&1; \
+	LX_SHARED_DIR=$${LX_SHARED_DIR:-$(CURDIR)/../shared} POCL_CACHE_DIR=$(CURDIR)/$(VG_BUILD)/pocl-cache \
+	  sh src/tools/valgrind.sh $(VG_BUILD) $(TEST_SRC:tests/%.c=$(VG_BUILD)/tests/%)
+
 # fuzz every parser for FUZZ_SECONDS each (libFuzzer, clang); see src/tools/fuzz.sh
 FUZZ_SECONDS ?= 60
+FUZZ_JOBS ?= 1
 fuzz: deps
-	@sh src/tools/fuzz.sh $(FUZZ_SECONDS) $(FUZZ_TARGETS)
+	@FUZZ_JOBS=$(FUZZ_JOBS) sh src/tools/fuzz.sh $(FUZZ_SECONDS) $(FUZZ_TARGETS)
 
 clean:
 	rm -rf build build-asan build-tsan build-fuzz

@@ -49,7 +49,8 @@ echo "== Luminaires: the project's own samples (written by 'luxcalc ies --write'
 echo
 echo "== A grid: the Lambertian downlight at 2.8 m over a 4 m x 4 m work plane at 0.8 m"
 "$LX" grid --ies "$here/ies/downlight_lambert_1000lm.ies" --at 2,2,2.8 --plane z=0.8 --area 0:4,0:4 \
-  --spacing 0.5 --summary
+    --spacing 0.1 --summary --png "$out/grid_downlight.png"
+echo "(plot: $out/grid_downlight.png)"
 
 echo
 echo "== Scenes: only the effects each scene needs (issue 8); the grids' PNGs go to $out/"

@@ -192,6 +192,7 @@ __attribute__((target("avx2,fma"))) static void avx2_rows(const cpu_job *J)
                 __m512d w0 = _mm512_load_pd(wq), w1 = _mm512_load_pd(wq + 8);                            \
                 __m512d w2 = _mm512_load_pd(wq + 16), w3 = _mm512_load_pd(wq + 24);                      \
                 _Pragma("GCC unroll 4") for (int s = 0; s < NS; s++) {                                                           \
+                    _mm_prefetch((const char *)(r[s] + LX_PF_ROWS * J->stride + 8 * q), _MM_HINT_T0);      \
                     __m512d x = LOADX(r[s] + 8 * q);                                                     \
                     acc[s][0] = _mm512_fmadd_pd(x, w0, acc[s][0]);                                       \
                     acc[s][1] = _mm512_fmadd_pd(x, w1, acc[s][1]);                                       \
@@ -216,6 +217,9 @@ __attribute__((target("avx2,fma"))) static void avx2_rows(const cpu_job *J)
                     J->out[(i + (size_t)s) * J->k + 4 * g + f] = _mm512_reduce_add_pd(acc[s][f]);        \
         }                                                                                                \
     }
+#ifndef LX_PF_ROWS
+#define LX_PF_ROWS 8 /* software prefetch distance in rows: DRAM latency is not hidden by the hardware prefetcher alone */
+#endif
 #define LX_LD_F32(p) _mm512_cvtps_pd(_mm256_loadu_ps(p))
 #define LX_LDM_F32(m, p) _mm512_cvtps_pd(_mm256_maskz_loadu_ps(m, p))
 #define LX_LD_F64(p) _mm512_loadu_pd(p)

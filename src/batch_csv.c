@@ -6,9 +6,13 @@
 #include <errno.h>
 #include <math.h>
 #include <pthread.h>
+#include <stdatomic.h>
+#include <stddef.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -17,12 +21,17 @@ typedef struct part {
     size_t rows, lines;  /* data rows and all lines in the part (pass 1) */
     size_t row0;         /* first row index (pass 2) */
     long line0;          /* line number of its first line */
+    const char *lim;     /* end of the readable text (for 8-byte loads) */
+    size_t rows_cap;     /* rows the part's destination and name_at can hold */
+    void *values;        /* the destination of its first row (pass 2) */
+    size_t rows_done;    /* rows parsed (pass 2) */
+    long lines_done;     /* lines consumed before stopping (pass 2; the bad line on error) */
     /* pass 2 */
     const lx_batch_table *t;
     char sep;
     int named;           /* rows start with a name cell */
     char *names;         /* this part's names, NUL-separated */
-    size_t names_len;
+    size_t names_len, names_cap, name_at_cap;
     size_t *name_at;     /* local offsets */
     long err_line;       /* 0: no error */
     char err[256];
@@ -54,11 +63,79 @@ static void *count_part(void *arg)
 static const double pow10_exact[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
                                        1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
 
-static inline const char *parse_num(const char *s, const char *end, double *out)
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+#define LX_SWAR 1
+static const uint64_t pow10_u64[8] = {1, 10, 100, 1000, 10000, 100000, 1000000, 10000000};
+static inline uint64_t load8(const char *p)
+{
+    uint64_t x;
+    memcpy(&x, p, 8);
+    return x;
+}
+
+/* How many of the 8 bytes of x (first character in the low byte) are ASCII digits before the
+ * first one that is not: per byte d = c ^ '0' is a digit exactly when d < 10, tested without
+ * carries between bytes ((d & 0x7f) + 0x76 sets the high bit from d = 10 on). */
+static inline int leading_digits(uint64_t x)
+{
+    uint64_t d = x ^ 0x3030303030303030ull;
+    uint64_t bad = (((d & 0x7f7f7f7f7f7f7f7full) + 0x7676767676767676ull) | d) & 0x8080808080808080ull;
+    return bad ? __builtin_ctzll(bad) >> 3 : 8;
+}
+
+/* The value of the first k (1..8) digit characters of x: shifted so they fill the high bytes,
+ * then the 8-digit multiply-and-fold (zero bytes below count as leading zeros). */
+static inline uint64_t digits_value(uint64_t x, int k)
+{
+    x = (x & 0x0f0f0f0f0f0f0f0full) << (8 * (8 - k));
+    x = (x * 10) + (x >> 8);
+    x = (((x & 0x000000ff000000ffull) * (100 + (1000000ull << 32))) +
+         (((x >> 16) & 0x000000ff000000ffull) * (1 + (10000ull << 32)))) >> 32;
+    return x;
+}
+#else
+#define LX_SWAR 0
+#endif
+
+static inline int continues_number(char c)
+{
+    return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '.' || c == '_';
+}
+
+/* s..end: the rest of the line; lim: the end of the readable buffer (8-byte loads stay before
+ * it). Short decimals ("0.123456", "-12.5", "3") take the SWAR path: integer digits and fraction
+ * digits, up to 8 each and 15 in all, are read 8 bytes at a time. */
+static inline const char *parse_num(const char *s, const char *end, const char *lim, double *out)
 {
     const char *p = s;
     int neg = 0;
     if (p < end && (*p == '-' || *p == '+')) neg = *p++ == '-';
+#if LX_SWAR
+    if (lim - p >= 18) {
+        uint64_t x = load8(p);
+        int ni = leading_digits(x);
+        if (ni >= 1 && ni < 8) {
+            uint64_t m = digits_value(x, ni);
+            int nf = 0;
+            const char *q = p + ni;
+            if (q < end && *q == '.') {
+                uint64_t y = load8(q + 1);
+                nf = leading_digits(y);
+                if (nf == 8) goto slow;
+                if (nf) m = m * pow10_u64[nf] + digits_value(y, nf);
+                q += 1 + nf;
+            }
+            if (q < end && continues_number(*q)) goto slow; /* exponent, more digits, "12abc" */
+            double v = (double)m;
+            if (nf) v /= pow10_exact[nf]; /* ni + nf <= 15 digits: exact operands, one rounding */
+            *out = neg ? -v : v;
+            return q;
+        }
+    }
+slow:;
+#else
+    (void)lim;
+#endif
     unsigned long long m = 0;
     int nd = 0, e = 0;
     const char *d0 = p;
@@ -85,22 +162,157 @@ static inline const char *parse_num(const char *s, const char *end, double *out)
     return p;
 }
 
+#if LX_SWAR && defined(__GNUC__) && defined(__x86_64__)
+#include <immintrin.h>
+#define LX_FAST_LINE 1
+/* One field [fs, fe) of only digits, '.' and '-' (the caller checked the bytes):
+ * "-?D{1,7}(.D{0,7})?" or up to 8 characters with one '.' as the signed integer *m and the
+ * count of fraction digits *nf (value m / 10^nf); 0 when it is anything else ("-0" included,
+ * whose sign m cannot carry: the general parser keeps it). */
+__attribute__((always_inline)) static inline int fast_field(const char *fs, const char *fe, int64_t *m, uint8_t *nf)
+{
+    int neg = *fs == '-';
+    const char *is = fs + neg;
+    ptrdiff_t len = fe - is;
+    uint64_t u;
+    int f = 0;
+    if (len >= 1 && len <= 8) {
+        /* the whole number in one 8-byte word: find the first '.' (zero byte of x ^ '.'), close
+         * the gap it leaves, check the len or len - 1 bytes left are digits, convert them at once */
+        uint64_t keep = len == 8 ? ~0ull : (1ull << (8 * len)) - 1, x = load8(is) & keep;
+        uint64_t d = x ^ 0x2e2e2e2e2e2e2e2eull;
+        uint64_t z = (d - 0x0101010101010101ull) & ~d & 0x8080808080808080ull & keep;
+        int k = (int)len;
+        if (z) {
+            int dp = __builtin_ctzll(z) >> 3;
+            if (dp == 0) return 0; /* ".5": the general parser */
+            uint64_t hi = dp < 7 ? x >> (8 * (dp + 1)) : 0;
+            x = (x & ((1ull << (8 * dp)) - 1)) | (hi << (8 * dp));
+            k = (int)len - 1;
+            f = k - dp;
+        }
+        if (leading_digits(x) < k) return 0;
+        u = digits_value(x, k);
+    } else {
+        int ni = leading_digits(load8(is));
+        if (ni < 1 || ni > 7) return 0;
+        u = digits_value(load8(is), ni);
+        if (is + ni != fe) {
+            const char *f0 = is + ni + 1;
+            if (is[ni] != '.' || fe - f0 > 7) return 0;
+            f = (int)(fe - f0);
+            if (f) {
+                uint64_t y = load8(f0);
+                if (leading_digits(y) < f) return 0;
+                u = u * pow10_u64[f] + digits_value(y, f);
+            }
+        }
+    }
+    if (neg && u == 0) return 0;
+    *m = neg ? -(int64_t)u : (int64_t)u;
+    *nf = (uint8_t)f;
+    return 1;
+}
+
+#define FAST_LINE_MAX 4096 /* values a line may have for the vector line parser */
+
+/* A whole line of n values q..le (le + 64 must be readable) when every value is a short decimal:
+ * separators found 64 bytes at a time (AVX-512BW masks), so each field's bounds come without
+ * scanning the previous one and the fields parse independently into integer and decimal
+ * exponent; then 8 values at a time m / 10^nf, both exact (m < 2^53, nf <= 7), one correctly
+ * rounded division (Clinger's fast path, as parse_num). 0: the caller's general loop redoes
+ * the line (it reports errors). */
+__attribute__((target("avx512f,avx512bw,avx512dq,avx512vl,bmi,bmi2"))) static int fast_line(const char *q, const char *le,
+                                                                                           char sep, size_t n, int f32,
+                                                                                           void *dst)
+{
+    const __m512i vsep = _mm512_set1_epi8(sep), vdot = _mm512_set1_epi8('.'), vmin = _mm512_set1_epi8('-');
+    const __m512i v0 = _mm512_set1_epi8('0'), v10 = _mm512_set1_epi8(10);
+    int64_t mv[FAST_LINE_MAX];
+    uint8_t ev[FAST_LINE_MAX + 8];
+    if (n > FAST_LINE_MAX) return 0;
+    const char *fs = q;
+    size_t j = 0;
+    for (const char *b = q; b < le; b += 64) {
+        size_t len = (size_t)(le - b) < 64 ? (size_t)(le - b) : 64;
+        uint64_t lm = len == 64 ? ~0ull : (1ull << len) - 1;
+        __m512i x = _mm512_loadu_si512((const void *)b);
+        uint64_t sm = _mm512_cmpeq_epi8_mask(x, vsep) & lm;
+        uint64_t ok = sm | _mm512_cmpeq_epi8_mask(x, vdot) | _mm512_cmpeq_epi8_mask(x, vmin) |
+                      _mm512_cmplt_epu8_mask(_mm512_sub_epi8(x, v0), v10);
+        if ((ok & lm) != lm) return 0;
+        while (sm) {
+            const char *fe = b + __builtin_ctzll(sm);
+            if (j + 1 >= n || fe == fs || !fast_field(fs, fe, &mv[j], &ev[j])) return 0;
+            j++;
+            fs = fe + 1;
+            sm &= sm - 1;
+        }
+    }
+    if (j + 1 != n || le == fs || !fast_field(fs, le, &mv[j], &ev[j])) return 0;
+    const __m512d p10 = _mm512_setr_pd(1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7);
+    j = 0;
+    for (; j + 8 <= n; j += 8) {
+        __m512d m = _mm512_cvtepi64_pd(_mm512_loadu_si512((const void *)(mv + j)));
+        __m512i e = _mm512_cvtepu8_epi64(_mm_loadl_epi64((const __m128i *)(const void *)(ev + j)));
+        __m512d v = _mm512_div_pd(m, _mm512_permutexvar_pd(e, p10));
+        if (f32) _mm256_storeu_ps((float *)dst + j, _mm512_cvtpd_ps(v));
+        else _mm512_storeu_pd((double *)dst + j, v);
+    }
+    for (; j < n; j++) {
+        double v = (double)mv[j] / pow10_exact[ev[j]];
+        if (f32) ((float *)dst)[j] = (float)v;
+        else ((double *)dst)[j] = v;
+    }
+    return 1;
+}
+
+static int have_fast_line(void)
+{
+    static int cached = -1; /* the answer never changes; a race writes the same value */
+    if (cached < 0) {
+        __builtin_cpu_init();
+        cached = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
+                 __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl") &&
+                 __builtin_cpu_supports("bmi") && __builtin_cpu_supports("bmi2");
+    }
+    return cached;
+}
+#else
+#define LX_FAST_LINE 0
+#endif
+
 static void *parse_part(void *arg)
 {
     part *p = arg;
     const lx_batch_table *t = p->t;
-    size_t n = t->batch.n_lambda, row = p->row0;
+    size_t n = t->batch.n_lambda, row = 0;
     long line = p->line0;
     char sep = p->sep;
     int f32 = t->batch.dtype == LX_F32;
-    p->names = malloc((size_t)(p->e - p->s) / 8 + p->rows + 16);
-    p->name_at = malloc((p->rows + 1) * sizeof *p->name_at);
+#if LX_FAST_LINE
+    const char *nf = getenv("LX_NOVECTOR"); /* also turns the vector CSV line parser off */
+    int fast = have_fast_line() && !(nf && *nf && strcmp(nf, "0"));
+#endif
+    size_t names_cap = (size_t)(p->e - p->s) / 8 + p->rows_cap + 16, r = 0;
+    if (p->names_cap < names_cap) { /* buffers are kept from one chunk to the next when streaming */
+        free(p->names);
+        p->names = malloc(names_cap);
+        p->names_cap = names_cap;
+    }
+    names_cap = p->names_cap;
+    if (p->name_at_cap < p->rows_cap + 1) {
+        free(p->name_at);
+        p->name_at = malloc((p->rows_cap + 1) * sizeof *p->name_at);
+        p->name_at_cap = p->rows_cap + 1;
+    }
+    p->names_len = 0;
+    p->err_line = 0;
     if (!p->names || !p->name_at) {
         p->err_line = line;
         snprintf(p->err, sizeof p->err, "out of memory");
         return NULL;
     }
-    size_t names_cap = (size_t)(p->e - p->s) / 8 + p->rows + 16, r = 0;
     const char *s = p->s;
     for (; s < p->e; line++) {
         const char *nl = memchr(s, '\n', (size_t)(p->e - s));
@@ -126,18 +338,27 @@ static void *parse_part(void *arg)
                 return NULL;
             }
             p->names = nb;
+            p->names_cap = names_cap;
         }
         p->name_at[r++] = p->names_len;
         memcpy(p->names + p->names_len, s, nl_len);
         p->names_len += nl_len;
         p->names[p->names_len++] = 0;
         const char *q = c + 1;
-        float *of = (float *)t->batch.values + row * n;
-        double *od = (double *)t->batch.values + row * n;
+        float *of = (float *)p->values + row * n;
+        double *od = (double *)p->values + row * n;
+#if LX_FAST_LINE
+        if (fast && p->lim - le >= 64 && fast_line(q, le, sep, n, f32, f32 ? (void *)of : (void *)od)) {
+            row++;
+            p->rows_done = row;
+            s = next;
+            continue;
+        }
+#endif
         for (size_t j = 0; j < n; j++) {
             while (q < le && *q == ' ') q++;
             double v;
-            const char *z = parse_num(q, le, &v);
+            const char *z = parse_num(q, le, p->lim, &v);
             if (!z || !isfinite(v)) {
                 p->err_line = line;
                 snprintf(p->err, sizeof p->err, "value %zu of row '%.*s' is not a finite number", j + 1,
@@ -156,8 +377,10 @@ static void *parse_part(void *arg)
             q = z + 1;
         }
         row++;
+        p->rows_done = row;
         s = next;
     }
+    p->lines_done = line - p->line0;
     return NULL;
 }
 
@@ -170,11 +393,19 @@ void lx_batch_table_free(lx_batch_table *t)
     free(t);
 }
 
-lx_status lx_batch_table_read_mem(lx_ctx *ctx, const char *file, const char *text, size_t len, lx_dtype dtype,
-                                  int threads, lx_batch_table **out)
+/* The header: the first line that is not blank or a comment; its separator, whether rows start
+ * with a name cell, and the uniform grid. *body: the text after it, *line: its line number. */
+typedef struct csv_header {
+    const char *body;
+    long line;
+    char sep;
+    int named;
+    size_t n;
+    double start, step;
+} csv_header;
+
+static lx_status read_header(lx_ctx *ctx, const char *file, const char *text, size_t len, csv_header *H)
 {
-    if (!text || !out) return lx__error(ctx, LX_EINVAL, file, 0, "batch csv: NULL argument");
-    *out = NULL;
     const char *end = text + len, *s = text;
     if (len >= 3 && !memcmp(s, "\xEF\xBB\xBF", 3)) s += 3;
     long line = 1;
@@ -191,7 +422,9 @@ lx_status lx_batch_table_read_mem(lx_ctx *ctx, const char *file, const char *tex
         s = nl ? nl + 1 : end;
         line++;
     }
-    if (!hs) return lx__error(ctx, LX_EPARSE, file, 0, "empty file: no header line");
+    if (!hs) /* name the last line (1 for an empty file) */
+        return lx__error(ctx, LX_EPARSE, file, line > 1 ? line - 1 : 1,
+                         "no header line: the file is empty or holds only blank and comment lines");
     char sep = 0;
     for (const char *c = hs; c < he && !sep; c++)
         if (*c == ',' || *c == ';' || *c == '\t') sep = *c;
@@ -243,6 +476,24 @@ lx_status lx_batch_table_read_mem(lx_ctx *ctx, const char *file, const char *tex
                              "the header's wavelengths are not a uniform increasing grid (at %.17g nm)", bad);
         }
     free(lam);
+    *H = (csv_header){s, line, sep, named, n, start, step};
+    return LX_OK;
+}
+
+lx_status lx_batch_table_read_mem(lx_ctx *ctx, const char *file, const char *text, size_t len, lx_dtype dtype,
+                                  int threads, lx_batch_table **out)
+{
+    if (!text || !out) return lx__error(ctx, LX_EINVAL, file, 0, "batch csv: NULL argument");
+    *out = NULL;
+    csv_header H;
+    lx_status hst = read_header(ctx, file, text, len, &H);
+    if (hst) return hst;
+    const char *end = text + len, *s = H.body;
+    long line = H.line;
+    char sep = H.sep;
+    int named = H.named;
+    size_t n = H.n;
+    double start = H.start, step = H.step;
 
     /* split the rest into parts at line boundaries; count rows in parallel */
     int T = threads > 0 ? threads : (int)sysconf(_SC_NPROCESSORS_ONLN);
@@ -293,6 +544,9 @@ lx_status lx_batch_table_read_mem(lx_ctx *ctx, const char *file, const char *tex
         parts[i].t = t;
         parts[i].sep = sep;
         parts[i].named = named;
+        parts[i].lim = end;
+        parts[i].rows_cap = parts[i].rows;
+        parts[i].values = (char *)vals + parts[i].row0 * n * es;
     }
     for (int i = 1; i < T; i++)
         if (pthread_create(&tid[i], NULL, parse_part, &parts[i])) {
@@ -333,14 +587,35 @@ lx_status lx_batch_table_read_mem(lx_ctx *ctx, const char *file, const char *tex
     return LX_OK;
 }
 
-lx_status lx_batch_table_read(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads, lx_batch_table **out)
+/* ---- files: mapped (page cache, no copy) or read (standard input, pipes) ---- */
+
+typedef struct text_file {
+    const char *text;
+    size_t len;
+    void *map;   /* mmap'ed, or NULL */
+    char *buf;   /* read, or NULL */
+} text_file;
+
+static lx_status text_open(lx_ctx *ctx, const char *path, text_file *tf)
 {
-    if (!path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch csv: NULL argument");
+    memset(tf, 0, sizeof *tf);
     FILE *f = NULL;
     lx_status ost = lx__open_read(ctx, path, &f);
     if (ost) return ost;
     struct stat sb;
-    size_t cap = f != stdin && fstat(fileno(f), &sb) == 0 && sb.st_size > 0 ? (size_t)sb.st_size + 1 : 1 << 20;
+    int have_stat = f != stdin && fstat(fileno(f), &sb) == 0;
+    if (have_stat && S_ISREG(sb.st_mode) && sb.st_size > 0) {
+        void *m = mmap(NULL, (size_t)sb.st_size, PROT_READ, MAP_PRIVATE, fileno(f), 0);
+        if (m != MAP_FAILED) {
+            posix_madvise(m, (size_t)sb.st_size, POSIX_MADV_SEQUENTIAL);
+            fclose(f);
+            tf->map = m;
+            tf->text = m;
+            tf->len = (size_t)sb.st_size;
+            return LX_OK;
+        }
+    }
+    size_t cap = have_stat && sb.st_size > 0 ? (size_t)sb.st_size + 1 : 1 << 20;
     size_t len = 0, got;
     char *buf = malloc(cap);
     while (buf && (got = fread(buf + len, 1, cap - len, f)) > 0) {
@@ -358,7 +633,192 @@ lx_status lx_batch_table_read(lx_ctx *ctx, const char *path, lx_dtype dtype, int
         free(buf);
         return lx__error(ctx, LX_EIO, path, 0, "read error");
     }
-    lx_status st = lx_batch_table_read_mem(ctx, path, buf, len, dtype, threads, out);
-    free(buf);
+    tf->buf = buf;
+    tf->text = buf;
+    tf->len = len;
+    return LX_OK;
+}
+
+static void text_close(text_file *tf)
+{
+    if (tf->map) munmap(tf->map, tf->len);
+    free(tf->buf);
+}
+
+lx_status lx_batch_table_read(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads, lx_batch_table **out)
+{
+    if (!path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch csv: NULL argument");
+    text_file tf;
+    lx_status st = text_open(ctx, path, &tf);
+    if (st) return st;
+    st = lx_batch_table_read_mem(ctx, path, tf.text, tf.len, dtype, threads, out);
+    text_close(&tf);
     return st;
+}
+
+/* ---- streaming: parse the next chunk on threads while the caller handles this one ---- */
+
+/* A round parses up to 8 parts a thread of this much text each; threads take parts from a
+ * counter, so one kept off its core by another process delays a round by one part at most. */
+#define STREAM_PART_BYTES ((size_t)512 << 10)
+
+typedef struct part_set {
+    part p[64];
+    size_t cap[64]; /* rows each p[i].values holds */
+    int count;
+    _Atomic int next; /* the next part to parse */
+    long first_line;  /* line number of the first line of p[0] */
+} part_set;
+
+static void *parse_thread(void *arg)
+{
+    part_set *S = arg;
+    for (int i; (i = atomic_fetch_add_explicit(&S->next, 1, memory_order_relaxed)) < S->count;) parse_part(&S->p[i]);
+    return NULL;
+}
+
+lx_status lx_batch_table_stream(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads, lx_batch_chunk_fn fn,
+                                void *user)
+{
+    if (!path || !fn) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch csv: NULL argument");
+    if (dtype != LX_F32 && dtype != LX_F64) return lx__error(ctx, LX_EINVAL, path, 0, "batch csv: unknown dtype");
+    text_file tf;
+    lx_status st = text_open(ctx, path, &tf);
+    if (st) return st;
+    csv_header H;
+    if ((st = read_header(ctx, path, tf.text, tf.len, &H))) {
+        text_close(&tf);
+        return st;
+    }
+    int T = threads > 0 ? threads : (int)sysconf(_SC_NPROCESSORS_ONLN);
+    if (T < 1) T = 1;
+    if (T > 64) T = 64;
+    size_t n = H.n, es = dtype == LX_F32 ? sizeof(float) : sizeof(double);
+    const char *end = tf.text + tf.len, *pos = H.body;
+    /* the table parse_part reads its grid and dtype from */
+    lx_batch_table tmpl = {.batch = {.n_lambda = n, .start_nm = H.start, .step_nm = H.step, .dtype = dtype}};
+    part_set *sets = calloc(2, sizeof *sets);
+    if (!sets) {
+        text_close(&tf);
+        return lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
+    }
+    long next_line = H.line + 1;
+    size_t row0 = 0;
+    int cur = 0, have_prev = 0;
+    while (!st && (pos < end || have_prev)) {
+        part_set *S = &sets[cur], *P = &sets[cur ^ 1];
+        S->count = 0;
+        S->first_line = next_line;
+        pthread_t tid[64];
+        int started[64] = {0};
+        int max_parts = 8 * T < 64 ? 8 * T : 64;
+        while (pos < end && S->count < max_parts) { /* cut the next chunk into parts at line boundaries */
+            part *q = &S->p[S->count];
+            const char *pe = (size_t)(end - pos) > STREAM_PART_BYTES ? pos + STREAM_PART_BYTES : end;
+            const char *nl = pe < end ? memchr(pe, '\n', (size_t)(end - pe)) : NULL;
+            pe = pe < end ? (nl ? nl + 1 : end) : end;
+            /* a row takes at least 2 n - 1 bytes (n one-character values and their separators) */
+            size_t cap = (size_t)(pe - pos) / (2 * n - 1 + (n == 1)) + 1;
+            if (cap > S->cap[S->count]) {
+                free(q->values);
+                q->values = malloc(cap * n * es);
+                S->cap[S->count] = q->values ? cap : 0;
+                if (!q->values) {
+                    st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory for a chunk of %zu spectra", cap);
+                    break;
+                }
+            }
+            q->s = pos;
+            q->e = pe;
+            q->lim = end;
+            q->t = &tmpl;
+            q->sep = H.sep;
+            q->named = H.named;
+            q->line0 = 0;
+            q->rows_cap = cap;
+            q->rows_done = 0;
+            q->lines_done = 0;
+            pos = pe;
+            S->count++;
+        }
+        if (st) break;
+        atomic_store(&S->next, 0);
+        for (int i = 0; i < T && S->count; i++) started[i] = pthread_create(&tid[i], NULL, parse_thread, S) == 0;
+        /* meanwhile: the previous chunk, in file order, on this thread */
+        if (have_prev) {
+            for (int i = 0; i < P->count && !st; i++) {
+                part *q = &P->p[i];
+                lx_batch_table view = {.batch = tmpl.batch, .names = q->names, .name_at = q->name_at};
+                view.batch.n_spectra = q->rows_done;
+                view.batch.values = q->values;
+                if (q->rows_done) st = fn(user, &view, row0);
+                row0 += q->rows_done;
+            }
+            have_prev = 0;
+        }
+        for (int i = 0; i < T; i++)
+            if (started[i]) pthread_join(tid[i], NULL);
+        parse_thread(S); /* parts no thread took (none started, say) */
+        if (st) break;
+        long line = S->first_line;
+        for (int i = 0; i < S->count && !st; i++) {
+            part *q = &S->p[i];
+            if (q->err_line) st = lx__error(ctx, LX_EPARSE, path, line + q->err_line, "%s", q->err);
+            line += q->lines_done;
+        }
+        next_line = line;
+        have_prev = S->count > 0;
+        cur ^= 1;
+    }
+    for (int k = 0; k < 2; k++)
+        for (int i = 0; i < 64; i++) {
+            free(sets[k].p[i].values);
+            free(sets[k].p[i].names);
+            free(sets[k].p[i].name_at);
+        }
+    free(sets);
+    text_close(&tf);
+    return st;
+}
+
+/* lx_batch_table_integrate_file: every chunk integrated into a growing result on the caller's thread */
+typedef struct integ {
+    lx_ctx *ctx;
+    const lx_function *fns;
+    size_t k, cap, rows;
+    double *out;
+} integ;
+
+static lx_status integ_chunk(void *user, const lx_batch_table *chunk, size_t row0)
+{
+    integ *I = user;
+    size_t need = (row0 + chunk->batch.n_spectra) * I->k;
+    if (need > I->cap) {
+        size_t cap = need > 2 * I->cap ? need : 2 * I->cap;
+        double *o = realloc(I->out, cap * sizeof *o);
+        if (!o) return lx__error(I->ctx, LX_ENOMEM, NULL, 0, "out of memory for the results");
+        I->out = o;
+        I->cap = cap;
+    }
+    /* one thread: the other cores are parsing the next chunk */
+    lx_batch_opts o = {.backend = LX_BACKEND_CPU, .threads = 1};
+    I->rows = row0 + chunk->batch.n_spectra;
+    return lx_batch_integrate(I->ctx, &chunk->batch, I->fns, I->k, &o, I->out + row0 * I->k);
+}
+
+lx_status lx_batch_table_integrate_file(lx_ctx *ctx, const char *path, const lx_function *fns, size_t k, int threads,
+                                        double **out, size_t *n_spectra)
+{
+    if (!path || !fns || !k || !out || !n_spectra) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch csv: NULL argument");
+    integ I = {ctx, fns, k, 0, 0, NULL};
+    /* double values: the same numbers strtod gives, summed in double */
+    lx_status st = lx_batch_table_stream(ctx, path, LX_F64, threads, integ_chunk, &I);
+    if (!st && !I.out && !(I.out = malloc(sizeof(double)))) st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
+    if (st) {
+        free(I.out);
+        return st;
+    }
+    *out = I.out;
+    *n_spectra = I.rows;
+    return LX_OK;
 }

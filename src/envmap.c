@@ -167,6 +167,7 @@ lx_status lx_envmap_luminance(lx_ctx *ctx, const lx_envmap *map, double *out)
 lx_status lx_envmap_downsample(lx_ctx *ctx, const lx_envmap *in, int width, int height, lx_envmap **out)
 {
     if (!in || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_envmap_downsample: NULL argument");
+    if (in->layout != LX_ENV_LATLONG) return lx__error(ctx, LX_EUNSUPPORTED, NULL, 0, "downsampling needs a lat-long map");
     if (width < 1 || height < 1 || in->width % width || in->height % height)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "downsample size %dx%d must divide the map's %dx%d", width, height,
                          in->width, in->height);

@@ -1,4 +1,4 @@
-/* exr_io.c - OpenEXR lat-long maps through the OpenEXRCore C API: reading (scanline and tiled,
+/* exr_io.c - OpenEXR lat-long and cube maps through the OpenEXRCore C API: reading (scanline and tiled,
  * half and float, every compression, data and display windows, chromaticities, whiteLuminance)
  * and atomic writing (float or half, ZIP by default). I/O goes through our own stream callbacks
  * so that OpenEXR never prints: its messages end up in the context's error. */
@@ -117,7 +117,7 @@ static lx_status decode_chunk(lx_ctx *ctx, const char *path, stream *s, exr_cont
     return LX_OK;
 }
 
-lx_status lx_exr_read(lx_ctx *ctx, const char *path, lx_envmap **out)
+static lx_status exr_read(lx_ctx *ctx, const char *path, int allow_cube, lx_envmap **out)
 {
     if (!path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_exr_read: NULL argument");
     *out = NULL;
@@ -154,8 +154,9 @@ lx_status lx_exr_read(lx_ctx *ctx, const char *path, lx_envmap **out)
         goto done;
     }
     exr_envmap_t env;
-    if (exr_attr_get_envmap(e, 0, "envmap", &env) == EXR_ERR_SUCCESS && env == EXR_ENVMAP_CUBE) {
-        st = lx__error(ctx, LX_EUNSUPPORTED, path, 0, "cube-face environment maps are not supported; convert to lat-long");
+    int cube = exr_attr_get_envmap(e, 0, "envmap", &env) == EXR_ERR_SUCCESS && env == EXR_ENVMAP_CUBE;
+    if (cube && !allow_cube) {
+        st = lx__error(ctx, LX_EUNSUPPORTED, path, 0, "this command takes lat-long maps, not cube-face maps");
         goto done;
     }
     const exr_attr_chlist_t *cl = NULL;
@@ -209,7 +210,11 @@ lx_status lx_exr_read(lx_ctx *ctx, const char *path, lx_envmap **out)
                        W, H, dw_w, dw_h, fsize);
         goto done;
     }
-    st = lx_envmap_create(ctx, (int)W, (int)H, C, &m);
+    if (cube && H != 6 * W) {
+        st = lx__error(ctx, LX_EPARSE, path, 0, "cube map display window %ldx%ld is not N x 6N", W, H);
+        goto done;
+    }
+    st = cube ? lx_envmap_create_cube(ctx, (int)W, C, &m) : lx_envmap_create(ctx, (int)W, (int)H, C, &m);
     if (st) goto done;
     buf = calloc((size_t)dw_w * dw_h * C, sizeof *buf);
     if (!buf) {
@@ -293,6 +298,10 @@ done:
     return st;
 }
 
+lx_status lx_exr_read(lx_ctx *ctx, const char *path, lx_envmap **out) { return exr_read(ctx, path, 0, out); }
+
+lx_status lx_exr_read_any(lx_ctx *ctx, const char *path, lx_envmap **out) { return exr_read(ctx, path, 1, out); }
+
 lx_status lx_exr_write(lx_ctx *ctx, const char *path, const lx_envmap *map, const lx_exr_write_opts *opts)
 {
     if (!path || !map || !map->data) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_exr_write: NULL argument");
@@ -330,7 +339,8 @@ lx_status lx_exr_write(lx_ctx *ctx, const char *path, const lx_envmap *map, cons
     static const char *rgb[3] = {"R", "G", "B"};
     for (int c = 0; c < C && !rv; c++)
         if (exr_add_channel(e, part, C == 3 ? rgb[c] : "Y", pt, EXR_PERCEPTUALLY_LOGARITHMIC, 1, 1)) rv = EXR_ERR_INVALID_ARGUMENT;
-    if (!rv) rv = exr_attr_set_envmap(e, part, "envmap", EXR_ENVMAP_LATLONG);
+    if (!rv)
+        rv = exr_attr_set_envmap(e, part, "envmap", map->layout == LX_ENV_CUBE ? EXR_ENVMAP_CUBE : EXR_ENVMAP_LATLONG);
     if (!rv && C == 3 && map->has_chromaticities) {
         const double *q = map->chroma_xy;
         exr_attr_chromaticities_t chr = {(float)q[0], (float)q[1], (float)q[2], (float)q[3],

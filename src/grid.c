@@ -1,8 +1,8 @@
 /* grid.c - illuminance on points from placed luminaires: E = I(C, gamma) cos(xi) / d^2 summed over
- * luminaires, with the exact model (bilinear or smooth interpolation, near-field subdivision of the
- * luminous area under the five-times rule) and the fast path: a table indexed by sqrt(1 - |cos g|)
+ * luminaires, with the exact model (bilinear or smooth interpolation, the luminous area integrated to a
+ * tolerance under the five-times rule) and the fast path: a table indexed by sqrt(1 - |cos g|)
  * and the diamond angle of C (no acos/atan2), run by threads on the CPU or by kernels/grid.cl. */
-#include "lx_private.h"
+#include "grid_private.h"
 
 #include <math.h>
 #include <pthread.h>
@@ -119,18 +119,7 @@ static void frame(const lx_placement *pl, double ex[3], double ey[3], double ez[
     }
 }
 
-/* Per-luminaire data of one computation. */
-typedef struct plum {
-    const lx_luminaire *lum;
-    double pos[3], ex[3], ey[3], ez[3];
-    double scale;       /* tilt factor x maintenance factor */
-    double size_m;      /* largest dimension of the luminous opening (0: a point) */
-    int circular;
-    double w, l;        /* opening along ex and ey */
-    const float *table; /* LX_INTERP_TABLE: rows x cols */
-    int ns, nq, cols;   /* table: rows per hemisphere - 1, columns per quadrant (0: axial), columns */
-    size_t toff;        /* offset of the table in the shared table array */
-} plum;
+typedef lx__plum plum;
 
 /* ---- the cosine-indexed table ---- */
 
@@ -178,36 +167,6 @@ static float *build_table(const lx_luminaire *lum, int ns, int nq, int *cols)
     return t;
 }
 
-/* The table lookup in local coordinates (x, y, z) at distance d (the CPU twin of grid.cl). */
-static inline double table_eval(const plum *p, double x, double y, double z, double d)
-{
-    /* 1 - |cos g| = (d - |z|) / d = (x^2 + y^2) / (d (d + |z|)): no cancellation near the poles */
-    int h = z > 0;
-    double t = (double)p->ns * sqrt((x * x + y * y) / (d * (d + fabs(z))));
-    if (t > p->ns) t = p->ns;
-    int r = (int)t;
-    if (r > p->ns - 1) r = p->ns - 1;
-    double fr = t - r;
-    const float *row = p->table + ((size_t)h * (p->ns + 1) + r) * p->cols;
-    if (p->cols == 1) return row[0] + fr * (row[1] - row[0]);
-    double ax = fabs(x), ay = fabs(y), s = ax + ay, q;
-    if (s > 0) {
-        /* diamond angle in [0, 4) */
-        if (y >= 0) q = x >= 0 ? y / s : 1 + ax / s;
-        else q = x < 0 ? 2 + ay / s : 3 + ax / s;
-    } else {
-        q = 0;
-    }
-    double tc = q * p->nq;
-    int k = (int)tc;
-    if (k > p->cols - 2) k = p->cols - 2;
-    double fc = tc - k;
-    const float *a = row + k, *b = row + p->cols + k;
-    double va = a[0] + fc * (a[1] - a[0]);
-    double vb = b[0] + fc * (b[1] - b[0]);
-    return va + fr * (vb - va);
-}
-
 /* One pair, point model, exact interpolation or table. n: receiver normal. */
 static inline double pair_point(const plum *p, lx_interp interp, const double *pt, const double *n)
 {
@@ -220,30 +179,88 @@ static inline double pair_point(const plum *p, lx_interp interp, const double *p
     double x = w[0] * p->ex[0] + w[1] * p->ex[1] + w[2] * p->ex[2];
     double y = w[0] * p->ey[0] + w[1] * p->ey[1] + w[2] * p->ey[2];
     double z = w[0] * p->ez[0] + w[1] * p->ez[1] + w[2] * p->ez[2];
-    double I = interp == LX_INTERP_TABLE ? table_eval(p, x, y, z, d) : lx_luminaire_intensity_dir(p->lum, interp, x, y, z);
+    double I = interp == LX_INTERP_TABLE ? lx__table_eval(p, x, y, z, d) : lx_luminaire_intensity_dir(p->lum, interp, x, y, z);
     return p->scale * I * cx / (d2 * d);
 }
 
-/* Near field: the luminous area cut into k x k cells (k so that a cell is smaller than a fifth of
- * the distance), each a point source carrying its share of the intensity. */
-static double pair_near(const plum *p, lx_interp interp, const double *pt, const double *n, double dist)
+/* ---- near field: the luminous area as converged sums of point sources ---- */
+
+size_t lx__area_cells(int circular, int n)
 {
-    int k = (int)floor(5 * p->size_m / dist) + 1;
-    if (k > 64) k = 64;
-    if (interp == LX_INTERP_TABLE) interp = LX_INTERP_BILINEAR;
-    double sum = 0;
-    int cnt = 0;
-    plum sub = *p;
-    for (int i = 0; i < k; i++)
-        for (int j = 0; j < k; j++) {
-            double a = ((i + 0.5) / k - 0.5), b = ((j + 0.5) / k - 0.5);
-            if (p->circular && a * a + b * b > 0.25) continue;
-            double ox = a * p->w, oy = b * p->l;
-            for (int m = 0; m < 3; m++) sub.pos[m] = p->pos[m] + ox * p->ex[m] + oy * p->ey[m];
-            sum += pair_point(&sub, interp, pt, n);
-            cnt++;
+    return circular ? 2 * (size_t)n * (size_t)n : (size_t)n * (size_t)n;
+}
+
+void lx__area_cell(int circular, double w, double l, int n, size_t c, double *a, double *b)
+{
+    if (circular) { /* ring i of n (equal areas: midpoint in r^2), sector j of 2n */
+        size_t i = c / (2 * (size_t)n), j = c % (2 * (size_t)n);
+        double r = 0.5 * w * sqrt((i + 0.5) / n), ph = PI * (j + 0.5) / n;
+        *a = r * cos(ph);
+        *b = r * sin(ph);
+    } else {
+        size_t i = c / (size_t)n, j = c % (size_t)n;
+        *a = w * ((i + 0.5) / n - 0.5);
+        *b = l * ((j + 0.5) / n - 0.5);
+    }
+}
+
+double lx__area_refine(double (*mean)(void *arg, int n), void *arg, int circular, double tol, int n_max,
+                       unsigned long long *cells, int *converged)
+{
+    double prev = mean(arg, 2), xprev = NAN, x = prev;
+    unsigned long long cnt = lx__area_cells(circular, 2);
+    int ok = 0;
+    for (int n = 4; n <= n_max; n *= 2) {
+        double e = mean(arg, n);
+        cnt += lx__area_cells(circular, n);
+        x = (4 * e - prev) / 3; /* the midpoint rule's error is even in the cell size */
+        if (n >= 8 && fabs(x - xprev) <= tol * fabs(x)) {
+            ok = 1;
+            break;
         }
-    return cnt ? sum / cnt : pair_point(p, interp, pt, n);
+        xprev = x;
+        prev = e;
+    }
+    if (cells) *cells += cnt;
+    if (converged) *converged = ok;
+    return x;
+}
+
+typedef struct near_arg {
+    const plum *p;
+    lx_interp interp;
+    const double *pt, *n;
+} near_arg;
+
+/* The mean over the n-level cells of the point-source illuminance of each cell (its share of the
+ * intensity from its own position). */
+static double near_mean(void *arg, int n)
+{
+    const near_arg *A = arg;
+    const plum *p = A->p;
+    plum sub = *p;
+    size_t cells = lx__area_cells(p->circular, n);
+    double sum = 0;
+    for (size_t c = 0; c < cells; c++) {
+        double a, b;
+        lx__area_cell(p->circular, p->w, p->l, n, c, &a, &b);
+        for (int m = 0; m < 3; m++) sub.pos[m] = p->pos[m] + a * p->ex[m] + b * p->ey[m];
+        sum += pair_point(&sub, A->interp, A->pt, A->n);
+    }
+    return sum / (double)cells;
+}
+
+/* Near field: the luminous area subdivided (2, 4, 8, ... cells per side, up to LX__NEAR_MAX) until
+ * the Richardson-extrapolated illuminance changes by less than tol relative. */
+#define LX__NEAR_MAX 512
+static double pair_near(const plum *p, lx_interp interp, const double *pt, const double *n, double tol,
+                        unsigned long long *cells, unsigned long long *unconverged)
+{
+    near_arg A = {p, interp == LX_INTERP_TABLE ? LX_INTERP_BILINEAR : interp, pt, n};
+    int ok = 0;
+    double x = lx__area_refine(near_mean, &A, p->circular, tol, LX__NEAR_MAX, cells, &ok);
+    if (!ok) ++*unconverged;
+    return x > 0 ? x : 0;
 }
 
 /* ---- the computation ---- */
@@ -256,24 +273,81 @@ typedef struct job {
     size_t i0, i1;
     lx_interp interp;
     lx_model model;
+    double tol;          /* near-field tolerance */
+    int simd;            /* lx__grid_simd() */
     double *E;
+    unsigned long long near_pairs, near_cells, near_unconverged; /* OUT */
 } job;
+
+/* The near-field pairs of point pt: luminaire k's point term e_point replaced by its area sum. */
+static int is_near(const plum *p, const double *pt)
+{
+    if (!(p->size_m > 0)) return 0;
+    double w0 = pt[0] - p->pos[0], w1 = pt[1] - p->pos[1], w2 = pt[2] - p->pos[2];
+    return w0 * w0 + w1 * w1 + w2 * w2 < 25 * p->size_m * p->size_m;
+}
+
+#define BLK 256 /* points per block of the table path: 7 arrays of BLK doubles stay in L1 */
+
+/* The table path: blocks of points, each luminaire's transform applied to a whole block
+ * (lx__grid_table_block), near-field pairs then replaced by their area sums. */
+static void run_table_job(job *j)
+{
+    double X[BLK], Y[BLK], Z[BLK], NX[BLK], NY[BLK], NZ[BLK], acc[BLK];
+    if (j->shared) {
+        NX[0] = j->nrm[0];
+        NY[0] = j->nrm[1];
+        NZ[0] = j->nrm[2];
+    }
+    int any_area = 0;
+    for (size_t m = 0; m < j->m; m++) any_area |= j->pl[m].size_m > 0;
+    for (size_t b0 = j->i0; b0 < j->i1; b0 += BLK) {
+        size_t nb = j->i1 - b0 < BLK ? j->i1 - b0 : BLK;
+        const double *P = j->pts + 3 * b0;
+        for (size_t i = 0; i < nb; i++) {
+            X[i] = P[3 * i];
+            Y[i] = P[3 * i + 1];
+            Z[i] = P[3 * i + 2];
+            acc[i] = 0;
+        }
+        if (!j->shared)
+            for (size_t i = 0; i < nb; i++) {
+                NX[i] = j->nrm[3 * (b0 + i)];
+                NY[i] = j->nrm[3 * (b0 + i) + 1];
+                NZ[i] = j->nrm[3 * (b0 + i) + 2];
+            }
+        for (size_t m = 0; m < j->m; m++) lx__grid_table_block(&j->pl[m], nb, X, Y, Z, NX, NY, NZ, j->shared, j->simd, acc);
+        if (j->model != LX_MODEL_POINT && any_area)
+            for (size_t i = 0; i < nb; i++) {
+                const double *pt = P + 3 * i, *n = j->shared ? j->nrm : j->nrm + 3 * (b0 + i);
+                for (size_t m = 0; m < j->m; m++) {
+                    const plum *p = &j->pl[m];
+                    if (!is_near(p, pt)) continue;
+                    acc[i] += pair_near(p, j->interp, pt, n, j->tol, &j->near_cells, &j->near_unconverged) -
+                              pair_point(p, LX_INTERP_TABLE, pt, n);
+                    j->near_pairs++;
+                }
+            }
+        memcpy(j->E + b0, acc, nb * sizeof *acc);
+    }
+}
 
 static void *run_job(void *arg)
 {
     job *j = arg;
+    if (j->interp == LX_INTERP_TABLE) {
+        run_table_job(j);
+        return NULL;
+    }
     for (size_t i = j->i0; i < j->i1; i++) {
         const double *pt = j->pts + 3 * i, *n = j->shared ? j->nrm : j->nrm + 3 * i;
         double e = 0;
         for (size_t m = 0; m < j->m; m++) {
             const plum *p = &j->pl[m];
-            if (j->model != LX_MODEL_POINT && p->size_m > 0) {
-                double w0 = pt[0] - p->pos[0], w1 = pt[1] - p->pos[1], w2 = pt[2] - p->pos[2];
-                double dist = sqrt(w0 * w0 + w1 * w1 + w2 * w2);
-                if (dist < 5 * p->size_m) {
-                    e += pair_near(p, j->interp, pt, n, dist);
-                    continue;
-                }
+            if (j->model != LX_MODEL_POINT && is_near(p, pt)) {
+                e += pair_near(p, j->interp, pt, n, j->tol, &j->near_cells, &j->near_unconverged);
+                j->near_pairs++;
+                continue;
             }
             e += pair_point(p, j->interp, pt, n);
         }
@@ -289,23 +363,30 @@ static int online_cores(void)
 }
 
 static lx_status run_cpu(lx_ctx *ctx, const plum *pl, size_t m, const double *pts, size_t n, const double *nrm, int shared,
-                         lx_interp interp, lx_model model, int threads, double *E)
+                         lx_interp interp, lx_model model, double tol, int threads, double *E)
 {
     int T = threads > 0 ? threads : online_cores();
     if ((size_t)T > n / 256 + 1) T = (int)(n / 256 + 1);
     if (T > 64) T = 64;
     job jobs[64];
     pthread_t tid[64];
-    int started = 0;
+    int started[64] = {0};
+    int simd = lx__grid_simd();
     for (int t = 0; t < T; t++) {
-        jobs[t] = (job){pl, m, pts, nrm, shared, n * (size_t)t / (size_t)T, n * (size_t)(t + 1) / (size_t)T, interp, model, E};
-        if (t > 0 && pthread_create(&tid[t], NULL, run_job, &jobs[t]) == 0) started |= 1 << (t & 31);
+        jobs[t] = (job){pl, m, pts, nrm, shared, n * (size_t)t / (size_t)T, n * (size_t)(t + 1) / (size_t)T, interp, model,
+                        tol, simd, E, 0, 0, 0};
+        if (t > 0 && pthread_create(&tid[t], NULL, run_job, &jobs[t]) == 0) started[t] = 1;
         else if (t > 0) run_job(&jobs[t]);
     }
     run_job(&jobs[0]);
-    for (int t = 1; t < T; t++)
-        if (started & (1 << (t & 31))) pthread_join(tid[t], NULL);
-    (void)ctx;
+    for (int t = 0; t < T; t++) {
+        if (t > 0 && started[t]) pthread_join(tid[t], NULL);
+        ctx->counters.nearfield_pairs += jobs[t].near_pairs;
+        ctx->counters.nearfield_subdivisions += jobs[t].near_cells;
+        if (jobs[t].near_unconverged)
+            lx__log(ctx, LX_LOG_INFO, "grid: %llu near-field pairs did not reach the tolerance %g at %d cells per side",
+                    jobs[t].near_unconverged, tol, LX__NEAR_MAX);
+    }
     return LX_OK;
 }
 
@@ -328,6 +409,9 @@ lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, c
         return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown interpolation %d", (int)o.interp);
     if (o.model != LX_MODEL_AUTO && o.model != LX_MODEL_POINT)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "grids use the point or auto model");
+    double tol = o.nearfield_tol == 0 ? 1e-4 : o.nearfield_tol;
+    if (!(tol >= 1e-12) || !(tol <= 0.1))
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "the near-field tolerance must be in [1e-12, 0.1] (got %g)", tol);
     int backend = o.backend;
     if (backend == LX_BACKEND_AUTO) backend = lx_backend_from_env();
     if (backend == LX_BACKEND_OPENCL && o.interp != LX_INTERP_TABLE)
@@ -422,17 +506,19 @@ lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, c
             st = LX_OK;
         }
         if (use_cl && o.model != LX_MODEL_POINT) {
-            /* near-field pairs: replace the kernel's point term by the subdivided area */
+            /* near-field pairs: replace the kernel's point term by the converged area sum */
+            unsigned long long pairs = 0, cells = 0, unconv = 0;
             for (size_t i = 0; i < n; i++) {
                 const double *pt = points + 3 * i, *nn = shared_normal ? normals : normals + 3 * i;
                 for (size_t k = 0; k < m; k++) {
                     const plum *p = &pl[k];
-                    if (!(p->size_m > 0)) continue;
-                    double w0 = pt[0] - p->pos[0], w1 = pt[1] - p->pos[1], w2 = pt[2] - p->pos[2];
-                    double dist = sqrt(w0 * w0 + w1 * w1 + w2 * w2);
-                    if (dist < 5 * p->size_m) E[i] += pair_near(p, o.interp, pt, nn, dist) - pair_point(p, o.interp, pt, nn);
+                    if (!is_near(p, pt)) continue;
+                    E[i] += pair_near(p, o.interp, pt, nn, tol, &cells, &unconv) - pair_point(p, o.interp, pt, nn);
+                    pairs++;
                 }
             }
+            ctx->counters.nearfield_pairs += pairs;
+            ctx->counters.nearfield_subdivisions += cells;
         }
     }
 #else
@@ -444,7 +530,7 @@ lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, c
 #endif
     if (!use_cl) {
         if (m == 0) memset(E, 0, n * sizeof *E);
-        else st = run_cpu(ctx, pl, m, points, n, normals, shared_normal, o.interp, o.model, o.threads, E);
+        else st = run_cpu(ctx, pl, m, points, n, normals, shared_normal, o.interp, o.model, tol, o.threads, E);
     }
     if (st == LX_OK) {
         memcpy(E_lx, E, n * sizeof *E);

@@ -9,10 +9,19 @@
 /* AUTO runs brute force on OpenCL when it has this many pixel pairs and the device is a GPU. */
 #define LX_IRR_AUTO_CL_PAIRS 2e9
 
+static lx_status check_shape(lx_ctx *ctx, const lx_envmap *map)
+{
+    if (!map || !map->data || map->width < 1 || map->height < 1 || (map->channels != 1 && map->channels != 3) ||
+        (map->layout != LX_ENV_LATLONG && map->layout != LX_ENV_CUBE) ||
+        (map->layout == LX_ENV_CUBE && map->height != 6 * map->width))
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "invalid radiance map");
+    return LX_OK;
+}
+
 static lx_status check_map(lx_ctx *ctx, const lx_envmap *map)
 {
-    if (!map || !map->data || map->width < 1 || map->height < 1 || (map->channels != 1 && map->channels != 3))
-        return lx__error(ctx, LX_EINVAL, NULL, 0, "invalid radiance map");
+    lx_status st0 = check_shape(ctx, map);
+    if (st0) return st0;
     /* a NaN or Inf pixel would spread into every irradiance it touches (all of them for SH9): refuse it */
     size_t n = (size_t)map->width * map->height * map->channels;
     for (size_t k = 0; k < n; k++)
@@ -33,8 +42,11 @@ static lx_status run_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n, const dou
         for (size_t k = 0; k < n && !st; k++) st = lx_sh9_irradiance(ctx, &sh, o->window, dirs + 3 * k, out + k * map->channels);
         return st;
     }
-    case LX_IRR_FAST: return lx__irr_fast(ctx, map, n, dirs, o->threads, out);
+    case LX_IRR_FAST:
+        if (map->layout == LX_ENV_CUBE) return lx__irr_cube(ctx, map, n, dirs, o->threads, 1, out);
+        return lx__irr_fast(ctx, map, n, dirs, o->threads, out);
     case LX_IRR_BRUTE: {
+        if (map->layout == LX_ENV_CUBE) return lx__irr_cube(ctx, map, n, dirs, o->threads, 0, out); /* CPU only */
         lx_backend b = o->backend == LX_BACKEND_AUTO ? lx_backend_from_env() : o->backend;
         int automatic = b == LX_BACKEND_AUTO;
         if (b == LX_BACKEND_AUTO) {
@@ -93,7 +105,12 @@ lx_status lx_irradiance_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, c
 lx_status lx_irradiance_map(lx_ctx *ctx, const lx_envmap *map, int width, int height, lx_irr_opts *opts,
                             lx_envmap **out)
 {
-    lx_status st = check_map(ctx, map);
+    lx_irr_opts local = {0};
+    lx_irr_opts *o = opts ? opts : &local;
+    /* SH9 on a lat-long map checks the pixels after the projection: a non-finite pixel makes the
+     * coefficients non-finite, and only then is the map scanned for it (saves a pass) */
+    int lazy = o->method == LX_IRR_SH9 && map && map->layout == LX_ENV_LATLONG;
+    lx_status st = lazy ? check_shape(ctx, map) : check_map(ctx, map);
     if (st) return st;
     if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_irradiance_map: NULL output");
     *out = NULL;
@@ -101,27 +118,35 @@ lx_status lx_irradiance_map(lx_ctx *ctx, const lx_envmap *map, int width, int he
         width = map->width;
         height = map->height;
     }
-    lx_irr_opts local = {0};
-    lx_irr_opts *o = opts ? opts : &local;
+    if (map->layout == LX_ENV_CUBE && (width < 1 || height != 6 * width))
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "a cube map's irradiance map is a cube map: size %dx%d is not N x 6N",
+                         width, height);
     lx_envmap *m = NULL;
-    st = lx_envmap_create(ctx, width, height, map->channels, &m);
+    st = map->layout == LX_ENV_CUBE ? lx_envmap_create_cube(ctx, width, map->channels, &m)
+                                    : lx_envmap_create(ctx, width, height, map->channels, &m);
     if (st) return st;
     memcpy(m->y_weights, map->y_weights, sizeof m->y_weights);
     memcpy(m->chroma_xy, map->chroma_xy, sizeof m->chroma_xy);
     m->has_chromaticities = map->has_chromaticities;
     m->units = map->units;
     m->lum_per_unit = map->lum_per_unit;
-    if (o->method == LX_IRR_SH9) {
+    if (o->method == LX_IRR_SH9 && map->layout == LX_ENV_LATLONG) {
         lx_sh9 sh;
         o->used = LX_BACKEND_CPU;
         st = lx_sh9_project(ctx, map, &sh);
+        for (int k = 0; k < 9 && !st; k++)
+            for (int c = 0; c < map->channels && !st; c++)
+                if (!isfinite(sh.c[k][c])) {
+                    st = check_map(ctx, map);
+                    if (!st) st = lx__error(ctx, LX_EINVAL, NULL, 0, "SH9 coefficients overflow (radiance too large)");
+                }
         if (!st) st = lx__irr_sh9_map(ctx, &sh, o->window, m);
     } else {
         size_t n = (size_t)width * height;
         double *dirs = malloc(n * 3 * sizeof *dirs), *res = malloc(n * map->channels * sizeof *res);
         if (!dirs || !res) st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for a %dx%d map", width, height);
         for (size_t k = 0; k < n && !st; k++)
-            lx_envmap_direction(width, height, (double)(k / width) + 0.5, (double)(k % width) + 0.5, dirs + 3 * k);
+            lx_envmap_texel_direction(m, (int)(k / width), (int)(k % width), dirs + 3 * k);
         if (!st) st = run_dirs(ctx, map, n, dirs, o, res);
         for (size_t k = 0; k < n * map->channels && !st; k++) m->data[k] = (float)res[k];
         free(dirs);

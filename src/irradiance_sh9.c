@@ -8,6 +8,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#define LX_SH9_AVX2 1
+#endif
+
 #define LX_PI 3.14159265358979323846
 
 /* Normalisation constants of the real SH basis (l <= 2). */
@@ -32,8 +37,50 @@ static void band_factors(lx_sh9_window window, double f[3])
 typedef struct proj_job {
     const lx_envmap *map;
     const double *colf; /* 5 column factors per column */
+    const double *colx; /* AVX2: the 5 factors expanded to one per value, 5 arrays of C W (NULL: scalar) */
     double (*acc)[9][3]; /* per thread */
 } proj_job;
+
+#ifdef LX_SH9_AVX2
+/* M[k][c] = sum over the row of value(c) x factor k, the row read as one array of C W floats
+ * against the factors expanded to the same layout: 4 pixels (12 values) per step, 3 x 4 double
+ * lanes whose value index mod C gives the channel. Two passes (k < 3, k >= 3) keep every
+ * accumulator in a register. */
+__attribute__((target("avx2,fma"))) static void row_sums_avx2(const float *row, const double *colx, long n, int C,
+                                                             double M[5][3])
+{
+    for (int k = 0; k < 5; k++) M[k][0] = M[k][1] = M[k][2] = 0;
+    long n12 = n - n % 12;
+    for (int g = 0; g < 2; g++) {
+        int k0 = g ? 3 : 0, nk = g ? 2 : 3;
+        __m256d a[3][3];
+        for (int k = 0; k < 3; k++) a[k][0] = a[k][1] = a[k][2] = _mm256_setzero_pd();
+        const double *F0 = colx + (size_t)k0 * n, *F1 = F0 + n, *F2 = F1 + n;
+        for (long x = 0; x < n12; x += 12) {
+            __m256d v0 = _mm256_cvtps_pd(_mm_loadu_ps(row + x)), v1 = _mm256_cvtps_pd(_mm_loadu_ps(row + x + 4)),
+                    v2 = _mm256_cvtps_pd(_mm_loadu_ps(row + x + 8));
+            a[0][0] = _mm256_fmadd_pd(v0, _mm256_loadu_pd(F0 + x), a[0][0]);
+            a[0][1] = _mm256_fmadd_pd(v1, _mm256_loadu_pd(F0 + x + 4), a[0][1]);
+            a[0][2] = _mm256_fmadd_pd(v2, _mm256_loadu_pd(F0 + x + 8), a[0][2]);
+            a[1][0] = _mm256_fmadd_pd(v0, _mm256_loadu_pd(F1 + x), a[1][0]);
+            a[1][1] = _mm256_fmadd_pd(v1, _mm256_loadu_pd(F1 + x + 4), a[1][1]);
+            a[1][2] = _mm256_fmadd_pd(v2, _mm256_loadu_pd(F1 + x + 8), a[1][2]);
+            if (nk == 3) {
+                a[2][0] = _mm256_fmadd_pd(v0, _mm256_loadu_pd(F2 + x), a[2][0]);
+                a[2][1] = _mm256_fmadd_pd(v1, _mm256_loadu_pd(F2 + x + 4), a[2][1]);
+                a[2][2] = _mm256_fmadd_pd(v2, _mm256_loadu_pd(F2 + x + 8), a[2][2]);
+            }
+        }
+        for (int k = 0; k < nk; k++) {
+            double l[12];
+            for (int q = 0; q < 3; q++) _mm256_storeu_pd(l + 4 * q, a[k][q]);
+            for (int i = 0; i < 12; i++) M[k0 + k][i % C] += l[i];
+            const double *F = colx + (size_t)(k0 + k) * n;
+            for (long x = n12; x < n; x++) M[k0 + k][x % C] += row[x] * F[x];
+        }
+    }
+}
+#endif
 
 static void proj_rows(void *arg, long j0, long j1, int t)
 {
@@ -55,6 +102,10 @@ static void proj_rows(void *arg, long j0, long j1, int t)
         double T5 = T0 * (q - 1);                              /* int (3 cos^2 t - 1) sin t */
         double M[5][3] = {{0}};
         const float *row = m->data + (size_t)j * W * C;
+#ifdef LX_SH9_AVX2
+        if (J->colx) row_sums_avx2(row, J->colx, (long)W * C, C, M);
+        else
+#endif
         if (C == 3) {
             double a[5][3] = {{0}};
             for (int i = 0; i < W; i++) {
@@ -92,6 +143,7 @@ static void proj_rows(void *arg, long j0, long j1, int t)
 lx_status lx_sh9_project(lx_ctx *ctx, const lx_envmap *map, lx_sh9 *out)
 {
     if (!map || !out || !map->data) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_sh9_project: NULL argument");
+    if (map->layout == LX_ENV_CUBE) return lx__sh9_project_cube(ctx, map, out);
     int W = map->width;
     double dp = 2 * LX_PI / W;
     double *colf = malloc((size_t)W * 5 * sizeof *colf);
@@ -110,8 +162,18 @@ lx_status lx_sh9_project(lx_ctx *ctx, const lx_envmap *map, lx_sh9 *out)
         colf[5 * i + 3] = 0.5 * sin(2 * pc) * sin(dp); /* int sin p cos p */
         colf[5 * i + 4] = cos(2 * pc) * sin(dp);       /* int cos 2p */
     }
-    proj_job J = {map, colf, acc};
+    double *colx = NULL;
+#ifdef LX_SH9_AVX2
+    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && !getenv("LX_NOVECTOR")) {
+        size_t n = (size_t)W * map->channels;
+        colx = malloc(5 * n * sizeof *colx);
+        for (size_t x = 0; colx && x < n; x++)
+            for (int k = 0; k < 5; k++) colx[k * n + x] = colf[5 * (x / map->channels) + k];
+    }
+#endif
+    proj_job J = {map, colf, colx, acc};
     lx_status st = lx__parallel_for(ctx, nt, map->height, proj_rows, &J);
+    free(colx);
     if (!st) {
         memset(out, 0, sizeof *out);
         out->channels = map->channels;
@@ -145,8 +207,34 @@ typedef struct recon_job {
     const lx_sh9 *sh;
     const double *f;
     const double *cols; /* cos p, sin p, cos 2p, sin 2p per output column */
+    const double *colx; /* AVX2: the 4 expanded to one per output value, 4 arrays of C W (NULL: scalar) */
     lx_envmap *out;
 } recon_job;
+
+#ifdef LX_SH9_AVX2
+/* out[x] = P + Qc cos p + Qs sin p + U cos 2p + V sin 2p over a row of C W values, 12 at a time;
+ * coef[5][12]: the five row coefficients of each of the 12 lanes' channels */
+__attribute__((target("avx2,fma"))) static void recon_row_avx2(float *row, const double *colx, long n, int C,
+                                                               const double coef[5][12], const double cc[5][3])
+{
+    long n12 = n - n % 12;
+    const double *q0 = colx, *q1 = q0 + n, *q2 = q1 + n, *q3 = q2 + n;
+    for (long x = 0; x < n12; x += 12)
+        for (int q = 0; q < 3; q++) {
+            long y = x + 4 * q;
+            __m256d r = _mm256_loadu_pd(coef[0] + 4 * q);
+            r = _mm256_fmadd_pd(_mm256_loadu_pd(coef[1] + 4 * q), _mm256_loadu_pd(q0 + y), r);
+            r = _mm256_fmadd_pd(_mm256_loadu_pd(coef[2] + 4 * q), _mm256_loadu_pd(q1 + y), r);
+            r = _mm256_fmadd_pd(_mm256_loadu_pd(coef[3] + 4 * q), _mm256_loadu_pd(q2 + y), r);
+            r = _mm256_fmadd_pd(_mm256_loadu_pd(coef[4] + 4 * q), _mm256_loadu_pd(q3 + y), r);
+            _mm_storeu_ps(row + y, _mm256_cvtpd_ps(r));
+        }
+    for (long x = n12; x < n; x++) {
+        int c = (int)(x % C);
+        row[x] = (float)(cc[0][c] + cc[1][c] * q0[x] + cc[2][c] * q1[x] + cc[3][c] * q2[x] + cc[4][c] * q3[x]);
+    }
+}
+#endif
 
 static void recon_rows(void *arg, long j0, long j1, int t)
 {
@@ -168,6 +256,16 @@ static void recon_rows(void *arg, long j0, long j1, int t)
             V[c] = f[2] * SH_C2 * L[4] * s * s * 0.5;
         }
         float *row = o->data + (size_t)j * W * C;
+#ifdef LX_SH9_AVX2
+        if (J->colx) {
+            double coef[5][12], cc[5][3];
+            for (int c = 0; c < C; c++) cc[0][c] = P[c], cc[1][c] = Qc[c], cc[2][c] = Qs[c], cc[3][c] = U[c], cc[4][c] = V[c];
+            for (int k = 0; k < 5; k++)
+                for (int i = 0; i < 12; i++) coef[k][i] = cc[k][i % C];
+            recon_row_avx2(row, J->colx, (long)W * C, C, (const double(*)[12])coef, (const double(*)[3])cc);
+            continue;
+        }
+#endif
         for (int i = 0; i < W; i++) {
             const double *q = J->cols + 4 * i;
             for (int c = 0; c < C; c++)
@@ -189,8 +287,18 @@ lx_status lx__irr_sh9_map(lx_ctx *ctx, const lx_sh9 *sh, lx_sh9_window window, l
         cols[4 * i + 2] = cos(2 * p);
         cols[4 * i + 3] = sin(2 * p);
     }
-    recon_job J = {sh, f, cols, out};
+    double *colx = NULL;
+#ifdef LX_SH9_AVX2
+    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && !getenv("LX_NOVECTOR")) {
+        size_t n = (size_t)W * out->channels;
+        colx = malloc(4 * n * sizeof *colx);
+        for (size_t x = 0; colx && x < n; x++)
+            for (int k = 0; k < 4; k++) colx[k * n + x] = cols[4 * (x / out->channels) + k];
+    }
+#endif
+    recon_job J = {sh, f, cols, colx, out};
     lx_status st = lx__parallel_for(ctx, lx__threads(0, out->height / 8 + 1), out->height, recon_rows, &J);
     free(cols);
+    free(colx);
     return st;
 }

@@ -345,6 +345,26 @@ LX_API lx_status lx_batch_table_read_mem(lx_ctx *ctx, const char *file, const ch
                                          lx_dtype dtype, int threads, lx_batch_table **out);
 LX_API void lx_batch_table_free(lx_batch_table *t);
 
+/** Called by lx_batch_table_stream for each chunk of consecutive rows, in file order, on the
+ * caller's thread: chunk (valid only during the call; its names as in lx_batch_table) holds rows
+ * row0 .. row0 + chunk->batch.n_spectra - 1 of the file. A non-LX_OK return stops the stream
+ * and is returned by it. */
+typedef lx_status (*lx_batch_chunk_fn)(void *user, const lx_batch_table *chunk, size_t row0);
+
+/** Reads a rows-layout batch CSV (as lx_batch_table_read; the file is memory-mapped) chunk by
+ * chunk: `threads` threads (0 = every core) parse the next chunk while fn handles this one, so
+ * memory stays bounded (a few MB of text per thread) and the work overlaps. On LX_EPARSE (file
+ * and line of the first bad row in ctx) fn has been called for some, possibly none, of the rows
+ * before the bad one: callers that must not act on a bad file keep what fn gives until success. */
+LX_API lx_status lx_batch_table_stream(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads,
+                                       lx_batch_chunk_fn fn, void *user);
+
+/** CSV end to end: streams a rows-layout batch CSV (lx_batch_table_stream, double values) and
+ * integrates each chunk as lx_batch_integrate on the CPU while the next one parses. *out
+ * (malloc'ed, free with free()) gets n_spectra x k results, row-major, in file order. */
+LX_API lx_status lx_batch_table_integrate_file(lx_ctx *ctx, const char *path, const lx_function *fns, size_t k,
+                                               int threads, double **out, size_t *n_spectra);
+
 /** Resamples N spectra given on their own strictly increasing wavelengths (row i: n_in[i]
  * samples at lambda_nm + offset[i], values at value + offset[i]) onto the uniform grid of dst
  * (dst->values must point to writable memory of dst->dtype, n_spectra rows) by linear
@@ -524,7 +544,41 @@ typedef struct lx_envmap {
     double chroma_xy[8];    /* that attribute (rx ry gx gy bx by wx wy), written back by lx_exr_write */
     lx_envmap_units units;  /* RADIANCE or LUMINANCE (never AUTO once read) */
     double lum_per_unit;    /* cd/m2 per unit of Y: efficacy (RADIANCE) or whiteLuminance / 1 (LUMINANCE) */
+    int layout;             /* lx_envmap_layout: LATLONG (0, what lx_envmap_create makes) or CUBE */
 } lx_envmap;
+
+/** Map layouts. A CUBE map is the OpenEXR cube layout: width N, height 6 N, six N x N faces stacked
+ * top to bottom in the file order +X, -X, +Y, -Y, +Z, -Z, each oriented as OpenEXR's ImfEnvmap.h
+ * draws it. OpenEXR's axes (y up) become luxcalc's (+z up) by the same mapping that its lat-long
+ * layout needs to match ours: (x, y, z)_exr -> (-z, x, y), so the file's +Y face is our zenith,
+ * its +X face looks towards our +y and its -Z face towards our +x. Texel (r, c) of a face covers
+ * the square [2c/N - 1, 2(c+1)/N - 1] x [2r/N - 1, 2(r+1)/N - 1] of the face at unit distance (the
+ * texels tile the cube; OpenEXR's direction() samples texel centres at the face edges instead). */
+typedef enum lx_envmap_layout {
+    LX_ENV_LATLONG = 0,
+    LX_ENV_CUBE = 1
+} lx_envmap_layout;
+
+/** Creates a zero-filled cube map with faces of size x size texels (width size, height 6 size). */
+LX_API lx_status lx_envmap_create_cube(lx_ctx *ctx, int size, int channels, lx_envmap **out);
+
+/** Unit vector of a cube-map point at fractional map coordinates (row in [0, 6 size), col in
+ * [0, size]); texel centres are (r + 0.5, c + 0.5). Thread-safe. */
+LX_API void lx_envmap_cube_direction(int size, double row, double col, double dir[3]);
+
+/** Exact solid angle of cube texel (row, col) of a face (row 0..size-1; the same on every face):
+ * the corner sum of atan(a b / sqrt(1 + a^2 + b^2)) over the texel's square, in sr. */
+LX_API double lx_envmap_cube_texel_sr(int size, int row, int col);
+
+/** Exact first moment (integral of omega d omega, Lambert's polygon formula) of the cube texel at
+ * map row (0..6 size - 1) and column. Thread-safe. */
+LX_API void lx_envmap_cube_texel_moment(int size, int row, int col, double m[3]);
+
+/** Exact solid angle of any pixel of a map (lat-long or cube), in sr. */
+LX_API double lx_envmap_texel_sr(const lx_envmap *map, int row, int col);
+
+/** Unit vector of the centre of pixel (row, col) of a map (lat-long or cube). */
+LX_API void lx_envmap_texel_direction(const lx_envmap *map, int row, int col, double dir[3]);
 
 /** Creates a zero-filled map (Rec.709 weights, RADIANCE, efficacy 179 lm/W). channels 1 or 3. */
 LX_API lx_status lx_envmap_create(lx_ctx *ctx, int width, int height, int channels, lx_envmap **out);
@@ -569,6 +623,10 @@ LX_API lx_status lx_rgb_y_weights(lx_ctx *ctx, const double xy[8], double weight
  * multi-part-only-deep files give LX_EUNSUPPORTED; malformed files LX_EPARSE, unreadable LX_EIO. */
 LX_API lx_status lx_exr_read(lx_ctx *ctx, const char *path, lx_envmap **out);
 
+/** As lx_exr_read, and also reads cube maps (envmap attribute cube, display window N x 6N):
+ * map->layout says which. For callers that handle both layouts. */
+LX_API lx_status lx_exr_read_any(lx_ctx *ctx, const char *path, lx_envmap **out);
+
 /** EXR compressions (the values of the file format). */
 typedef enum lx_exr_compression {
     LX_EXR_NONE = 0, LX_EXR_RLE = 1, LX_EXR_ZIPS = 2, LX_EXR_ZIP = 3, LX_EXR_PIZ = 4,
@@ -583,7 +641,8 @@ typedef struct lx_exr_write_opts {
     int tile_size;                  /* > 0: a tiled file with square tiles of this size */
 } lx_exr_write_opts;
 
-/** Writes a map as an OpenEXR lat-long file (envmap attribute latlong, channels R,G,B or Y,
+/** Writes a map as an OpenEXR lat-long or cube file (envmap attribute latlong or cube as map->layout
+ * says, channels R,G,B or Y,
  * chromaticities when the map has them, whiteLuminance for LUMINANCE maps) atomically: a
  * temporary file renamed into place, an existing file replaced only on success. opts may be NULL. */
 LX_API lx_status lx_exr_write(lx_ctx *ctx, const char *path, const lx_envmap *map, const lx_exr_write_opts *opts);
@@ -632,8 +691,8 @@ LX_API lx_status lx_sh9_irradiance(lx_ctx *ctx, const lx_sh9 *sh, lx_sh9_window 
 LX_API lx_status lx_irradiance_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const double *dirs,
                                     lx_irr_opts *opts, double *out);
 
-/** Irradiance environment map: E at the pixel centre directions of a width x height lat-long
- * map (the input's layout when both are 0). *out is a new map with the input's channels,
+/** Irradiance environment map: E at the pixel centre directions of a width x height map in the
+ * input's layout (the input's size when both are 0; a cube input needs height = 6 width). *out is a new map with the input's channels,
  * weights and units. opts may be NULL (SH9). */
 LX_API lx_status lx_irradiance_map(lx_ctx *ctx, const lx_envmap *map, int width, int height,
                                    lx_irr_opts *opts, lx_envmap **out);
@@ -995,8 +1054,9 @@ LX_API lx_status lx_plane_axis(lx_ctx *ctx, char axis, double level_m, double a0
 
 /** Options of lx_grid_illuminance (zero-initialise for defaults). */
 typedef struct lx_grid_opts {
-    lx_model model;           /* LX_MODEL_POINT (default 0 = AUTO: subdivide the luminous area
-                               * where the point is closer than 5 x its largest dimension) */
+    lx_model model;           /* LX_MODEL_POINT (default 0 = AUTO: where the point is closer than
+                               * 5 x the opening's largest dimension, integrate over the luminous
+                               * area to nearfield_tol; ctx counters nearfield_pairs/_subdivisions) */
     lx_interp interp;         /* default bilinear */
     double maintenance_factor;/* 0 means 1 */
     lx_backend backend;       /* OpenCL runs LX_INTERP_TABLE only; AUTO (also LX_BACKEND) picks it
@@ -1004,6 +1064,8 @@ typedef struct lx_grid_opts {
     int threads;              /* CPU threads; 0 = every online core */
     int table_n;              /* LX_INTERP_TABLE: rows per hemisphere (0: 1024) */
     int fp32;                 /* OpenCL: 1 computes in float (else double where the device has it) */
+    double nearfield_tol;     /* AUTO: relative change of the Richardson-extrapolated area sum at
+                               * which refinement stops (0: 1e-4; 1e-12 to 0.1) */
     lx_backend used;          /* OUT: the backend that did the work */
 } lx_grid_opts;
 

@@ -170,6 +170,18 @@ lx_status lx__ldt_read(lx_ctx *ctx, const char *file, const char *text, size_t l
 lx_status lx__lum_finish(lx_ctx *ctx, lx_luminaire *lum, long line_h, long line_v, long line_cd);
 /* A luminaire with every field zero / NaN where that means "unknown" (NULL on no memory). */
 lx_luminaire *lx__lum_new(const char *file);
+/* Near-field integration over a luminous opening (grid.c; the scheme of scene_eval.c, shareable).
+ * The n-level midpoint cells of an opening centred at the origin: a rectangle w x l in n x n cells,
+ * a disk of diameter w in n rings of equal area x 2n sectors; every cell carries 1 / cells of the
+ * area; cell c has its centre at (*a, *b) along the opening's axes. */
+size_t lx__area_cells(int circular, int n);
+void lx__area_cell(int circular, double w, double l, int n, size_t c, double *a, double *b);
+/* Richardson-refined midpoint rule: mean(arg, n) (the mean over the n-level cells) for n = 2, 4,
+ * 8, ... n_max; returns (4 S(n) - S(n/2)) / 3 once two successive extrapolations agree within tol
+ * relative (n >= 8), else the last one. *cells (may be NULL) adds the cells evaluated; *converged
+ * (may be NULL) 1 when the tolerance was met. */
+double lx__area_refine(double (*mean)(void *arg, int n), void *arg, int circular, double tol, int n_max,
+                       unsigned long long *cells, int *converged);
 
 /* ---- radiance fields (issue 6: envmap.c, exr_io.c, irradiance*.c, png_plot.c) ---- */
 /* Per-row and per-column factors of the exact pixel integrals of a w x h lat-long map: a pixel's
@@ -198,6 +210,16 @@ lx_status lx__irr_brute_cl(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, con
 lx_status lx__irr_fast(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const double *dirs, int threads,
                        double *out);
 lx_status lx__irr_sh9_map(lx_ctx *ctx, const lx_sh9 *sh, lx_sh9_window window, lx_envmap *out);
+/* Cube maps (envmap_cube.c). lx__cube_frame[f] = {axis, u, v}: the luxcalc directions of face f's
+ * normal, image column and image row (downwards). A face-local table holds, per texel of an N x N
+ * face (row-major), LX__CUBE_NT exact integrals over the texel in the frame (axis n, u, v):
+ * solid angle, first moment (n, u, v), second moments (nn, uu, vv, nu, nv, uv). */
+#define LX__CUBE_NT 10
+extern const double lx__cube_frame[6][3][3];
+double *lx__cube_table(int n); /* malloc'd N * N * LX__CUBE_NT doubles, NULL on no memory */
+lx_status lx__sh9_project_cube(lx_ctx *ctx, const lx_envmap *map, lx_sh9 *out);
+lx_status lx__irr_cube(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const double *dirs, int threads, int fast,
+                       double *out);
 
 /* PNG plots (png_plot.c), reusable by any plot writer: an RGB8 canvas, a 5x7 font of our own
  * (digits, + - . e E / ( ) : = % and upper-case letters; lower case is drawn upper case), a

@@ -84,57 +84,38 @@ static double point_E(lx_ctx *ctx, const lum_eval *le, const double s[3], const 
     return intensity(ctx, le, u, frac) * cx / d2;
 }
 
-/* Midpoint sum over an n-level subdivision of the luminous area: rectangles n x n patches,
- * disks n rings of equal area x 2n sectors. */
-static double area_sum(lx_ctx *ctx, const lum_eval *le, const double q[3], const double n[3], int lev,
-                       unsigned long long *patches)
+/* The near field shares the grid engine's scheme (lx__area_cell / lx__area_refine in grid.c):
+ * rectangles n x n cells, disks n rings of equal area x 2n sectors, each cell a point source
+ * carrying its share of the intensity; n doubles until the Richardson-extrapolated estimate (the
+ * midpoint rule's error is even in the cell size) changes by less than tol, or 512 per side. */
+typedef struct near_arg {
+    lx_ctx *ctx;
+    const lum_eval *le;
+    const double *q, *n;
+} near_arg;
+
+static double near_mean(void *arg, int lev)
 {
-    const lx_scene_luminaire *l = le->l;
-    double sum = 0;
-    if (l->radius_m > 0) {
-        int ns = 2 * lev;
-        double frac = 1.0 / ((double)lev * ns);
-        for (int i = 0; i < lev; i++) {
-            double r = l->radius_m * sqrt((i + 0.5) / lev);
-            for (int j = 0; j < ns; j++) {
-                double ph = 2 * M_PI * (j + 0.5) / ns, a = r * cos(ph), b = r * sin(ph);
-                double s[3];
-                for (int k = 0; k < 3; k++) s[k] = l->pos_m[k] + a * le->ex[k] + b * le->ey[k];
-                sum += point_E(ctx, le, s, q, n, frac);
-            }
-        }
-        *patches += (unsigned long long)lev * ns;
-    } else {
-        double frac = 1.0 / ((double)lev * lev);
-        for (int i = 0; i < lev; i++) {
-            double a = l->width_m * ((i + 0.5) / lev - 0.5);
-            for (int j = 0; j < lev; j++) {
-                double b = l->length_m * ((j + 0.5) / lev - 0.5);
-                double s[3];
-                for (int k = 0; k < 3; k++) s[k] = l->pos_m[k] + a * le->ex[k] + b * le->ey[k];
-                sum += point_E(ctx, le, s, q, n, frac);
-            }
-        }
-        *patches += (unsigned long long)lev * lev;
+    const near_arg *A = arg;
+    const lx_scene_luminaire *l = A->le->l;
+    int circular = l->radius_m > 0;
+    double w = circular ? 2 * l->radius_m : l->width_m, len = circular ? 0 : l->length_m;
+    size_t cells = lx__area_cells(circular, lev);
+    double frac = 1.0 / (double)cells, sum = 0;
+    for (size_t c = 0; c < cells; c++) {
+        double a, b, s[3];
+        lx__area_cell(circular, w, len, lev, c, &a, &b);
+        for (int k = 0; k < 3; k++) s[k] = l->pos_m[k] + a * A->le->ex[k] + b * A->le->ey[k];
+        sum += point_E(A->ctx, A->le, s, A->q, A->n, frac);
     }
     return sum;
 }
 
-/* Near-field illuminance: the luminous area subdivided into patches, each a point source
- * carrying its share of the intensity, refined (4, 8, 16, ... per side) until the Richardson-
- * extrapolated estimate (the midpoint rule's error is even in the patch size) changes by less
- * than tol, or 512 per side. */
 static double near_E(lx_ctx *ctx, const lum_eval *le, const double q[3], const double n[3], double tol)
 {
     unsigned long long patches = 0;
-    double prev = area_sum(ctx, le, q, n, 4, &patches), xprev = NAN, x = prev;
-    for (int lev = 8; lev <= 512; lev *= 2) {
-        double e = area_sum(ctx, le, q, n, lev, &patches);
-        x = (4 * e - prev) / 3;
-        if (lev >= 16 && fabs(x - xprev) <= tol * fabs(x) + 1e-300) break;
-        xprev = x;
-        prev = e;
-    }
+    near_arg A = {ctx, le, q, n};
+    double x = lx__area_refine(near_mean, &A, le->l->radius_m > 0, tol, 512, &patches, NULL);
     ctx->counters.nearfield_pairs++;
     ctx->counters.nearfield_subdivisions += patches;
     return x > 0 ? x : 0;

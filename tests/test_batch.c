@@ -3,7 +3,10 @@
  * strides, tails, empty batches, argument errors, backend names and resampling. */
 #include "lx_test.h"
 
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 static const lx_function XYZ[3] = {LX_FN_XBAR_2, LX_FN_YBAR_2, LX_FN_ZBAR_2};
 
@@ -290,6 +293,120 @@ static void test_batch_csv(void **state)
     lx_batch_table_free(t);
 }
 
+/* ---- streaming CSV (lx_batch_table_stream, lx_batch_table_integrate_file) ---- */
+
+typedef struct stream_check {
+    const double *want; /* strtod of every value written, row-major */
+    size_t n, rows_seen, calls;
+    int bad;
+} stream_check;
+
+static lx_status check_chunk(void *user, const lx_batch_table *chunk, size_t row0)
+{
+    stream_check *c = user;
+    if (row0 != c->rows_seen || chunk->batch.n_lambda != c->n) c->bad++;
+    const double *v = chunk->batch.values;
+    for (size_t i = 0; i < chunk->batch.n_spectra; i++) {
+        char name[32];
+        snprintf(name, sizeof name, "s%zu", row0 + i);
+        if (strcmp(chunk->names + chunk->name_at[i], name)) c->bad++;
+        for (size_t j = 0; j < c->n; j++) /* bit-identical to strtod (ISO C 7.22.1.3, correctly rounded) */
+            if (v[i * c->n + j] != c->want[(row0 + i) * c->n + j]) c->bad++;
+    }
+    c->rows_seen += chunk->batch.n_spectra;
+    c->calls++;
+    return LX_OK;
+}
+
+/* Writes rows named s0, s1, ... of 471 values (360-830 nm) in the formats a spectrometer CSV
+ * has: mostly %.6g, some the vector line parser leaves to the general one (exponents, long
+ * fractions, 8+ integer digits, spaces, "-0", "1.", ".5"). Returns the strtod values. */
+static double *write_stream_csv(const char *path, size_t rows, long bad_row)
+{
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    double *want = malloc(rows * 471 * sizeof *want);
+    fprintf(f, "# streamed\nid");
+    for (int j = 0; j < 471; j++) fprintf(f, ",%d", 360 + j);
+    fprintf(f, "\n");
+    unsigned s = 7;
+    for (size_t i = 0; i < rows; i++) {
+        fprintf(f, "s%zu", i);
+        for (int j = 0; j < 471; j++) {
+            s = s * 1103515245u + 12345u;
+            double x = 0.01 + 2.0 * (double)(s >> 8) / 16777216.0;
+            char cell[64];
+            switch (i % 3 ? 99 : (s >> 4) % 23) { /* two rows in three: %.6g only */
+            case 0: snprintf(cell, sizeof cell, "%.9g", x); break;
+            case 1: snprintf(cell, sizeof cell, "%.3e", x); break;
+            case 2: snprintf(cell, sizeof cell, "%.6g", -x); break;
+            case 3: snprintf(cell, sizeof cell, "%.1f", x * 1e8); break;
+            case 4: snprintf(cell, sizeof cell, " %.6g", x); break;
+            case 5: snprintf(cell, sizeof cell, "%s", (s >> 9) % 3 ? "-0" : (s >> 9) % 2 ? "1." : ".5"); break;
+            case 6: snprintf(cell, sizeof cell, "%.0f", x * 100); break;
+            default: snprintf(cell, sizeof cell, "%.6g", x); break;
+            }
+            if ((long)i == bad_row && j == 300) snprintf(cell, sizeof cell, "0.5x");
+            fprintf(f, ",%s", cell);
+            want[i * 471 + (size_t)j] = strtod(cell, NULL);
+        }
+        fprintf(f, i % 97 == 5 ? "\r\n\n" : "\n"); /* CRLF and blank lines move line numbers */
+    }
+    assert_int_equal(fclose(f), 0);
+    return want;
+}
+
+static lx_status check_chunk_count(void *user, const lx_batch_table *chunk, size_t row0)
+{
+    stream_check *c = user;
+    if (row0 != c->rows_seen) c->bad++;
+    c->rows_seen += chunk->batch.n_spectra;
+    return LX_OK;
+}
+
+static void test_batch_stream(void **state)
+{
+    lx_ctx *ctx = *state;
+    char path[] = "/tmp/lx_test_stream_XXXXXX";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    close(fd);
+    size_t rows = 1500; /* ~6 MB: several rounds of parts on 1 and on 2 threads */
+    double *want = write_stream_csv(path, rows, -1);
+    for (int mode = 0; mode < 4; mode++) { /* vector line parser on 1 and 2 threads, general parser likewise */
+        if (mode >= 2) setenv("LX_NOVECTOR", "1", 1);
+        stream_check c = {want, 471, 0, 0, 0};
+        lx_assert_ok(ctx, lx_batch_table_stream(ctx, path, LX_F64, 1 + mode % 2, check_chunk, &c));
+        assert_int_equal(c.bad, 0);
+        assert_int_equal(c.rows_seen, rows);
+        assert_true(c.calls > 2);
+        unsetenv("LX_NOVECTOR");
+    }
+    /* end to end against the long double oracle on the strtod values */
+    lx_function fns[4] = {LX_FN_XBAR_2, LX_FN_YBAR_2, LX_FN_ZBAR_2, LX_FN_VPRIME};
+    double *out = NULL;
+    size_t got = 0;
+    lx_assert_ok(ctx, lx_batch_table_integrate_file(ctx, path, fns, 4, 2, &out, &got));
+    assert_int_equal(got, rows);
+    for (size_t i = 0; i < rows; i += 13)
+        for (int f = 0; f < 4; f++)
+            lx_assert_near(out[i * 4 + (size_t)f], (double)oracle(ctx, want + i * 471, 471, 360, 1, fns[f]), 1e-12, 1e-12);
+    free(out);
+    free(want);
+    /* a bad value in row 1234: file line = 1 comment + 1 header + 1234 rows before it + the blank
+     * lines after rows i % 97 == 5 below 1234 (i = 5, 102, ..., 1169: 13 of them) + 1 */
+    want = write_stream_csv(path, rows, 1234);
+    free(want);
+    stream_check c = {NULL, 471, 0, 0, 0};
+    c.want = NULL;
+    assert_int_equal(lx_batch_table_integrate_file(ctx, path, fns, 4, 2, &out, &got), LX_EPARSE);
+    assert_int_equal(lx_ctx_errline(ctx), 1 + 1 + 1234 + 13 + 1);
+    assert_int_equal(lx_batch_table_stream(ctx, path, LX_F32, 1, check_chunk_count, &c), LX_EPARSE);
+    assert_int_equal(lx_ctx_errline(ctx), 1 + 1 + 1234 + 13 + 1);
+    assert_true(c.rows_seen <= 1234);
+    unlink(path);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -302,6 +419,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_auto_small_batch_stays_on_cpu, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(test_resample_cpu, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(test_batch_csv, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(test_batch_stream, lx_test_ctx_setup, lx_test_ctx_teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

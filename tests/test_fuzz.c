@@ -7,6 +7,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "fuzz/fuzz_batch.c"
 #include "fuzz/fuzz_exr.c"
 #include "fuzz/fuzz_ies.c"
 #include "fuzz/fuzz_scene.c"
@@ -65,12 +66,20 @@ static void test_scene_inputs(void **state)
     assert_true(n >= 15);
 }
 
+static void test_batch_inputs(void **state)
+{
+    (void)state;
+    int n = replay_dir("tests/fuzz/regressions/batch", fuzz_batch_one) + replay_dir("tests/data/spd/good", fuzz_batch_one);
+    n += replay_dir("tests/data/spd/bad", fuzz_batch_one) + replay_dir("tests/bad/spd", fuzz_batch_one);
+    assert_true(n >= 40);
+}
+
 static void test_exr_inputs(void **state)
 {
     (void)state;
     int n = replay_dir("tests/fuzz/regressions/exr", fuzz_exr_one) + replay_dir("samples/envmaps", fuzz_exr_one);
-    n += replay_dir("tests/bad/exr", fuzz_exr_one);
-    assert_true(n >= 8);
+    n += replay_dir("tests/bad/exr", fuzz_exr_one) + replay_dir("tests/fuzz/seeds/exr", fuzz_exr_one);
+    assert_true(n >= 40);
 }
 
 static void test_units_inputs(void **state)
@@ -87,6 +96,7 @@ int main(void)
         cmocka_unit_test(test_units_inputs),
         cmocka_unit_test(test_ies_inputs),
         cmocka_unit_test(test_scene_inputs),
+        cmocka_unit_test(test_batch_inputs),
         cmocka_unit_test(test_exr_inputs),
     };
     return cmocka_run_group_tests_name("fuzz regressions", tests, NULL, NULL);

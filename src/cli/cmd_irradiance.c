@@ -1,5 +1,5 @@
-/* cmd_irradiance.c - `luxcalc irradiance`: an irradiance environment map from a lat-long radiance
- * map (OpenEXR in, OpenEXR out), or the irradiance and illuminance for one normal (--normal). */
+/* cmd_irradiance.c - `luxcalc irradiance`: an irradiance environment map from a lat-long or cube
+ * radiance map (OpenEXR in, OpenEXR out in the same layout), or the irradiance and illuminance for one normal (--normal). */
 #include "cli.h"
 
 #include <getopt.h>
@@ -12,15 +12,19 @@ static const char help[] =
     "usage: luxcalc irradiance IN.exr -o OUT.exr [--method sh9|brute|fast] [--size WxH] [--png FILE]\n"
     "       luxcalc irradiance IN.exr --normal X,Y,Z [--method M] [--format table|csv|json]\n"
     "\n"
-    "IN is a lat-long radiance map (+z up, theta from +z, phi from +x towards +y, row 0 at theta = 0).\n"
-    "OUT holds E(n) = integral L(w) max(0, n.w) dw for the normal n of each pixel centre.\n"
+    "IN is a lat-long radiance map (+z up, theta from +z, phi from +x towards +y, row 0 at theta = 0)\n"
+    "or an OpenEXR cube map (envmap attribute cube: N x 6N, faces +X,-X,+Y,-Y,+Z,-Z; the file's +Y\n"
+    "face is our zenith +z, its -Z face looks towards +x, its +X face towards +y).\n"
+    "OUT holds E(n) = integral L(w) max(0, n.w) dw for the normal n of each pixel centre, in the\n"
+    "layout of IN.\n"
     "\n"
     "  --method M       sh9 (default): 9 spherical harmonics, fast, rings around a sun (error up to\n"
     "                   3/32 of the source's integral L dw);\n"
     "                   brute: every input pixel for every output pixel, sum L_p max(0, n.m_p) with\n"
     "                   m_p the exact first moment of the pixel (OpenCL or CPU);\n"
     "                   fast: the same sum as brute by per-row prefix sums, O(rows) per output\n"
-    "  --size WxH       output size (default: the input's; brute/fast cost grows with it)\n"
+    "  --size WxH       output size (default: the input's; brute/fast cost grows with it); for a\n"
+    "                   cube map N x 6N (faces of N x N)\n"
     "  --window W       sh9 window: none (default) or nonneg (1, 6/7, 32/35: never negative)\n"
     "  --backend B      brute only: auto, cpu or opencl (also LX_BACKEND)\n"
     "  --threads N      CPU threads (default: all cores)\n"
@@ -162,7 +166,7 @@ int cmd_irradiance(int argc, char **argv)
     lx_ctx *ctx = cli_ctx(cmd);
     if (!ctx) return CLI_RUNTIME;
     lx_envmap *m = NULL, *e = NULL;
-    lx_status st = lx_exr_read(ctx, in, &m);
+    lx_status st = lx_exr_read_any(ctx, in, &m);
     int rc = st ? cli_fail(cmd, ctx, st) : cli_envmap_units(cmd, m, units, eff);
     static const char *mname[3] = {"sh9", "brute", "fast"};
     if (!rc && normal) {
@@ -189,6 +193,9 @@ int cmd_irradiance(int argc, char **argv)
             }
             cli_table_free(t);
         }
+    } else if (!rc && m->layout == LX_ENV_CUBE && W && H != 6 * W) {
+        cli_error(cmd, "--size: %dx%d: the input is a cube map, give N x 6N", W, H);
+        rc = CLI_USAGE;
     } else if (!rc) {
         if (io.method != LX_IRR_SH9 && W == 0 && (double)m->width * m->height * m->width * m->height > 4e10 &&
             io.method == LX_IRR_BRUTE && io.backend != LX_BACKEND_OPENCL)

@@ -85,7 +85,7 @@ int cmd_luminance_map(int argc, char **argv)
     if (!ctx) return CLI_RUNTIME;
     lx_envmap *m = NULL;
     double *lum = NULL, *sorted = NULL;
-    lx_status st = lx_exr_read(ctx, in, &m);
+    lx_status st = lx_exr_read_any(ctx, in, &m);
     int rc = st ? cli_fail(cmd, ctx, st) : cli_envmap_units(cmd, m, units, eff);
     if (!rc) {
         size_t n = (size_t)m->width * m->height;
@@ -97,7 +97,7 @@ int cmd_luminance_map(int argc, char **argv)
         if (!rc) {
             double sum = 0, wsum = 0, wtot = 0;
             for (size_t p = 0; p < n; p++) {
-                double w = lx_envmap_pixel_sr(m->width, m->height, (int)(p / m->width));
+                double w = lx_envmap_texel_sr(m, (int)(p / m->width), (int)(p % m->width));
                 sum += lum[p];
                 wsum += w * lum[p];
                 wtot += w;

@@ -24,6 +24,13 @@ typedef struct cli_spd_batch {
 int cli_spd_batchable(const cli_spd_batch *B, const lx_spd_set *set);
 /* Adds one row per spectrum of a batchable set. */
 lx_status cli_spd_batch_set(cli_spd_batch *B, const lx_spd_set *set);
+/* A rows-layout CSV file (not "-") read by lx_batch_table_stream: chunks are integrated
+ * (lx_batch_colorimetry) while the next ones parse, and the rows are added to the table only
+ * once the whole file parsed and every spectrum is batchable. Returns 1 when it did the file,
+ * 0 when the caller must use the general reader instead (not a plain rows layout, another
+ * method, fewer than CLI_SPD_BATCH_MIN spectra without --backend, or any error: the general
+ * reader then reports the file's first problem, FILE:LINE, exactly as before). */
+int cli_spd_batch_file(cli_spd_batch *B, const char *path);
 /* "START:END:STEP" in nm into the grid; 0 on success. */
 int cli_spd_parse_grid(const char *s, double *start, double *step, size_t *n);
 /* Raw little-endian float32 spectra of n samples each ("-" is stdin); errors are printed. */

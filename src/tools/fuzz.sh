@@ -17,9 +17,10 @@ libs=$(cat $B/libs.txt)
 seeds_for() {
   case $1 in
     spd) echo samples/spd tests/data/spd tests/bad/spd ;;
+    batch) echo samples/batch samples/spd tests/data/spd tests/bad/spd ;;
     ies) echo samples/ies samples/scenes/ies tests/data/ies tests/bad/ies ${LX_SHARED_DIR:-../shared}/ies ;;
     scene) echo samples/scenes tests/data/scenes tests/bad/scene ;;
-    exr) echo samples/envmaps tests/bad/exr ;;
+    exr) echo samples/envmaps tests/bad/exr tests/data/exr ;;
   esac
   echo tests/fuzz/seeds/$1
 }

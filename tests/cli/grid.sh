@@ -34,5 +34,14 @@ expect_field 1 E_avg 17.064809377415231 1e-9 "summary E_avg"
 expect_field 1 U0 0.83418751147513 1e-9 "summary U0"
 run grid --ies $S/point_isotropic_1000lm.ies --at 0,0,2 --plane z=0 --area 0:1,0:1 --spacing 0.5 --summary --backend opencl
 expect_rc 0 "grid on OpenCL (table interpolation)"
+# near field: the sample's 0.3 m x 0.3 m Lambertian panel (1000 lm, L = 1000 / (pi 0.09) cd/m2) 0.3 m
+# above the point (0.71 x its diagonal). Howell B-3, four corner rectangles X = Y = 0.15 / 0.3 = 0.5:
+# F = 4 / (2 pi) [2 X / sqrt(1 + X^2) atan(X / sqrt(1 + X^2))], E = pi L F = 2660.62745 lx; bound
+# 2e-4 relative (0.53 lx): the refinement tolerance 1e-4 plus the 1 deg table's interpolation of cos.
+run grid --ies $S/downlight_lambert_1000lm.ies --at 0,0,0.3 --plane z=0 --area 0:0,0:0 --points 1x1
+expect_field 1 illuminance_lx 2660.6274495641505 0.53 "near field converges to the exact rectangle"
+# the point model: L A / h^2 = 1000 / pi / 0.09 = 3536.77651 lx (the +33 % the near field removes)
+run grid --ies $S/downlight_lambert_1000lm.ies --at 0,0,0.3 --plane z=0 --area 0:0,0:0 --points 1x1 --model point
+expect_field 1 illuminance_lx 3536.7765131532296 1e-6 "point model under the panel"
 run grid --ies $S/point_isotropic_1000lm.ies --at 0,0,2 --plane w=0 --area 0:1,0:1 --spacing 0.5
 expect_rc 1 "a bad --plane is a usage error"

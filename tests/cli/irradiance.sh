@@ -53,3 +53,18 @@ run luminance-map "$T/bad.exr"
 expect_rc 2 "malformed EXR: exit 2"
 run irradiance --help
 expect_out_match 'example' "help has an example"
+# cube maps: samples/envmaps/cube_px.exr is an 8 x 48 OpenEXR cube map (envmap cube), radiance 1 on
+# the file's +X face and 0 elsewhere (written by lx_envmap_create_cube + lx_exr_write). The +X face
+# looks towards luxcalc's +y (README "cube maps"): E(+y) = its projected solid angle sqrt(2) acos(1/3)
+for m in brute fast; do
+  run irradiance $M/cube_px.exr --normal 0,1,0 --method $m --format csv
+  expect_field 1 irradiance 1.7408395027342065 1e-12 "cube +X face, $m: E(+y) = sqrt(2) acos(1/3)"
+done
+run irradiance $M/cube_px.exr --normal 0,-1,0 --method fast --format csv
+expect_field 1 irradiance 0 1e-12 "cube +X face: E(-y) = 0"
+run irradiance $M/cube_px.exr -o "$T/Ecube.exr"
+expect_rc 0 "cube irradiance map written"
+run luminance-map "$T/Ecube.exr" --format csv
+expect_field 1 height 48 0 "output is a cube map of the same layout (8 x 48)"
+run irradiance $M/cube_px.exr -o "$T/Ecube.exr" --size 16x8
+expect_rc 1 "cube input with a non N x 6N --size: exit 1"

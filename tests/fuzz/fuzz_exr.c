@@ -1,6 +1,7 @@
-/* fuzz_exr.c - fuzz target: the OpenEXR reader (lx_exr_read, OpenEXRCore underneath) on any bytes.
- * lx_exr_read takes a path, so each input is written to one temporary file first.
- * Properties: never crash; an error names the file; an accepted map is well formed and finite. */
+/* fuzz_exr.c - fuzz target: the OpenEXR readers (lx_exr_read for radiance maps and
+ * lx_spectral_exr_read_xyz for spectral images, OpenEXRCore underneath) on any bytes. They take a
+ * path, so each input is written to one temporary file first. Properties: never crash; an error
+ * names the file; an accepted map or image is well formed and finite. */
 #include "luxcalc.h"
 
 #include <math.h>
@@ -43,6 +44,18 @@ int fuzz_exr_one(const uint8_t *data, size_t size)
     } else {
         if (m) abort();
         if (!lx_ctx_errfile(ctx)) abort(); /* every error names the file */
+    }
+    lx_batch_opts o = {.backend = LX_BACKEND_CPU};
+    lx_xyz_image *img = NULL;
+    st = lx_spectral_exr_read_xyz(ctx, fuzz_exr_path, LX_OBSERVER_2, &o, &img);
+    if (st == LX_OK) {
+        if (!img || img->width < 1 || img->height < 1 || img->n_lambda < 1 || !img->xyz) abort();
+        for (size_t i = 0; i < (size_t)img->width * img->height * 3; i++)
+            if (!isfinite(img->xyz[i])) abort();
+        lx_xyz_image_free(img);
+    } else {
+        if (img) abort();
+        if (!lx_ctx_errfile(ctx)) abort();
     }
     lx_ctx_destroy(ctx);
     return 0;

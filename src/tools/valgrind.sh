@@ -1,0 +1,25 @@
+#!/bin/sh
+# valgrind.sh - the whole test suite (every cmocka binary and every CLI case of tests/cli) under
+# valgrind memcheck, run by `make valgrind`: an error or a definite/indirect leak in any run fails it
+# (exit 99 from valgrind). tests/valgrind.supp holds the loader's and the OpenCL stack's own noise.
+# Usage: sh src/tools/valgrind.sh BUILD_DIR TEST_BIN...
+set -u
+B=$1; shift
+command -v valgrind >/dev/null || { echo "valgrind: not installed (apt-get install valgrind)" >&2; exit 1; }
+V="valgrind --quiet --error-exitcode=99 --leak-check=full --show-leak-kinds=definite,indirect"
+V="$V --errors-for-leak-kinds=definite,indirect --suppressions=$(pwd)/tests/valgrind.supp --num-callers=30"
+W=$B/vg
+rm -rf "$W"; mkdir -p "$W/tests"
+# wrappers with the binaries' names: run.sh and the CLI cases run these
+for t in "$@"; do
+  printf '#!/bin/sh\nexec %s %s "$@"\n' "$V" "$(pwd)/$t" >"$W/tests/${t##*/}"
+  chmod +x "$W/tests/${t##*/}"
+done
+printf '#!/bin/sh\nexec %s %s "$@"\n' "$V" "$(pwd)/$B/luxcalc" >"$W/luxcalc"
+chmod +x "$W/luxcalc"
+for f in libluxcalc.a libluxcalc.so libluxcalc.so.0 libs.txt gen; do [ -e "$B/$f" ] && ln -s "$(pwd)/$B/$f" "$W/$f"; done
+start=$(date +%s)
+sh tests/run.sh "$W" $(for t in "$@"; do echo "$W/tests/${t##*/}"; done)
+rc=$?
+echo "valgrind: the suite took $(( $(date +%s) - start )) s"
+exit $rc
