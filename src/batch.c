@@ -1,5 +1,5 @@
 /* batch.c - batch spectral integration: N spectra on one uniform grid against K weighting
- * functions (cie15 rule), on the CPU (AVX2/FMA vectorised, pthreads, double accumulation) or on
+ * functions (cie15 rule), on the CPU (AVX-512 or AVX2/FMA, pthreads, double accumulation) or on
  * OpenCL (kernels/spd_batch.cl, chunked by CL_DEVICE_MAX_MEM_ALLOC_SIZE); backend choice; resampling. */
 #include "lx_private.h"
 
@@ -192,7 +192,8 @@ __attribute__((target("avx2,fma"))) static void avx2_rows(const cpu_job *J)
                 __m512d w0 = _mm512_load_pd(wq), w1 = _mm512_load_pd(wq + 8);                            \
                 __m512d w2 = _mm512_load_pd(wq + 16), w3 = _mm512_load_pd(wq + 24);                      \
                 _Pragma("GCC unroll 4") for (int s = 0; s < NS; s++) {                                                           \
-                    _mm_prefetch((const char *)(r[s] + LX_PF_ROWS * J->stride + 8 * q), _MM_HINT_T0);      \
+                    _mm_prefetch((const char *)((uintptr_t)(r[s] + 8 * q) + LX_PF_ROWS * J->stride * sizeof(T)), \
+                                 _MM_HINT_T0);                                                           \
                     __m512d x = LOADX(r[s] + 8 * q);                                                     \
                     acc[s][0] = _mm512_fmadd_pd(x, w0, acc[s][0]);                                       \
                     acc[s][1] = _mm512_fmadd_pd(x, w1, acc[s][1]);                                       \

@@ -1,6 +1,7 @@
 /* batch_csv.c - reads a rows-layout batch CSV (header "id,380,381,...": one spectrum per line on a
- * uniform grid) straight into a float or double batch, in parallel (lines split between threads),
- * numbers parsed by lx__parse_double. The fast input of `luxcalc spd` batches and `bench spd`. */
+ * uniform grid) into a float or double batch in parallel, whole (lx_batch_table_read) or streamed
+ * chunk by chunk (lx_batch_table_stream, lx_batch_table_integrate_file); short decimals by an
+ * AVX-512BW/SWAR line parser, everything else by lx__parse_double (both exact, as strtod). */
 #include "lx_private.h"
 
 #include <errno.h>
@@ -165,74 +166,64 @@ slow:;
 #if LX_SWAR && defined(__GNUC__) && defined(__x86_64__)
 #include <immintrin.h>
 #define LX_FAST_LINE 1
-/* One field [fs, fe) of only digits, '.' and '-' (the caller checked the bytes):
- * "-?D{1,7}(.D{0,7})?" or up to 8 characters with one '.' as the signed integer *m and the
- * count of fraction digits *nf (value m / 10^nf); 0 when it is anything else ("-0" included,
- * whose sign m cannot carry: the general parser keeps it). */
-__attribute__((always_inline)) static inline int fast_field(const char *fs, const char *fe, int64_t *m, uint8_t *nf)
+/* One field [fs, fe) of only digits, '.' and '-' (the caller checked the bytes): "-?D{1,7}(.D{0,7})?"
+ * into *out, correctly rounded (Clinger, as parse_num); 0 when it is anything else. */
+__attribute__((always_inline)) static inline int fast_field(const char *fs, const char *fe, double *out)
 {
     int neg = *fs == '-';
     const char *is = fs + neg;
     ptrdiff_t len = fe - is;
-    uint64_t u;
-    int f = 0;
     if (len >= 1 && len <= 8) {
         /* the whole number in one 8-byte word: find the first '.' (zero byte of x ^ '.'), close
          * the gap it leaves, check the len or len - 1 bytes left are digits, convert them at once */
         uint64_t keep = len == 8 ? ~0ull : (1ull << (8 * len)) - 1, x = load8(is) & keep;
         uint64_t d = x ^ 0x2e2e2e2e2e2e2e2eull;
         uint64_t z = (d - 0x0101010101010101ull) & ~d & 0x8080808080808080ull & keep;
-        int k = (int)len;
+        int k = (int)len, nf = 0;
         if (z) {
             int dp = __builtin_ctzll(z) >> 3;
             if (dp == 0) return 0; /* ".5": the general parser */
             uint64_t hi = dp < 7 ? x >> (8 * (dp + 1)) : 0;
             x = (x & ((1ull << (8 * dp)) - 1)) | (hi << (8 * dp));
             k = (int)len - 1;
-            f = k - dp;
+            nf = k - dp;
         }
         if (leading_digits(x) < k) return 0;
-        u = digits_value(x, k);
-    } else {
-        int ni = leading_digits(load8(is));
-        if (ni < 1 || ni > 7) return 0;
-        u = digits_value(load8(is), ni);
-        if (is + ni != fe) {
-            const char *f0 = is + ni + 1;
-            if (is[ni] != '.' || fe - f0 > 7) return 0;
-            f = (int)(fe - f0);
-            if (f) {
-                uint64_t y = load8(f0);
-                if (leading_digits(y) < f) return 0;
-                u = u * pow10_u64[f] + digits_value(y, f);
-            }
+        double v = (double)digits_value(x, k) / pow10_exact[nf]; /* <= 8 digits: one rounding */
+        *out = neg ? -v : v;
+        return 1;
+    }
+    int ni = leading_digits(load8(is));
+    if (ni < 1 || ni > 7) return 0;
+    uint64_t m = digits_value(load8(is), ni);
+    int nf = 0;
+    if (is + ni != fe) {
+        const char *f0 = is + ni + 1;
+        if (is[ni] != '.' || fe - f0 > 7) return 0;
+        nf = (int)(fe - f0);
+        if (nf) {
+            uint64_t y = load8(f0);
+            if (leading_digits(y) < nf) return 0;
+            m = m * pow10_u64[nf] + digits_value(y, nf);
         }
     }
-    if (neg && u == 0) return 0;
-    *m = neg ? -(int64_t)u : (int64_t)u;
-    *nf = (uint8_t)f;
+    double v = (double)m / pow10_exact[nf]; /* <= 14 digits: exact operands, one rounding */
+    *out = neg ? -v : v;
     return 1;
 }
 
-#define FAST_LINE_MAX 4096 /* values a line may have for the vector line parser */
-
 /* A whole line of n values q..le (le + 64 must be readable) when every value is a short decimal:
  * separators found 64 bytes at a time (AVX-512BW masks), so each field's bounds come without
- * scanning the previous one and the fields parse independently into integer and decimal
- * exponent; then 8 values at a time m / 10^nf, both exact (m < 2^53, nf <= 7), one correctly
- * rounded division (Clinger's fast path, as parse_num). 0: the caller's general loop redoes
- * the line (it reports errors). */
-__attribute__((target("avx512f,avx512bw,avx512dq,avx512vl,bmi,bmi2"))) static int fast_line(const char *q, const char *le,
-                                                                                           char sep, size_t n, int f32,
-                                                                                           void *dst)
+ * scanning the previous one and the fields parse independently. 0: the caller's general loop
+ * redoes the line (it reports errors). */
+__attribute__((target("avx512f,avx512bw,bmi,bmi2"))) static int fast_line(const char *q, const char *le, char sep,
+                                                                         size_t n, int f32, void *dst)
 {
     const __m512i vsep = _mm512_set1_epi8(sep), vdot = _mm512_set1_epi8('.'), vmin = _mm512_set1_epi8('-');
     const __m512i v0 = _mm512_set1_epi8('0'), v10 = _mm512_set1_epi8(10);
-    int64_t mv[FAST_LINE_MAX];
-    uint8_t ev[FAST_LINE_MAX + 8];
-    if (n > FAST_LINE_MAX) return 0;
     const char *fs = q;
     size_t j = 0;
+    double v;
     for (const char *b = q; b < le; b += 64) {
         size_t len = (size_t)(le - b) < 64 ? (size_t)(le - b) : 64;
         uint64_t lm = len == 64 ? ~0ull : (1ull << len) - 1;
@@ -243,27 +234,17 @@ __attribute__((target("avx512f,avx512bw,avx512dq,avx512vl,bmi,bmi2"))) static in
         if ((ok & lm) != lm) return 0;
         while (sm) {
             const char *fe = b + __builtin_ctzll(sm);
-            if (j + 1 >= n || fe == fs || !fast_field(fs, fe, &mv[j], &ev[j])) return 0;
+            if (j + 1 >= n || fe == fs || !fast_field(fs, fe, &v)) return 0;
+            if (f32) ((float *)dst)[j] = (float)v;
+            else ((double *)dst)[j] = v;
             j++;
             fs = fe + 1;
             sm &= sm - 1;
         }
     }
-    if (j + 1 != n || le == fs || !fast_field(fs, le, &mv[j], &ev[j])) return 0;
-    const __m512d p10 = _mm512_setr_pd(1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7);
-    j = 0;
-    for (; j + 8 <= n; j += 8) {
-        __m512d m = _mm512_cvtepi64_pd(_mm512_loadu_si512((const void *)(mv + j)));
-        __m512i e = _mm512_cvtepu8_epi64(_mm_loadl_epi64((const __m128i *)(const void *)(ev + j)));
-        __m512d v = _mm512_div_pd(m, _mm512_permutexvar_pd(e, p10));
-        if (f32) _mm256_storeu_ps((float *)dst + j, _mm512_cvtpd_ps(v));
-        else _mm512_storeu_pd((double *)dst + j, v);
-    }
-    for (; j < n; j++) {
-        double v = (double)mv[j] / pow10_exact[ev[j]];
-        if (f32) ((float *)dst)[j] = (float)v;
-        else ((double *)dst)[j] = v;
-    }
+    if (j + 1 != n || le == fs || !fast_field(fs, le, &v)) return 0;
+    if (f32) ((float *)dst)[j] = (float)v;
+    else ((double *)dst)[j] = v;
     return 1;
 }
 
@@ -273,7 +254,6 @@ static int have_fast_line(void)
     if (cached < 0) {
         __builtin_cpu_init();
         cached = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
-                 __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl") &&
                  __builtin_cpu_supports("bmi") && __builtin_cpu_supports("bmi2");
     }
     return cached;

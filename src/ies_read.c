@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 char *lx__strndup(const char *s, const char *e)
 {
@@ -114,6 +115,9 @@ static lx_status tilt_file(lx_ctx *ctx, const char *file, long line, const char 
     else
         snprintf(path, sizeof path, "%s", name);
     FILE *fp = NULL;
+    struct stat sb; /* a TILT table is a file: not stdin, a device or a FIFO */
+    if (stat(path, &sb) == 0 && !S_ISREG(sb.st_mode) && !S_ISDIR(sb.st_mode))
+        return lx__error(ctx, LX_EIO, file, line, "TILT file '%s': not a regular file", path);
     if (!strcmp(path, "-") || lx__open_read(ctx, path, &fp))
         return lx__error(ctx, LX_EIO, file, line, "TILT file '%s': %s", path, strcmp(path, "-") ? lx_ctx_errmsg(ctx) : "not a file");
     char *buf = NULL;
@@ -269,7 +273,7 @@ lx_status lx__ies_read(lx_ctx *ctx, const char *file, const char *text, size_t l
                 break;
             }
         }
-        if (*p == '[') {
+        if (p < e && *p == '[') {
             if (keyword(lum, p, e, &last_kw)) {
                 st = lx__error(ctx, LX_ENOMEM, file, it.line, "out of memory");
                 goto fail;

@@ -98,6 +98,7 @@ lx_status lx_luminaire_read_mem(lx_ctx *ctx, const char *name, const char *text,
     if (len == 0) return lx__error(ctx, LX_EPARSE, name, 1, "empty file");
     /* LM-63 by its TILT= line, or by its version line (then the IES reader reports the missing TILT) */
     size_t skip = len >= 3 && !memcmp(text, "\xEF\xBB\xBF", 3) ? 3 : 0;
+    if (len == skip) return lx__error(ctx, LX_EPARSE, name, 1, "empty file (a byte-order mark only)");
     int ies_version = (len - skip >= 6 && !memcmp(text + skip, "IESNA", 5)) || (len - skip >= 4 && !memcmp(text + skip, "IES:", 4));
     if (has_tilt_line(text, len) || ies_version) return lx__ies_read(ctx, name, text, len, out);
     return lx__ldt_read(ctx, name, text, len, out);

@@ -1,7 +1,8 @@
 /* spectral_exr.c - spectral OpenEXR images (Fichet et al. 2021 layout: S0.<wavelength>nm channels)
  * integrated per pixel into absolute CIE XYZ with the batch path, written as an XYZ float EXR and
- * an sRGB preview PNG. Reads and writes through OpenEXRCore directly (exr_io.c reads RGB/Y maps). */
-#include "lx_private.h"
+ * an sRGB preview PNG. Reads and writes through OpenEXRCore with the stream of exr_stream.c
+ * (exr_io.c reads RGB/Y maps). */
+#include "exr_private.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -9,10 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <unistd.h>
-
-#include <openexr.h>
 
 #define KM_2 683.002  /* lm/W, CIE 015:2018, as lx_spd_colorimetry */
 #define KM_10 683.599 /* lm/W, 10 deg observer */
@@ -44,44 +42,6 @@ int lx__spectral_channel(const char *name, int *kind, double *lambda_nm)
     return -1; /* frequency units (Hz) and anything else */
 }
 
-typedef struct stream {
-    int fd;
-    char msg[512];
-} stream;
-
-static void on_error(exr_const_context_t ectx, exr_result_t code, const char *msg)
-{
-    void *ud = NULL;
-    if (exr_get_user_data(ectx, &ud) == EXR_ERR_SUCCESS && ud)
-        snprintf(((stream *)ud)->msg, sizeof ((stream *)ud)->msg, "%s (%s)", msg ? msg : "",
-                 exr_get_error_code_as_string(code));
-}
-
-static int64_t s_write(exr_const_context_t ectx, void *ud, const void *buf, uint64_t sz, uint64_t off,
-                       exr_stream_error_func_ptr_t err)
-{
-    (void)ectx;
-    (void)err;
-    stream *s = ud;
-    uint64_t put = 0;
-    while (put < sz) {
-        ssize_t r = pwrite(s->fd, (const char *)buf + put, (size_t)(sz - put), (off_t)(off + put));
-        if (r < 0 && errno == EINTR) continue;
-        if (r <= 0) return -1;
-        put += (uint64_t)r;
-    }
-    return (int64_t)put;
-}
-
-static lx_status fail(lx_ctx *ctx, const char *path, const stream *s, exr_result_t rv, const char *what)
-{
-    lx_status st = rv == EXR_ERR_OUT_OF_MEMORY ? LX_ENOMEM
-                   : rv == EXR_ERR_FEATURE_NOT_IMPLEMENTED ? LX_EUNSUPPORTED
-                   : (rv == EXR_ERR_READ_IO || rv == EXR_ERR_WRITE_IO || rv == EXR_ERR_FILE_ACCESS) ? LX_EIO
-                                                                                                     : LX_EPARSE;
-    return lx__error(ctx, st, path, 0, "%s: %s", what, s->msg[0] ? s->msg : exr_get_default_error_message(rv));
-}
-
 typedef struct chan {
     const char *name;
     double lambda_nm;
@@ -93,68 +53,43 @@ static int cmp_chan(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* decodes one chunk: the S0 channels into buf (nl floats per pixel, row stride W pixels) */
-static lx_status decode(lx_ctx *ctx, const char *path, stream *s, exr_context_t e, exr_decode_pipeline_t *dec,
-                        int *inited, const exr_chunk_info_t *ci, float *buf, int W, int x0, int y0, const chan *ch,
-                        int nl)
+/* lx__exr_slot_fn of reading: user points to the S0 channels; a channel's slot is its index there */
+typedef struct chan_set {
+    const chan *ch;
+    int nl;
+} chan_set;
+
+static int read_slot(const char *name, const void *user)
 {
-    exr_result_t rv = *inited ? exr_decoding_update(e, 0, ci, dec) : exr_decoding_initialize(e, 0, ci, dec);
-    if (rv) return fail(ctx, path, s, rv, "cannot decode a chunk");
-    *inited = 1;
-    for (int k = 0; k < dec->channel_count; k++) {
-        exr_coding_channel_info_t *c = &dec->channels[k];
-        int slot = -1;
-        for (int q = 0; q < nl && slot < 0; q++)
-            if (!strcmp(ch[q].name, c->channel_name)) slot = q;
-        if (slot < 0 || c->height == 0) {
-            c->decode_to_ptr = NULL;
-            continue;
-        }
-        c->decode_to_ptr = (uint8_t *)(buf + ((size_t)y0 * W + x0) * nl + slot);
-        c->user_pixel_stride = (int32_t)(nl * sizeof(float));
-        c->user_line_stride = (int32_t)((size_t)W * nl * sizeof(float));
-        c->user_data_type = EXR_PIXEL_FLOAT;
-        c->user_bytes_per_element = 4;
-    }
-    rv = exr_decoding_choose_default_routines(e, 0, dec);
-    if (!rv) rv = exr_decoding_run(e, 0, dec);
-    if (rv) return fail(ctx, path, s, rv, "cannot decode a chunk");
-    return LX_OK;
+    const chan_set *cs = user;
+    for (int q = 0; q < cs->nl; q++)
+        if (!strcmp(cs->ch[q].name, name)) return q;
+    return -1;
+}
+
+/* lx__exr_slot_fn of writing: X, Y, Z */
+static int xyz_slot(const char *name, const void *user)
+{
+    (void)user;
+    return name[0] == 'X' ? 0 : name[0] == 'Y' ? 1 : 2;
 }
 
 /* reads the S0 channels: *data (W x H x nl floats), *ch (nl channels by increasing wavelength) */
 static lx_status read_spectral(lx_ctx *ctx, const char *path, float **data, chan **chans, int *nl_out, int *W_out,
                                int *H_out, int *npol)
 {
-    stream s = {.fd = -1};
-    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
-    init.error_handler_fn = on_error;
-    init.user_data = &s;
+    lx__exr_stream s = {.fd = open(path, O_RDONLY)};
+    if (s.fd < 0) return lx__error(ctx, LX_EIO, path, 0, "cannot open: %s", strerror(errno));
     exr_context_t e = NULL;
-    exr_decode_pipeline_t dec = EXR_DECODE_PIPELINE_INITIALIZER;
-    int inited = 0, nl = 0, nrefl = 0;
+    int nl = 0, nrefl = 0;
     float *buf = NULL;
     chan *ch = NULL;
-    lx_status st = LX_OK;
-    exr_result_t rv = exr_start_read(&e, path, &init);
-    if (rv) {
-        st = fail(ctx, path, &s, rv, "not a readable OpenEXR file");
-        goto done;
-    }
+    exr_result_t rv;
     exr_storage_t storage;
-    if ((rv = exr_get_storage(e, 0, &storage))) {
-        st = fail(ctx, path, &s, rv, "cannot read the header");
-        goto done;
-    }
-    if (storage != EXR_STORAGE_SCANLINE && storage != EXR_STORAGE_TILED) {
-        st = lx__error(ctx, LX_EUNSUPPORTED, path, 0, "deep images are not supported");
-        goto done;
-    }
-    const exr_attr_chlist_t *cl = NULL;
-    if ((rv = exr_get_channels(e, 0, &cl)) || !cl || cl->num_channels < 1) {
-        st = fail(ctx, path, &s, rv ? rv : EXR_ERR_MISSING_REQ_ATTR, "no channels");
-        goto done;
-    }
+    const exr_attr_chlist_t *cl;
+    lx_status st = lx__exr_read_begin(ctx, path, &s, &e, &storage, "deep images are not supported");
+    if (!st) st = lx__exr_channels(ctx, path, &s, e, &cl);
+    if (st) goto done;
     ch = calloc((size_t)cl->num_channels, sizeof *ch);
     if (!ch) {
         st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
@@ -174,15 +109,7 @@ static lx_status read_spectral(lx_ctx *ctx, const char *path, float **data, chan
             (*npol)++;
             continue;
         }
-        if (en->x_sampling != 1 || en->y_sampling != 1) {
-            st = lx__error(ctx, LX_EUNSUPPORTED, path, 0, "channel %s is subsampled (%dx%d)", en->name.str,
-                           en->x_sampling, en->y_sampling);
-            goto done;
-        }
-        if (en->pixel_type == EXR_PIXEL_UINT) {
-            st = lx__error(ctx, LX_EUNSUPPORTED, path, 0, "channel %s holds integers, not radiance", en->name.str);
-            goto done;
-        }
+        if ((st = lx__exr_check_channel(ctx, path, en))) goto done;
         ch[nl].name = en->name.str;
         ch[nl++].lambda_nm = lam;
     }
@@ -210,7 +137,7 @@ static lx_status read_spectral(lx_ctx *ctx, const char *path, float **data, chan
         }
     exr_attr_box2i_t dw;
     if ((rv = exr_get_data_window(e, 0, &dw))) {
-        st = fail(ctx, path, &s, rv, "no data window");
+        st = lx__exr_fail(ctx, path, &s, rv, "no data window");
         goto done;
     }
     long W = (long)dw.max.x - dw.min.x + 1, H = (long)dw.max.y - dw.min.y + 1;
@@ -223,38 +150,8 @@ static lx_status read_spectral(lx_ctx *ctx, const char *path, float **data, chan
         st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory for %ldx%ld pixels x %d channels", W, H, nl);
         goto done;
     }
-    exr_chunk_info_t ci;
-    if (storage == EXR_STORAGE_SCANLINE) {
-        int32_t lpc = 1;
-        exr_get_scanlines_per_chunk(e, 0, &lpc);
-        if (lpc < 1) lpc = 1;
-        for (long y = dw.min.y; y <= dw.max.y && !st; y += lpc) {
-            if ((rv = exr_read_scanline_chunk_info(e, 0, (int)y, &ci))) {
-                st = fail(ctx, path, &s, rv, "cannot read a scanline chunk");
-                break;
-            }
-            st = decode(ctx, path, &s, e, &dec, &inited, &ci, buf, (int)W, 0, (int)(ci.start_y - dw.min.y), ch, nl);
-        }
-    } else {
-        uint32_t tw = 0, th = 0;
-        exr_tile_level_mode_t lm;
-        exr_tile_round_mode_t rm;
-        int32_t lw = 0, lh = 0;
-        if ((rv = exr_get_tile_descriptor(e, 0, &tw, &th, &lm, &rm)) || (rv = exr_get_level_sizes(e, 0, 0, 0, &lw, &lh)) ||
-            tw == 0 || th == 0) {
-            st = fail(ctx, path, &s, rv ? rv : EXR_ERR_INVALID_ATTR, "invalid tile description");
-            goto done;
-        }
-        long ntx = (lw + (long)tw - 1) / tw, nty = (lh + (long)th - 1) / th;
-        for (long ty = 0; ty < nty && !st; ty++)
-            for (long tx = 0; tx < ntx && !st; tx++) {
-                if ((rv = exr_read_tile_chunk_info(e, 0, (int)tx, (int)ty, 0, 0, &ci))) {
-                    st = fail(ctx, path, &s, rv, "cannot read a tile");
-                    break;
-                }
-                st = decode(ctx, path, &s, e, &dec, &inited, &ci, buf, (int)W, (int)(tx * tw), (int)(ty * th), ch, nl);
-            }
-    }
+    const chan_set cs = {ch, nl};
+    st = lx__exr_read_pixels(ctx, path, &s, e, storage, &dw, buf, (int)W, nl, read_slot, &cs);
     if (st) goto done;
     for (size_t k = 0; k < (size_t)W * H * nl; k++)
         if (!isfinite(buf[k])) {
@@ -266,7 +163,6 @@ static lx_status read_spectral(lx_ctx *ctx, const char *path, float **data, chan
     *W_out = (int)W;
     *H_out = (int)H;
 done:
-    if (inited) exr_decoding_destroy(e, &dec);
     /* channel names point into the header, which exr_finish frees: copy them first */
     if (!st) {
         size_t tot = 0;
@@ -290,6 +186,7 @@ done:
         }
     }
     if (e) exr_finish(&e);
+    close(s.fd);
     free(ch);
     free(buf);
     return st;
@@ -310,9 +207,6 @@ lx_status lx_spectral_exr_read_xyz(lx_ctx *ctx, const char *path, lx_observer ob
     *out = NULL;
     if (observer != LX_OBSERVER_2 && observer != LX_OBSERVER_10)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_spectral_exr_read_xyz: observer must be 2 or 10");
-    int fd = open(path, O_RDONLY);
-    if (fd < 0) return lx__error(ctx, LX_EIO, path, 0, "cannot open: %s", strerror(errno));
-    close(fd);
     float *data = NULL;
     chan *ch = NULL;
     int nl = 0, W = 0, H = 0, npol = 0;
@@ -393,33 +287,18 @@ done:
 lx_status lx_xyz_exr_write(lx_ctx *ctx, const char *path, const lx_xyz_image *img)
 {
     if (!path || !img || !img->xyz) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_xyz_exr_write: NULL argument");
-    size_t plen = strlen(path);
-    char *tmp = malloc(plen + 16);
-    if (!tmp) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
-    snprintf(tmp, plen + 16, "%s.tmpXXXXXX", path);
-    stream s = {.fd = mkstemp(tmp)};
-    if (s.fd < 0) {
-        lx_status st = lx__error(ctx, LX_EIO, path, 0, "cannot create: %s", strerror(errno));
-        free(tmp);
-        return st;
-    }
-    fchmod(s.fd, 0644);
-    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
-    init.error_handler_fn = on_error;
-    init.user_data = &s;
-    init.write_fn = s_write;
+    lx__exr_stream s = {.fd = -1};
+    char *tmp = NULL;
+    lx_status st = lx__exr_write_begin(ctx, path, &s, &tmp);
+    if (st) return st;
+    exr_context_initializer_t init;
+    lx__exr_stream_init(&s, 1, &init);
     exr_context_t e = NULL;
     exr_encode_pipeline_t enc = EXR_ENCODE_PIPELINE_INITIALIZER;
     int inited = 0, part = 0, W = img->width, H = img->height;
-    lx_status st = LX_OK;
     size_t npix = (size_t)W * H;
     float *f = malloc(sizeof(float) * 3 * (npix ? npix : 1));
-    if (!f) {
-        close(s.fd);
-        unlink(tmp);
-        free(tmp);
-        return lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
-    }
+    if (!f) return lx__exr_write_end(ctx, path, &s, NULL, tmp, lx__error(ctx, LX_ENOMEM, path, 0, "out of memory"));
     for (size_t i = 0; i < 3 * npix; i++) f[i] = (float)img->xyz[i];
     exr_result_t rv = exr_start_write(&e, path, EXR_WRITE_FILE_DIRECTLY, &init);
     if (!rv) rv = exr_add_part(e, "", EXR_STORAGE_SCANLINE, &part);
@@ -428,7 +307,7 @@ lx_status lx_xyz_exr_write(lx_ctx *ctx, const char *path, const lx_xyz_image *im
     for (int c = 0; c < 3 && !rv; c++) rv = exr_add_channel(e, part, names[c], EXR_PIXEL_FLOAT, EXR_PERCEPTUALLY_LOGARITHMIC, 1, 1);
     if (!rv) rv = exr_write_header(e);
     if (rv) {
-        st = fail(ctx, path, &s, rv, "cannot write the header");
+        st = lx__exr_fail(ctx, path, &s, rv, "cannot write the header");
         goto done;
     }
     int32_t lpc = 1;
@@ -437,34 +316,13 @@ lx_status lx_xyz_exr_write(lx_ctx *ctx, const char *path, const lx_xyz_image *im
     for (long y0 = 0; y0 < H; y0 += lpc) {
         exr_chunk_info_t ci;
         rv = exr_write_scanline_chunk_info(e, part, (int)y0, &ci);
-        if (!rv) rv = inited ? exr_encoding_update(e, part, &ci, &enc) : exr_encoding_initialize(e, part, &ci, &enc);
-        if (rv) break;
-        inited = 1;
-        for (int q = 0; q < enc.channel_count; q++) {
-            exr_coding_channel_info_t *c = &enc.channels[q];
-            int slot = c->channel_name[0] == 'X' ? 0 : c->channel_name[0] == 'Y' ? 1 : 2;
-            c->encode_from_ptr = (const uint8_t *)(f + (size_t)y0 * W * 3 + slot);
-            c->user_pixel_stride = (int32_t)(3 * sizeof(float));
-            c->user_line_stride = (int32_t)((size_t)W * 3 * sizeof(float));
-            c->user_data_type = EXR_PIXEL_FLOAT;
-            c->user_bytes_per_element = 4;
-        }
-        rv = exr_encoding_choose_default_routines(e, part, &enc);
-        if (!rv) rv = exr_encoding_run(e, part, &enc);
+        if (!rv) rv = lx__exr_encode_chunk(e, part, &enc, &inited, &ci, f, W, 0, (int)y0, 3, xyz_slot, NULL);
         if (rv) break;
     }
-    if (rv) st = fail(ctx, path, &s, rv, "cannot encode the pixels");
+    if (rv) st = lx__exr_fail(ctx, path, &s, rv, "cannot encode the pixels");
 done:
     if (inited) exr_encoding_destroy(e, &enc);
-    if (e) {
-        exr_result_t fr = exr_finish(&e);
-        if (!st && fr) st = fail(ctx, path, &s, fr, "cannot finish the file");
-    }
-    if (!st && fsync(s.fd) != 0) st = lx__error(ctx, LX_EIO, path, 0, "cannot write: %s", strerror(errno));
-    if (close(s.fd) != 0 && !st) st = lx__error(ctx, LX_EIO, path, 0, "cannot write: %s", strerror(errno));
-    if (!st && rename(tmp, path) != 0) st = lx__error(ctx, LX_EIO, path, 0, "cannot rename into place: %s", strerror(errno));
-    if (st) unlink(tmp);
-    free(tmp);
+    st = lx__exr_write_end(ctx, path, &s, &e, tmp, st);
     free(f);
     return st;
 }

@@ -1,6 +1,7 @@
 /* test_batch.c - the batch integration API on the CPU path: published table sums, closed forms,
  * illuminant A against colour-science, vector/scalar/thread agreement with a naive oracle,
- * strides, tails, empty batches, argument errors, backend names and resampling. */
+ * strides, tails, empty batches, argument errors, backend names, resampling, and the CSV readers
+ * (whole and streamed: values bit-identical to strtod, error lines, end-to-end sums). */
 #include "lx_test.h"
 
 #include <stdio.h>

@@ -52,7 +52,7 @@ static const char rect_help[] =
     "example: a 0.6 m x 1.2 m panel of 3000 cd/m2, a work plane 2 m below its centre:\n"
     "  luxcalc rect --luminance 3000cd/m2 --width 0.6m --length 1.2m --distance 2m --at centre\n";
 
-static int write_result(const char *cmd, const lx_source_result *r, cli_format fmt, const char *out)
+static int write_result(const lt_common *co, const lx_source_result *r)
 {
     static const char *const names[] = {"illuminance_lx", "point_illuminance_lx", "point_error",
                                         "exact_illuminance_lx", "model", "near_field", "distance_m"};
@@ -65,9 +65,7 @@ static int write_result(const char *cmd, const lx_source_result *r, cli_format f
     cli_table_str(t, r->model == LX_MODEL_EXACT ? "exact" : "point");
     cli_table_int(t, r->near_field);
     cli_table_num(t, r->distance_m);
-    int rc = lt_write(cmd, t, fmt, out);
-    cli_table_free(t);
-    return rc;
+    return lt_emit(co, t);
 }
 
 static int parse_model(const char *cmd, const char *s, lx_model *m)
@@ -89,18 +87,14 @@ static int run(int argc, char **argv, int is_rect)
         {"width", required_argument, 0, 'w'},     {"length", required_argument, 0, 'l'},
         {"distance", required_argument, 0, 'd'},  {"offset", required_argument, 0, 'r'},
         {"at", required_argument, 0, 'A'},        {"model", required_argument, 0, 'm'},
-        {"efficacy", required_argument, 0, 'K'},  {"spd", required_argument, 0, 'S'},
-        {"format", required_argument, 0, 'f'},    {"help", no_argument, 0, 'h'},
-        {0, 0, 0, 0}};
-    const char *cmd = is_rect ? "rect" : "disk";
+        LT_COMMON_LONGOPTS,                       {0, 0, 0, 0}};
+    lt_common co;
+    lt_common_init(&co, is_rect ? "rect" : "disk", is_rect ? rect_help : disk_help);
+    const char *cmd = co.cmd;
     const char *lum = NULL, *rad = NULL, *wid = NULL, *len = NULL, *dist = NULL, *off = "0", *at = "centre";
-    const char *eff = NULL, *spd = NULL, *out = NULL;
     lx_model model = LX_MODEL_AUTO;
-    cli_format fmt = CLI_FMT_TABLE;
-    int c;
-    optind = 1;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+    int c, rc;
+    while ((c = getopt_long(argc, argv, LT_SHORTOPTS, opts, NULL)) != -1) {
         int wrong = 0;
         switch (c) {
         case 'L': lum = optarg; break;
@@ -113,33 +107,21 @@ static int run(int argc, char **argv, int is_rect)
         case 'm':
             if (parse_model(cmd, optarg, &model)) return CLI_USAGE;
             break;
-        case 'K': eff = optarg; break;
-        case 'S': spd = optarg; break;
-        case 'o': out = optarg; break;
-        case 'f':
-            if (lt_format(cmd, optarg, &fmt)) return CLI_USAGE;
-            break;
-        case 'h': cli_print_help(is_rect ? rect_help : disk_help); return CLI_OK;
-        default: wrong = 1;
+        default:
+            if ((rc = lt_common_opt(&co, c, argv)) != LT_NEXT) return rc;
         }
-        if (wrong) {
-            cli_error(cmd, "bad option '%s' (see luxcalc %s --help)", argv[optind - 1], cmd);
-            return CLI_USAGE;
-        }
+        if (wrong) return lt_bad_option(&co, argv);
     }
-    if (optind < argc) {
-        cli_error(cmd, "unexpected argument '%s'", argv[optind]);
-        return CLI_USAGE;
-    }
+    if (lt_no_operands(&co, argc, argv)) return CLI_USAGE;
     if (!lum || !dist || (is_rect ? (!wid || !len) : !rad)) {
         cli_error(cmd, is_rect ? "--luminance, --width, --length and --distance are required"
                                : "--luminance, --radius and --distance are required");
         return CLI_USAGE;
     }
-    lx_ctx *ctx = cli_ctx(cmd);
-    if (!ctx) return CLI_RUNTIME;
-    double K, L, h, R = 0, r = 0, a = 0, b = 0, x = 0, y = 0;
-    int rc = lt_efficacy(ctx, cmd, eff, spd, &K);
+    lx_ctx *ctx;
+    rc = lt_start(&co, &ctx);
+    if (!ctx) return rc;
+    double K = co.efficacy, L, h, R = 0, r = 0, a = 0, b = 0, x = 0, y = 0;
     if (!rc) rc = lt_quantity(ctx, cmd, "--luminance", lum, LX_Q_LUMINANCE, NULL, K, &L);
     if (!rc) rc = lt_quantity(ctx, cmd, "--distance", dist, LX_Q_LENGTH, NULL, K, &h);
     if (!rc && !is_rect) rc = lt_quantity(ctx, cmd, "--radius", rad, LX_Q_LENGTH, NULL, K, &R);
@@ -167,7 +149,7 @@ static int run(int argc, char **argv, int is_rect)
         lx_source_result res;
         lx_status st = is_rect ? lx_rect_illuminance(ctx, L, a, b, h, x, y, model, &res)
                                : lx_disk_illuminance(ctx, L, R, h, r, model, &res);
-        rc = st != LX_OK ? cli_fail(cmd, ctx, st) : write_result(cmd, &res, fmt, out);
+        rc = st != LX_OK ? cli_fail(cmd, ctx, st) : write_result(&co, &res);
     }
     lx_ctx_destroy(ctx);
     return rc;

@@ -23,29 +23,14 @@ static const char help[] =
 
 int cmd_convert(int argc, char **argv)
 {
-    static const struct option opts[] = {{"efficacy", required_argument, 0, 'K'}, {"spd", required_argument, 0, 'S'},
-                                         {"format", required_argument, 0, 'f'},   {"help", no_argument, 0, 'h'},
-                                         {0, 0, 0, 0}};
-    const char *cmd = "convert", *eff = NULL, *spd = NULL, *out = NULL;
-    cli_format fmt = CLI_FMT_TABLE;
-    int c;
-    optind = 1;
-    opterr = 0;
+    static const struct option opts[] = {LT_COMMON_LONGOPTS, {0, 0, 0, 0}};
+    lt_common co;
+    lt_common_init(&co, "convert", help);
+    const char *cmd = co.cmd;
+    int c, rc;
     /* a negative VALUE goes after "--": luxcalc convert -- -5 deg */
-    while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
-        switch (c) {
-        case 'K': eff = optarg; break;
-        case 'S': spd = optarg; break;
-        case 'o': out = optarg; break;
-        case 'f':
-            if (lt_format(cmd, optarg, &fmt)) return CLI_USAGE;
-            break;
-        case 'h': cli_print_help(help); return CLI_OK;
-        default:
-            cli_error(cmd, "bad option '%s' (see luxcalc convert --help)", argv[optind - 1]);
-            return CLI_USAGE;
-        }
-    }
+    while ((c = getopt_long(argc, argv, LT_SHORTOPTS, opts, NULL)) != -1)
+        if ((rc = lt_common_opt(&co, c, argv)) != LT_NEXT) return rc;
     int nargs = argc - optind;
     if (nargs < 1 || nargs > 2) {
         cli_error(cmd, "give VALUE UNIT (e.g. 46 fc)");
@@ -53,11 +38,11 @@ int cmd_convert(int argc, char **argv)
     }
     char text[256];
     snprintf(text, sizeof text, "%s%s%s", argv[optind], nargs == 2 ? " " : "", nargs == 2 ? argv[optind + 1] : "");
-    lx_ctx *ctx = cli_ctx(cmd);
-    if (!ctx) return CLI_RUNTIME;
-    double K, si;
+    lx_ctx *ctx;
+    rc = lt_start(&co, &ctx);
+    if (!ctx) return rc;
+    double K = co.efficacy, si;
     lx_quantity q = LX_Q_NONE;
-    int rc = lt_efficacy(ctx, cmd, eff, spd, &K);
     if (!rc) {
         lx_status st = lx_quantity_parse(ctx, text, LX_Q_NONE, NULL, &si, &q);
         if (st != LX_OK) {
@@ -85,10 +70,10 @@ int cmd_convert(int argc, char **argv)
                 cli_table_num(t, u[i].to_si == 1.0 ? v : v / u[i].to_si);
                 cli_table_str(t, lx_quantity_name(want));
             }
-        if (fmt == CLI_FMT_TABLE) {
+        if (co.fmt == CLI_FMT_TABLE) {
             /* people: one line per unit */
             cli_output o;
-            if (cli_output_open(&o, out, cmd) != 0) rc = CLI_INPUT;
+            if (cli_output_open(&o, co.out, cmd) != 0) rc = CLI_INPUT;
             else {
                 for (int pass = 0; pass < 2; pass++)
                     for (size_t i = 0; i < n; i++) {
@@ -101,10 +86,10 @@ int cmd_convert(int argc, char **argv)
                 int ok = !ferror(o.fp);
                 if (cli_output_close(&o, ok, cmd) != 0) rc = CLI_RUNTIME;
             }
+            cli_table_free(t);
         } else {
-            rc = lt_write(cmd, t, fmt, out);
+            rc = lt_emit(&co, t);
         }
-        cli_table_free(t);
     }
     lx_ctx_destroy(ctx);
     return rc;

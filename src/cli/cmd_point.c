@@ -31,45 +31,31 @@ int cmd_point(int argc, char **argv)
     static const struct option opts[] = {
         {"flux", required_argument, 0, 'F'},     {"intensity", required_argument, 0, 'I'},
         {"distance", required_argument, 0, 'd'}, {"angle", required_argument, 0, 'a'},
-        {"efficacy", required_argument, 0, 'K'}, {"spd", required_argument, 0, 'S'},
-        {"format", required_argument, 0, 'f'},   {"help", no_argument, 0, 'h'},
-        {0, 0, 0, 0}};
-    const char *cmd = "point";
-    const char *flux = NULL, *inten = NULL, *dist = "1", *angle = "0", *eff = NULL, *spd = NULL, *out = NULL;
-    cli_format fmt = CLI_FMT_TABLE;
-    int c;
-    optind = 1;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+        LT_COMMON_LONGOPTS,                      {0, 0, 0, 0}};
+    lt_common co;
+    lt_common_init(&co, "point", help);
+    const char *cmd = co.cmd;
+    const char *flux = NULL, *inten = NULL, *dist = "1", *angle = "0";
+    int c, rc;
+    while ((c = getopt_long(argc, argv, LT_SHORTOPTS, opts, NULL)) != -1) {
         switch (c) {
         case 'F': flux = optarg; break;
         case 'I': inten = optarg; break;
         case 'd': dist = optarg; break;
         case 'a': angle = optarg; break;
-        case 'K': eff = optarg; break;
-        case 'S': spd = optarg; break;
-        case 'o': out = optarg; break;
-        case 'f':
-            if (lt_format(cmd, optarg, &fmt)) return CLI_USAGE;
-            break;
-        case 'h': cli_print_help(help); return CLI_OK;
         default:
-            cli_error(cmd, "bad option '%s' (see luxcalc point --help)", argv[optind - 1]);
-            return CLI_USAGE;
+            if ((rc = lt_common_opt(&co, c, argv)) != LT_NEXT) return rc;
         }
     }
-    if (optind < argc) {
-        cli_error(cmd, "unexpected argument '%s'", argv[optind]);
-        return CLI_USAGE;
-    }
+    if (lt_no_operands(&co, argc, argv)) return CLI_USAGE;
     if (!flux == !inten) {
         cli_error(cmd, "give exactly one of --flux and --intensity");
         return CLI_USAGE;
     }
-    lx_ctx *ctx = cli_ctx(cmd);
-    if (!ctx) return CLI_RUNTIME;
-    double K, f = NAN, i = NAN, d, a, e;
-    int rc = lt_efficacy(ctx, cmd, eff, spd, &K);
+    lx_ctx *ctx;
+    rc = lt_start(&co, &ctx);
+    if (!ctx) return rc;
+    double K = co.efficacy, f = NAN, i = NAN, d, a, e;
     if (!rc && flux) rc = lt_quantity(ctx, cmd, "--flux", flux, LX_Q_LUMINOUS_FLUX, NULL, K, &f);
     if (!rc && inten) rc = lt_quantity(ctx, cmd, "--intensity", inten, LX_Q_LUMINOUS_INTENSITY, NULL, K, &i);
     if (!rc) rc = lt_quantity(ctx, cmd, "--distance", dist, LX_Q_LENGTH, NULL, K, &d);
@@ -85,14 +71,8 @@ int cmd_point(int argc, char **argv)
     if (!rc) {
         static const char *const names[] = {"flux_lm", "intensity_cd", "illuminance_lx", "distance_m", "angle_deg"};
         static const char *const units[] = {"lm", "cd", "lx", "m", "deg"};
-        cli_table *t = cli_table_new(5, names, units);
-        cli_table_num(t, f);
-        cli_table_num(t, i);
-        cli_table_num(t, e);
-        cli_table_num(t, d);
-        cli_table_num(t, a / LT_DEG);
-        rc = lt_write(cmd, t, fmt, out);
-        cli_table_free(t);
+        const double vals[] = {f, i, e, d, a / LT_DEG};
+        rc = lt_emit_nums(&co, 5, names, units, vals);
     }
     lx_ctx_destroy(ctx);
     return rc;

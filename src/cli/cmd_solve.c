@@ -33,17 +33,15 @@ int cmd_solve(int argc, char **argv)
         {"flux", required_argument, 0, 'F'},        {"distance", required_argument, 0, 'd'},
         {"exponent", required_argument, 0, 'x'},    {"beam-angle", required_argument, 0, 'B'},
         {"angle", required_argument, 0, 'a'},       {"incidence", required_argument, 0, 'b'},
-        {"reflectance", required_argument, 0, 'r'}, {"efficacy", required_argument, 0, 'K'},
-        {"spd", required_argument, 0, 'S'},         {"format", required_argument, 0, 'f'},
-        {"help", no_argument, 0, 'h'},              {0, 0, 0, 0}};
-    const char *cmd = "solve";
+        {"reflectance", required_argument, 0, 'r'}, LT_COMMON_LONGOPTS,
+        {0, 0, 0, 0}};
+    lt_common co;
+    lt_common_init(&co, "solve", help);
+    const char *cmd = co.cmd;
     const char *E_s = NULL, *I_s = NULL, *F_s = NULL, *d_s = NULL, *x_s = NULL, *B_s = NULL, *a_s = "0", *b_s = "0";
-    const char *rho_s = NULL, *eff = NULL, *spd = NULL, *out = NULL;
-    cli_format fmt = CLI_FMT_TABLE;
-    int c;
-    optind = 1;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+    const char *rho_s = NULL;
+    int c, rc;
+    while ((c = getopt_long(argc, argv, LT_SHORTOPTS, opts, NULL)) != -1) {
         switch (c) {
         case 'E': E_s = optarg; break;
         case 'I': I_s = optarg; break;
@@ -54,22 +52,11 @@ int cmd_solve(int argc, char **argv)
         case 'a': a_s = optarg; break;
         case 'b': b_s = optarg; break;
         case 'r': rho_s = optarg; break;
-        case 'K': eff = optarg; break;
-        case 'S': spd = optarg; break;
-        case 'o': out = optarg; break;
-        case 'f':
-            if (lt_format(cmd, optarg, &fmt)) return CLI_USAGE;
-            break;
-        case 'h': cli_print_help(help); return CLI_OK;
         default:
-            cli_error(cmd, "bad option '%s' (see luxcalc solve --help)", argv[optind - 1]);
-            return CLI_USAGE;
+            if ((rc = lt_common_opt(&co, c, argv)) != LT_NEXT) return rc;
         }
     }
-    if (optind < argc) {
-        cli_error(cmd, "unexpected argument '%s'", argv[optind]);
-        return CLI_USAGE;
-    }
+    if (lt_no_operands(&co, argc, argv)) return CLI_USAGE;
     if (x_s && B_s) {
         cli_error(cmd, "give --exponent or --beam-angle, not both");
         return CLI_USAGE;
@@ -79,10 +66,10 @@ int cmd_solve(int argc, char **argv)
         cli_error(cmd, "nothing to solve: see luxcalc solve --help for the combinations");
         return CLI_USAGE;
     }
-    lx_ctx *ctx = cli_ctx(cmd);
-    if (!ctx) return CLI_RUNTIME;
-    double K, E = 0, I = 0, F = 0, d = 0, S = -1, B = NAN, a = 0, b = 0, rho = 0;
-    int rc = lt_efficacy(ctx, cmd, eff, spd, &K);
+    lx_ctx *ctx;
+    rc = lt_start(&co, &ctx);
+    if (!ctx) return rc;
+    double K = co.efficacy, E = 0, I = 0, F = 0, d = 0, S = -1, B = NAN, a = 0, b = 0, rho = 0;
     if (!rc && E_s) rc = lt_quantity(ctx, cmd, "--illuminance", E_s, LX_Q_ILLUMINANCE, NULL, K, &E);
     if (!rc && I_s) rc = lt_quantity(ctx, cmd, "--intensity", I_s, LX_Q_LUMINOUS_INTENSITY, NULL, K, &I);
     if (!rc && F_s) rc = lt_quantity(ctx, cmd, "--flux", F_s, LX_Q_LUMINOUS_FLUX, NULL, K, &F);
@@ -135,12 +122,7 @@ int cmd_solve(int argc, char **argv)
         }
         if (!rc && st != LX_OK) rc = cli_fail(cmd, ctx, st);
     }
-    if (!rc) {
-        cli_table *t = cli_table_new(n, names, units);
-        for (int i = 0; i < n; i++) cli_table_num(t, vals[i]);
-        rc = lt_write(cmd, t, fmt, out);
-        cli_table_free(t);
-    }
+    if (!rc) rc = lt_emit_nums(&co, n, names, units, vals);
     lx_ctx_destroy(ctx);
     return rc;
 }

@@ -238,6 +238,11 @@ int cmd_spd(int argc, char **argv)
             spd_flush(&so);
             continue;
         }
+        /* rows-layout files: streamed, integrated chunk by chunk (spd_batch.c); else the general reader */
+        if (!msel.any && !report_dir && cli_spd_batch_file(&B, arg)) {
+            spd_flush(&so);
+            continue;
+        }
         lx_spd_set *set = NULL;
         lx_status st = lx_spd_read_file(ctx, arg, &set);
         if (st != LX_OK) {

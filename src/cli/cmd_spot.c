@@ -34,17 +34,13 @@ int cmd_spot(int argc, char **argv)
         {"flux", required_argument, 0, 'F'},      {"exponent", required_argument, 0, 'x'},
         {"beam-angle", required_argument, 0, 'B'}, {"angle", required_argument, 0, 'a'},
         {"distance", required_argument, 0, 'd'},  {"incidence", required_argument, 0, 'b'},
-        {"efficacy", required_argument, 0, 'K'},  {"spd", required_argument, 0, 'S'},
-        {"format", required_argument, 0, 'f'},    {"help", no_argument, 0, 'h'},
-        {0, 0, 0, 0}};
-    const char *cmd = "spot";
+        LT_COMMON_LONGOPTS,                       {0, 0, 0, 0}};
+    lt_common co;
+    lt_common_init(&co, "spot", help);
+    const char *cmd = co.cmd;
     const char *flux = NULL, *expo = NULL, *beam = NULL, *angle = "0", *dist = "1", *inc = "0";
-    const char *eff = NULL, *spd = NULL, *out = NULL;
-    cli_format fmt = CLI_FMT_TABLE;
-    int c;
-    optind = 1;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+    int c, rc;
+    while ((c = getopt_long(argc, argv, LT_SHORTOPTS, opts, NULL)) != -1) {
         switch (c) {
         case 'F': flux = optarg; break;
         case 'x': expo = optarg; break;
@@ -52,30 +48,19 @@ int cmd_spot(int argc, char **argv)
         case 'a': angle = optarg; break;
         case 'd': dist = optarg; break;
         case 'b': inc = optarg; break;
-        case 'K': eff = optarg; break;
-        case 'S': spd = optarg; break;
-        case 'o': out = optarg; break;
-        case 'f':
-            if (lt_format(cmd, optarg, &fmt)) return CLI_USAGE;
-            break;
-        case 'h': cli_print_help(help); return CLI_OK;
         default:
-            cli_error(cmd, "bad option '%s' (see luxcalc spot --help)", argv[optind - 1]);
-            return CLI_USAGE;
+            if ((rc = lt_common_opt(&co, c, argv)) != LT_NEXT) return rc;
         }
     }
-    if (optind < argc) {
-        cli_error(cmd, "unexpected argument '%s'", argv[optind]);
-        return CLI_USAGE;
-    }
+    if (lt_no_operands(&co, argc, argv)) return CLI_USAGE;
     if (!flux || !expo == !beam) {
         cli_error(cmd, "give --flux and exactly one of --exponent and --beam-angle");
         return CLI_USAGE;
     }
-    lx_ctx *ctx = cli_ctx(cmd);
-    if (!ctx) return CLI_RUNTIME;
-    double K, f, s = NAN, bm = NAN, a, d, b, peak, i, e;
-    int rc = lt_efficacy(ctx, cmd, eff, spd, &K);
+    lx_ctx *ctx;
+    rc = lt_start(&co, &ctx);
+    if (!ctx) return rc;
+    double K = co.efficacy, f, s = NAN, bm = NAN, a, d, b, peak, i, e;
     if (!rc) rc = lt_quantity(ctx, cmd, "--flux", flux, LX_Q_LUMINOUS_FLUX, NULL, K, &f);
     if (!rc && expo && cli_parse_double(expo, &s) != 0) {
         cli_error(cmd, "--exponent: '%s' is not a number", expo);
@@ -98,14 +83,8 @@ int cmd_spot(int argc, char **argv)
         static const char *const names[] = {"peak_intensity_cd", "intensity_cd", "illuminance_lx", "exponent",
                                             "beam_angle_deg"};
         static const char *const units[] = {"cd", "cd", "lx", "", "deg"};
-        cli_table *t = cli_table_new(5, names, units);
-        cli_table_num(t, peak);
-        cli_table_num(t, i);
-        cli_table_num(t, e);
-        cli_table_num(t, s);
-        cli_table_num(t, bm / LT_DEG);
-        rc = lt_write(cmd, t, fmt, out);
-        cli_table_free(t);
+        const double vals[] = {peak, i, e, s, bm / LT_DEG};
+        rc = lt_emit_nums(&co, 5, names, units, vals);
     }
     lx_ctx_destroy(ctx);
     return rc;

@@ -22,6 +22,54 @@ int lt_write(const char *cmd, cli_table *t, cli_format fmt, const char *out_path
 /* Parses --format; prints and returns -1 on a bad value. */
 int lt_format(const char *cmd, const char *s, cli_format *fmt);
 
+/* ---- the options every lighting command shares: --efficacy K, --spd FILE, --format F, -o FILE,
+ * --help. A command's option table ends with LT_COMMON_LONGOPTS (then {0, 0, 0, 0}); it calls
+ * lt_common_init before its getopt loop, passes the codes it does not handle itself to
+ * lt_common_opt, and writes its result with lt_emit. */
+#define LT_COMMON_LONGOPTS                                                                                             \
+    {"efficacy", required_argument, 0, 'K'}, {"spd", required_argument, 0, 'S'},                                    \
+        {"format", required_argument, 0, 'f'}, {"help", no_argument, 0, 'h'}
+/* getopt_long's short options of every lighting command: -o FILE and -h */
+#define LT_SHORTOPTS "o:h"
+/* lt_common_opt's "handled, go on parsing" */
+#define LT_NEXT (-1)
+
+typedef struct lt_common {
+    const char *cmd;  /* command name, as in the error messages */
+    const char *help; /* the --help text */
+    const char *eff, *spd, *out; /* --efficacy, --spd, -o (NULL: not given) */
+    cli_format fmt;              /* --format (default table) */
+    double efficacy;             /* lm/W from --efficacy or --spd (0: none), set by lt_start */
+} lt_common;
+
+/* Sets co to the defaults for command cmd with help text help and restarts getopt (optind = 1,
+ * no getopt messages). */
+void lt_common_init(lt_common *co, const char *cmd, const char *help);
+
+/* Handles the option code c from getopt_long that the command does not handle itself: a common
+ * option is stored in co (LT_NEXT); --help prints co->help (CLI_OK); a bad --format value or
+ * anything else prints the error (CLI_USAGE). Returns LT_NEXT or the exit code to return. */
+int lt_common_opt(lt_common *co, int c, char **argv);
+
+/* Prints "bad option 'ARG' (see luxcalc CMD --help)" for the option getopt_long just read;
+ * returns CLI_USAGE. */
+int lt_bad_option(const lt_common *co, char **argv);
+
+/* For commands without operands: prints "unexpected argument" and returns CLI_USAGE when
+ * argv[optind] exists, else returns 0. */
+int lt_no_operands(const lt_common *co, int argc, char **argv);
+
+/* Creates the context (*ctx; NULL and CLI_RUNTIME when that fails) and resolves the efficacy
+ * options into co->efficacy. Returns 0 or the exit code; the caller destroys a non-NULL *ctx. */
+int lt_start(lt_common *co, lx_ctx **ctx);
+
+/* Writes t in co->fmt to co->out (atomic) or stdout and frees t; returns the exit code. */
+int lt_emit(const lt_common *co, cli_table *t);
+
+/* lt_emit of one row of n numbers named names (units: the table format's unit labels). */
+int lt_emit_nums(const lt_common *co, int n, const char *const *names, const char *const *units,
+                 const double *vals);
+
 /* radians to degrees as value / (pi/180), the same division the unit table uses, so 30deg prints 30 */
 #define LT_DEG (3.14159265358979323846 / 180.0)
 

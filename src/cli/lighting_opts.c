@@ -1,7 +1,9 @@
 /* lighting_opts.c - option helpers of the lighting commands: quantities with units (a bare angle
- * is in degrees), the --efficacy / --spd pair, and writing one result table (-o atomic). */
+ * is in degrees), the --efficacy / --spd pair, the options they all share, and writing one result
+ * table (-o atomic). */
 #include "lighting.h"
 
+#include <getopt.h>
 #include <string.h>
 
 int lt_format(const char *cmd, const char *s, cli_format *fmt)
@@ -78,4 +80,59 @@ int lt_write(const char *cmd, cli_table *t, cli_format fmt, const char *out_path
         return CLI_RUNTIME;
     }
     return CLI_OK;
+}
+
+void lt_common_init(lt_common *co, const char *cmd, const char *help)
+{
+    *co = (lt_common){.cmd = cmd, .help = help, .fmt = CLI_FMT_TABLE};
+    optind = 1;
+    opterr = 0;
+}
+
+int lt_bad_option(const lt_common *co, char **argv)
+{
+    cli_error(co->cmd, "bad option '%s' (see luxcalc %s --help)", argv[optind - 1], co->cmd);
+    return CLI_USAGE;
+}
+
+int lt_common_opt(lt_common *co, int c, char **argv)
+{
+    switch (c) {
+    case 'K': co->eff = optarg; return LT_NEXT;
+    case 'S': co->spd = optarg; return LT_NEXT;
+    case 'o': co->out = optarg; return LT_NEXT;
+    case 'f': return lt_format(co->cmd, optarg, &co->fmt) ? CLI_USAGE : LT_NEXT;
+    case 'h': cli_print_help(co->help); return CLI_OK;
+    default: return lt_bad_option(co, argv);
+    }
+}
+
+int lt_no_operands(const lt_common *co, int argc, char **argv)
+{
+    if (optind < argc) {
+        cli_error(co->cmd, "unexpected argument '%s'", argv[optind]);
+        return CLI_USAGE;
+    }
+    return 0;
+}
+
+int lt_start(lt_common *co, lx_ctx **ctx)
+{
+    *ctx = cli_ctx(co->cmd);
+    if (!*ctx) return CLI_RUNTIME;
+    return lt_efficacy(*ctx, co->cmd, co->eff, co->spd, &co->efficacy);
+}
+
+int lt_emit(const lt_common *co, cli_table *t)
+{
+    int rc = lt_write(co->cmd, t, co->fmt, co->out);
+    cli_table_free(t);
+    return rc;
+}
+
+int lt_emit_nums(const lt_common *co, int n, const char *const *names, const char *const *units, const double *vals)
+{
+    cli_table *t = cli_table_new(n, names, units);
+    for (int i = 0; i < n; i++) cli_table_num(t, vals[i]);
+    return lt_emit(co, t);
 }

@@ -61,3 +61,18 @@ run solve --illuminance 500 --reflectance 0.8 --format csv
 expect_field 1 luminance_cd_m2 127.32395447 1e-7 "rho E / pi"
 run point --help
 expect_rc 0 "help"; expect_out_match "example" "help has an example"
+
+# --spd: the efficacy of a measured spectrum converts W to lm. A flat 1 W/nm spectrum from 380 to
+# 780 nm at 5 nm has a luminous efficacy of radiation of 182.457480537 lm/W (colour-science 0.4.7,
+# colour.luminous_efficacy): 10 W of it are 1824.5748 lm. luxcalc sums Y by the CIE 015 rule at the
+# data's 5 nm, colour-science by its own interpolation: they agree to 1e-5 relative.
+awk 'BEGIN { print "wavelength_nm,flat"; for (l = 380; l <= 780; l += 5) print l ",1" }' > "$T/flat.csv"
+run convert 10W --spd "$T/flat.csv" --format csv
+expect_rc 0 "convert with --spd"
+lm=$(printf '%s\n' "$out" | awk -F, '$1=="lm" {print $2}')
+if awk -v v="$lm" 'BEGIN { d = v - 1824.57480537; if (d < 0) d = -d; exit !(v != "" && d < 1824.57 * 1e-5) }'; then
+  ok "10 W of a flat spectrum = 1824.575 lm (colour-science LER)"; else notok "--spd efficacy" "lm = '$lm': $out"; fi
+run point --flux 10W --spd "$T/flat.csv" --distance 2m --format csv
+expect_rc 0 "point with a radiometric flux and --spd"
+run point --flux 10W --distance 2m
+expect_rc 1 "a radiometric flux without --spd or --efficacy is refused"
