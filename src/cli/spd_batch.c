@@ -186,7 +186,9 @@ static lx_status stream_chunk(void *user, const lx_batch_table *chunk, size_t ro
 
 int cli_spd_batch_file(cli_spd_batch *B, const char *path)
 {
-    if (!strcmp(path, "-") || !plain_rows_header(path)) return 0;
+    /* only regular files: a FIFO or a device must be read once, by the general reader */
+    struct stat sb;
+    if (!strcmp(path, "-") || stat(path, &sb) != 0 || !S_ISREG(sb.st_mode) || !plain_rows_header(path)) return 0;
     stream_acc A;
     memset(&A, 0, sizeof A);
     A.B = B;
