@@ -168,6 +168,7 @@ tsan: deps
 # the native run first fills the PoCL kernel cache, so that valgrind does not run the LLVM compiler
 VG_BUILD := build-valgrind
 valgrind: deps
+	@$(MAKE) --no-print-directory deps PKGS=valgrind
 	@$(MAKE) --no-print-directory BUILD=$(VG_BUILD) CFLAGS="-O1 -g" all $(TEST_SRC:tests/%.c=$(VG_BUILD)/tests/%)
 	@LX_SHARED_DIR=$${LX_SHARED_DIR:-$(CURDIR)/../shared} POCL_CACHE_DIR=$(CURDIR)/$(VG_BUILD)/pocl-cache \
 	  $(VG_BUILD)/tests/test_opencl >/dev/null 2>&1; \

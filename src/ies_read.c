@@ -153,6 +153,9 @@ static lx_status read_tilt(lx_ctx *ctx, const char *file, toks *t, long last, lx
     if (g != 1 && g != 2 && g != 3)
         return lx__error(ctx, LX_EPARSE, file, tok_line(t, last), "TILT lamp-to-luminaire geometry must be 1, 2 or 3 (got %g)", g);
     if ((st = take_count(ctx, file, t, last, "the number of TILT angles", 100000, &n))) return st;
+    if (t->n - t->pos < 2 * (size_t)n) /* the count against the numbers there, before allocating */
+        return lx__error(ctx, LX_EPARSE, file, last, "the file ends before the end of the TILT table: %ld angles need "
+                         "%ld numbers, the file has %zu (truncated table or a count that lies)", n, 2 * n, t->n - t->pos);
     lum->tilt_geometry = (int)g;
     lum->n_tilt = (size_t)n;
     lum->tilt_deg = malloc((size_t)n * sizeof(double));

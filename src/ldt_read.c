@@ -103,8 +103,9 @@ lx_status lx__ldt_read(lx_ctx *ctx, const char *file, const char *buf, size_t le
     for (long k = 0; k < nsets; k++) {
         double lamps, flux, w;
         if ((st = num(ctx, &r, "the number of lamps", &lamps))) goto fail;
-        if (lamps != floor(lamps) || lamps == 0) {
-            st = lx__error(ctx, LX_EPARSE, file, r.it.line, "the number of lamps must be a non-zero whole number (got %g)", lamps);
+        if (lamps != floor(lamps) || lamps == 0 || fabs(lamps) > 1e6) {
+            st = lx__error(ctx, LX_EPARSE, file, r.it.line, "the number of lamps must be a non-zero whole number of at most "
+                           "1e6 (got %g)", lamps);
             goto fail;
         }
         if ((st = text(ctx, &r, "the lamp type", NULL))) goto fail;

@@ -46,6 +46,10 @@ static void cl_release(lx_ctx *ctx)
 {
     lx__cl *cl = ctx->cl;
     if (!cl) return;
+    /* no device work may outlive the context (a failed call can leave commands queued; a process
+     * that exits while PoCL still compiles or runs them crashes in LLVM's destructors). The real
+     * clFinish, not the fault-injection wrapper. */
+    if (cl->queue) (clFinish)(cl->queue);
     if (cl->program) clReleaseProgram(cl->program);
     if (cl->queue) clReleaseCommandQueue(cl->queue);
     if (cl->context) clReleaseContext(cl->context);

@@ -236,7 +236,10 @@ lx_status lx_spectral_exr_read_xyz(lx_ctx *ctx, const char *path, lx_observer ob
     const lx_function *fns = observer == LX_OBSERVER_10 ? f10 : f2;
     const double km = observer == LX_OBSERVER_10 ? KM_10 : KM_2;
     /* non-uniform wavelengths: resample every pixel to 1 nm over the whole range first */
-    double g0 = floor(lam[0]), g1 = ceil(lam[nl - 1]);
+    /* only 360-830 nm, where the colour-matching functions are defined (the weights are 0 outside,
+     * so the sums are unchanged): the grid is then never sized by untrusted channel names */
+    double g0 = fmax(floor(lam[0]), 360.0), g1 = fmin(ceil(lam[nl - 1]), 830.0);
+    if (g1 < g0) g0 = g1 = 360.0; /* no overlap: one sample, where every spectrum is 0 */
     size_t ng = (size_t)(g1 - g0) + 1;
     double *rl = NULL, *rv = NULL, *rg = NULL;
     size_t *roff = NULL, *rn = NULL;

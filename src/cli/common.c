@@ -298,9 +298,12 @@ static void track(char *tmp)
         memset(&sa, 0, sizeof sa);
         sa.sa_handler = on_signal;
         sigemptyset(&sa.sa_mask);
-        sigaction(SIGINT, &sa, NULL);
-        sigaction(SIGTERM, &sa, NULL);
-        sigaction(SIGHUP, &sa, NULL);
+        static const int sigs[3] = {SIGINT, SIGTERM, SIGHUP};
+        for (int i = 0; i < 3; i++) { /* a signal ignored by our parent (nohup, a background job) stays ignored */
+            struct sigaction old;
+            if (sigaction(sigs[i], NULL, &old) == 0 && old.sa_handler == SIG_IGN) continue;
+            sigaction(sigs[i], &sa, NULL);
+        }
         installed = 1;
     }
     for (int i = 0; i < MAX_TMP; i++)
@@ -331,8 +334,10 @@ int cli_output_open(cli_output *o, const char *path, const char *cmd)
         return -1;
     }
     snprintf(o->tmp, n + 16, "%s.tmpXXXXXX", path);
+    track(o->tmp); /* before the file exists: a signal during mkstemp must not leave it behind */
     int fd = mkstemp(o->tmp);
     if (fd < 0) {
+        untrack(o->tmp);
         cli_error(cmd, "%s: cannot create: %s", path, strerror(errno));
         free(o->path);
         free(o->tmp);
@@ -347,12 +352,12 @@ int cli_output_open(cli_output *o, const char *path, const char *cmd)
         cli_error(cmd, "%s: cannot write: %s", path, strerror(errno));
         close(fd);
         unlink(o->tmp);
+        untrack(o->tmp);
         free(o->path);
         free(o->tmp);
         o->path = o->tmp = NULL;
         return -1;
     }
-    track(o->tmp);
     return 0;
 }
 

@@ -7,7 +7,7 @@ B=tests/bad
 MEM_KB=1048576
 re_escape() { printf '%s' "$1" | sed 's/[][\.*^$+?(){}|/]/\\&/g'; }
 # sanitizer and valgrind builds reserve far more address space than they use: no memory bound there
-if (ulimit -v $MEM_KB && "$LUXCALC" --version) >/dev/null 2>&1; then memlim=$MEM_KB; else memlim=unlimited
+if sh -c 'ulimit -v "$1" && "$2" --version' sh $MEM_KB "$LUXCALC" >/dev/null 2>&1; then memlim=$MEM_KB; else memlim=unlimited
   echo "# bad_inputs: this luxcalc cannot run under ulimit -v (sanitizer build?): memory bound not applied"; fi
 # bounded COMMAND ARGS...: run with a 10 s and 1 GiB bound; sets $out, $err, $rc, $ms
 bounded() {
