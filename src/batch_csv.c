@@ -5,6 +5,7 @@
 #include "lx_private.h"
 
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <pthread.h>
 #include <stdatomic.h>
@@ -234,7 +235,7 @@ __attribute__((target("avx512f,avx512bw,bmi,bmi2"))) static int fast_line(const 
         if ((ok & lm) != lm) return 0;
         while (sm) {
             const char *fe = b + __builtin_ctzll(sm);
-            if (j + 1 >= n || fe == fs || !fast_field(fs, fe, &v)) return 0;
+            if (j + 1 >= n || fe == fs || !fast_field(fs, fe, &v) || (f32 && fabs(v) > FLT_MAX)) return 0;
             if (f32) ((float *)dst)[j] = (float)v;
             else ((double *)dst)[j] = v;
             j++;
@@ -242,7 +243,7 @@ __attribute__((target("avx512f,avx512bw,bmi,bmi2"))) static int fast_line(const 
             sm &= sm - 1;
         }
     }
-    if (j + 1 != n || le == fs || !fast_field(fs, le, &v)) return 0;
+    if (j + 1 != n || le == fs || !fast_field(fs, le, &v) || (f32 && fabs(v) > FLT_MAX)) return 0;
     if (f32) ((float *)dst)[j] = (float)v;
     else ((double *)dst)[j] = v;
     return 1;
@@ -339,10 +340,10 @@ static void *parse_part(void *arg)
             while (q < le && *q == ' ') q++;
             double v;
             const char *z = parse_num(q, le, p->lim, &v);
-            if (!z || !isfinite(v)) {
+            if (!z || !isfinite(v) || (f32 && fabs(v) > FLT_MAX)) { /* float batches: no silent inf */
                 p->err_line = line;
-                snprintf(p->err, sizeof p->err, "value %zu of row '%.*s' is not a finite number", j + 1,
-                         (int)(nl_len < 60 ? nl_len : 60), s);
+                snprintf(p->err, sizeof p->err, "value %zu of row '%.*s' is not a finite number%s", j + 1,
+                         (int)(nl_len < 60 ? nl_len : 60), s, z && isfinite(v) ? " in float range" : "");
                 return NULL;
             }
             while (z < le && *z == ' ') z++;
@@ -431,7 +432,7 @@ static lx_status read_header(lx_ctx *ctx, const char *file, const char *text, si
         while (b > a && (b[-1] == ' ' || b[-1] == '"')) b--;
         double v;
         const char *z = lx__parse_double(a, b, &v);
-        if (!z || z != b || !(v > 0)) {
+        if (!z || z != b || !(v > 0) || !isfinite(v)) { /* 1e999 parses as inf */
             free(lam);
             return lx__error(ctx, LX_EPARSE, file, line, "header cell %zu ('%.*s') is not a wavelength in nm", n + 2,
                              (int)(b - a < 40 ? b - a : 40), a);

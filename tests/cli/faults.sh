@@ -20,10 +20,11 @@ untouched() { # NAME
 }
 
 # a long batch (3000 files, every metric: seconds), killed once its temporary file holds rows. A
-# non-interactive shell starts background jobs with SIGINT ignored, and luxcalc rightly keeps ignored
-# what its parent ignored: env --default-signal (coreutils >= 8.31) gives the job the default back
-if env --default-signal=INT true 2>/dev/null; then dflt="env --default-signal=INT"; sigs="TERM INT HUP"
-else dflt=""; sigs="TERM HUP"; echo "# faults: no env --default-signal: the SIGINT case is skipped"; fi
+# non-interactive shell starts background jobs with SIGINT ignored (and nohup ignores SIGHUP), and
+# luxcalc rightly keeps ignored what its parent ignored: env --default-signal (coreutils >= 8.31)
+# gives the job the defaults back
+if env --default-signal=INT,TERM,HUP true 2>/dev/null; then dflt="env --default-signal=INT,TERM,HUP"; sigs="TERM INT HUP"
+else dflt=""; sigs="TERM"; echo "# faults: no env --default-signal: the SIGINT and SIGHUP cases are skipped"; fi
 for sig in $sigs; do
   reset_out
   $dflt "$LUXCALC" spd "$D/*.csv" --metrics all --format csv -o "$OUT" >/dev/null 2>"$T/err" &
