@@ -69,3 +69,42 @@ lx_status lx__open_read(lx_ctx *ctx, const char *path, FILE **out)
     *out = fp;
     return LX_OK;
 }
+
+lx_status lx__read_all(lx_ctx *ctx, const char *path, char **text, size_t *len)
+{
+    *text = NULL;
+    *len = 0;
+    FILE *fp = NULL;
+    lx_status st = lx__open_read(ctx, path, &fp);
+    if (st) return st;
+    size_t cap = 1 << 16, n = 0;
+    char *buf = malloc(cap);
+    for (;;) {
+        if (!buf) {
+            st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory reading %zu bytes", n);
+            break;
+        }
+        if (n == cap) {
+            char *nb = realloc(buf, cap * 2);
+            if (!nb) {
+                free(buf);
+                buf = NULL;
+                continue;
+            }
+            buf = nb;
+            cap *= 2;
+        }
+        size_t got = fread(buf + n, 1, cap - n, fp);
+        n += got;
+        if (got == 0) break;
+    }
+    if (st == LX_OK && ferror(fp)) st = lx__error(ctx, LX_EIO, path, 0, "read error: %s", strerror(errno));
+    if (fp != stdin) fclose(fp);
+    if (st != LX_OK) {
+        free(buf);
+        return st;
+    }
+    *text = buf;
+    *len = n;
+    return LX_OK;
+}

@@ -276,6 +276,9 @@ int lx__spectral_channel(const char *name, int *kind, double *lambda_nm);
 /* Opens path for reading: "-" gives stdin; a directory or a missing file is LX_EIO naming the path;
  * a FIFO waits at most LX_FIFO_WAIT_S seconds (default 10, 0: for ever) for its first data. */
 lx_status lx__open_read(lx_ctx *ctx, const char *path, FILE **out);
+/* Reads a whole input file (as lx__open_read opens it; "-" is standard input) into *text (malloc'ed,
+ * not terminated) and *len. Errors name the file: LX_EIO, LX_ENOMEM, and lx__open_read's. */
+lx_status lx__read_all(lx_ctx *ctx, const char *path, char **text, size_t *len);
 
 #if LX_OPENCL
 /* OpenCL fault injection for tests (opencl.c): with LX_CL_FAULT=CALL (every call of CALL fails) or

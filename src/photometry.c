@@ -108,32 +108,12 @@ lx_status lx_luminaire_read_file(lx_ctx *ctx, const char *path, lx_luminaire **o
 {
     if (out) *out = NULL;
     if (!ctx || !path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_read_file: NULL argument");
-    int is_stdin = strcmp(path, "-") == 0;
-    FILE *fp = NULL;
-    lx_status st = lx__open_read(ctx, path, &fp);
-    if (st) return st;
-    size_t cap = 1 << 16, len = 0;
-    char *buf = malloc(cap);
-    while (buf) {
-        if (len == cap) {
-            char *nb = realloc(buf, cap * 2);
-            if (!nb) {
-                free(buf);
-                buf = NULL;
-                break;
-            }
-            buf = nb;
-            cap *= 2;
-        }
-        size_t got = fread(buf + len, 1, cap - len, fp);
-        len += got;
-        if (got == 0) break;
-    }
-    if (!buf) st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
-    else if (ferror(fp)) st = lx__error(ctx, LX_EIO, path, 0, "read error: %s", strerror(errno));
-    else st = lx_luminaire_read_mem(ctx, path, buf, len, out);
+    char *buf;
+    size_t len;
+    lx_status st = lx__read_all(ctx, path, &buf, &len);
+    if (st != LX_OK) return st;
+    st = lx_luminaire_read_mem(ctx, path, buf, len, out);
     free(buf);
-    if (!is_stdin) fclose(fp);
     return st;
 }
 

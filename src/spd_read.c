@@ -520,37 +520,11 @@ lx_status lx_spd_read_file(lx_ctx *ctx, const char *path, lx_spd_set **out)
 {
     if (out) *out = NULL;
     if (!ctx || !path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_spd_read_file: NULL argument");
-    int is_stdin = strcmp(path, "-") == 0;
-    FILE *fp = NULL;
-    lx_status st = lx__open_read(ctx, path, &fp);
-    if (st) return st;
-    size_t cap = 1 << 16, len = 0;
-    char *buf = malloc(cap);
-    if (!buf) {
-        st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
-        goto out;
-    }
-    for (;;) {
-        if (len == cap) {
-            char *nb = realloc(buf, cap * 2);
-            if (!nb) {
-                st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory reading %zu bytes", len);
-                goto out;
-            }
-            buf = nb;
-            cap *= 2;
-        }
-        size_t got = fread(buf + len, 1, cap - len, fp);
-        len += got;
-        if (got == 0) break;
-    }
-    if (ferror(fp)) {
-        st = lx__error(ctx, LX_EIO, path, 0, "read error: %s", strerror(errno));
-        goto out;
-    }
+    char *buf;
+    size_t len;
+    lx_status st = lx__read_all(ctx, path, &buf, &len);
+    if (st != LX_OK) return st;
     st = lx_spd_read_mem(ctx, path, buf, len, out);
-out:
     free(buf);
-    if (!is_stdin) fclose(fp);
     return st;
 }
