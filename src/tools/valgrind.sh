@@ -19,7 +19,10 @@ printf '#!/bin/sh\nexec %s %s "$@"\n' "$V" "$(pwd)/$B/luxcalc" >"$W/luxcalc"
 chmod +x "$W/luxcalc"
 for f in libluxcalc.a libluxcalc.so libluxcalc.so.0 libs.txt gen; do [ -e "$B/$f" ] && ln -s "$(pwd)/$B/$f" "$W/$f"; done
 start=$(date +%s)
-sh tests/run.sh "$W" $(for t in "$@"; do echo "$W/tests/${t##*/}"; done)
+sh tests/run.sh "$W" $(for t in "$@"; do echo "$W/tests/${t##*/}"; done) >"$W/run.log" 2>&1
 rc=$?
+# the suite's own closing line ("tests: N passed, N failed, N skipped") stays the last line
+sed '$d' "$W/run.log"
 echo "valgrind: the suite took $(( $(date +%s) - start )) s"
+tail -n 1 "$W/run.log"
 exit $rc
