@@ -55,8 +55,20 @@ lx_status lx__batch_weights(lx_ctx *ctx, const lx_function *fns, size_t k, doubl
         lx_spd fn;
         lx_status st = lx_function_get(ctx, fns[f], &fn);
         if (st) return st;
-        for (size_t j = 0; j < n_lambda; j++)
-            w[f * n_lambda + j] = lx__interp(fn.lambda_nm, fn.value, fn.n, start_nm + (double)j * step_nm) * step_nm;
+        /* lx__interp at increasing wavelengths, its bracket found by walking instead of bisection
+         * (the same bracket, so the same values) */
+        size_t lo = 0;
+        for (size_t j = 0; j < n_lambda; j++) {
+            double x = start_nm + (double)j * step_nm, v = 0.0;
+            if (fn.n > 0 && x >= fn.lambda_nm[0] && x <= fn.lambda_nm[fn.n - 1]) {
+                while (lo + 2 < fn.n && fn.lambda_nm[lo + 1] <= x) lo++;
+                size_t hi = lo + 1 < fn.n ? lo + 1 : lo;
+                if (x == fn.lambda_nm[lo]) v = fn.value[lo];
+                else if (x == fn.lambda_nm[hi]) v = fn.value[hi];
+                else v = fn.value[lo] + (x - fn.lambda_nm[lo]) / (fn.lambda_nm[hi] - fn.lambda_nm[lo]) * (fn.value[hi] - fn.value[lo]);
+            }
+            w[f * n_lambda + j] = v * step_nm;
+        }
     }
     return LX_OK;
 }
@@ -288,27 +300,75 @@ static int online_cores(void)
     return n < 1 ? 1 : n > 64 ? 64 : (int)n;
 }
 
+/* The weights of one (functions, grid) in the three layouts the CPU loops read. A context keeps
+ * the last one it made (a context is used by one thread at a time): a file streamed in small
+ * chunks integrates each against the same weights, and making them costs more than a chunk of
+ * 100 spectra does. */
+#define LX_FN_COUNT_MAX 32
+struct lx__wcache {
+    lx_function fns[LX_FN_COUNT_MAX];
+    size_t k, n;
+    double start_nm, step_nm;
+    double *w;  /* row-major k x n_lambda */
+    double *w4; /* AVX2 layout: [group][block][4 functions][4 lanes], zero padded */
+    double *w8; /* AVX-512 layout: [group][block][4 functions][8 lanes], 64-byte aligned */
+};
+
+void lx__wcache_free(struct lx__wcache *c)
+{
+    if (!c) return;
+    free(c->w);
+    free(c->w4);
+    free(c->w8);
+    free(c);
+}
+
+static lx_status batch_weights_cached(lx_ctx *ctx, const lx_batch *b, const lx_function *fns, size_t k,
+                                      struct lx__wcache **out)
+{
+    size_t n = b->n_lambda, nb = (n + 3) / 4, nb8 = (n + 7) / 8, k4 = (k + 3) / 4 * 4;
+    struct lx__wcache *c = ctx ? ctx->wcache : NULL;
+    if (c && c->k == k && c->n == n && c->start_nm == b->start_nm && c->step_nm == b->step_nm &&
+        !memcmp(c->fns, fns, k * sizeof *fns)) {
+        *out = c;
+        return LX_OK;
+    }
+    c = calloc(1, sizeof *c);
+    if (c) {
+        c->w = malloc(k * n * sizeof *c->w);
+        c->w4 = calloc(k4 / 4 * nb * 16, sizeof *c->w4);
+        c->w8 = aligned_alloc(64, (k4 / 4 * nb8 * 32 * sizeof *c->w8 + 63) / 64 * 64);
+    }
+    lx_status st = !c || !c->w || !c->w4 || !c->w8 ? lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for the batch weights")
+                                                 : lx__batch_weights(ctx, fns, k, b->start_nm, b->step_nm, n, c->w);
+    if (st) {
+        lx__wcache_free(c);
+        return st;
+    }
+    memset(c->w8, 0, k4 / 4 * nb8 * 32 * sizeof *c->w8);
+    for (size_t f = 0; f < k; f++)
+        for (size_t j = 0; j < n; j++) {
+            c->w4[((f / 4) * nb + j / 4) * 16 + (f % 4) * 4 + j % 4] = c->w[f * n + j];
+            c->w8[((f / 4) * nb8 + j / 8) * 32 + (f % 4) * 8 + j % 8] = c->w[f * n + j];
+        }
+    c->k = k, c->n = n, c->start_nm = b->start_nm, c->step_nm = b->step_nm;
+    if (k <= LX_FN_COUNT_MAX) memcpy(c->fns, fns, k * sizeof *fns);
+    if (ctx && k <= LX_FN_COUNT_MAX) {
+        lx__wcache_free(ctx->wcache);
+        ctx->wcache = c;
+    }
+    *out = c;
+    return LX_OK;
+}
+
 static lx_status batch_cpu(lx_ctx *ctx, const lx_batch *b, const lx_function *fns, size_t k, int threads,
                            double *out)
 {
     size_t n = b->n_lambda, nb = (n + 3) / 4, nb8 = (n + 7) / 8, k4 = (k + 3) / 4 * 4;
-    double *w = malloc(k * n * sizeof *w);
-    double *w4 = calloc(k4 / 4 * nb * 16, sizeof *w4);
-    double *w8 = aligned_alloc(64, (k4 / 4 * nb8 * 32 * sizeof *w8 + 63) / 64 * 64);
-    lx_status st = !w || !w4 || !w8 ? lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for the batch weights")
-                                    : lx__batch_weights(ctx, fns, k, b->start_nm, b->step_nm, n, w);
-    if (st) {
-        free(w);
-        free(w4);
-        free(w8);
-        return st;
-    }
-    memset(w8, 0, k4 / 4 * nb8 * 32 * sizeof *w8);
-    for (size_t f = 0; f < k; f++)
-        for (size_t j = 0; j < n; j++) {
-            w4[((f / 4) * nb + j / 4) * 16 + (f % 4) * 4 + j % 4] = w[f * n + j];
-            w8[((f / 4) * nb8 + j / 8) * 32 + (f % 4) * 8 + j % 8] = w[f * n + j];
-        }
+    struct lx__wcache *c = NULL;
+    lx_status st = batch_weights_cached(ctx, b, fns, k, &c);
+    if (st) return st;
+    const double *w = c->w, *w4 = c->w4, *w8 = c->w8;
     int vector = 0;
 #if LX_HAVE_AVX2_PATH
     vector = cpu_vector_level();
@@ -329,9 +389,7 @@ static lx_status batch_cpu(lx_ctx *ctx, const lx_batch *b, const lx_function *fn
     cpu_thread(&J);
     for (int t = 1; t < T; t++)
         if (started[t]) pthread_join(tid[t], NULL);
-    free(w);
-    free(w4);
-    free(w8);
+    if (!ctx || c != ctx->wcache) lx__wcache_free(c); /* not kept (no context, or too many functions) */
     return LX_OK;
 }
 

@@ -1,7 +1,8 @@
 /* batch_csv.c - reads a rows-layout batch CSV (header "id,380,381,...": one spectrum per line on a
  * uniform grid) into a float or double batch in parallel, whole (lx_batch_table_read) or streamed
- * chunk by chunk (lx_batch_table_stream, lx_batch_table_integrate_file); short decimals by an
- * AVX-512BW/SWAR line parser, everything else by lx__parse_double (both exact, as strtod). */
+ * chunk by chunk (lx_batch_table_stream, lx_batch_table_integrate_file); lines of short decimals by
+ * the AVX-512 line parser of csv_vector.c, others by a SWAR number parser and lx__parse_double
+ * (all exact, as strtod). */
 #include "lx_private.h"
 
 #include <errno.h>
@@ -164,105 +165,6 @@ slow:;
     return p;
 }
 
-#if LX_SWAR && defined(__GNUC__) && defined(__x86_64__)
-#include <immintrin.h>
-#define LX_FAST_LINE 1
-/* One field [fs, fe) of only digits, '.' and '-' (the caller checked the bytes): "-?D{1,7}(.D{0,7})?"
- * into *out, correctly rounded (Clinger, as parse_num); 0 when it is anything else. */
-__attribute__((always_inline)) static inline int fast_field(const char *fs, const char *fe, double *out)
-{
-    int neg = *fs == '-';
-    const char *is = fs + neg;
-    ptrdiff_t len = fe - is;
-    if (len >= 1 && len <= 8) {
-        /* the whole number in one 8-byte word: find the first '.' (zero byte of x ^ '.'), close
-         * the gap it leaves, check the len or len - 1 bytes left are digits, convert them at once */
-        uint64_t keep = len == 8 ? ~0ull : (1ull << (8 * len)) - 1, x = load8(is) & keep;
-        uint64_t d = x ^ 0x2e2e2e2e2e2e2e2eull;
-        uint64_t z = (d - 0x0101010101010101ull) & ~d & 0x8080808080808080ull & keep;
-        int k = (int)len, nf = 0;
-        if (z) {
-            int dp = __builtin_ctzll(z) >> 3;
-            if (dp == 0) return 0; /* ".5": the general parser */
-            uint64_t hi = dp < 7 ? x >> (8 * (dp + 1)) : 0;
-            x = (x & ((1ull << (8 * dp)) - 1)) | (hi << (8 * dp));
-            k = (int)len - 1;
-            nf = k - dp;
-        }
-        if (leading_digits(x) < k) return 0;
-        double v = (double)digits_value(x, k) / pow10_exact[nf]; /* <= 8 digits: one rounding */
-        *out = neg ? -v : v;
-        return 1;
-    }
-    int ni = leading_digits(load8(is));
-    if (ni < 1 || ni > 7) return 0;
-    uint64_t m = digits_value(load8(is), ni);
-    int nf = 0;
-    if (is + ni != fe) {
-        const char *f0 = is + ni + 1;
-        if (is[ni] != '.' || fe - f0 > 7) return 0;
-        nf = (int)(fe - f0);
-        if (nf) {
-            uint64_t y = load8(f0);
-            if (leading_digits(y) < nf) return 0;
-            m = m * pow10_u64[nf] + digits_value(y, nf);
-        }
-    }
-    double v = (double)m / pow10_exact[nf]; /* <= 14 digits: exact operands, one rounding */
-    *out = neg ? -v : v;
-    return 1;
-}
-
-/* A whole line of n values q..le (le + 64 must be readable) when every value is a short decimal:
- * separators found 64 bytes at a time (AVX-512BW masks), so each field's bounds come without
- * scanning the previous one and the fields parse independently. 0: the caller's general loop
- * redoes the line (it reports errors). */
-__attribute__((target("avx512f,avx512bw,bmi,bmi2"))) static int fast_line(const char *q, const char *le, char sep,
-                                                                         size_t n, int f32, void *dst)
-{
-    const __m512i vsep = _mm512_set1_epi8(sep), vdot = _mm512_set1_epi8('.'), vmin = _mm512_set1_epi8('-');
-    const __m512i v0 = _mm512_set1_epi8('0'), v10 = _mm512_set1_epi8(10);
-    const char *fs = q;
-    size_t j = 0;
-    double v;
-    for (const char *b = q; b < le; b += 64) {
-        size_t len = (size_t)(le - b) < 64 ? (size_t)(le - b) : 64;
-        uint64_t lm = len == 64 ? ~0ull : (1ull << len) - 1;
-        __m512i x = _mm512_loadu_si512((const void *)b);
-        uint64_t sm = _mm512_cmpeq_epi8_mask(x, vsep) & lm;
-        uint64_t ok = sm | _mm512_cmpeq_epi8_mask(x, vdot) | _mm512_cmpeq_epi8_mask(x, vmin) |
-                      _mm512_cmplt_epu8_mask(_mm512_sub_epi8(x, v0), v10);
-        if ((ok & lm) != lm) return 0;
-        while (sm) {
-            const char *fe = b + __builtin_ctzll(sm);
-            if (j + 1 >= n || fe == fs || !fast_field(fs, fe, &v) || (f32 && fabs(v) > FLT_MAX)) return 0;
-            if (f32) ((float *)dst)[j] = (float)v;
-            else ((double *)dst)[j] = v;
-            j++;
-            fs = fe + 1;
-            sm &= sm - 1;
-        }
-    }
-    if (j + 1 != n || le == fs || !fast_field(fs, le, &v) || (f32 && fabs(v) > FLT_MAX)) return 0;
-    if (f32) ((float *)dst)[j] = (float)v;
-    else ((double *)dst)[j] = v;
-    return 1;
-}
-
-static int have_fast_line(void)
-{
-    static int cached = -1; /* the answer never changes; a race writes the same value */
-    if (cached < 0) {
-        __builtin_cpu_init();
-        cached = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
-                 __builtin_cpu_supports("bmi") && __builtin_cpu_supports("bmi2");
-    }
-    return cached;
-}
-#else
-#define LX_FAST_LINE 0
-#endif
-
 static void *parse_part(void *arg)
 {
     part *p = arg;
@@ -271,10 +173,8 @@ static void *parse_part(void *arg)
     long line = p->line0;
     char sep = p->sep;
     int f32 = t->batch.dtype == LX_F32;
-#if LX_FAST_LINE
     const char *nf = getenv("LX_NOVECTOR"); /* also turns the vector CSV line parser off */
-    int fast = have_fast_line() && !(nf && *nf && strcmp(nf, "0"));
-#endif
+    int fast = lx__csv_have_fast_line() && !(nf && *nf && strcmp(nf, "0"));
     size_t names_cap = (size_t)(p->e - p->s) / 8 + p->rows_cap + 16, r = 0;
     if (p->names_cap < names_cap) { /* buffers are kept from one chunk to the next when streaming */
         free(p->names);
@@ -328,14 +228,12 @@ static void *parse_part(void *arg)
         const char *q = c + 1;
         float *of = (float *)p->values + row * n;
         double *od = (double *)p->values + row * n;
-#if LX_FAST_LINE
-        if (fast && p->lim - le >= 64 && fast_line(q, le, sep, n, f32, f32 ? (void *)of : (void *)od)) {
+        if (fast && p->lim - le >= 64 && lx__csv_fast_line(q, le, sep, n, f32, f32 ? (void *)of : (void *)od)) {
             row++;
             p->rows_done = row;
             s = next;
             continue;
         }
-#endif
         for (size_t j = 0; j < n; j++) {
             while (q < le && *q == ' ') q++;
             double v;

@@ -35,6 +35,7 @@ void lx_ctx_destroy(lx_ctx *ctx)
 {
     if (!ctx) return;
     if (ctx->cl_release) ctx->cl_release(ctx);
+    lx__wcache_free(ctx->wcache);
     for (int i = 0; i < 2; i++) {
         free(ctx->locus[i].u); /* one block holds u, v and their derivatives */
     }

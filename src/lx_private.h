@@ -30,7 +30,19 @@ struct lx_ctx {
     void *cl;                         /* OpenCL state, NULL until first used */
     void (*cl_release)(lx_ctx *ctx);  /* frees cl; set by whoever creates it */
     lx_counters counters;             /* work counters (scenes, issue 8) */
+    struct lx__wcache *wcache;        /* the last CPU batch weights (batch.c) */
 };
+
+/* The vector line parser of the batch CSV reader (csv_vector.c): a line of n short decimals
+ * q..le separated by sep (le + 64 readable) into dst (float when f32), each correctly rounded as
+ * strtod; 0 when any field is not "-?D+(.D*)?" of at most 15 characters, or the count is not n
+ * (the general parser then redoes the line). lx__csv_have_fast_line: 1 when this CPU runs it
+ * (AVX-512 F, BW, DQ, VL and BMI2). */
+int lx__csv_fast_line(const char *q, const char *le, char sep, size_t n, int f32, void *dst);
+int lx__csv_have_fast_line(void);
+
+/* Frees a context's batch weights (batch.c). */
+void lx__wcache_free(struct lx__wcache *c);
 
 /* Records an error on ctx and returns status. file may be NULL, line <= 0 when it does not apply. */
 lx_status lx__error(lx_ctx *ctx, lx_status status, const char *file, long line, const char *fmt, ...)

@@ -213,6 +213,45 @@ void lx_xyz_image_free(lx_xyz_image *img)
     free(img);
 }
 
+/* The linear1nm rule on nl channels at wavelengths lam as an nl x 3 matrix (row k: the integrals of
+ * the k-th unit spectrum, interpolated to whole nm, against fns). The 1 nm grid spans 360-830 nm at
+ * most, where the colour-matching functions are defined (0 outside, so nothing is lost), and is never
+ * sized by untrusted channel names. */
+static lx_status nonuniform_weights(lx_ctx *ctx, const char *path, const double *lam, int nl, const lx_function *fns,
+                                    lx_batch_opts *opts, double **out)
+{
+    double g0 = fmax(floor(lam[0]), 360.0), g1 = fmin(ceil(lam[nl - 1]), 830.0);
+    if (g1 < g0) g0 = g1 = 360.0; /* no overlap: one sample, where every spectrum is 0 */
+    /* the unit spectra in blocks of B, so that memory stays O(nl) however many channels the header names */
+    enum { B = 64 };
+    size_t n = (size_t)nl, ng = (size_t)(g1 - g0) + 1;
+    double *rl = malloc(sizeof(double) * B * n), *rv = malloc(sizeof(double) * B * n), *rg = malloc(sizeof(double) * B * ng),
+           *w = malloc(sizeof(double) * 3 * n);
+    size_t *roff = malloc(sizeof(size_t) * B), *rn = malloc(sizeof(size_t) * B);
+    lx_status st = LX_OK;
+    if (!rl || !rv || !rg || !w || !roff || !rn) {
+        st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
+        goto done;
+    }
+    for (size_t i = 0; i < B; i++) {
+        roff[i] = i * n, rn[i] = n;
+        memcpy(rl + i * n, lam, sizeof(double) * n);
+    }
+    for (size_t k0 = 0; k0 < n && !st; k0 += B) {
+        size_t m = n - k0 < B ? n - k0 : B;
+        memset(rv, 0, sizeof(double) * B * n);
+        for (size_t i = 0; i < m; i++) rv[i * n + k0 + i] = 1.0;
+        lx_batch b = {m, ng, 0, g0, 1.0, LX_F64, rg};
+        if (!(st = lx_batch_resample(ctx, m, rl, rv, roff, rn, &b, opts)))
+            st = lx_batch_integrate(ctx, &b, fns, 3, opts, w + 3 * k0);
+    }
+done:
+    free(rl), free(rv), free(rg), free(roff), free(rn);
+    if (st) free(w);
+    else *out = w;
+    return st;
+}
+
 lx_status lx_spectral_exr_read_xyz(lx_ctx *ctx, const char *path, lx_observer observer, lx_batch_opts *opts,
                                    lx_xyz_image **out)
 {
@@ -227,7 +266,7 @@ lx_status lx_spectral_exr_read_xyz(lx_ctx *ctx, const char *path, lx_observer ob
     if (st) return st;
     lx_xyz_image *img = calloc(1, sizeof *img);
     size_t npix = (size_t)W * H;
-    double *res = malloc(sizeof(double) * 3 * (npix < CHUNK_PIX ? npix : CHUNK_PIX));
+    double *res = malloc(sizeof(double) * 3 * (npix < CHUNK_PIX ? npix : CHUNK_PIX)), *wts = NULL;
     if (img) {
         img->xyz = malloc(sizeof(double) * 3 * npix);
         img->lambda_nm = malloc(sizeof(double) * (size_t)nl);
@@ -248,50 +287,34 @@ lx_status lx_spectral_exr_read_xyz(lx_ctx *ctx, const char *path, lx_observer ob
                       f10[3] = {LX_FN_XBAR_10, LX_FN_YBAR_10, LX_FN_ZBAR_10};
     const lx_function *fns = observer == LX_OBSERVER_10 ? f10 : f2;
     const double km = observer == LX_OBSERVER_10 ? KM_10 : KM_2;
-    /* non-uniform wavelengths: resample every pixel to 1 nm over the whole range first */
-    /* only 360-830 nm, where the colour-matching functions are defined (the weights are 0 outside,
-     * so the sums are unchanged): the grid is then never sized by untrusted channel names */
-    double g0 = fmax(floor(lam[0]), 360.0), g1 = fmin(ceil(lam[nl - 1]), 830.0);
-    if (g1 < g0) g0 = g1 = 360.0; /* no overlap: one sample, where every spectrum is 0 */
-    size_t ng = (size_t)(g1 - g0) + 1;
-    double *rl = NULL, *rv = NULL, *rg = NULL;
-    size_t *roff = NULL, *rn = NULL;
+    /* non-uniform wavelengths: the linear1nm rule (interpolate linearly to whole nm over 360-830 nm,
+     * where the colour-matching functions are defined, then sum at 1 nm). Interpolation and the sum
+     * are both linear in the samples, so the rule is one nl x 3 matrix: resample and integrate the nl
+     * unit spectra once, then each pixel costs nl x 3 multiply-adds instead of a 1 nm resampling (a
+     * 762-byte file declaring 266k pixels took 0.4 s, and over 10 s under sanitizers, before). */
     if (!uniform) {
-        size_t m = npix < CHUNK_PIX / 16 ? npix : CHUNK_PIX / 16;
-        rl = malloc(sizeof(double) * m * (size_t)nl);
-        rv = malloc(sizeof(double) * m * (size_t)nl);
-        rg = malloc(sizeof(double) * m * ng);
-        roff = malloc(sizeof(size_t) * m);
-        rn = malloc(sizeof(size_t) * m);
-        if (!rl || !rv || !rg || !roff || !rn) {
-            st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
-            goto done_r;
-        }
-    }
-    size_t chunk = uniform ? CHUNK_PIX : CHUNK_PIX / 16;
-    for (size_t p0 = 0; p0 < npix && !st; p0 += chunk) {
-        size_t m = npix - p0 < chunk ? npix - p0 : chunk;
-        lx_batch b;
-        if (uniform) {
-            b = (lx_batch){m, (size_t)nl, 0, lam[0], step, LX_F32, data + p0 * (size_t)nl};
-        } else {
-            for (size_t i = 0; i < m; i++) {
-                roff[i] = i * (size_t)nl;
-                rn[i] = (size_t)nl;
-                for (int k = 0; k < nl; k++) {
-                    rl[i * nl + k] = lam[k];
-                    rv[i * nl + k] = data[(p0 + i) * nl + k];
-                }
+        st = nonuniform_weights(ctx, path, lam, nl, fns, opts, &wts);
+        if (st) goto done;
+        for (size_t p = 0; p < npix; p++) {
+            const float *v = data + p * (size_t)nl;
+            double s0 = 0, s1 = 0, s2 = 0;
+            for (int k = 0; k < nl; k++) {
+                s0 += v[k] * wts[3 * k];
+                s1 += v[k] * wts[3 * k + 1];
+                s2 += v[k] * wts[3 * k + 2];
             }
-            b = (lx_batch){m, ng, 0, g0, 1.0, LX_F64, rg};
-            if ((st = lx_batch_resample(ctx, m, rl, rv, roff, rn, &b, opts))) break;
+            img->xyz[3 * p] = km * s0, img->xyz[3 * p + 1] = km * s1, img->xyz[3 * p + 2] = km * s2;
         }
+        goto done;
+    }
+    for (size_t p0 = 0; p0 < npix && !st; p0 += CHUNK_PIX) {
+        size_t m = npix - p0 < CHUNK_PIX ? npix - p0 : CHUNK_PIX;
+        lx_batch b = {m, (size_t)nl, 0, lam[0], step, LX_F32, data + p0 * (size_t)nl};
         if ((st = lx_batch_integrate(ctx, &b, fns, 3, opts, res))) break;
         for (size_t i = 0; i < 3 * m; i++) img->xyz[3 * p0 + i] = km * res[i];
     }
-done_r:
-    free(rl), free(rv), free(rg), free(roff), free(rn);
 done:
+    free(wts);
     free(res);
     free(data);
     free(ch);

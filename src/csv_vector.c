@@ -1,0 +1,180 @@
+/* csv_vector.c - the vector line parser of the batch CSV reader (batch_csv.c): a whole line of
+ * short decimals ("0.123456", "-12.5", "3") parsed with AVX-512, four fields per instruction.
+ * Anything else (exponents, 16+ characters, spaces, a bad byte) answers 0 and the general parser
+ * redoes the line, so this file decides speed, never meaning: every value it returns is the
+ * correctly rounded one strtod gives (tests/test_batch.c checks bit for bit).
+ *
+ * Three passes over a line: (1) separators found 64 bytes at a time give each field's start and
+ * length; (2) four fields at a time, one per 128-bit lane, are checked, their '.' closed up and
+ * their digits right-aligned and converted by multiply-add pairs (10, 100, 10^4, 10^8) into the
+ * signed digits m and the count of fraction digits nf; (3) eight at a time, m / 10^nf in double:
+ * at most 15 digits and nf <= 14 make both exact doubles, so one division rounds correctly
+ * (Clinger 1990), as strtod does. */
+#include "lx_private.h"
+
+#include <stdint.h>
+#include <string.h>
+
+#if defined(__GNUC__) && defined(__x86_64__)
+#include <immintrin.h>
+
+#define LX_AVX512_LINE "avx512f,avx512bw,avx512dq,avx512vl,bmi,bmi2,popcnt"
+
+static const double pow10_exact[16] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                       1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+
+/* Fields gathered before conversion (a multiple of 8), and the room one 64-byte block can add
+ * beyond it (64 separators, 8 slots written past the last in any case, 4 of padding). */
+#define PEND 64
+#define PEND_MAX (PEND + 64 + 8 + 4)
+
+/* Pass 2 for four fields of the line at q: field i ends at q + e[i] and starts after the previous
+ * end (e[-1] + 1; 16 bytes readable there); lanes from `real` on are padding and read as "0".
+ * Writes the digits into m[0..3] and, into nf[0..3], the counts of fraction digits with the
+ * sign in bit 7. 0 when a real field is not "-?D+(.D*)?" of 1..15 characters. */
+__attribute__((target(LX_AVX512_LINE))) static inline int convert4(const char *q, const uint32_t *e, int real, int64_t *m,
+                                                                  uint8_t *nf)
+{
+    const __m512i iota = _mm512_broadcast_i32x4(_mm_setr_epi8(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15));
+    const __m512i lane = _mm512_set_epi64(0x0303030303030303ll, 0x0303030303030303ll, 0x0202020202020202ll,
+                                          0x0202020202020202ll, 0x0101010101010101ll, 0x0101010101010101ll, 0, 0);
+    const uint64_t lane0 = 0x0001000100010001ull;
+    __m128i E = _mm_loadu_si128((const __m128i *)(const void *)e);
+    __m128i S = _mm_add_epi32(_mm_loadu_si128((const __m128i *)(const void *)(e - 1)), _mm_set1_epi32(1));
+    __m128i N = _mm_sub_epi32(E, S);
+    if (_mm_movemask_epi8(_mm_cmpgt_epi32(N, _mm_set1_epi32(15)))) return 0; /* 16+ characters */
+    uint32_t lp = (uint32_t)_mm_cvtsi128_si32(_mm_shuffle_epi8(N, _mm_setr_epi8(0, 4, 8, 12, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1)));
+    __m512i x = _mm512_castsi128_si512(_mm_loadu_si128((const __m128i *)(const void *)(q + (uint32_t)_mm_cvtsi128_si32(S))));
+    x = _mm512_inserti32x4(x, _mm_loadu_si128((const __m128i *)(const void *)(q + (uint32_t)_mm_extract_epi32(S, 1))), 1);
+    x = _mm512_inserti32x4(x, _mm_loadu_si128((const __m128i *)(const void *)(q + (uint32_t)_mm_extract_epi32(S, 2))), 2);
+    x = _mm512_inserti32x4(x, _mm_loadu_si128((const __m128i *)(const void *)(q + (uint32_t)_mm_extract_epi32(S, 3))), 3);
+    if (real < 4) x = _mm512_mask_blend_epi8(~0ull << (16 * real), x, _mm512_set1_epi8('0'));
+    __m512i L = _mm512_shuffle_epi8(_mm512_set1_epi32((int)lp), lane); /* lane i: its length in every byte */
+    __mmask64 valid = _mm512_cmpgt_epu8_mask(L, iota);
+    __m512i d = _mm512_sub_epi8(x, _mm512_set1_epi8('0'));
+    __mmask64 dig = _mm512_mask_cmple_epu8_mask(valid, d, _mm512_set1_epi8(9));
+    __mmask64 dot = _mm512_mask_cmpeq_epi8_mask(valid, x, _mm512_set1_epi8('.'));
+    __mmask64 neg = _mm512_mask_cmpeq_epi8_mask(valid & lane0, x, _mm512_set1_epi8('-'));
+    /* every byte a digit, but a leading '-' and a '.' with a digit before it */
+    if ((dig | dot | neg) != valid || (dot & (lane0 | neg << 1))) return 0;
+    /* per lane (16-bit words of the masks): at most one '.', at least one digit */
+    __m128i D = _mm_cvtsi64_si128((long long)dot), G = _mm_cvtsi64_si128((long long)dig);
+    __m128i one = _mm_set1_epi16(1), zero = _mm_setzero_si128();
+    __m128i many = _mm_and_si128(D, _mm_sub_epi16(D, one));
+    if ((_mm_movemask_epi8(_mm_cmpeq_epi16(many, zero)) & 0xff) != 0xff || (_mm_movemask_epi8(_mm_cmpeq_epi16(G, zero)) & 0xff))
+        return 0;
+    /* upto: bytes 0..'.' of lanes with a '.'; frac: the bytes after it */
+    __m128i hasdot = _mm_andnot_si128(_mm_cmpeq_epi16(D, zero), _mm_set1_epi16(-1));
+    __m128i U = _mm_and_si128(_mm_sub_epi16(_mm_slli_epi16(D, 1), one), hasdot);
+    uint64_t upto = (uint64_t)_mm_cvtsi128_si64(U);
+    uint64_t frac = valid & ~upto & (uint64_t)_mm_cvtsi128_si64(hasdot);
+    /* nf: fraction digits, and the sign in bit 7 (applied to the double, so "-0" gives -0.0) */
+    nf[0] = (uint8_t)(__builtin_popcountll(frac & 0xffff) | (neg & 1) << 7);
+    nf[1] = (uint8_t)(__builtin_popcountll(frac >> 16 & 0xffff) | (neg >> 16 & 1) << 7);
+    nf[2] = (uint8_t)(__builtin_popcountll(frac >> 32 & 0xffff) | (neg >> 32 & 1) << 7);
+    nf[3] = (uint8_t)(__builtin_popcountll(frac >> 48) | (neg >> 48 & 1) << 7);
+    /* the digits: others to 0, the '.' closed up (bytes 0..'.' take their left neighbour), the
+     * last digit moved to byte 15 of its lane, then 2, 4, 8 and 16 digits at a time */
+    d = _mm512_maskz_mov_epi8(dig, d);
+    d = _mm512_mask_blend_epi8(upto, d, _mm512_bslli_epi128(d, 1));
+    d = _mm512_shuffle_epi8(d, _mm512_add_epi8(iota, _mm512_sub_epi8(L, _mm512_set1_epi8(16))));
+    __m512i t = _mm512_maddubs_epi16(d, _mm512_set1_epi16(0x010a));         /* 10 a + b */
+    t = _mm512_madd_epi16(t, _mm512_set1_epi32(0x00010064));                /* 100 a + b */
+    t = _mm512_packus_epi32(t, t);                                          /* 4-digit words */
+    t = _mm512_madd_epi16(t, _mm512_set1_epi32(0x00012710));                /* 10^4 a + b */
+    __m512i v = _mm512_add_epi64(_mm512_mul_epu32(t, _mm512_set1_epi64(100000000)), _mm512_srli_epi64(t, 32));
+    _mm256_storeu_si256((__m256i *)(void *)m, _mm512_castsi512_si256(_mm512_maskz_compress_epi64(0x55, v))); /* qword 0 of each lane */
+    return 1;
+}
+
+/* Pass 3: dst[0..k) = -+m[i] / 10^nf[i] (as float when f32). */
+__attribute__((target(LX_AVX512_LINE))) static void divide8(const int64_t *m, const uint8_t *nf, size_t k, int f32,
+                                                           void *dst)
+{
+    const __m512d p0 = _mm512_loadu_pd(pow10_exact), p1 = _mm512_loadu_pd(pow10_exact + 8);
+    for (size_t i = 0; i < k; i += 8) {
+        __mmask8 km = k - i >= 8 ? 0xff : (__mmask8)((1u << (k - i)) - 1);
+        __m512i mi = _mm512_maskz_loadu_epi64(km, m + i);
+        __m512i ni = _mm512_cvtepu8_epi64(_mm_loadl_epi64((const __m128i *)(const void *)(nf + i)));
+        __m512d v = _mm512_div_pd(_mm512_cvtepi64_pd(mi), _mm512_permutex2var_pd(p0, ni, p1)); /* index: bits 0-3 */
+        __mmask8 sg = _mm512_test_epi64_mask(ni, _mm512_set1_epi64(0x80));
+        v = _mm512_castsi512_pd(_mm512_mask_xor_epi64(_mm512_castpd_si512(v), sg, _mm512_castpd_si512(v),
+                                                      _mm512_set1_epi64((long long)0x8000000000000000ull)));
+        if (f32) _mm256_mask_storeu_ps((float *)dst + i, km, _mm512_cvtpd_ps(v));
+        else _mm512_mask_storeu_pd((double *)dst + i, km, v);
+    }
+}
+
+/* Passes 2 and 3 on the k fields whose ends are e[0..k) (e[-1]: the end before the first). */
+__attribute__((target(LX_AVX512_LINE))) static int flush(const char *q, uint32_t *e, size_t k, int f32, void *dst)
+{
+    int64_t m[PEND_MAX + 4];
+    uint8_t nf[PEND_MAX + 12] = {0};
+    for (size_t i = k; i % 4; i++) e[i] = e[i - 1] + 2; /* padding lanes: 1 byte each, inside the readable 64 */
+    for (size_t i = 0; i < k; i += 4)
+        if (!convert4(q, e + i, k - i < 4 ? (int)(k - i) : 4, m + i, nf + i)) return 0;
+    divide8(m, nf, k, f32, dst);
+    return 1;
+}
+
+__attribute__((target(LX_AVX512_LINE))) int lx__csv_fast_line(const char *q, const char *le, char sep, size_t n, int f32,
+                                                             void *dst)
+{
+    if ((size_t)(le - q) >= 0xffff0000u) return 0; /* offsets are 32-bit */
+    const __m512i vsep = _mm512_set1_epi8(sep);
+    uint32_t ends[PEND_MAX + 1], *e = ends + 1; /* e[-1]: the end before the first field */
+    size_t j = 0, k = 0, es = f32 ? sizeof(float) : sizeof(double);
+    e[-1] = 0xffffffffu; /* + 1 wraps to offset 0 */
+    for (const char *b = q; b < le; b += 64) {
+        size_t bl = (size_t)(le - b) < 64 ? (size_t)(le - b) : 64;
+        uint64_t sm = _mm512_cmpeq_epi8_mask(_mm512_loadu_si512((const void *)b), vsep) & _bzhi_u64(~0ull, (unsigned)bl);
+        /* pass 1: each separator ends a field; 8 slots written whatever the count (no branch
+         * per field), the ones past the count overwritten later */
+        uint32_t base = (uint32_t)(b - q);
+        int cnt = __builtin_popcountll(sm);
+        uint32_t *w = e + k;
+        for (int i = 0; i < 8; i++) {
+            w[i] = base + (uint32_t)_tzcnt_u64(sm);
+            sm = _blsr_u64(sm);
+        }
+        for (int i = 8; i < cnt; i++) {
+            w[i] = base + (uint32_t)_tzcnt_u64(sm);
+            sm = _blsr_u64(sm);
+        }
+        k += (size_t)cnt;
+        if (k >= PEND) { /* convert a multiple of 8; the rest moves to the front */
+            size_t c = k / 8 * 8;
+            if (j + c >= n || !flush(q, e, c, f32, (char *)dst + j * es)) return 0;
+            e[-1] = e[c - 1];
+            memmove(e, e + c, (k - c) * sizeof *e);
+            j += c, k -= c;
+        }
+    }
+    e[k++] = (uint32_t)(le - q);
+    if (j + k != n || !flush(q, e, k, f32, (char *)dst + j * es)) return 0;
+    return 1;
+}
+
+int lx__csv_have_fast_line(void)
+{
+    static int cached = -1; /* the answer never changes; a race writes the same value */
+    if (cached < 0) {
+        __builtin_cpu_init();
+        cached = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
+                 __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl") &&
+                 __builtin_cpu_supports("bmi") && __builtin_cpu_supports("bmi2") && __builtin_cpu_supports("popcnt");
+    }
+    return cached;
+}
+
+#else
+
+int lx__csv_fast_line(const char *q, const char *le, char sep, size_t n, int f32, void *dst)
+{
+    (void)q, (void)le, (void)sep, (void)n, (void)f32, (void)dst;
+    return 0;
+}
+
+int lx__csv_have_fast_line(void) { return 0; }
+
+#endif

@@ -1,0 +1,174 @@
+/* test_csv_vector.c - the vector line parser of the batch CSV reader (src/csv_vector.c) against
+ * the C library's strtod (ISO C 7.22.1.3: correctly rounded), bit for bit (so -0 stays -0.0),
+ * on a million random short decimals of every length 1-15, every '.' position and sign, mixed
+ * with fields it must leave to the general parser (exponents, 16+ characters, '+', spaces) and
+ * with bad fields, which must give the same error line with and without it (LX_NOVECTOR=1).
+ * Row widths 1-471 put fields across the parser's 64-byte blocks and 64-field batches. */
+#include "lx_test.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static unsigned long long rng = 88172645463325252ull;
+static unsigned rnd(unsigned n)
+{
+    rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17; /* xorshift64 */
+    return (unsigned)((rng >> 11) % n);
+}
+
+/* A random field: mostly what the vector parser takes, sometimes what it leaves to the other. */
+static void field(char *c, int vector_only)
+{
+    int kind = vector_only ? 0 : (int)rnd(20);
+    if (kind == 1) { /* %.17g of a double: 16-17 digits, exponents */
+        double x = (double)rnd(1u << 30) / (double)(1 + rnd(1u << 20)) * (rnd(2) ? 1e-9 : 1e9);
+        snprintf(c, 40, "%.17g", rnd(2) ? -x : x);
+        return;
+    }
+    if (kind == 2) { /* what strtod takes and the vector parser does not */
+        static const char *other[] = {"+1.5", "1e5", "2.5E-3", ".5", "-.25", "1234567890123456", "0.000000000000001",
+                                      "-9999999.99999999", "12345678.1234567"};
+        strcpy(c, other[rnd(9)]);
+        return;
+    }
+    /* "-?D{ni}(.D{nf})?": 1-15 digits, up to 15 characters */
+    int nd = 1 + (int)rnd(15), ni = 1 + (int)rnd((unsigned)nd), neg = rnd(4) == 0, dot = ni < nd || rnd(4) == 0;
+    if (neg + nd + dot > 15) neg = 0;
+    if (nd + dot > 15) dot = 0, ni = nd;
+    char *p = c;
+    if (neg) *p++ = '-';
+    for (int i = 0; i < ni; i++) *p++ = (char)('0' + (i == 0 && rnd(3) == 0 ? 0 : rnd(10)));
+    if (dot) *p++ = '.';
+    for (int i = ni; i < nd; i++) *p++ = (char)('0' + rnd(10));
+    *p = 0;
+}
+
+/* A table of rows x n fields and its strtod values. */
+static char *table(size_t rows, size_t n, int vector_only, double *want, size_t *len)
+{
+    size_t cap = 64 + n * 8 + rows * (16 + n * 42), o = 0;
+    char *t = malloc(cap);
+    assert_non_null(t);
+    o += (size_t)sprintf(t + o, "id");
+    for (size_t j = 0; j < n; j++) o += (size_t)sprintf(t + o, ",%zu", 400 + j);
+    t[o++] = '\n';
+    for (size_t i = 0; i < rows; i++) {
+        o += (size_t)sprintf(t + o, "r%zu", i);
+        for (size_t j = 0; j < n; j++) {
+            char c[48];
+            field(c, vector_only);
+            want[i * n + j] = strtod(c, NULL);
+            o += (size_t)sprintf(t + o, ",%s", c);
+        }
+        t[o++] = '\n';
+    }
+    *len = o;
+    return t;
+}
+
+static size_t bit_mismatches(const lx_batch_table *t, const double *want, size_t count, int f32)
+{
+    size_t bad = 0;
+    for (size_t i = 0; i < count; i++) {
+        if (f32) {
+            float a = ((const float *)t->batch.values)[i], b = (float)want[i];
+            bad += memcmp(&a, &b, sizeof a) != 0;
+        } else {
+            bad += memcmp((const double *)t->batch.values + i, want + i, sizeof(double)) != 0;
+        }
+    }
+    return bad;
+}
+
+static void test_million_against_strtod(void **state)
+{
+    lx_ctx *ctx = *state;
+    size_t rows = 2200, n = 471, len; /* 1,036,200 values */
+    double *want = malloc(rows * n * sizeof *want);
+    for (int vector_only = 1; vector_only >= 0; vector_only--) {
+        char *text = table(rows, n, vector_only, want, &len);
+        for (int f32 = 0; f32 <= 1; f32++) {
+            lx_batch_table *t = NULL;
+            lx_assert_ok(ctx, lx_batch_table_read_mem(ctx, "v.csv", text, len, f32 ? LX_F32 : LX_F64, 2, &t));
+            assert_int_equal(t->batch.n_spectra, rows);
+            size_t bad = bit_mismatches(t, want, rows * n, f32);
+            print_message("%s fields, %s: %zu of %zu values differ from strtod\n", vector_only ? "vector-parser" : "mixed",
+                          f32 ? "float" : "double", bad, rows * n);
+            assert_int_equal(bad, 0);
+            lx_batch_table_free(t);
+        }
+        free(text);
+    }
+    free(want);
+}
+
+static void test_widths_and_edges(void **state)
+{
+    lx_ctx *ctx = *state;
+    static const size_t widths[] = {1, 2, 3, 4, 5, 7, 8, 9, 31, 63, 64, 65, 66, 127, 128, 129, 200};
+    for (size_t w = 0; w < sizeof widths / sizeof *widths; w++) {
+        size_t n = widths[w], rows = 300, len;
+        double *want = malloc(rows * n * sizeof *want);
+        char *text = table(rows, n, 1, want, &len);
+        lx_batch_table *t = NULL;
+        lx_assert_ok(ctx, lx_batch_table_read_mem(ctx, "w.csv", text, len, LX_F64, 1, &t));
+        assert_int_equal(bit_mismatches(t, want, rows * n, 0), 0);
+        lx_batch_table_free(t);
+        free(text);
+        free(want);
+    }
+    /* fixed edge cases, each in a row long enough for the vector parser (not near the end) */
+    static const char *edge[] = {"0",    "-0",   "0.",   "-0.0", "5.",        "00012.5000", "999999999999999",
+                                 "-99999999999999", "1.00000000000000", "0.00000000000001", "7", "-7.", "123456789012.345"};
+    for (size_t e = 0; e < sizeof edge / sizeof *edge; e++) {
+        char text[4096];
+        int o = sprintf(text, "id,1,2,3\n");
+        for (int r = 0; r < 40; r++) o += sprintf(text + o, "r%d,%s,1.5,%s\n", r, edge[e], edge[e]);
+        lx_batch_table *t = NULL;
+        lx_assert_ok(ctx, lx_batch_table_read_mem(ctx, "e.csv", text, (size_t)o, LX_F64, 1, &t));
+        double want = strtod(edge[e], NULL);
+        const double *v = t->batch.values;
+        for (int r = 0; r < 40; r++) {
+            assert_memory_equal(&v[3 * r], &want, sizeof want);
+            assert_memory_equal(&v[3 * r + 2], &want, sizeof want);
+        }
+        lx_batch_table_free(t);
+    }
+}
+
+/* A bad field in row 25 (file line 28): the same error, with and without the vector parser. */
+static void test_bad_fields_same_error(void **state)
+{
+    lx_ctx *ctx = *state;
+    static const char *bad[] = {"1.2.3", "--1", "1-", ".", "-", "", "1..", "1.-2", "0x10", "1,5", "١٢٣", "12a", "-.",
+                                "1 2"};
+    for (size_t b = 0; b < sizeof bad / sizeof *bad; b++) {
+        long line[2];
+        char msg[2][256];
+        for (int novec = 0; novec <= 1; novec++) {
+            if (novec) setenv("LX_NOVECTOR", "1", 1);
+            char text[8192];
+            int o = sprintf(text, "# c\nid,1,2,3,4\n");
+            for (int r = 0; r < 60; r++) o += sprintf(text + o, "r%d,0.5,%s,1.25,3\n", r, r == 25 ? bad[b] : "2.75");
+            lx_batch_table *t = NULL;
+            assert_int_equal(lx_batch_table_read_mem(ctx, "b.csv", text, (size_t)o, LX_F64, 1, &t), LX_EPARSE);
+            line[novec] = lx_ctx_errline(ctx);
+            snprintf(msg[novec], sizeof msg[novec], "%s", lx_ctx_errmsg(ctx));
+            unsetenv("LX_NOVECTOR");
+        }
+        assert_int_equal(line[0], 28);
+        assert_int_equal(line[1], 28);
+        assert_string_equal(msg[0], msg[1]);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_million_against_strtod),
+        cmocka_unit_test(test_widths_and_edges),
+        cmocka_unit_test(test_bad_fields_same_error),
+    };
+    return cmocka_run_group_tests(tests, lx_test_ctx_setup, lx_test_ctx_teardown);
+}
