@@ -56,12 +56,13 @@ static inline double lx__table_eval(const lx__plum *p, double x, double y, doubl
 
 /* Adds to acc[i] (i < nb) the point-model illuminance of luminaire p through its table at the
  * points (x[i], y[i], z[i]) with normals (nx, ny, nz)[i], or nx[0], ny[0], nz[0] for all when
- * shared. simd (from lx__grid_simd) runs AVX2 + FMA, 4 points at a time, else plain C; the two
- * agree to rounding (FMA). Thread-safe. */
+ * shared. simd (from lx__grid_simd): 2 runs AVX-512 (8 points at a time), 1 AVX2 + FMA (4 at a
+ * time), 0 plain C; they agree to rounding (FMA). Thread-safe. */
 void lx__grid_table_block(const lx__plum *p, size_t nb, const double *x, const double *y, const double *z,
                           const double *nx, const double *ny, const double *nz, int shared, int simd, double *acc);
 
-/* 1 when this CPU has AVX2 and FMA and the environment does not set LX_NOVECTOR (to 1). */
+/* 0 when the environment sets LX_NOVECTOR (to 1) or this CPU lacks AVX2 and FMA; else 2 with
+ * AVX-512 F/DQ/VL (unless LX_NOAVX512 is set), else 1. */
 int lx__grid_simd(void);
 
 #endif /* LX_GRID_PRIVATE_H */
