@@ -65,8 +65,6 @@ lx_status lx__scene_parse_vec(lx_ctx *ctx, const char *file, long line, const ch
 
 /* rel resolved against the directory of base_file (malloc'ed). */
 char *lx__scene_resolve(const char *base_file, const char *rel);
-/* Reads a whole file ("-": stdin) into *text (malloc'ed). LX_EIO (errno set) or LX_ENOMEM. */
-lx_status lx__scene_slurp(const char *path, char **text, size_t *len);
 
 /* ---- geometry and evaluation ---- */
 /* The luminaire's frame: ex (C0), ey (C90), ez (= -aim, up from the nadir). */

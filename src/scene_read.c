@@ -218,9 +218,14 @@ static lx_status do_include(reader *r, const char *file, long line, const char *
     if (!path) return lx__error(r->ctx, LX_ENOMEM, file, line, "out of memory");
     char *text = NULL;
     size_t len = 0;
-    lx_status st = lx__scene_slurp(path, &text, &len);
-    if (st != LX_OK) {
-        lx__error(r->ctx, st, file, line, "include: cannot read '%s': %s", path, strerror(errno));
+    lx_status st = lx__read_all(r->ctx, path, &text, &len);
+    if (st != LX_OK) { /* lx__read_all's reason, at the include line */
+        char why[LX__ERRMSG_MAX];
+        const char *m = lx_ctx_errmsg(r->ctx);
+        size_t pl = strlen(path);
+        if (!strncmp(m, path, pl) && !strncmp(m + pl, ": ", 2)) m += pl + 2; /* the path is said once */
+        snprintf(why, sizeof why, "%s", m);
+        lx__error(r->ctx, st, file, line, "include: cannot read '%s': %s", path, why);
         free(path);
         return st;
     }
@@ -360,36 +365,6 @@ static lx_status read_file(reader *r, const char *path, const char *text, size_t
     return st;
 }
 
-lx_status lx__scene_slurp(const char *path, char **text, size_t *len)
-{
-    FILE *f = NULL;
-    if (lx__open_read(NULL, path, &f)) return LX_EIO; /* errno says why */
-    size_t cap = 4096, n = 0;
-    char *buf = malloc(cap);
-    while (buf) {
-        size_t got = fread(buf + n, 1, cap - n, f);
-        n += got;
-        if (n < cap) break;
-        char *nb = cap > SIZE_MAX / 2 ? NULL : realloc(buf, cap * 2);
-        if (!nb) {
-            free(buf);
-            buf = NULL;
-            break;
-        }
-        buf = nb;
-        cap *= 2;
-    }
-    int err = ferror(f);
-    if (f != stdin) fclose(f);
-    if (!buf) return LX_ENOMEM;
-    if (err) {
-        free(buf);
-        return LX_EIO;
-    }
-    *text = buf;
-    *len = n;
-    return LX_OK;
-}
 
 lx_status lx_scene_read_mem(lx_ctx *ctx, const char *name, const char *text, size_t len, lx_scene **out)
 {
@@ -421,8 +396,8 @@ lx_status lx_scene_read_file(lx_ctx *ctx, const char *path, lx_scene **out)
     *out = NULL;
     char *text = NULL;
     size_t len = 0;
-    lx_status st = lx__scene_slurp(path, &text, &len);
-    if (st != LX_OK) return lx__error(ctx, st, path, 0, "cannot read: %s", st == LX_EIO ? strerror(errno) : "out of memory");
+    lx_status st = lx__read_all(ctx, path, &text, &len); /* its errors name the file */
+    if (st != LX_OK) return st;
     st = lx_scene_read_mem(ctx, path, text, len, out);
     free(text);
     return st;

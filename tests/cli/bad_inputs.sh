@@ -76,7 +76,7 @@ expect_rc 0 "a 10 MB IES keyword line is read"
 # a directory instead of a file
 for c in spd ies scene luminance-map; do
   bounded $c "$B"
-  case $c in scene) frag="Is a directory" ;; luminance-map) frag="not a regular file" ;; *) frag="is a directory" ;; esac
+  case $c in luminance-map) frag="not a regular file" ;; *) frag="is a directory" ;; esac
   check "$c: a directory" 2 "$B" - "$frag" $c
 done
 # an unreadable file
@@ -94,8 +94,7 @@ chmod 644 "$G/unreadable.ies"
 mkfifo "$G/fifo" 2>/dev/null || { notok "FIFO" "mkfifo failed"; exit 0; }
 for c in spd ies scene; do
   LX_FIFO_WAIT_S=1 bounded $c "$G/fifo"
-  # the scene reader words it "cannot read: Connection timed out" (it reports errno)
-  [ $c = scene ] && frag="cannot read" || frag="a FIFO with no data after 1 s"
+  frag="a FIFO with no data after 1 s"
   check "$c: a FIFO without a writer" 2 "$G/fifo" - "$frag" $c
   [ "$ms" -lt 5000 ] && ok "$c: a FIFO without a writer fails in ${ms} ms" || notok "$c: FIFO wait bounded" "${ms} ms"
 done
