@@ -165,6 +165,27 @@ slow:;
     return p;
 }
 
+/* Appends a row's name (len bytes at s) to the part's names; 0 (error set) when out of memory. */
+static int keep_name(part *p, const char *s, size_t len, size_t *r, long line)
+{
+    if (p->names_len + len + 1 > p->names_cap) {
+        size_t cap = 2 * (p->names_cap + len + 1);
+        char *nb = realloc(p->names, cap);
+        if (!nb) {
+            p->err_line = line;
+            snprintf(p->err, sizeof p->err, "out of memory");
+            return 0;
+        }
+        p->names = nb;
+        p->names_cap = cap;
+    }
+    p->name_at[(*r)++] = p->names_len;
+    memcpy(p->names + p->names_len, s, len);
+    p->names_len += len;
+    p->names[p->names_len++] = 0;
+    return 1;
+}
+
 static void *parse_part(void *arg)
 {
     part *p = arg;
@@ -181,7 +202,6 @@ static void *parse_part(void *arg)
         p->names = malloc(names_cap);
         p->names_cap = names_cap;
     }
-    names_cap = p->names_cap;
     if (p->name_at_cap < p->rows_cap + 1) {
         free(p->name_at);
         p->name_at = malloc((p->rows_cap + 1) * sizeof *p->name_at);
@@ -195,7 +215,24 @@ static void *parse_part(void *arg)
         return NULL;
     }
     const char *s = p->s;
+    /* the vector parser's 64-byte loads stay inside the text: lines it reads end before stop */
+    const char *stop = p->lim - p->e >= 64 ? p->e : p->lim - 64 > p->s ? p->lim - 64 : p->s;
+    int whole = stop == p->e;
     for (; s < p->e; line++) {
+        if (fast && s < stop && *s != '#' && *s != ' ' && *s != '\t' && *s != '\r' && *s != '\n') {
+            /* a row: the vector parser finds the line's end itself (no scan before it) */
+            const char *c = s - 1, *le;
+            if (p->named)
+                for (c = s; c < stop && *c != sep && *c != '\n'; c++) continue;
+            if (c < stop && (!p->named || *c == sep) &&
+                lx__csv_fast_line(c + 1, stop, whole, sep, n, f32, (char *)p->values + row * n * (f32 ? 4 : 8), &le)) {
+                if (!keep_name(p, s, p->named ? (size_t)(c - s) : 0, &r, line)) return NULL;
+                row++;
+                p->rows_done = row;
+                s = le < p->e ? le + 1 : p->e;
+                continue;
+            }
+        }
         const char *nl = memchr(s, '\n', (size_t)(p->e - s));
         const char *le = nl ? nl : p->e, *next = nl ? nl + 1 : p->e;
         if (le > s && le[-1] == '\r') le--;
@@ -210,30 +247,10 @@ static void *parse_part(void *arg)
             return NULL;
         }
         size_t nl_len = p->named ? (size_t)(c - s) : 0;
-        if (p->names_len + nl_len + 1 > names_cap) {
-            names_cap = 2 * (names_cap + nl_len + 1);
-            char *nb = realloc(p->names, names_cap);
-            if (!nb) {
-                p->err_line = line;
-                snprintf(p->err, sizeof p->err, "out of memory");
-                return NULL;
-            }
-            p->names = nb;
-            p->names_cap = names_cap;
-        }
-        p->name_at[r++] = p->names_len;
-        memcpy(p->names + p->names_len, s, nl_len);
-        p->names_len += nl_len;
-        p->names[p->names_len++] = 0;
+        if (!keep_name(p, s, nl_len, &r, line)) return NULL;
         const char *q = c + 1;
         float *of = (float *)p->values + row * n;
         double *od = (double *)p->values + row * n;
-        if (fast && p->lim - le >= 64 && lx__csv_fast_line(q, le, sep, n, f32, f32 ? (void *)of : (void *)od)) {
-            row++;
-            p->rows_done = row;
-            s = next;
-            continue;
-        }
         for (size_t j = 0; j < n; j++) {
             while (q < le && *q == ' ') q++;
             double v;

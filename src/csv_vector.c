@@ -117,17 +117,23 @@ __attribute__((target(LX_AVX512_LINE))) static int flush(const char *q, uint32_t
     return 1;
 }
 
-__attribute__((target(LX_AVX512_LINE))) int lx__csv_fast_line(const char *q, const char *le, char sep, size_t n, int f32,
-                                                             void *dst)
+__attribute__((target(LX_AVX512_LINE))) int lx__csv_fast_line(const char *q, const char *stop, int whole, char sep,
+                                                             size_t n, int f32, void *dst, const char **line_end)
 {
-    if ((size_t)(le - q) >= 0xffff0000u) return 0; /* offsets are 32-bit */
-    const __m512i vsep = _mm512_set1_epi8(sep);
+    if ((size_t)(stop - q) >= 0xffff0000u) stop = q + 0xffff0000u, whole = 0; /* offsets are 32-bit */
+    const __m512i vsep = _mm512_set1_epi8(sep), vnl = _mm512_set1_epi8('\n');
     uint32_t ends[PEND_MAX + 1], *e = ends + 1; /* e[-1]: the end before the first field */
     size_t j = 0, k = 0, es = f32 ? sizeof(float) : sizeof(double);
+    const char *le = NULL;
     e[-1] = 0xffffffffu; /* + 1 wraps to offset 0 */
-    for (const char *b = q; b < le; b += 64) {
-        size_t bl = (size_t)(le - b) < 64 ? (size_t)(le - b) : 64;
-        uint64_t sm = _mm512_cmpeq_epi8_mask(_mm512_loadu_si512((const void *)b), vsep) & _bzhi_u64(~0ull, (unsigned)bl);
+    for (const char *b = q; b < stop && !le; b += 64) {
+        uint64_t in = _bzhi_u64(~0ull, (unsigned)((size_t)(stop - b) < 64 ? (size_t)(stop - b) : 64));
+        __m512i x = _mm512_loadu_si512((const void *)b);
+        uint64_t sm = _mm512_cmpeq_epi8_mask(x, vsep) & in, nm = _mm512_cmpeq_epi8_mask(x, vnl) & in;
+        if (nm) { /* the line ends in this block: separators after it belong to the next line */
+            le = b + _tzcnt_u64(nm);
+            sm &= _blsmsk_u64(nm) >> 1;
+        }
         /* pass 1: each separator ends a field; 8 slots written whatever the count (no branch
          * per field), the ones past the count overwritten later */
         uint32_t base = (uint32_t)(b - q);
@@ -150,8 +156,14 @@ __attribute__((target(LX_AVX512_LINE))) int lx__csv_fast_line(const char *q, con
             j += c, k -= c;
         }
     }
-    e[k++] = (uint32_t)(le - q);
+    if (!le) { /* no newline before stop: the line ends there only if that is the end of the text */
+        if (!whole) return 0;
+        le = stop;
+    }
+    const char *fe = le > q && le[-1] == '\r' ? le - 1 : le; /* CRLF */
+    e[k++] = (uint32_t)(fe - q);
     if (j + k != n || !flush(q, e, k, f32, (char *)dst + j * es)) return 0;
+    *line_end = le;
     return 1;
 }
 
@@ -169,9 +181,10 @@ int lx__csv_have_fast_line(void)
 
 #else
 
-int lx__csv_fast_line(const char *q, const char *le, char sep, size_t n, int f32, void *dst)
+int lx__csv_fast_line(const char *q, const char *stop, int whole, char sep, size_t n, int f32, void *dst,
+                      const char **line_end)
 {
-    (void)q, (void)le, (void)sep, (void)n, (void)f32, (void)dst;
+    (void)q, (void)stop, (void)whole, (void)sep, (void)n, (void)f32, (void)dst, (void)line_end;
     return 0;
 }
 

@@ -33,12 +33,15 @@ struct lx_ctx {
     struct lx__wcache *wcache;        /* the last CPU batch weights (batch.c) */
 };
 
-/* The vector line parser of the batch CSV reader (csv_vector.c): a line of n short decimals
- * q..le separated by sep (le + 64 readable) into dst (float when f32), each correctly rounded as
- * strtod; 0 when any field is not "-?D+(.D*)?" of at most 15 characters, or the count is not n
- * (the general parser then redoes the line). lx__csv_have_fast_line: 1 when this CPU runs it
- * (AVX-512 F, BW, DQ, VL and BMI2). */
-int lx__csv_fast_line(const char *q, const char *le, char sep, size_t n, int f32, void *dst);
+/* The vector line parser of the batch CSV reader (csv_vector.c): the line of n short decimals
+ * separated by sep that starts at q, up to its '\n' (or '\r\n') before stop, or up to stop itself
+ * when whole (stop is the end of the text); 64 bytes past stop are readable. The values go to dst
+ * (float when f32), each correctly rounded as strtod; *line_end gets the line's end (its '\n', or
+ * stop). 0 when any field is not "-?D+(.D*)?" of at most 15 characters, the count is not n, or no
+ * line end comes before stop (the general parser then reads the line). lx__csv_have_fast_line: 1
+ * when this CPU runs it (AVX-512 F, BW, DQ, VL, BMI2, POPCNT). */
+int lx__csv_fast_line(const char *q, const char *stop, int whole, char sep, size_t n, int f32, void *dst,
+                      const char **line_end);
 int lx__csv_have_fast_line(void);
 
 /* Frees a context's batch weights (batch.c). */

@@ -3,7 +3,8 @@
  * on a million random short decimals of every length 1-15, every '.' position and sign, mixed
  * with fields it must leave to the general parser (exponents, 16+ characters, '+', spaces) and
  * with bad fields, which must give the same error line with and without it (LX_NOVECTOR=1).
- * Row widths 1-471 put fields across the parser's 64-byte blocks and 64-field batches. */
+ * Row widths 1-471 put fields across the parser's 64-byte blocks and 64-field batches; some lines
+ * end in CRLF. */
 #include "lx_test.h"
 
 #include <stdio.h>
@@ -61,6 +62,7 @@ static char *table(size_t rows, size_t n, int vector_only, double *want, size_t 
             want[i * n + j] = strtod(c, NULL);
             o += (size_t)sprintf(t + o, ",%s", c);
         }
+        if (i % 5 == 2) t[o++] = '\r'; /* CRLF on some lines */
         t[o++] = '\n';
     }
     *len = o;
