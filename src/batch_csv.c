@@ -554,9 +554,12 @@ lx_status lx_batch_table_read(lx_ctx *ctx, const char *path, lx_dtype dtype, int
 
 /* ---- streaming: parse the next chunk on threads while the caller handles this one ---- */
 
-/* A round parses up to 8 parts a thread of this much text each; threads take parts from a
+/* A round parses up to STREAM_PARTS_PER_THREAD parts a thread of this much text each; threads take parts from a
  * counter, so one kept off its core by another process delays a round by one part at most. */
 #define STREAM_PART_BYTES ((size_t)512 << 10)
+/* parts in flight per thread: 4 measured 14 % faster than 8 (42 MB, 2 threads): the values of a
+ * smaller chunk are still in cache when they are integrated, and fewer buffers are first-touched */
+#define STREAM_PARTS_PER_THREAD 4
 
 typedef struct part_set {
     part p[64];
@@ -607,7 +610,7 @@ lx_status lx_batch_table_stream(lx_ctx *ctx, const char *path, lx_dtype dtype, i
         S->first_line = next_line;
         pthread_t tid[64];
         int started[64] = {0};
-        int max_parts = 8 * T < 64 ? 8 * T : 64;
+        int max_parts = STREAM_PARTS_PER_THREAD * T < 64 ? STREAM_PARTS_PER_THREAD * T : 64;
         while (pos < end && S->count < max_parts) { /* cut the next chunk into parts at line boundaries */
             part *q = &S->p[S->count];
             const char *pe = (size_t)(end - pos) > STREAM_PART_BYTES ? pos + STREAM_PART_BYTES : end;

@@ -18,7 +18,7 @@
 #if defined(__GNUC__) && defined(__x86_64__)
 #include <immintrin.h>
 
-#define LX_AVX512_LINE "avx512f,avx512bw,avx512dq,avx512vl,bmi,bmi2,popcnt"
+#define LX_AVX512_LINE "avx512f,avx512bw,avx512dq,avx512vl,avx512bitalg,bmi,bmi2,popcnt"
 
 static const double pow10_exact[16] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
                                        1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
@@ -67,12 +67,12 @@ __attribute__((target(LX_AVX512_LINE))) static inline int convert4(const char *q
     __m128i hasdot = _mm_andnot_si128(_mm_cmpeq_epi16(D, zero), _mm_set1_epi16(-1));
     __m128i U = _mm_and_si128(_mm_sub_epi16(_mm_slli_epi16(D, 1), one), hasdot);
     uint64_t upto = (uint64_t)_mm_cvtsi128_si64(U);
-    uint64_t frac = valid & ~upto & (uint64_t)_mm_cvtsi128_si64(hasdot);
-    /* nf: fraction digits, and the sign in bit 7 (applied to the double, so "-0" gives -0.0) */
-    nf[0] = (uint8_t)(__builtin_popcountll(frac & 0xffff) | (neg & 1) << 7);
-    nf[1] = (uint8_t)(__builtin_popcountll(frac >> 16 & 0xffff) | (neg >> 16 & 1) << 7);
-    nf[2] = (uint8_t)(__builtin_popcountll(frac >> 32 & 0xffff) | (neg >> 32 & 1) << 7);
-    nf[3] = (uint8_t)(__builtin_popcountll(frac >> 48) | (neg >> 48 & 1) << 7);
+    __m128i frac = _mm_andnot_si128(U, _mm_and_si128(_mm_cvtsi64_si128((long long)valid), hasdot));
+    /* nf: fraction digits (a popcount per lane), and the sign in bit 7 (applied to the double, so
+     * "-0" gives -0.0), as 4 bytes */
+    __m128i nfw = _mm_or_si128(_mm_popcnt_epi16(frac), _mm_slli_epi16(_mm_cvtsi64_si128((long long)neg), 7));
+    uint32_t nf4 = (uint32_t)_mm_cvtsi128_si32(_mm_packus_epi16(nfw, nfw));
+    memcpy(nf, &nf4, 4);
     /* the digits: others to 0, the '.' closed up (bytes 0..'.' take their left neighbour), the
      * last digit moved to byte 15 of its lane, then 2, 4, 8 and 16 digits at a time */
     d = _mm512_maskz_mov_epi8(dig, d);
@@ -83,7 +83,8 @@ __attribute__((target(LX_AVX512_LINE))) static inline int convert4(const char *q
     t = _mm512_packus_epi32(t, t);                                          /* 4-digit words */
     t = _mm512_madd_epi16(t, _mm512_set1_epi32(0x00012710));                /* 10^4 a + b */
     __m512i v = _mm512_add_epi64(_mm512_mul_epu32(t, _mm512_set1_epi64(100000000)), _mm512_srli_epi64(t, 32));
-    _mm256_storeu_si256((__m256i *)(void *)m, _mm512_castsi512_si256(_mm512_maskz_compress_epi64(0x55, v))); /* qword 0 of each lane */
+    v = _mm512_permutexvar_epi64(_mm512_setr_epi64(0, 2, 4, 6, 0, 2, 4, 6), v); /* qword 0 of each lane */
+    _mm256_storeu_si256((__m256i *)(void *)m, _mm512_castsi512_si256(v));
     return 1;
 }
 
@@ -174,7 +175,7 @@ int lx__csv_have_fast_line(void)
         __builtin_cpu_init();
         cached = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
                  __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl") &&
-                 __builtin_cpu_supports("bmi") && __builtin_cpu_supports("bmi2") && __builtin_cpu_supports("popcnt");
+                 __builtin_cpu_supports("avx512bitalg") && __builtin_cpu_supports("bmi") && __builtin_cpu_supports("bmi2") && __builtin_cpu_supports("popcnt");
     }
     return cached;
 }

@@ -311,8 +311,13 @@ static void test_simd_twin(void **state)
     lx_luminaire_free(b);
 }
 
-/* OpenCL kernel against its CPU twin (same table): 1e-6 relative in double, and in float
- * relative to the largest value (float rounding of distances). Skips without a device. */
+/* OpenCL kernel against its CPU twin (same table): 1e-6 relative in double (the default kernel
+ * wherever the device has fp64; measured 1.4e-14). The float kernel (opts.fp32) is bounded by 1e-5
+ * of max(E, 1e-3 E_max): a float direction is off by ~6e-8 relative, and the table's slope
+ * (d ln I / d ln t up to ~50 on this luminaire) multiplies that; measured with the kernel edited:
+ * double arithmetic on float-rounded inputs 8.5e-7, the direction computed in double and rounded
+ * to float 4.1e-6, all float 5.9e-6. So 1e-6 in float is out of reach for steep photometry; the
+ * double kernel meets it. Skips without a device. */
 static void test_opencl_parity(void **state)
 {
     lx_ctx *ctx = *state;
