@@ -1062,7 +1062,7 @@ typedef struct lx_grid_opts {
     lx_backend backend;       /* OpenCL runs LX_INTERP_TABLE only; AUTO (also LX_BACKEND) picks it
                                * for table work of >= 1e7 point-luminaires */
     int threads;              /* CPU threads; 0 = every online core */
-    int table_n;              /* LX_INTERP_TABLE: rows per hemisphere (0: 1024) */
+    int table_n;              /* LX_INTERP_TABLE: rows per hemisphere, 2 to 16384 (0: 1024) */
     int fp32;                 /* OpenCL: 1 computes in float (else double where the device has it) */
     double nearfield_tol;     /* AUTO: relative change of the Richardson-extrapolated area sum at
                                * which refinement stops (0: 1e-4; 1e-12 to 0.1) */

@@ -367,6 +367,10 @@ static void test_errors(void **state)
     assert_int_equal(lx_grid_illuminance(ctx, &pl, 1, pt, 1, bad, 1, NULL, &E), LX_EINVAL); /* not unit */
     lx_grid_opts o = {.maintenance_factor = 1.5};
     assert_int_equal(lx_grid_illuminance(ctx, &pl, 1, pt, 1, nz, 1, &o, &E), LX_EINVAL);
+    lx_grid_opts ot = {.interp = LX_INTERP_TABLE, .table_n = 1}; /* table rows: 2 to 16384 */
+    assert_int_equal(lx_grid_illuminance(ctx, &pl, 1, pt, 1, nz, 1, &ot, &E), LX_EINVAL);
+    ot.table_n = 16385;
+    assert_int_equal(lx_grid_illuminance(ctx, &pl, 1, pt, 1, nz, 1, &ot, &E), LX_EINVAL);
     assert_true(E == -7); /* untouched on failure */
     lx_luminaire_free(lum);
 }

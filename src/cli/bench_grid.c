@@ -1,6 +1,7 @@
 /* bench_grid.c - the `luxcalc bench grid` topic: point-luminaires per second for 1e6 points x 10
- * luminaires (CPU exact bilinear, CPU table twin, OpenCL table in float and double) beside the
- * numpy peer ../shared/peers/illum_numpy.py run in the same process tree. */
+ * luminaires (CPU exact bilinear, CPU table twin at 1024, 256 and 128 rows, OpenCL table in float
+ * and double), each table run's largest error against the exact bilinear result, beside the numpy
+ * peer ../shared/peers/illum_numpy.py run in the same process tree. */
 #include "cli.h"
 
 #include <math.h>
@@ -121,7 +122,9 @@ int cli_bench_grid(FILE *out)
     }
     double nz[3] = {0, 0, 1};
     fprintf(out, "## grid: illuminance, %zu points x %d luminaires (point model), median of 5\n\n", n, M);
-    fprintf(out, "| luminaire | path | backend | s | M point-luminaires/s | load (1 min) |\n|---|---|---|---|---|---|\n");
+    fprintf(out, "| luminaire | path | backend | s | M point-luminaires/s | max error vs exact (of E max) | load (1 min) |\n"
+                 "|---|---|---|---|---|---|---|\n");
+    double *Ex = malloc(n * sizeof *Ex); /* the exact bilinear result of each luminaire: the reference */
     static const char *names[2] = {"axial Warn (37 gamma)", "asymmetric (37 gamma x 25 C)"};
     for (int L = 0; L < 2; L++) {
         struct {
@@ -129,18 +132,31 @@ int cli_bench_grid(FILE *out)
             lx_grid_opts o;
         } runs[] = {
             {"exact bilinear (acos, atan2)", {.model = LX_MODEL_POINT, .backend = LX_BACKEND_CPU}},
-            {"table (CPU twin, double, AVX2 where present)", {.model = LX_MODEL_POINT, .interp = LX_INTERP_TABLE, .backend = LX_BACKEND_CPU}},
+            {"table (CPU twin, double, AVX-512 or AVX2 where present)", {.model = LX_MODEL_POINT, .interp = LX_INTERP_TABLE, .backend = LX_BACKEND_CPU}},
+            {"table, 256 rows (CPU)", {.model = LX_MODEL_POINT, .interp = LX_INTERP_TABLE, .backend = LX_BACKEND_CPU, .table_n = 256}},
+            {"table, 128 rows (CPU)", {.model = LX_MODEL_POINT, .interp = LX_INTERP_TABLE, .backend = LX_BACKEND_CPU, .table_n = 128}},
             {"table, OpenCL double", {.model = LX_MODEL_POINT, .interp = LX_INTERP_TABLE, .backend = LX_BACKEND_OPENCL}},
             {"table, OpenCL float", {.model = LX_MODEL_POINT, .interp = LX_INTERP_TABLE, .backend = LX_BACKEND_OPENCL, .fp32 = 1}},
         };
         for (size_t r = 0; r < sizeof runs / sizeof runs[0]; r++) {
             int used = 0;
             double t = time_grid(ctx, pl[L], M, pts, n, nz, runs[r].o, E, 5, &used);
-            if (isnan(t))
-                fprintf(out, "| %s | %s | - | failed: %s | | |\n", names[L], runs[r].path, lx_ctx_errmsg(ctx));
-            else
-                fprintf(out, "| %s | %s | %s | %.3f | %.1f | %.2f |\n", names[L], runs[r].path,
-                        used == LX_BACKEND_OPENCL ? "opencl" : "cpu", t, n * (double)M / t / 1e6, loadavg1());
+            if (isnan(t)) {
+                fprintf(out, "| %s | %s | - | failed: %s | | | |\n", names[L], runs[r].path, lx_ctx_errmsg(ctx));
+                fflush(out);
+                continue;
+            }
+            char err[32] = "(reference)";
+            if (r == 0 && Ex) {
+                memcpy(Ex, E, n * sizeof *E);
+            } else if (Ex) {
+                double em = 0, w = 0;
+                for (size_t i = 0; i < n; i++) em = fmax(em, Ex[i]);
+                for (size_t i = 0; i < n; i++) w = fmax(w, fabs(E[i] - Ex[i]));
+                snprintf(err, sizeof err, "%.1e", em > 0 ? w / em : 0);
+            }
+            fprintf(out, "| %s | %s | %s | %.3f | %.1f | %s | %.2f |\n", names[L], runs[r].path,
+                    used == LX_BACKEND_OPENCL ? "opencl" : "cpu", t, n * (double)M / t / 1e6, err, loadavg1());
             fflush(out);
         }
     }
@@ -149,6 +165,7 @@ int cli_bench_grid(FILE *out)
     else fprintf(out, "\nnumpy peer (../shared/peers/illum_numpy.py, interp1d, same run): %.1f M point-luminaires/s\n\n", np / 1e6);
     lx_luminaire_free(axial);
     lx_luminaire_free(asym);
+    free(Ex);
     free(pts);
     free(E);
     lx_ctx_destroy(ctx);

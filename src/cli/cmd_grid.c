@@ -29,6 +29,8 @@ static const char help[] =
     "  --model point|auto      auto (default): subdivide the luminous area closer than 5 x its size\n"
     "  --interp bilinear|smooth|table  intensity interpolation (default bilinear; table: the\n"
     "                          cosine-indexed table the OpenCL kernel uses)\n"
+    "  --table-rows N          rows per hemisphere of that table (default 1024; implies --interp\n"
+    "                          table): fewer is faster and coarser (luxcalc bench grid shows both)\n"
     "  --maintenance MF        maintenance factor in (0, 1] (default 1)\n"
     "  --backend auto|cpu|opencl  (also LX_BACKEND); opencl implies --interp table\n"
     "  --summary               print only E_avg,E_min,E_max,U0\n"
@@ -81,7 +83,7 @@ int cmd_grid(int argc, char **argv)
         {"normal", required_argument, NULL, 'N'},   {"model", required_argument, NULL, 'm'},
         {"interp", required_argument, NULL, 'I'},   {"maintenance", required_argument, NULL, 'M'},
         {"backend", required_argument, NULL, 'b'},  {"summary", no_argument, NULL, 'S'},
-        {"png", required_argument, NULL, 'P'},
+        {"png", required_argument, NULL, 'P'},      {"table-rows", required_argument, NULL, 'T'},
         {"format", required_argument, NULL, 'f'},   {"output", required_argument, NULL, 'o'},
         {"scene", required_argument, NULL, 'x'},    {"help", no_argument, NULL, 'h'},
         {NULL, 0, NULL, 0},
@@ -108,6 +110,14 @@ int cmd_grid(int argc, char **argv)
         case 'M': mf_t = optarg; break;
         case 'S': summary = 1; break;
         case 'P': png = optarg; break;
+        case 'T': {
+            char *e;
+            long v = strtol(optarg, &e, 10);
+            if (e == optarg || *e || v < 2 || v > 16384)
+                return cli_error("grid", "--table-rows: expected a whole number from 2 to 16384 (got '%s')", optarg), CLI_USAGE;
+            go.table_n = (int)v;
+            break;
+        }
         case 'o': outpath = optarg; break;
         case 'x': cli_error("grid", "--scene: scene files are not supported yet"); return CLI_USAGE;
         case 'f':
@@ -143,6 +153,11 @@ int cmd_grid(int argc, char **argv)
     if (!ies || !at || !plane || !area || (!spacing == !points))
         return cli_error("grid", "needs --ies, --at, --plane, --area and one of --spacing or --points (luxcalc grid --help)"),
                CLI_USAGE;
+    if (go.table_n) {
+        if (interp_set && go.interp != LX_INTERP_TABLE)
+            return cli_error("grid", "--table-rows sets the rows of --interp table"), CLI_USAGE;
+        go.interp = LX_INTERP_TABLE;
+    }
     if (go.backend == LX_BACKEND_AUTO) go.backend = lx_backend_from_env();
     if (go.backend == LX_BACKEND_OPENCL) {
         if (interp_set && go.interp != LX_INTERP_TABLE)

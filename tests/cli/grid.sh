@@ -45,3 +45,11 @@ run grid --ies $S/downlight_lambert_1000lm.ies --at 0,0,0.3 --plane z=0 --area 0
 expect_field 1 illuminance_lx 3536.7765131532296 1e-6 "point model under the panel"
 run grid --ies $S/point_isotropic_1000lm.ies --at 0,0,2 --plane w=0 --area 0:1,0:1 --spacing 0.5
 expect_rc 1 "a bad --plane is a usage error"
+# --table-rows: the table path at fewer rows (an isotropic table is constant: still exact)
+run grid --ies $S/point_isotropic_1000lm.ies --at 0,0,2 --plane z=0 --area 0:1,0:0 --points 2x1 --table-rows 64
+expect_rc 0 "grid --table-rows runs"
+expect_field 2 illuminance_lx 14.235250868343543 1e-6 "table of 64 rows, isotropic: E = I h / d^3"
+run grid --ies $S/point_isotropic_1000lm.ies --at 0,0,2 --plane z=0 --area 0:1,0:0 --points 2x1 --table-rows 1
+expect_rc 1 "--table-rows 1 is a usage error"
+run grid --ies $S/point_isotropic_1000lm.ies --at 0,0,2 --plane z=0 --area 0:1,0:0 --points 2x1 --table-rows 64 --interp smooth
+expect_rc 1 "--table-rows with another --interp is a usage error"
