@@ -142,7 +142,7 @@ static lx_status exr_read(lx_ctx *ctx, const char *path, int allow_cube, lx_envm
     size_t n = (size_t)W * H * C;
     for (size_t k = 0; k < n; k++)
         if (!isfinite(m->data[k])) {
-            st = lx__error(ctx, LX_EPARSE, path, 0, "pixel (%zu, %zu) is not finite", (k / C) % W, (k / C) / W);
+            st = lx__error(ctx, LX_EPARSE, path, 0, "pixel (%zu, %zu) is not finite (NaN, infinite, or missing from a chunk that decoded short)", (k / C) % W, (k / C) / W);
             goto done;
         }
 done:

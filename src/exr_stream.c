@@ -152,6 +152,23 @@ lx_status lx__exr_check_channel(lx_ctx *ctx, const char *path, const exr_attr_ch
     return LX_OK;
 }
 
+/* The decoder's buffers, the decompressed one filled with 0xff bytes (NaN in half and float):
+ * OpenEXRCore 3.1 does not report every compressed chunk that decodes short (an RLE chunk of a
+ * fuzzed file filled part of it), so what it leaves unwritten reads as NaN, which the readers
+ * refuse as a non-finite value, instead of uninitialised memory or the previous chunk's pixels. */
+static void *decode_alloc(exr_transcoding_pipeline_buffer_id_t id, size_t n)
+{
+    void *p = malloc(n ? n : 1);
+    if (p && id == EXR_TRANSCODE_BUFFER_UNPACKED) memset(p, 0xff, n);
+    return p;
+}
+
+static void decode_free(exr_transcoding_pipeline_buffer_id_t id, void *p)
+{
+    (void)id;
+    free(p);
+}
+
 /* Decodes one chunk into buf (see lx__exr_read_pixels), the chunk's first pixel at x0, y0. */
 static lx_status decode_chunk(lx_ctx *ctx, const char *path, const lx__exr_stream *s, exr_context_t e,
                               exr_decode_pipeline_t *dec, int *inited, const exr_chunk_info_t *ci, float *buf,
@@ -174,6 +191,9 @@ static lx_status decode_chunk(lx_ctx *ctx, const char *path, const lx__exr_strea
         ch->user_bytes_per_element = 4;
     }
     rv = exr_decoding_choose_default_routines(e, 0, dec);
+    dec->alloc_fn = decode_alloc;
+    dec->free_fn = decode_free;
+    if (dec->unpacked_buffer && dec->unpacked_alloc_size) memset(dec->unpacked_buffer, 0xff, dec->unpacked_alloc_size);
     if (!rv) rv = exr_decoding_run(e, 0, dec);
     if (rv) return lx__exr_fail(ctx, path, s, rv, "cannot decode a chunk");
     return LX_OK;

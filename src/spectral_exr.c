@@ -169,7 +169,7 @@ static lx_status read_spectral(lx_ctx *ctx, const char *path, float **data, chan
     for (size_t k = 0; k < (size_t)W * H * nl; k++)
         if (!isfinite(buf[k])) {
             size_t p = k / (size_t)nl;
-            st = lx__error(ctx, LX_EPARSE, path, 0, "pixel (%zu, %zu), channel %s: value is not finite", p % (size_t)W,
+            st = lx__error(ctx, LX_EPARSE, path, 0, "pixel (%zu, %zu), channel %s: value is not finite (NaN, infinite, or missing from a chunk that decoded short)", p % (size_t)W,
                            p / (size_t)W, ch[k % (size_t)nl].name);
             goto done;
         }
