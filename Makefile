@@ -1,6 +1,7 @@
 # luxcalc - one plain Makefile. Targets: all test demo bench asan install uninstall clean deps.
-# LX_OPENCL=0 builds without OpenCL. Sources are found by wildcard: src/*.c is the library,
-# src/cli/*.c the command-line tool, tests/test_*.c one cmocka binary each, kernels/*.cl embedded.
+# LX_OPENCL=0 builds without OpenCL. Sources are found by wildcard: src/LAYER/*.c is the library
+# (one folder per layer), src/cli/*.c and src/cli/bench/*.c the command-line tool, tests/test_*.c
+# one cmocka binary each, kernels/*.cl embedded.
 
 LX_OPENCL ?= 1
 PREFIX ?= /usr/local
@@ -10,7 +11,7 @@ CC ?= cc
 CFLAGS ?= -O2 -g
 WARN := -std=c11 -Wall -Wextra -Wpedantic
 ALL_CFLAGS = $(WARN) $(CFLAGS) -fPIC -fvisibility=hidden
-ALL_CPPFLAGS = $(CPPFLAGS) -D_POSIX_C_SOURCE=200809L -Isrc -I$(BUILD)/gen -I/usr/include/OpenEXR \
+ALL_CPPFLAGS = $(CPPFLAGS) -D_POSIX_C_SOURCE=200809L -Isrc -Isrc/core -Isrc/cli -I$(BUILD)/gen -I/usr/include/OpenEXR \
   -DLX_OPENCL=$(LX_OPENCL) -DCL_TARGET_OPENCL_VERSION=120
 LIBS := -lpng16 -lOpenEXRCore-3_1 -lm -lpthread
 PKGS := libopenexr-dev libpng-dev libcmocka-dev pkg-config
@@ -19,8 +20,9 @@ LIBS += -lOpenCL
 PKGS += pocl-opencl-icd ocl-icd-opencl-dev opencl-headers
 endif
 
-LIB_SRC := $(wildcard src/*.c)
-CLI_SRC := $(wildcard src/cli/*.c)
+LAYERS := core tables spectral colour lighting radiance scene plot
+LIB_SRC := $(wildcard $(LAYERS:%=src/%/*.c))
+CLI_SRC := $(wildcard src/cli/*.c src/cli/bench/*.c)
 TEST_SRC := $(wildcard tests/test_*.c tests/hard_cases/test_*.c)
 DATA := $(sort $(wildcard src/data/*.csv))
 KERNELS := $(sort $(wildcard kernels/*.cl))
@@ -99,7 +101,7 @@ $(BUILD)/tests/%: tests/%.c tests/lx_test.h $(STATIC)
 	@mkdir -p $(dir $@)
 	$(CC) $(ALL_CPPFLAGS) $(ALL_CFLAGS) -Itests -o $@ $< $(STATIC) -lcmocka $(LIBS)
 
--include $(wildcard $(BUILD)/obj/*.d $(BUILD)/obj/cli/*.d)
+-include $(wildcard $(BUILD)/obj/*/*.d $(BUILD)/obj/cli/bench/*.d)
 
 # ---- the two README commands, and the rest ----
 test: deps
