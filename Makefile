@@ -11,9 +11,14 @@ CC ?= cc
 CFLAGS ?= -O2 -g
 WARN := -std=c11 -Wall -Wextra -Wpedantic
 ALL_CFLAGS = $(WARN) $(CFLAGS) -fPIC -fvisibility=hidden
-ALL_CPPFLAGS = $(CPPFLAGS) -D_POSIX_C_SOURCE=200809L -Isrc -Isrc/core -Isrc/cli -I$(BUILD)/gen -I/usr/include/OpenEXR \
+# OpenEXRCore's library name carries the OpenEXR version (-lOpenEXRCore-3_1): taken from pkg-config,
+# or the unversioned name where pkg-config does not know OpenEXR
+EXR_PC = $(shell pkg-config --silence-errors --libs OpenEXR)
+EXR_CFLAGS = $(or $(shell pkg-config --silence-errors --cflags-only-I OpenEXR),-I/usr/include/OpenEXR)
+EXR_LIB = $(or $(filter -lOpenEXRCore%,$(EXR_PC)),-lOpenEXRCore)
+ALL_CPPFLAGS = $(CPPFLAGS) -D_POSIX_C_SOURCE=200809L -Isrc -I$(BUILD)/gen $(EXR_CFLAGS) \
   -DLX_OPENCL=$(LX_OPENCL) -DCL_TARGET_OPENCL_VERSION=120
-LIBS := -lpng16 -lOpenEXRCore-3_1 -lm -lpthread
+LIBS = -lpng16 $(EXR_LIB) -lm -lpthread
 PKGS := libopenexr-dev libpng-dev libcmocka-dev pkg-config
 ifeq ($(LX_OPENCL),1)
 LIBS += -lOpenCL
@@ -27,10 +32,17 @@ TEST_SRC := $(wildcard tests/test_*.c tests/hard_cases/test_*.c)
 DATA := $(sort $(wildcard src/data/*.csv))
 KERNELS := $(sort $(wildcard kernels/*.cl))
 
-GEN_SRC := $(BUILD)/gen/lx_tables.c $(BUILD)/gen/lx_kernels.c
+GEN_SRC := $(BUILD)/gen/tables/lx_tables.c $(BUILD)/gen/core/lx_kernels.c
 LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/obj/%.o) $(GEN_SRC:$(BUILD)/gen/%.c=$(BUILD)/obj/%.o)
 CLI_OBJ := $(CLI_SRC:src/cli/%.c=$(BUILD)/obj/cli/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
+
+# the test build of the library: the files that call OpenCL again with LX_FAULTS (OpenCL fault
+# injection, src/core/cl_faults.c), linked into test_faults and a CLI for tests/cli/faults.sh only
+CL_USERS := $(shell grep -l 'clCreateBuffer\|clEnqueue\|clBuildProgram\|clGetPlatformIDs\|clFinish' $(LIB_SRC)) src/core/cl_faults.c
+FAULT_OBJ := $(CL_USERS:src/%.c=$(BUILD)/obj-faults/%.o)
+FAULT_LIB := $(BUILD)/faults/libluxcalc.a
+FAULT_CLI := $(BUILD)/tests/luxcalc-faults
 
 STATIC := $(BUILD)/libluxcalc.a
 SONAME := libluxcalc.so.0
@@ -68,13 +80,15 @@ deps:
 $(BUILD)/lxgen: src/tools/lxgen.c | $(BUILD)
 	$(CC) $(WARN) -O1 -o $@ $<
 
-$(BUILD)/gen/lx_tables.c: $(BUILD)/lxgen $(DATA) | $(BUILD)/gen
+$(BUILD)/gen/tables/lx_tables.c: $(BUILD)/lxgen $(DATA)
+	@mkdir -p $(dir $@)
 	$(BUILD)/lxgen tables $@ $(DATA)
 
-$(BUILD)/gen/lx_kernels.c: $(BUILD)/lxgen $(KERNELS) Makefile | $(BUILD)/gen
+$(BUILD)/gen/core/lx_kernels.c: $(BUILD)/lxgen $(KERNELS) Makefile
+	@mkdir -p $(dir $@)
 	$(BUILD)/lxgen kernels $@ $(KERNELS)
 
-$(BUILD) $(BUILD)/gen:
+$(BUILD):
 	@mkdir -p $@
 
 # ---- objects ----
@@ -84,7 +98,20 @@ $(BUILD)/obj/%.o: src/%.c
 
 $(BUILD)/obj/%.o: $(BUILD)/gen/%.c
 	@mkdir -p $(dir $@)
-	$(CC) $(ALL_CPPFLAGS) $(ALL_CFLAGS) -Wno-overlength-strings -c -o $@ $<
+	$(CC) $(ALL_CPPFLAGS) $(ALL_CFLAGS) -Wno-overlength-strings -MMD -MP -c -o $@ $<
+
+$(BUILD)/obj-faults/%.o: src/%.c
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CPPFLAGS) -DLX_FAULTS $(ALL_CFLAGS) -MMD -MP -c -o $@ $<
+
+$(FAULT_LIB): $(filter-out $(CL_USERS:src/%.c=$(BUILD)/obj/%.o),$(LIB_OBJ)) $(FAULT_OBJ)
+	@mkdir -p $(dir $@)
+	rm -f $@
+	ar rcs $@ $^
+
+$(FAULT_CLI): $(CLI_OBJ) $(FAULT_LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $(CLI_OBJ) $(FAULT_LIB) $(LIBS)
 
 $(STATIC): $(LIB_OBJ)
 	rm -f $@
@@ -97,15 +124,21 @@ $(SHARED): $(LIB_OBJ)
 $(CLI): $(CLI_OBJ) $(STATIC)
 	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $(CLI_OBJ) $(STATIC) $(LIBS)
 
-$(BUILD)/tests/%: tests/%.c tests/lx_test.h $(STATIC)
+# test binaries track their headers and included sources (test_fuzz includes the fuzz harnesses);
+# test_faults links the fault-injection build of the library
+$(BUILD)/tests/test_faults: TEST_LIB = $(FAULT_LIB)
+$(BUILD)/tests/test_faults: $(FAULT_LIB)
+TEST_LIB = $(STATIC)
+$(BUILD)/tests/%: tests/%.c $(STATIC)
 	@mkdir -p $(dir $@)
-	$(CC) $(ALL_CPPFLAGS) $(ALL_CFLAGS) -Itests -o $@ $< $(STATIC) -lcmocka $(LIBS)
+	$(CC) $(ALL_CPPFLAGS) $(ALL_CFLAGS) -Itests -MMD -MP -MF $@.d -MT $@ -o $@ $< $(TEST_LIB) -lcmocka $(LIBS)
 
--include $(wildcard $(BUILD)/obj/*/*.d $(BUILD)/obj/cli/bench/*.d)
+-include $(wildcard $(BUILD)/obj/*/*.d $(BUILD)/obj/cli/bench/*.d $(BUILD)/obj-faults/*/*.d \
+  $(BUILD)/tests/*.d $(BUILD)/tests/hard_cases/*.d)
 
 # ---- the two README commands, and the rest ----
 test: deps
-	@$(MAKE) --no-print-directory all $(TEST_BIN)
+	@$(MAKE) --no-print-directory all $(TEST_BIN) $(FAULT_CLI)
 	@LX_SHARED_DIR=$${LX_SHARED_DIR:-$(CURDIR)/../shared} POCL_CACHE_DIR=$(CURDIR)/$(BUILD)/pocl-cache \
 	  sh tests/run.sh $(BUILD) $(TEST_BIN)
 
@@ -171,7 +204,7 @@ tsan: deps
 VG_BUILD := build-valgrind
 valgrind: deps
 	@$(MAKE) --no-print-directory deps PKGS=valgrind
-	@$(MAKE) --no-print-directory BUILD=$(VG_BUILD) CFLAGS="-O1 -g" all $(TEST_SRC:tests/%.c=$(VG_BUILD)/tests/%)
+	@$(MAKE) --no-print-directory BUILD=$(VG_BUILD) CFLAGS="-O1 -g" all $(TEST_SRC:tests/%.c=$(VG_BUILD)/tests/%) $(VG_BUILD)/tests/luxcalc-faults
 	@LX_SHARED_DIR=$${LX_SHARED_DIR:-$(CURDIR)/../shared} POCL_CACHE_DIR=$(CURDIR)/$(VG_BUILD)/pocl-cache \
 	  $(VG_BUILD)/tests/test_opencl >/dev/null 2>&1; \
 	LX_SHARED_DIR=$${LX_SHARED_DIR:-$(CURDIR)/../shared} POCL_CACHE_DIR=$(CURDIR)/$(VG_BUILD)/pocl-cache \

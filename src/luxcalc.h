@@ -257,6 +257,26 @@ LX_API lx_status lx_backend_parse(lx_ctx *ctx, const char *text, lx_backend *out
 /** The backend named by the environment variable LX_BACKEND, or LX_BACKEND_AUTO when unset/invalid. */
 LX_API lx_backend lx_backend_from_env(void);
 
+/** The SIMD paths of the CPU code. A path runs only on a CPU with every instruction-set extension
+ * its code uses (AVX2: the x86-64-v3 set, AVX2 FMA F16C BMI1 BMI2 LZCNT MOVBE POPCNT; AVX512: the
+ * x86-64-v4 set, adding AVX-512 F CD BW DQ VL). Each SIMD path is a twin of a plain C loop that
+ * stays the reference. The environment variable LX_SIMD=scalar|avx2|avx512 caps the path used,
+ * in every module alike (it never raises the path above what the CPU has). */
+typedef enum lx_simd { LX_SIMD_SCALAR = 0, LX_SIMD_AVX2 = 1, LX_SIMD_AVX512 = 2 } lx_simd;
+
+/** The highest SIMD path this CPU can run, ignoring LX_SIMD. Thread-safe. */
+LX_API lx_simd lx_simd_cpu(void);
+
+/** The SIMD path the library uses now: lx_simd_cpu() capped by LX_SIMD (read on every call; an
+ * unknown value does not cap). Thread-safe. */
+LX_API lx_simd lx_simd_level(void);
+
+/** "scalar", "avx2" or "avx512"; NULL for a value that is none of them. */
+LX_API const char *lx_simd_name(lx_simd simd);
+
+/** Parses "scalar", "avx2" or "avx512" into *out; LX_EINVAL (message names the text) otherwise. */
+LX_API lx_status lx_simd_parse(lx_ctx *ctx, const char *text, lx_simd *out);
+
 /** OpenCL device types for the device choice. */
 typedef enum lx_cl_type { LX_CL_AUTO = 0, LX_CL_CPU = 1, LX_CL_GPU = 2 } lx_cl_type;
 

@@ -25,10 +25,12 @@ for c in tests/cli/*.sh; do
   out=$(LUXCALC="$build/luxcalc" sh "$c" 2>&1); rc=$?
   n=$(printf '%s\n' "$out" | grep -c '^ok ')
   nf=$(printf '%s\n' "$out" | grep -c '^not ok ')
+  ns=$(printf '%s\n' "$out" | grep -c '^skip ')
+  printf '%s\n' "$out" | grep '^skip ' | sed "s|^|$(basename "$c"): |"
   printf '%s\n' "$out" | grep '^not ok ' | sed "s|^|$(basename "$c"): |"
-  passed=$((passed + n)); failed=$((failed + nf))
+  passed=$((passed + n)); failed=$((failed + nf)); skipped=$((skipped + ns))
   if [ "$rc" -ne 0 ] && [ "$nf" -eq 0 ]; then failed=$((failed + 1)); bad="$bad $(basename "$c")"; fi
-  echo "[ CLI ] $(basename "$c"): $n passed, $nf failed"
+  echo "[ CLI ] $(basename "$c"): $n passed, $nf failed, $ns skipped"
   [ "$nf" -gt 0 ] && bad="$bad $(basename "$c")"
 done
 [ -n "$bad" ] && echo "failing:$bad"

@@ -131,8 +131,8 @@ static void parity_case(lx_ctx *ctx, size_t ns, size_t n, size_t stride, double 
                   .dtype = LX_F64, .values = v};
     /* widest vector path (AVX-512 where the CPU has it) on 2 threads and on 1, AVX2, scalar */
     for (int mode = 0; mode < 4; mode++) {
-        if (mode == 2) setenv("LX_NOVECTOR", "avx512", 1);
-        if (mode == 3) setenv("LX_NOVECTOR", "1", 1);
+        if (mode == 2) setenv("LX_SIMD", "avx2", 1);
+        if (mode == 3) setenv("LX_SIMD", "scalar", 1);
         lx_batch_opts o = {.backend = LX_BACKEND_CPU, .threads = mode == 1 ? 1 : 2};
         b.dtype = LX_F64;
         b.values = v;
@@ -140,7 +140,7 @@ static void parity_case(lx_ctx *ctx, size_t ns, size_t n, size_t stride, double 
         b.dtype = LX_F32;
         b.values = vf;
         lx_assert_ok(ctx, lx_batch_integrate(ctx, &b, fns, k, &o, out2));
-        unsetenv("LX_NOVECTOR");
+        unsetenv("LX_SIMD");
         for (size_t i = 0; i < ns; i += (ns > 50 ? 7 : 1))
             for (size_t f = 0; f < k; f++) {
                 double ref = (double)oracle(ctx, v + i * stride, n, start, step, fns[f]);
@@ -375,13 +375,13 @@ static void test_batch_stream(void **state)
     size_t rows = 1500; /* ~6 MB: several rounds of parts on 1 and on 2 threads */
     double *want = write_stream_csv(path, rows, -1);
     for (int mode = 0; mode < 4; mode++) { /* vector line parser on 1 and 2 threads, general parser likewise */
-        if (mode >= 2) setenv("LX_NOVECTOR", "1", 1);
+        if (mode >= 2) setenv("LX_SIMD", "scalar", 1);
         stream_check c = {want, 471, 0, 0, 0};
         lx_assert_ok(ctx, lx_batch_table_stream(ctx, path, LX_F64, 1 + mode % 2, check_chunk, &c));
         assert_int_equal(c.bad, 0);
         assert_int_equal(c.rows_seen, rows);
         assert_true(c.calls > 2);
-        unsetenv("LX_NOVECTOR");
+        unsetenv("LX_SIMD");
     }
     /* end to end against the long double oracle on the strtod values */
     lx_function fns[4] = {LX_FN_XBAR_2, LX_FN_YBAR_2, LX_FN_ZBAR_2, LX_FN_VPRIME};

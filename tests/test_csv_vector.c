@@ -2,7 +2,7 @@
  * the C library's strtod (ISO C 7.22.1.3: correctly rounded), bit for bit (so -0 stays -0.0),
  * on a million random short decimals of every length 1-15, every '.' position and sign, mixed
  * with fields it must leave to the general parser (exponents, 16+ characters, '+', spaces) and
- * with bad fields, which must give the same error line with and without it (LX_NOVECTOR=1).
+ * with bad fields, which must give the same error line with and without it (LX_SIMD=scalar).
  * Row widths 1-471 put fields across the parser's 64-byte blocks and 64-field batches; some lines
  * end in CRLF. */
 #include "lx_test.h"
@@ -149,7 +149,7 @@ static void test_bad_fields_same_error(void **state)
         long line[2];
         char msg[2][256];
         for (int novec = 0; novec <= 1; novec++) {
-            if (novec) setenv("LX_NOVECTOR", "1", 1);
+            if (novec) setenv("LX_SIMD", "scalar", 1);
             char text[8192];
             int o = sprintf(text, "# c\nid,1,2,3,4\n");
             for (int r = 0; r < 60; r++) o += sprintf(text + o, "r%d,0.5,%s,1.25,3\n", r, r == 25 ? bad[b] : "2.75");
@@ -157,7 +157,7 @@ static void test_bad_fields_same_error(void **state)
             assert_int_equal(lx_batch_table_read_mem(ctx, "b.csv", text, (size_t)o, LX_F64, 1, &t), LX_EPARSE);
             line[novec] = lx_ctx_errline(ctx);
             snprintf(msg[novec], sizeof msg[novec], "%s", lx_ctx_errmsg(ctx));
-            unsetenv("LX_NOVECTOR");
+            unsetenv("LX_SIMD");
         }
         assert_int_equal(line[0], 28);
         assert_int_equal(line[1], 28);

@@ -264,8 +264,8 @@ static void test_table_vs_exact(void **state)
     lx_luminaire_free(b);
 }
 
-/* The vectorised table paths (AVX-512, 8 points at a time, and AVX2, 4 at a time, LX_NOAVX512=1;
- * luminaire-outer blocks) against the plain C loop (LX_NOVECTOR=1): the same formulas, so they
+/* The vectorised table paths (AVX-512, 8 points at a time, and AVX2, 4 at a time, LX_SIMD=avx2;
+ * luminaire-outer blocks) against the plain C loop (LX_SIMD=scalar): the same formulas, so they
  * agree to rounding (FMA); bound 1e-12 relative to the point's value. Per-point normals (tilted
  * both ways, some facing away) and a count that is not a multiple of 8 exercise the unshared path
  * and the tails. On a CPU without AVX-512 both runs take the AVX2 path. */
@@ -290,12 +290,12 @@ static void test_simd_twin(void **state)
     for (int run = 0; run < 4; run++) {
         int shared = run & 1, avx2 = run >> 1;
         lx_grid_opts o = {.model = LX_MODEL_POINT, .interp = LX_INTERP_TABLE, .backend = LX_BACKEND_CPU};
-        setenv("LX_NOVECTOR", "1", 1);
+        setenv("LX_SIMD", "scalar", 1);
         lx_assert_ok(ctx, lx_grid_illuminance(ctx, pl, 3, pts, n, shared ? nrm + 3 : nrm, shared, &o, E0));
-        unsetenv("LX_NOVECTOR");
-        if (avx2) setenv("LX_NOAVX512", "1", 1);
+        unsetenv("LX_SIMD");
+        if (avx2) setenv("LX_SIMD", "avx2", 1);
         lx_assert_ok(ctx, lx_grid_illuminance(ctx, pl, 3, pts, n, shared ? nrm + 3 : nrm, shared, &o, E1));
-        unsetenv("LX_NOAVX512");
+        unsetenv("LX_SIMD");
         size_t zeros = 0;
         for (size_t i = 0; i < n; i++) {
             lx_assert_near(E1[i], E0[i], 1e-300, 1e-12);

@@ -6,7 +6,7 @@
 #include <float.h>
 #include <string.h>
 
-#include "lx_private.h"
+#include "core/core_private.h"
 
 static uint64_t rng_state = 0x9E3779B97F4A7C15ULL;
 static uint64_t next_u64(void) /* xorshift64*: any fixed generator will do */

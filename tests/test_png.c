@@ -7,7 +7,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "lx_private.h"
+#include "plot/plot_private.h"
 
 /* reads an 8-bit RGB PNG into a malloc'ed buffer; returns NULL on failure */
 static unsigned char *read_png(const char *path, int *w, int *h)

@@ -7,7 +7,8 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "lx_private.h"
+#include "plot/plot_private.h"
+#include "radiance/radiance_private.h"
 
 static unsigned char *read_png(const char *path, int *w, int *h)
 {

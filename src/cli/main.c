@@ -80,6 +80,18 @@ int main(int argc, char **argv)
         usage(stderr);
         return CLI_USAGE;
     }
+    /* the environment's switches, checked once for every command (the library ignores bad values) */
+    const char *simd = getenv("LX_SIMD"), *backend = getenv("LX_BACKEND");
+    lx_simd sp;
+    lx_backend bp;
+    if (simd && *simd && lx_simd_parse(NULL, simd, &sp) != LX_OK) {
+        fprintf(stderr, "luxcalc: LX_SIMD='%s' is not scalar, avx2 or avx512\n", simd);
+        return CLI_USAGE;
+    }
+    if (backend && *backend && lx_backend_parse(NULL, backend, &bp) != LX_OK) {
+        fprintf(stderr, "luxcalc: LX_BACKEND='%s' is not auto, cpu or opencl\n", backend);
+        return CLI_USAGE;
+    }
     for (const cli_cmd *c = cli_commands; c->name; c++)
         if (!strcmp(c->name, argv[i])) return c->run(argc - i, argv + i);
     if (!strcmp(argv[i], "help")) {

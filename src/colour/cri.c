@@ -1,6 +1,6 @@
 /* cri.c - CIE 13.3-1995 colour rendering index (R1-R14, Ra) with its reference illuminant and
  * von Kries adaptation, plus the sampling grid shared with tm30.c (lx__quality_*). */
-#include "lx_private.h"
+#include "colour/colour_private.h"
 
 #include <math.h>
 #include <stdio.h>

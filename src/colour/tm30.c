@@ -1,6 +1,6 @@
 /* tm30.c - CIE 224:2017 colour fidelity index Rf and ANSI/IES TM-30-20 gamut index Rg with the
  * 16 hue-bin values, in CAM02-UCS (CIECAM02 forward model, Luo et al. 2006 UCS) with 99 CES. */
-#include "lx_private.h"
+#include "colour/colour_private.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -14,9 +14,6 @@
 #define DUV_LIMIT 0.05
 #define OUTSIDE_LIMIT 0.01
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 /* CIECAM02 viewing conditions of CIE 224: L_A = 100 cd/m2, Y_b = 20, average surround, D = 1. */
 typedef struct cam {
@@ -93,9 +90,9 @@ static void cam02ucs(const cam *cm, const double XYZ[3], double jab[3], double *
     cam_rgba(cm, XYZ, ra);
     double a = ra[0] - 12.0 * ra[1] / 11.0 + ra[2] / 11.0;
     double b = (ra[0] + ra[1] - 2.0 * ra[2]) / 9.0;
-    double h = atan2(b, a) * 180.0 / M_PI;
+    double h = atan2(b, a) * 180.0 / LX__PI;
     if (h < 0) h += 360.0;
-    double et = 0.25 * (cos(h * M_PI / 180.0 + 2.0) + 3.8);
+    double et = 0.25 * (cos(h * LX__PI / 180.0 + 2.0) + 3.8);
     double A = (2.0 * ra[0] + ra[1] + ra[2] / 20.0 - 0.305) * cm->nbb;
     double J = A > 0 ? 100.0 * pow(A / cm->aw, cm->c * cm->z) : 0.0;
     double t = (50000.0 / 13.0 * cm->nc * cm->ncb) * et * hypot(a, b) / (ra[0] + ra[1] + 21.0 / 20.0 * ra[2]);
@@ -103,8 +100,8 @@ static void cam02ucs(const cam *cm, const double XYZ[3], double jab[3], double *
     double Mc = C * pow(cm->fl, 0.25);
     double Mp = log1p(0.0228 * Mc) / 0.0228;
     jab[0] = 1.7 * J / (1.0 + 0.007 * J);
-    jab[1] = Mp * cos(h * M_PI / 180.0);
-    jab[2] = Mp * sin(h * M_PI / 180.0);
+    jab[1] = Mp * cos(h * LX__PI / 180.0);
+    jab[2] = Mp * sin(h * LX__PI / 180.0);
     if (h_deg) *h_deg = h;
 }
 
@@ -251,7 +248,7 @@ lx_status lx_tm30_compute(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out)
         }
         for (int c = 0; c < 2; c++) r.test_ab[b][c] = at[b][c] / cnt[b], r.ref_ab[b][c] = ar[b][c] / cnt[b];
         r.rf_hue[b] = rf_of(bin_dE[b] / cnt[b]);
-        double ang = (22.5 * b + 11.25) * M_PI / 180.0, norm = hypot(r.ref_ab[b][0], r.ref_ab[b][1]);
+        double ang = (22.5 * b + 11.25) * LX__PI / 180.0, norm = hypot(r.ref_ab[b][0], r.ref_ab[b][1]);
         double da = r.test_ab[b][0] - r.ref_ab[b][0], db = r.test_ab[b][1] - r.ref_ab[b][1];
         r.rcs_hue[b] = 100.0 * (da * cos(ang) + db * sin(ang)) / norm;
         r.rhs_hue[b] = (-da * sin(ang) + db * cos(ang)) / norm;

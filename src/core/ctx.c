@@ -1,5 +1,5 @@
 /* ctx.c - the library context: creation, error recording, the log callback, status text. */
-#include "lx_private.h"
+#include "core/core_private.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -35,11 +35,20 @@ void lx_ctx_destroy(lx_ctx *ctx)
 {
     if (!ctx) return;
     if (ctx->cl_release) ctx->cl_release(ctx);
-    lx__wcache_free(ctx->wcache);
-    for (int i = 0; i < 2; i++) {
-        free(ctx->locus[i].u); /* one block holds u, v and their derivatives */
-    }
+    for (int i = 0; i < LX__SLOT_COUNT; i++)
+        if (ctx->slot[i].data && ctx->slot[i].free_fn) ctx->slot[i].free_fn(ctx->slot[i].data);
     free(ctx);
+}
+
+void *lx__slot_get(const lx_ctx *ctx, lx__slot_id id) { return ctx ? ctx->slot[id].data : NULL; }
+
+void *lx__slot_set(lx_ctx *ctx, lx__slot_id id, void *data, void (*free_fn)(void *data))
+{
+    lx__slot *s = &ctx->slot[id];
+    if (s->data && s->data != data && s->free_fn) s->free_fn(s->data);
+    s->data = data;
+    s->free_fn = free_fn;
+    return data;
 }
 
 const char *lx_ctx_errmsg(const lx_ctx *ctx) { return ctx ? ctx->errmsg : ""; }

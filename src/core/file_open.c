@@ -1,6 +1,6 @@
 /* file_open.c - opening input files for the readers: "-" is standard input, directories are refused,
  * and a FIFO without a writer does not hang the program (it waits a bounded time for data). */
-#include "lx_private.h"
+#include "core/core_private.h"
 
 #include <errno.h>
 #include <fcntl.h>

@@ -1,7 +1,7 @@
 /* numparse.c - fast, correctly rounded decimal-to-double parsing for the readers: Clinger's
  * exact fast path, then the Eisel-Lemire 128-bit step, then strtod on a copy for the rare rest.
  * Locale-independent for the common paths; the strtod fallback writes the locale's decimal point. */
-#include "lx_private.h"
+#include "core/core_private.h"
 
 #include <locale.h>
 #include <math.h>
@@ -570,4 +570,39 @@ const char *lx__parse_double_ex(const char *s, const char *end, char point, doub
 const char *lx__parse_double(const char *s, const char *end, double *out)
 {
     return lx__parse_double_ex(s, end, '.', out);
+}
+
+/* ---- whole fields, with the error a reader reports ---- */
+
+static int lower_eq(const char *s, const char *e, const char *word)
+{
+    size_t n = strlen(word);
+    if ((size_t)(e - s) != n) return 0;
+    for (size_t i = 0; i < n; i++) {
+        char c = s[i];
+        if (c >= 'A' && c <= 'Z') c = (char)(c - 'A' + 'a');
+        if (c != word[i]) return 0;
+    }
+    return 1;
+}
+
+lx_status lx__parse_field(lx_ctx *ctx, const char *file, long line, const char *s, const char *e,
+                          char point, const char *what, double *out)
+{
+    double d = 0;
+    const char *q = lx__parse_double_ex(s, e, point, &d);
+    int shown = (int)(e - s > 40 ? 40 : e - s);
+    if (!q || q != e) {
+        const char *t = s;
+        if (t < e && (*t == '+' || *t == '-')) t++;
+        if (lower_eq(t, e, "nan") || lower_eq(t, e, "inf") || lower_eq(t, e, "infinity") ||
+            (e - t > 4 && lower_eq(t, t + 4, "nan(")))
+            return lx__error(ctx, LX_EPARSE, file, line, "%s is not finite: '%.*s'", what, shown, s);
+        return lx__error(ctx, LX_EPARSE, file, line, "%s is not a number: '%.*s'", what, shown, s);
+    }
+    if (!isfinite(d))
+        return lx__error(ctx, LX_EPARSE, file, line, "%s is out of range (not finite): '%.*s'", what,
+                         shown, s);
+    *out = d;
+    return LX_OK;
 }

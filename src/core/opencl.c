@@ -1,7 +1,7 @@
 /* opencl.c - the OpenCL runtime: platform and device discovery and choice, an owned or borrowed
  * context and queue, the program built lazily once per context and device (embedded kernels or
  * LX_KERNEL_DIR) with its build log kept, and OpenCL error names for messages. */
-#include "lx_private.h"
+#include "core/core_private.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -233,9 +233,6 @@ lx_status lx_cl_borrow(lx_ctx *ctx, void *context, void *queue)
 
 int lx_cl_ready(const lx_ctx *ctx) { return ctx && ctx->cl && ((const lx__cl *)ctx->cl)->ready; }
 
-/* fault injection (below): bumped each time a context starts OpenCL */
-static unsigned long fault_epoch;
-
 lx_status lx__cl_get(lx_ctx *ctx, lx__cl **out)
 {
     lx__cl *cl = NULL;
@@ -248,7 +245,9 @@ lx_status lx__cl_get(lx_ctx *ctx, lx__cl **out)
     cl_platform_id pids[MAX_DEVICES];
     cl_device_id dids[MAX_DEVICES];
     lx_cl_device_info infos[MAX_DEVICES];
-    fault_epoch++; /* fault injection: LX_CL_FAULT=CALL:N counts from here */
+#if defined(LX_FAULTS)
+    lx__cl_fault_epoch(); /* test builds: LX_CL_FAULT=CALL:N counts from here */
+#endif
     int cnt = enumerate(pids, dids, infos, MAX_DEVICES);
     if (cnt == 0) return lx__error(ctx, LX_EDEVICE, NULL, 0, "no OpenCL platform or device found");
     int plat, dev;
@@ -385,76 +384,6 @@ lx_status lx__cl_kernel(lx_ctx *ctx, lx__cl *cl, const char *name, cl_kernel *ou
                               lx__cl_errname(err), (int)err);
     *out = k;
     return LX_OK;
-}
-
-/* ---- fault injection for tests (issue 10): LX_CL_FAULT=CALL or CALL:N, see lx_private.h ---- */
-
-/* 1 when this call of `call` is to fail. CALL:N counts the calls since a context last started
- * OpenCL (lx__cl_get) or LX_CL_FAULT changed. A test hook: not meant for concurrent contexts. */
-static int fault_hit(const char *call)
-{
-    static char last[128];
-    static unsigned long count, epoch;
-    const char *f = getenv("LX_CL_FAULT");
-    if (!f || !*f) {
-        last[0] = 0;
-        return 0;
-    }
-    if (strncmp(last, f, sizeof last - 1) != 0 || epoch != fault_epoch) {
-        snprintf(last, sizeof last, "%s", f);
-        count = 0;
-        epoch = fault_epoch;
-    }
-    size_t n = strlen(call);
-    if (strncmp(f, call, n) != 0 || (f[n] != 0 && f[n] != ':')) return 0;
-    count++;
-    if (f[n] == 0) return 1;
-    return strtoul(f + n + 1, NULL, 10) == count;
-}
-
-cl_int lx__clGetPlatformIDs(cl_uint n, cl_platform_id *p, cl_uint *np)
-{
-    if (fault_hit("clGetPlatformIDs")) { /* what an ICD loader without platforms answers */
-        if (np) *np = 0;
-        return -1001; /* CL_PLATFORM_NOT_FOUND_KHR */
-    }
-    return (clGetPlatformIDs)(n, p, np);
-}
-
-cl_int lx__clBuildProgram(cl_program p, cl_uint nd, const cl_device_id *d, const char *o,
-                          void (CL_CALLBACK *fn)(cl_program, void *), void *u)
-{
-    if (fault_hit("clBuildProgram")) return CL_BUILD_PROGRAM_FAILURE;
-    return (clBuildProgram)(p, nd, d, o, fn, u);
-}
-
-cl_mem lx__clCreateBuffer(cl_context c, cl_mem_flags f, size_t size, void *host, cl_int *err)
-{
-    if (fault_hit("clCreateBuffer")) {
-        if (err) *err = CL_MEM_OBJECT_ALLOCATION_FAILURE;
-        return NULL;
-    }
-    return (clCreateBuffer)(c, f, size, host, err);
-}
-
-cl_int lx__clEnqueueNDRangeKernel(cl_command_queue q, cl_kernel k, cl_uint dim, const size_t *off, const size_t *gs,
-                                  const size_t *ls, cl_uint nw, const cl_event *wl, cl_event *ev)
-{
-    if (fault_hit("clEnqueueNDRangeKernel")) return CL_OUT_OF_RESOURCES;
-    return (clEnqueueNDRangeKernel)(q, k, dim, off, gs, ls, nw, wl, ev);
-}
-
-cl_int lx__clEnqueueReadBuffer(cl_command_queue q, cl_mem b, cl_bool blocking, size_t off, size_t size, void *ptr,
-                               cl_uint nw, const cl_event *wl, cl_event *ev)
-{
-    if (fault_hit("clEnqueueReadBuffer")) return CL_EXEC_STATUS_ERROR_FOR_EVENTS_IN_WAIT_LIST;
-    return (clEnqueueReadBuffer)(q, b, blocking, off, size, ptr, nw, wl, ev);
-}
-
-cl_int lx__clFinish(cl_command_queue q)
-{
-    if (fault_hit("clFinish")) return CL_OUT_OF_RESOURCES;
-    return (clFinish)(q);
 }
 
 #else /* !LX_OPENCL */

@@ -5,12 +5,15 @@
 #include "grid_private.h"
 
 #include <math.h>
-#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
-#define PI 3.14159265358979323846
+
+/* Break-even of LX_BACKEND_AUTO in point-luminaire pairs: estimates (no GPU has been measured;
+ * a CPU-type OpenCL device is never chosen by auto). Cold includes starting OpenCL and building
+ * the program (0.3-1 s); warm only the buffers and the transfer of the points. */
+#define LX_GRID_CL_COLD 1e9
+#define LX_GRID_CL_WARM 1e8
 
 /* ---- planes and statistics ---- */
 
@@ -194,7 +197,7 @@ void lx__area_cell(int circular, double w, double l, int n, size_t c, double *a,
 {
     if (circular) { /* ring i of n (equal areas: midpoint in r^2), sector j of 2n */
         size_t i = c / (2 * (size_t)n), j = c % (2 * (size_t)n);
-        double r = 0.5 * w * sqrt((i + 0.5) / n), ph = PI * (j + 0.5) / n;
+        double r = 0.5 * w * sqrt((i + 0.5) / n), ph = LX__PI * (j + 0.5) / n;
         *a = r * cos(ph);
         *b = r * sin(ph);
     } else {
@@ -332,12 +335,12 @@ static void run_table_job(job *j)
     }
 }
 
-static void *run_job(void *arg)
+static void run_job(void *arg, int t)
 {
-    job *j = arg;
+    job *j = (job *)arg + t;
     if (j->interp == LX_INTERP_TABLE) {
         run_table_job(j);
-        return NULL;
+        return;
     }
     for (size_t i = j->i0; i < j->i1; i++) {
         const double *pt = j->pts + 3 * i, *n = j->shared ? j->nrm : j->nrm + 3 * i;
@@ -353,34 +356,20 @@ static void *run_job(void *arg)
         }
         j->E[i] = e;
     }
-    return NULL;
-}
-
-static int online_cores(void)
-{
-    long c = sysconf(_SC_NPROCESSORS_ONLN);
-    return c > 0 ? (int)c : 1;
 }
 
 static lx_status run_cpu(lx_ctx *ctx, const plum *pl, size_t m, const double *pts, size_t n, const double *nrm, int shared,
                          lx_interp interp, lx_model model, double tol, int threads, double *E)
 {
-    int T = threads > 0 ? threads : online_cores();
-    if ((size_t)T > n / 256 + 1) T = (int)(n / 256 + 1);
-    if (T > 64) T = 64;
+    int T = lx__threads(threads, (long)(n / 256 + 1));
     job jobs[64];
-    pthread_t tid[64];
-    int started[64] = {0};
     int simd = lx__grid_simd();
-    for (int t = 0; t < T; t++) {
+    for (int t = 0; t < T; t++)
         jobs[t] = (job){pl, m, pts, nrm, shared, n * (size_t)t / (size_t)T, n * (size_t)(t + 1) / (size_t)T, interp, model,
                         tol, simd, E, 0, 0, 0};
-        if (t > 0 && pthread_create(&tid[t], NULL, run_job, &jobs[t]) == 0) started[t] = 1;
-        else if (t > 0) run_job(&jobs[t]);
-    }
-    run_job(&jobs[0]);
+    int ran = lx__parallel_run(T, run_job, jobs);
+    for (int t = ran; t < T; t++) run_job(jobs, t); /* the threads that did not start */
     for (int t = 0; t < T; t++) {
-        if (t > 0 && started[t]) pthread_join(tid[t], NULL);
         ctx->counters.nearfield_pairs += jobs[t].near_pairs;
         ctx->counters.nearfield_subdivisions += jobs[t].near_cells;
         if (jobs[t].near_unconverged)
@@ -414,8 +403,7 @@ lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, c
     double tol = o.nearfield_tol == 0 ? 1e-4 : o.nearfield_tol;
     if (!(tol >= 1e-12) || !(tol <= 0.1))
         return lx__error(ctx, LX_EINVAL, NULL, 0, "the near-field tolerance must be in [1e-12, 0.1] (got %g)", tol);
-    int backend = o.backend;
-    if (backend == LX_BACKEND_AUTO) backend = lx_backend_from_env();
+    lx_backend backend = o.backend == LX_BACKEND_AUTO ? lx_backend_from_env() : o.backend;
     if (backend == LX_BACKEND_OPENCL && o.interp != LX_INTERP_TABLE)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "the OpenCL backend computes the table interpolation only (interp table)");
     for (size_t i = 0; i < (shared_normal ? 1 : n); i++) {
@@ -483,8 +471,10 @@ lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, c
     }
     int use_cl = 0;
     if (o.interp == LX_INTERP_TABLE && m > 0) {
-        if (backend == LX_BACKEND_OPENCL) use_cl = 1;
-        else if (backend == LX_BACKEND_AUTO && (double)n * (double)m >= 1e7 && LX_OPENCL) use_cl = 1;
+        lx_backend be;
+        st = lx__backend_choose(ctx, "grid", o.backend, (double)n * (double)m, LX_GRID_CL_COLD, LX_GRID_CL_WARM, &be);
+        if (st) goto out;
+        use_cl = be == LX_BACKEND_OPENCL;
     }
     o.used = LX_BACKEND_CPU;
 #if LX_OPENCL
@@ -500,10 +490,9 @@ lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, c
         free(all);
         if (st == LX_OK) {
             o.used = LX_BACKEND_OPENCL;
-        } else if (backend == LX_BACKEND_OPENCL) {
+        } else if (!lx__backend_fallback(ctx, "grid", o.backend, st)) {
             goto out;
         } else {
-            lx__log(ctx, LX_LOG_INFO, "grid: OpenCL failed (%s); computing on the CPU", lx_ctx_errmsg(ctx));
             use_cl = 0;
             st = LX_OK;
         }
@@ -523,12 +512,6 @@ lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, c
             ctx->counters.nearfield_subdivisions += cells;
         }
     }
-#else
-    if (use_cl && backend == LX_BACKEND_OPENCL) {
-        st = lx__error(ctx, LX_EUNSUPPORTED, NULL, 0, "this build has no OpenCL (built with LX_OPENCL=0)");
-        goto out;
-    }
-    use_cl = 0;
 #endif
     if (!use_cl) {
         if (m == 0) memset(E, 0, n * sizeof *E);

@@ -4,7 +4,7 @@
 #ifndef LX_GRID_PRIVATE_H
 #define LX_GRID_PRIVATE_H
 
-#include "lx_private.h"
+#include "lighting/lighting_private.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -61,8 +61,7 @@ static inline double lx__table_eval(const lx__plum *p, double x, double y, doubl
 void lx__grid_table_block(const lx__plum *p, size_t nb, const double *x, const double *y, const double *z,
                           const double *nx, const double *ny, const double *nz, int shared, int simd, double *acc);
 
-/* 0 when the environment sets LX_NOVECTOR (to 1) or this CPU lacks AVX2 and FMA; else 2 with
- * AVX-512 F/DQ/VL (unless LX_NOAVX512 is set), else 1. */
+/* The SIMD path of the table loop: lx_simd_level() (0 scalar, 1 AVX2, 2 AVX-512). */
 int lx__grid_simd(void);
 
 #endif /* LX_GRID_PRIVATE_H */

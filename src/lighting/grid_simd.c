@@ -211,14 +211,7 @@ __attribute__((target("avx512f,avx512dq,avx512vl,fma"))) static void block_avx51
 int lx__grid_simd(void)
 {
 #ifdef HAVE_AVX2_PATH
-    const char *e = getenv("LX_NOVECTOR");
-    if (e && *e && strcmp(e, "0") != 0) return 0;
-    __builtin_cpu_init();
-    if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma")) return 0;
-    const char *w = getenv("LX_NOAVX512"); /* measurements: the AVX2 path on an AVX-512 CPU */
-    int avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
-                 __builtin_cpu_supports("avx512vl") && !(w && *w && strcmp(w, "0") != 0);
-    return avx512 ? 2 : 1;
+    return (int)lx_simd_level();
 #else
     return 0;
 #endif

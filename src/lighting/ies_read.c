@@ -1,7 +1,7 @@
 /* ies_read.c - the IES LM-63 reader: every version seen in practice (1986 without a version line,
  * IESNA91, LM-63-1995, 2002, 2019), keywords, TILT=NONE/INCLUDE/file, comma or blank separators,
  * lines of any length, Latin-1 header bytes. The table is checked and expanded by photometry.c. */
-#include "lx_private.h"
+#include "lighting/lighting_private.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -10,16 +10,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-
-char *lx__strndup(const char *s, const char *e)
-{
-    size_t n = (size_t)(e - s);
-    char *r = malloc(n + 1);
-    if (!r) return NULL;
-    memcpy(r, s, n);
-    r[n] = 0;
-    return r;
-}
 
 /* The numbers after the TILT= line: one token stream with the line of each token. */
 typedef struct toks {

@@ -1,6 +1,6 @@
 /* ies_write.c - writes a luminaire as IES LM-63-2002 text (type C, the stored planes and their
  * symmetry kept), numbers in the shortest form that reads back exactly. */
-#include "lx_private.h"
+#include "lighting/lighting_private.h"
 
 #include <math.h>
 #include <stdio.h>

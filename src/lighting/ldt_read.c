@@ -1,7 +1,7 @@
 /* ldt_read.c - the EULUMDAT (.ldt) reader: one field per line, every Isym value (0-4), several
  * lamp sets (the first is the standard set the intensities refer to), cd/klm scaled to candela,
  * dimensions in mm. The table is checked and expanded by photometry.c. */
-#include "lx_private.h"
+#include "lighting/lighting_private.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -1,7 +1,7 @@
 /* photometry.c - the luminaire intensity model: reading by content (IES or EULUMDAT), checking
  * and expanding the stored symmetry to the full sphere, interpolation in (C, gamma) (bilinear or
  * monotone cubic), tilt factors, the exact flux integral, beam and field angles, analytic models. */
-#include "lx_private.h"
+#include "lighting/lighting_private.h"
 
 #include <errno.h>
 #include <math.h>
@@ -10,8 +10,6 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#define PI 3.14159265358979323846
-#define DEG (PI / 180.0)
 
 const char *lx_lum_format_name(lx_lum_format f)
 {
@@ -344,7 +342,7 @@ static double eval_cg(const lx_luminaire *l, lx_interp interp, double c, double 
 double lx_luminaire_intensity(const lx_luminaire *l, lx_interp interp, double c_rad, double gamma_rad)
 {
     if (!l || !l->full_cd) return NAN;
-    return eval_cg(l, interp, c_rad / DEG, gamma_rad / DEG);
+    return eval_cg(l, interp, c_rad / LX__DEG, gamma_rad / LX__DEG);
 }
 
 double lx_luminaire_intensity_dir(const lx_luminaire *l, lx_interp interp, double x, double y, double z)
@@ -356,19 +354,19 @@ double lx_luminaire_intensity_dir(const lx_luminaire *l, lx_interp interp, doubl
     y /= r;
     z /= r;
     if (l->photometric_type == 1) {
-        double g = atan2(hypot(x, y), -z) / DEG;
-        double c = (x == 0 && y == 0) ? 0 : atan2(y, x) / DEG;
+        double g = atan2(hypot(x, y), -z) / LX__DEG;
+        double c = (x == 0 && y == 0) ? 0 : atan2(y, x) / LX__DEG;
         return eval_cg(l, interp, c, g);
     }
-    double h = asin(y > 1 ? 1 : y < -1 ? -1 : y) / DEG;
-    double v = atan2(x, -z) / DEG;
+    double h = asin(y > 1 ? 1 : y < -1 ? -1 : y) / LX__DEG;
+    double v = atan2(x, -z) / LX__DEG;
     return eval_cg(l, interp, h, v);
 }
 
 double lx_luminaire_tilt_factor(const lx_luminaire *l, double tilt_rad)
 {
     if (!l || !l->tilt_include || l->n_tilt == 0) return 1.0;
-    double a = tilt_rad / DEG;
+    double a = tilt_rad / LX__DEG;
     const double *x = l->tilt_deg, *y = l->tilt_factor;
     size_t n = l->n_tilt;
     if (n == 1 || a <= x[0]) return y[0];
@@ -411,15 +409,15 @@ static double integrate(const lx_luminaire *l, double glo, double ghi)
             if (b <= glo || a >= ghi) continue;
             double a2 = a < glo ? glo : a, b2 = b > ghi ? ghi : b;
             double lo, hi;
-            basis_w(1, a2 * DEG, b2 * DEG, &lo, &hi);
+            basis_w(1, a2 * LX__DEG, b2 * LX__DEG, &lo, &hi);
             double ta = (a2 - a) / (b - a), tb = (b2 - a) / (b - a);
             if (nc == 1) {
                 double ya = I[j] + ta * (I[j + 1] - I[j]), yb = I[j] + tb * (I[j + 1] - I[j]);
-                sum += 2 * PI * (ya * lo + yb * hi);
+                sum += 2 * LX__PI * (ya * lo + yb * hi);
                 continue;
             }
             for (size_t i = 0; i + 1 < nc; i++) {
-                double dc = (c[i + 1] - c[i]) * DEG;
+                double dc = (c[i + 1] - c[i]) * LX__DEG;
                 const double *p = I + i * ng, *q = p + ng;
                 double pa = p[j] + ta * (p[j + 1] - p[j]), pb = p[j] + tb * (p[j + 1] - p[j]);
                 double qa = q[j] + ta * (q[j + 1] - q[j]), qb = q[j] + tb * (q[j + 1] - q[j]);
@@ -433,10 +431,10 @@ static double integrate(const lx_luminaire *l, double glo, double ghi)
     (void)ghi;
     for (size_t i = 0; i + 1 < nc; i++) {
         double lo, hi;
-        basis_w(2, c[i] * DEG, c[i + 1] * DEG, &lo, &hi);
+        basis_w(2, c[i] * LX__DEG, c[i + 1] * LX__DEG, &lo, &hi);
         const double *p = I + i * ng, *q = p + ng;
         for (size_t j = 0; j + 1 < ng; j++) {
-            double dv = (g[j + 1] - g[j]) * DEG;
+            double dv = (g[j + 1] - g[j]) * LX__DEG;
             sum += 0.5 * dv * ((p[j] + p[j + 1]) * lo + (q[j] + q[j + 1]) * hi);
         }
     }
@@ -528,7 +526,7 @@ lx_status lx_luminaire_from_model(lx_ctx *ctx, const lx_lum_model *m, lx_luminai
         if (m->kind == LX_LUM_MODEL_WARN) {
             double beam = NAN;
             if (m->exponent > 0 && lx_warn_beam_from_exponent(ctx, m->exponent, &beam) == LX_OK) {
-                double b = beam / DEG / 40; /* about 20 steps across the half beam */
+                double b = beam / LX__DEG / 40; /* about 20 steps across the half beam */
                 if (b < step) step = b < 0.05 ? 0.05 : b;
             }
         }
@@ -562,9 +560,9 @@ lx_status lx_luminaire_from_model(lx_ctx *ctx, const lx_lum_model *m, lx_luminai
         double g = j + 1 == n ? last : j * step;
         l->v_deg[j] = g;
         double I;
-        if (m->kind == LX_LUM_MODEL_POINT) I = m->flux_lm / (4 * PI);
-        else if (m->kind == LX_LUM_MODEL_LAMBERT) I = g >= 90 ? 0 : m->flux_lm / PI * cos(g * DEG);
-        else I = g >= 90 ? 0 : (m->exponent + 1) / (2 * PI) * m->flux_lm * lx_warn_lobe(m->exponent, g * DEG);
+        if (m->kind == LX_LUM_MODEL_POINT) I = m->flux_lm / (4 * LX__PI);
+        else if (m->kind == LX_LUM_MODEL_LAMBERT) I = g >= 90 ? 0 : m->flux_lm / LX__PI * cos(g * LX__DEG);
+        else I = g >= 90 ? 0 : (m->exponent + 1) / (2 * LX__PI) * m->flux_lm * lx_warn_lobe(m->exponent, g * LX__DEG);
         l->cd[j] = I;
     }
     l->absolute = 1;

@@ -1,19 +1,18 @@
 /* solid_angle.c - solid angles in steradians: a cone (spherical cap), a pixel of a lat-long
  * map, and a rectangle seen from a point, each in a form free of cancellation. */
-#include "lx_private.h"
+#include "lighting/lighting_private.h"
 
 #include <math.h>
 
-#define LX_PI 3.14159265358979323846
 
 lx_status lx_solid_angle_cap(lx_ctx *ctx, double half_angle_rad, double *sr)
 {
     if (!sr) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_solid_angle_cap: NULL output");
-    if (!(half_angle_rad >= 0 && half_angle_rad <= LX_PI))
+    if (!(half_angle_rad >= 0 && half_angle_rad <= LX__PI))
         return lx__error(ctx, LX_EINVAL, NULL, 0, "cap half-angle must be between 0 and 180 deg (got %g rad)",
                          half_angle_rad);
     double s = sin(0.5 * half_angle_rad);
-    *sr = 4 * LX_PI * s * s; /* 2 pi (1 - cos a) without the cancellation at small a */
+    *sr = 4 * LX__PI * s * s; /* 2 pi (1 - cos a) without the cancellation at small a */
     return LX_OK;
 }
 
@@ -22,10 +21,10 @@ lx_status lx_solid_angle_latlong_pixel(lx_ctx *ctx, int width, int height, int r
     if (!sr) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_solid_angle_latlong_pixel: NULL output");
     if (width <= 0 || height <= 0 || row < 0 || row >= height)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "lat-long pixel row %d outside a %dx%d map", row, width, height);
-    double dt = LX_PI / height;
+    double dt = LX__PI / height;
     double t0 = row * dt, t1 = (row + 1) * dt;
     /* cos t0 - cos t1 = 2 sin((t0 + t1)/2) sin((t1 - t0)/2) */
-    *sr = (2 * LX_PI / width) * 2 * sin(0.5 * (t0 + t1)) * sin(0.5 * dt);
+    *sr = (2 * LX__PI / width) * 2 * sin(0.5 * (t0 + t1)) * sin(0.5 * dt);
     return LX_OK;
 }
 

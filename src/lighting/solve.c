@@ -1,10 +1,9 @@
 /* solve.c - the inverse problems of the lighting calculator: the distance, intensity or flux
  * that gives a target illuminance, for a point source or a Warn spotlight. */
-#include "lx_private.h"
+#include "lighting/lighting_private.h"
 
 #include <math.h>
 
-#define LX_PI 3.14159265358979323846
 
 static lx_status check_target(lx_ctx *ctx, double e, double incidence_rad, double *cosb)
 {
@@ -16,7 +15,7 @@ static lx_status check_target(lx_ctx *ctx, double e, double incidence_rad, doubl
     if (!(*cosb > 0))
         return lx__error(ctx, LX_ERANGE, NULL, 0,
                          "no solution: at an incidence of %g deg the receiver gets no light",
-                         incidence_rad * 180 / LX_PI);
+                         incidence_rad * 180 / LX__PI);
     return LX_OK;
 }
 
@@ -58,7 +57,7 @@ lx_status lx_solve_flux(lx_ctx *ctx, double illuminance_lx, double distance_m, d
     if ((st = lx_solve_intensity(ctx, illuminance_lx, distance_m, incidence_rad, &i)) != LX_OK) return st;
     double f;
     if (exponent < 0) {
-        f = 4 * LX_PI * i; /* isotropic: I = F / 4 pi */
+        f = 4 * LX__PI * i; /* isotropic: I = F / 4 pi */
     } else {
         if (!isfinite(exponent) || !isfinite(angle_rad))
             return lx__error(ctx, LX_EINVAL, NULL, 0, "Warn exponent and angle must be finite");
@@ -66,8 +65,8 @@ lx_status lx_solve_flux(lx_ctx *ctx, double illuminance_lx, double distance_m, d
         if (!(lobe > 0))
             return lx__error(ctx, LX_ERANGE, NULL, 0,
                              "no solution: a Warn spot of exponent %g sends no light at %g deg off its axis",
-                             exponent, angle_rad * 180 / LX_PI);
-        f = 2 * LX_PI * i / (exponent + 1) / lobe; /* I(a) = (S+1)/(2 pi) F cos^S a */
+                             exponent, angle_rad * 180 / LX__PI);
+        f = 2 * LX__PI * i / (exponent + 1) / lobe; /* I(a) = (S+1)/(2 pi) F cos^S a */
     }
     if (!isfinite(f)) return lx__error(ctx, LX_ERANGE, NULL, 0, "the flux needed overflows");
     *flux_lm = f;

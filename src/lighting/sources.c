@@ -1,12 +1,11 @@
 /* sources.c - light sources for the lighting calculator: isotropic point, Warn spotlight,
  * Lambertian disk and rectangle (exact configuration factors and the point model, with the
  * five-times rule), and the Lambertian reflector. */
-#include "lx_private.h"
+#include "lighting/lighting_private.h"
 
 #include <float.h>
 #include <math.h>
 
-#define LX_PI 3.14159265358979323846
 
 static lx_status check_distance(lx_ctx *ctx, const char *what, double d)
 {
@@ -44,7 +43,7 @@ lx_status lx_point_intensity(lx_ctx *ctx, double flux_lm, double *intensity_cd)
     lx_status st;
     if (!intensity_cd) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_point_intensity: NULL output");
     if ((st = check_finite(ctx, "flux", flux_lm, 1)) != LX_OK) return st;
-    *intensity_cd = flux_lm / (4 * LX_PI);
+    *intensity_cd = flux_lm / (4 * LX__PI);
     return LX_OK;
 }
 
@@ -52,10 +51,10 @@ double lx_warn_lobe(double exponent, double angle_rad)
 {
     if (isnan(exponent) || isnan(angle_rad) || exponent < 0) return NAN;
     double a = fabs(angle_rad);
-    if (a > LX_PI / 2) return 0.0;
+    if (a > LX__PI / 2) return 0.0;
     if (exponent == 0) return 1.0;
     double lc; /* log(cos a), accurate near a = 0 where cos a rounds to 1 */
-    if (a < LX_PI / 3) {
+    if (a < LX__PI / 3) {
         double s = sin(0.5 * a);
         lc = log1p(-2 * s * s);
     } else {
@@ -74,7 +73,7 @@ lx_status lx_warn_intensity(lx_ctx *ctx, double flux_lm, double exponent, double
     if ((st = check_finite(ctx, "flux", flux_lm, 1)) != LX_OK) return st;
     if ((st = check_finite(ctx, "Warn exponent", exponent, 1)) != LX_OK) return st;
     if ((st = check_finite(ctx, "angle", angle_rad, 0)) != LX_OK) return st;
-    double c = (exponent + 1) / (2 * LX_PI) * flux_lm;
+    double c = (exponent + 1) / (2 * LX__PI) * flux_lm;
     if (!isfinite(c))
         return lx__error(ctx, LX_ERANGE, NULL, 0, "peak intensity overflows (S %g, flux %g lm)", exponent, flux_lm);
     double lobe = lx_warn_lobe(exponent, angle_rad);
@@ -86,9 +85,9 @@ lx_status lx_warn_intensity(lx_ctx *ctx, double flux_lm, double exponent, double
 lx_status lx_warn_exponent_from_beam(lx_ctx *ctx, double beam_rad, double *exponent)
 {
     if (!exponent) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_warn_exponent_from_beam: NULL output");
-    if (!(beam_rad > 0 && beam_rad < LX_PI))
+    if (!(beam_rad > 0 && beam_rad < LX__PI))
         return lx__error(ctx, LX_EINVAL, NULL, 0, "beam angle must be between 0 and 180 deg (got %g deg)",
-                         beam_rad * 180 / LX_PI);
+                         beam_rad * 180 / LX__PI);
     double s = sin(0.25 * beam_rad); /* half the beam is the half-peak angle a: cos^S a = 1/2 */
     *exponent = -log(2.0) / log1p(-2 * s * s);
     return LX_OK;
@@ -154,11 +153,11 @@ lx_status lx_disk_illuminance(lx_ctx *ctx, double luminance_cd_m2, double radius
     double s = fmax(radius_m, fmax(height_m, r)); /* scale so no square over- or underflows */
     double R = radius_m / s, h = height_m / s, x = r / s;
     lx_source_result res = {0};
-    res.exact_lx = LX_PI * luminance_cd_m2 * disk_factor(R, h, x);
+    res.exact_lx = LX__PI * luminance_cd_m2 * disk_factor(R, h, x);
     res.exact_rel_error = 1e-14;
     /* point: I(theta) = L pi R^2 cos theta at distance d, incidence theta: E = I cos theta / d^2 */
     double d2 = h * h + x * x;
-    res.point_lx = luminance_cd_m2 * LX_PI * (R * R) * (h * h) / (d2 * d2);
+    res.point_lx = luminance_cd_m2 * LX__PI * (R * R) * (h * h) / (d2 * d2);
     res.distance_m = sqrt(d2) * s;
     res.largest_dimension_m = 2 * radius_m;
     finish(&res, model);
@@ -308,6 +307,6 @@ lx_status lx_lambertian_luminance(lx_ctx *ctx, double reflectance, double illumi
     if (!(reflectance >= 0 && reflectance <= 1))
         return lx__error(ctx, LX_EINVAL, NULL, 0, "reflectance must be between 0 and 1 (got %g)", reflectance);
     if ((st = check_finite(ctx, "illuminance", illuminance_lx, 1)) != LX_OK) return st;
-    *luminance_cd_m2 = reflectance * illuminance_lx / LX_PI;
+    *luminance_cd_m2 = reflectance * illuminance_lx / LX__PI;
     return LX_OK;
 }

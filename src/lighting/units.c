@@ -1,7 +1,7 @@
 /* units.c - quantities with units: the unit table, parsing "1000lm" / "2.5 m" / "46 fc",
  * conversion between units of one quantity, printing, and radiometric <-> photometric
  * conversion with an explicit luminous efficacy (never a silent default). */
-#include "lx_private.h"
+#include "lighting/lighting_private.h"
 
 #include <errno.h>
 #include <math.h>
@@ -10,7 +10,6 @@
 #include <string.h>
 #include <strings.h>
 
-#define LX_PI 3.14159265358979323846
 #define FT_M 0.3048  /* international foot, exact by definition (1959) */
 #define IN_M 0.0254  /* international inch, exact */
 
@@ -40,16 +39,16 @@ static const lx_unit units[] = {
     {"nit", LX_Q_LUMINANCE, 1.0, 1, "nit (cd/m2)"},
     {"nits", LX_Q_LUMINANCE, 1.0, 0, "nit"},
     {"cd/ft2", LX_Q_LUMINANCE, 1.0 / (FT_M * FT_M), 1, "candela per square foot"},
-    {"fL", LX_Q_LUMINANCE, 1.0 / (LX_PI * FT_M * FT_M), 1, "foot-lambert ((1/pi) cd/ft2)"},
-    {"lambert", LX_Q_LUMINANCE, 1e4 / LX_PI, 1, "lambert ((1/pi) cd/cm2)"},
-    {"La", LX_Q_LUMINANCE, 1e4 / LX_PI, 0, "lambert"},
-    {"asb", LX_Q_LUMINANCE, 1.0 / LX_PI, 1, "apostilb ((1/pi) cd/m2)"},
+    {"fL", LX_Q_LUMINANCE, 1.0 / (LX__PI * FT_M * FT_M), 1, "foot-lambert ((1/pi) cd/ft2)"},
+    {"lambert", LX_Q_LUMINANCE, 1e4 / LX__PI, 1, "lambert ((1/pi) cd/cm2)"},
+    {"La", LX_Q_LUMINANCE, 1e4 / LX__PI, 0, "lambert"},
+    {"asb", LX_Q_LUMINANCE, 1.0 / LX__PI, 1, "apostilb ((1/pi) cd/m2)"},
     {"sb", LX_Q_LUMINANCE, 1e4, 1, "stilb (cd/cm2)"},
     {"W/sr/m2", LX_Q_RADIANCE, 1.0, 1, "watt per steradian per square metre"},
     {"W/m2/sr", LX_Q_RADIANCE, 1.0, 0, "watt per steradian per square metre"},
     {"sr", LX_Q_SOLID_ANGLE, 1.0, 1, "steradian"},
     {"msr", LX_Q_SOLID_ANGLE, 1e-3, 1, "millisteradian"},
-    {"deg2", LX_Q_SOLID_ANGLE, (LX_PI / 180.0) * (LX_PI / 180.0), 1, "square degree"},
+    {"deg2", LX_Q_SOLID_ANGLE, (LX__PI / 180.0) * (LX__PI / 180.0), 1, "square degree"},
     {"m", LX_Q_LENGTH, 1.0, 1, "metre"},
     {"km", LX_Q_LENGTH, 1e3, 1, "kilometre"},
     {"cm", LX_Q_LENGTH, 1e-2, 1, "centimetre"},
@@ -60,10 +59,10 @@ static const lx_unit units[] = {
     {"yd", LX_Q_LENGTH, 3 * FT_M, 1, "yard"},
     {"rad", LX_Q_ANGLE, 1.0, 1, "radian"},
     {"mrad", LX_Q_ANGLE, 1e-3, 1, "milliradian"},
-    {"deg", LX_Q_ANGLE, LX_PI / 180.0, 1, "degree"},
-    {"\xc2\xb0", LX_Q_ANGLE, LX_PI / 180.0, 0, "degree"},
-    {"arcmin", LX_Q_ANGLE, LX_PI / 10800.0, 1, "minute of arc"},
-    {"arcsec", LX_Q_ANGLE, LX_PI / 648000.0, 1, "second of arc"},
+    {"deg", LX_Q_ANGLE, LX__PI / 180.0, 1, "degree"},
+    {"\xc2\xb0", LX_Q_ANGLE, LX__PI / 180.0, 0, "degree"},
+    {"arcmin", LX_Q_ANGLE, LX__PI / 10800.0, 1, "minute of arc"},
+    {"arcsec", LX_Q_ANGLE, LX__PI / 648000.0, 1, "second of arc"},
     {"K", LX_Q_TEMPERATURE, 1.0, 1, "kelvin"},
     {"lm/W", LX_Q_EFFICACY, 1.0, 1, "lumen per watt"},
 };

@@ -1,7 +1,7 @@
 /* accuracy_plot.c - the error-against-time PNG of `luxcalc bench accuracy`: a log-log scatter plot
  * with one labelled marker per method, decade grid lines and a legend of series, drawn on the
  * canvas of png_plot.c. */
-#include "lx_private.h"
+#include "plot/plot_private.h"
 
 #include <math.h>
 #include <stdio.h>

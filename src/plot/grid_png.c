@@ -1,6 +1,6 @@
 /* grid_png.c - the false-colour plot of an illuminance grid: the plane's values, iso-lux contour
  * lines, the luminaires' positions, axis ticks in metres and a colour legend in lux. */
-#include "lx_private.h"
+#include "plot/plot_private.h"
 
 #include <ctype.h>
 #include <math.h>

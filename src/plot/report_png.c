@@ -1,16 +1,13 @@
 /* report_png.c - a one-page PNG report of one spectrum (issue 7): the SPD filled with wavelength
  * colours, a colour swatch, the CIE xy diagram with spectral and Planckian loci, CIE 13.3 R1-R14
  * bars, the TM-30 colour vector graphic and the headline numbers. Drawn on the png_plot.c canvas. */
-#include "lx_private.h"
+#include "plot/plot_private.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 /* ---- geometry and colour (shared with the tests through lx_private.h) ---- */
 
@@ -247,7 +244,7 @@ static void panel_cie(lx_ctx *ctx, lx__canvas *c, lx_observer obs, const metrics
     const int W = (int)(0.8 * S), H = (int)(0.9 * S);
 #define PX(x) (X0 + (x) * S)
 #define PY(y) (Y0 + H - (y) * S)
-    text(c, X0 - 30, Y0 - 22, 1, obs == LX_OBSERVER_10 ? "CIE 1964 X10,Y10 CHROMATICITY (10 DEG)" : "CIE 1931 X,Y CHROMATICITY (2 DEG)");
+    text(c, X0 - 30, Y0 - 22, 1, obs == LX_OBSERVER_10 ? "CIE 1964 X10,Y10 CHROMATICITY (10 LX__DEG)" : "CIE 1931 X,Y CHROMATICITY (2 LX__DEG)");
     /* the spectral locus 380-700 nm (it folds back on itself above 700 nm), closed by the purple line */
     enum { NL = 321 };
     double lx[NL], ly[NL];
@@ -423,18 +420,18 @@ static void panel_cvg(lx__canvas *c, const metrics *m, int cx, int cy, int R)
         for (int i = (int)-lim; i <= (int)lim; i++) {
             double r = hypot(i, j);
             if (r > lim) continue;
-            double h = atan2(-j, i) * 180 / M_PI;
+            double h = atan2(-j, i) * 180 / LX__PI;
             unsigned char rgb[3];
             hue_rgb(floor(fmod(h + 360, 360) / 22.5) * 22.5 + 11.25, rgb);
             blend(c, cx + i, cy + j, rgb, 0.22);
         }
     for (int b = 0; b < 16; b++) {
-        double a = b * 22.5 * M_PI / 180;
+        double a = b * 22.5 * LX__PI / 180;
         line(c, cx, cy, cx + lim * cos(a), cy - lim * sin(a), 1, WHITE);
     }
     double pr = NAN, pq = NAN;
     for (int k = 0; k <= 180; k++) {
-        double a = k * 2 * M_PI / 180, x = cx + R * cos(a), y = cy - R * sin(a);
+        double a = k * 2 * LX__PI / 180, x = cx + R * cos(a), y = cy - R * sin(a);
         if (k) line(c, pr, pq, x, y, 1.6, INK);
         pr = x, pq = y;
     }
@@ -478,7 +475,7 @@ static void panel_numbers(lx__canvas *c, const metrics *m, lx_observer obs, int 
     }
     if (m->ao_ok && isfinite(m->ao.der[LX_AO_MEL])) snprintf(l[8], 64, "MEL DER %.3f", m->ao.der[LX_AO_MEL]);
     else snprintf(l[8], 64, "MEL DER -");
-    snprintf(l[9], 64, "%s DEG OBSERVER (CHROMATICITY)", obs == LX_OBSERVER_10 ? "10" : "2");
+    snprintf(l[9], 64, "%s LX__DEG OBSERVER (CHROMATICITY)", obs == LX_OBSERVER_10 ? "10" : "2");
     for (int k = 0; k < 9; k++) text(c, X0 + (k / 5) * 230, Y0 + (k % 5) * 24, 2, l[k]);
     text(c, X0, Y0 + 5 * 24 + 4, 1, l[9]);
 }

@@ -1,14 +1,11 @@
 /* envmap.c - lat-long environment maps: creation, pixel directions, exact pixel solid angles and
  * first moments, luminance (Y weights from chromaticities), solid-angle-weighted downsampling. */
-#include "lx_private.h"
+#include "radiance/radiance_private.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <pthread.h>
-#include <unistd.h>
 
-#define LX_PI 3.14159265358979323846
 
 /* Rec.709 / sRGB primaries and D65 white (ITU-R BT.709-6, IEC 61966-2-1). */
 static const double rec709_xy[8] = {0.64, 0.33, 0.30, 0.60, 0.15, 0.06, 0.3127, 0.3290};
@@ -75,7 +72,7 @@ void lx_envmap_free(lx_envmap *map)
 
 void lx_envmap_direction(int width, int height, double row, double col, double dir[3])
 {
-    double t = row * LX_PI / height, p = col * 2 * LX_PI / width;
+    double t = row * LX__PI / height, p = col * 2 * LX__PI / width;
     double st = sin(t);
     dir[0] = st * cos(p);
     dir[1] = st * sin(p);
@@ -84,14 +81,14 @@ void lx_envmap_direction(int width, int height, double row, double col, double d
 
 double lx_envmap_pixel_sr(int width, int height, int row)
 {
-    double dt = LX_PI / height, tc = (row + 0.5) * dt;
-    return (2 * LX_PI / width) * 2 * sin(tc) * sin(0.5 * dt); /* cos t0 - cos t1 without cancellation */
+    double dt = LX__PI / height, tc = (row + 0.5) * dt;
+    return (2 * LX__PI / width) * 2 * sin(tc) * sin(0.5 * dt); /* cos t0 - cos t1 without cancellation */
 }
 
 /* Row factors: integrals of sin t, sin^2 t and sin t cos t over [t0, t1], cancellation-free. */
 static void row_factors(int height, int row, double *sr, double *s2, double *sc)
 {
-    double dt = LX_PI / height, tc = (row + 0.5) * dt;
+    double dt = LX__PI / height, tc = (row + 0.5) * dt;
     *sr = 2 * sin(tc) * sin(0.5 * dt);
     *s2 = 0.5 * (dt - cos(2 * tc) * sin(dt));   /* [t/2 - sin 2t / 4] */
     *sc = 0.5 * sin(2 * tc) * sin(dt);          /* [sin^2 t / 2] */
@@ -99,7 +96,7 @@ static void row_factors(int height, int row, double *sr, double *s2, double *sc)
 
 static void col_factors(int width, int col, double *gx, double *gy)
 {
-    double dp = 2 * LX_PI / width, pc = (col + 0.5) * dp, s = 2 * sin(0.5 * dp);
+    double dp = 2 * LX__PI / width, pc = (col + 0.5) * dp, s = 2 * sin(0.5 * dp);
     *gx = cos(pc) * s; /* sin p1 - sin p0 */
     *gy = sin(pc) * s; /* cos p0 - cos p1 */
 }
@@ -111,7 +108,7 @@ void lx_envmap_pixel_moment(int width, int height, int row, int col, double m[3]
     col_factors(width, col, &gx, &gy);
     m[0] = s2 * gx;
     m[1] = s2 * gy;
-    m[2] = sc * (2 * LX_PI / width);
+    m[2] = sc * (2 * LX__PI / width);
 }
 
 lx_status lx__llgeom_init(lx_ctx *ctx, lx__llgeom *g, int w, int h)
@@ -119,7 +116,7 @@ lx_status lx__llgeom_init(lx_ctx *ctx, lx__llgeom *g, int w, int h)
     memset(g, 0, sizeof *g);
     g->w = w;
     g->h = h;
-    g->dphi = 2 * LX_PI / w;
+    g->dphi = 2 * LX__PI / w;
     g->row_sr = malloc(3 * (size_t)h * sizeof(double));
     g->col_gx = malloc(2 * (size_t)w * sizeof(double));
     if (!g->row_sr || !g->col_gx) {
@@ -139,15 +136,6 @@ void lx__llgeom_free(lx__llgeom *g)
     free(g->row_sr);
     free(g->col_gx);
     memset(g, 0, sizeof *g);
-}
-
-int lx__threads(int asked, long work)
-{
-    long n = asked > 0 ? asked : sysconf(_SC_NPROCESSORS_ONLN);
-    if (n < 1) n = 1;
-    if (n > 64) n = 64;
-    if (work > 0 && n > work) n = work;
-    return (int)n;
 }
 
 double lx_envmap_y(const lx_envmap *map, const float *pixel)
@@ -201,40 +189,5 @@ lx_status lx_envmap_downsample(lx_ctx *ctx, const lx_envmap *in, int width, int 
     }
     free(acc);
     *out = m;
-    return LX_OK;
-}
-
-typedef struct pf_job {
-    void (*fn)(void *, long, long, int);
-    void *arg;
-    long i0, i1;
-    int t;
-} pf_job;
-
-static void *pf_run(void *p)
-{
-    pf_job *j = p;
-    j->fn(j->arg, j->i0, j->i1, j->t);
-    return NULL;
-}
-
-lx_status lx__parallel_for(lx_ctx *ctx, int threads, long n, void (*fn)(void *arg, long i0, long i1, int t), void *arg)
-{
-    if (n <= 0) return LX_OK;
-    if (threads < 1) threads = 1;
-    if (threads > n) threads = (int)n;
-    if (threads == 1) {
-        fn(arg, 0, n, 0);
-        return LX_OK;
-    }
-    (void)ctx;
-    pthread_t tid[64];
-    pf_job jobs[64];
-    int started = 0;
-    for (int t = 0; t < threads; t++) jobs[t] = (pf_job){fn, arg, n * t / threads, n * (t + 1) / threads, t};
-    for (int t = 0; t < threads - 1; t++, started++)
-        if (pthread_create(&tid[t], NULL, pf_run, &jobs[t]) != 0) break;
-    for (int t = started; t < threads; t++) pf_run(&jobs[t]); /* the rest, on this thread */
-    for (int t = 0; t < started; t++) pthread_join(tid[t], NULL);
     return LX_OK;
 }

@@ -1,7 +1,7 @@
 /* envmap_cube.c - OpenEXR cube maps (six N x N faces stacked +X, -X, +Y, -Y, +Z, -Z): face frames
  * in luxcalc directions, exact texel solid angles, first and second moments (closed forms), and the
  * cube back ends of SH9 projection and of the exact irradiance sum (brute and fast). */
-#include "lx_private.h"
+#include "radiance/radiance_private.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -4,7 +4,7 @@
 #ifndef LX_EXR_PRIVATE_H
 #define LX_EXR_PRIVATE_H
 
-#include "lx_private.h"
+#include "radiance/radiance_private.h"
 
 #include <openexr.h>
 

@@ -1,12 +1,13 @@
 /* irradiance.c - the public irradiance calls: argument checks, normalised directions, the choice
  * of method and (for brute force) of backend, and irradiance maps at lat-long pixel centres. */
-#include "lx_private.h"
+#include "radiance/radiance_private.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-/* AUTO runs brute force on OpenCL when it has this many pixel pairs and the device is a GPU. */
+/* Break-even of AUTO for brute force on OpenCL, in (output normal, input pixel) pairs (an estimate:
+ * no GPU has been measured; a CPU-type OpenCL device is never chosen by auto). */
 #define LX_IRR_AUTO_CL_PAIRS 2e9
 
 static lx_status check_shape(lx_ctx *ctx, const lx_envmap *map)
@@ -47,25 +48,18 @@ static lx_status run_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n, const dou
         return lx__irr_fast(ctx, map, n, dirs, o->threads, out);
     case LX_IRR_BRUTE: {
         if (map->layout == LX_ENV_CUBE) return lx__irr_cube(ctx, map, n, dirs, o->threads, 0, out); /* CPU only */
-        lx_backend b = o->backend == LX_BACKEND_AUTO ? lx_backend_from_env() : o->backend;
-        int automatic = b == LX_BACKEND_AUTO;
-        if (b == LX_BACKEND_AUTO) {
-            b = LX_BACKEND_CPU;
+        lx_backend b;
+        lx_status st = lx__backend_choose(ctx, "irradiance", o->backend, (double)n * map->width * map->height,
+                                          LX_IRR_AUTO_CL_PAIRS, LX_IRR_AUTO_CL_PAIRS, &b);
+        if (st) return st;
 #if LX_OPENCL
-            double pairs = (double)n * map->width * map->height;
-            if (pairs >= LX_IRR_AUTO_CL_PAIRS) {
-                lx_cl_device_info info;
-                if (lx_cl_info(ctx, &info) == LX_OK && info.is_gpu) b = LX_BACKEND_OPENCL;
-            }
-#endif
-        }
         if (b == LX_BACKEND_OPENCL) {
-            lx_status st = lx__irr_brute_cl(ctx, map, n, dirs, out);
+            st = lx__irr_brute_cl(ctx, map, n, dirs, out);
             if (!st) o->used = LX_BACKEND_OPENCL;
-            if (!st || !automatic || st == LX_ENOMEM || st == LX_EINVAL) return st;
-            /* auto: the whole result again on the CPU (never a mix of devices) */
-            lx__log(ctx, LX_LOG_INFO, "irradiance: OpenCL failed (%s); computing on the CPU", lx_ctx_errmsg(ctx));
+            /* a failure under auto: the whole result again on the CPU (never a mix of devices) */
+            if (!st || !lx__backend_fallback(ctx, "irradiance", o->backend, st)) return st;
         }
+#endif
         return lx__irr_brute_cpu(ctx, map, n, dirs, o->threads, out);
     }
     }

@@ -1,7 +1,7 @@
 /* irradiance_brute.c - brute-force irradiance: for every output normal n, the sum over every input
  * pixel p of L_p max(0, n . m_p), m_p the exact first moment of the pixel (lx_envmap_pixel_moment).
  * CPU twin (double, pthreads over outputs) and the OpenCL host of kernels/irradiance.cl. */
-#include "lx_private.h"
+#include "radiance/radiance_private.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -2,13 +2,12 @@
  * In row j, n . m_p = A cos(phi_i - phi_n) + B (A >= 0), so the pixels that count form one
  * circular run |phi_i - phi_n| < acos(-B / A) of columns; their sum comes from per-row prefix
  * sums of L, L gx and L gy (double). Rows are processed in blocks to bound memory. */
-#include "lx_private.h"
+#include "radiance/radiance_private.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#define LX_PI 3.14159265358979323846
 #define BLOCK_ROWS 64
 
 typedef struct fast_job {
@@ -89,7 +88,7 @@ static void accumulate(void *arg, long o0, long o1, int t)
             const double *P = J->pre + (size_t)r * 3 * C * stride;
             double a = g->row_s2[j], b = nz * g->row_sc[j] * dphi;
             long lo, hi;
-            if (al > LX_PI) {
+            if (al > LX__PI) {
                 lo = 0;
                 hi = W; /* exclusive */
             } else {

@@ -2,7 +2,7 @@
  * coefficients. The projection integrates each basis function exactly over each lat-long pixel
  * (separable closed forms in theta and phi), so the piecewise-constant map is projected exactly;
  * E(n) = sum_l w_l A_l L_lm Y_lm(n) with A = (pi, 2pi/3, pi/4) and an optional window w. */
-#include "lx_private.h"
+#include "radiance/radiance_private.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -13,7 +13,6 @@
 #define LX_SH9_AVX2 1
 #endif
 
-#define LX_PI 3.14159265358979323846
 
 /* Normalisation constants of the real SH basis (l <= 2). */
 #define SH_C0 0.28209479177387814 /* 1 / (2 sqrt(pi)) */
@@ -25,9 +24,9 @@
 /* Band factors w_l A_l for a window. */
 static void band_factors(lx_sh9_window window, double f[3])
 {
-    f[0] = LX_PI;
-    f[1] = 2 * LX_PI / 3;
-    f[2] = LX_PI / 4;
+    f[0] = LX__PI;
+    f[1] = 2 * LX__PI / 3;
+    f[2] = LX__PI / 4;
     if (window == LX_SH9_WINDOW_NONNEG) {
         f[1] *= 6.0 / 7.0;
         f[2] *= 32.0 / 35.0;
@@ -87,7 +86,7 @@ static void proj_rows(void *arg, long j0, long j1, int t)
     proj_job *J = arg;
     const lx_envmap *m = J->map;
     int W = m->width, H = m->height, C = m->channels;
-    double dt = LX_PI / H;
+    double dt = LX__PI / H;
     double acc[9][3];
     memset(acc, 0, sizeof acc);
     for (long j = j0; j < j1; j++) {
@@ -145,7 +144,7 @@ lx_status lx_sh9_project(lx_ctx *ctx, const lx_envmap *map, lx_sh9 *out)
     if (!map || !out || !map->data) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_sh9_project: NULL argument");
     if (map->layout == LX_ENV_CUBE) return lx__sh9_project_cube(ctx, map, out);
     int W = map->width;
-    double dp = 2 * LX_PI / W;
+    double dp = 2 * LX__PI / W;
     double *colf = malloc((size_t)W * 5 * sizeof *colf);
     int nt = lx__threads(0, map->height / 8 + 1);
     double(*acc)[9][3] = calloc((size_t)nt, sizeof *acc);
@@ -164,7 +163,7 @@ lx_status lx_sh9_project(lx_ctx *ctx, const lx_envmap *map, lx_sh9 *out)
     }
     double *colx = NULL;
 #ifdef LX_SH9_AVX2
-    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && !getenv("LX_NOVECTOR")) {
+    if (lx_simd_level() >= LX_SIMD_AVX2) {
         size_t n = (size_t)W * map->channels;
         colx = malloc(5 * n * sizeof *colx);
         for (size_t x = 0; colx && x < n; x++)
@@ -244,7 +243,7 @@ static void recon_rows(void *arg, long j0, long j1, int t)
     int W = o->width, C = o->channels;
     const double *f = J->f;
     for (long j = j0; j < j1; j++) {
-        double th = (j + 0.5) * LX_PI / o->height, z = cos(th), s = sin(th);
+        double th = (j + 0.5) * LX__PI / o->height, z = cos(th), s = sin(th);
         double P[3], Qc[3], Qs[3], U[3], V[3];
         for (int c = 0; c < C; c++) {
             const double L[9] = {J->sh->c[0][c], J->sh->c[1][c], J->sh->c[2][c], J->sh->c[3][c], J->sh->c[4][c],
@@ -281,7 +280,7 @@ lx_status lx__irr_sh9_map(lx_ctx *ctx, const lx_sh9 *sh, lx_sh9_window window, l
     if (!cols) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     band_factors(window, f);
     for (int i = 0; i < W; i++) {
-        double p = (i + 0.5) * 2 * LX_PI / W;
+        double p = (i + 0.5) * 2 * LX__PI / W;
         cols[4 * i] = cos(p);
         cols[4 * i + 1] = sin(p);
         cols[4 * i + 2] = cos(2 * p);
@@ -289,7 +288,7 @@ lx_status lx__irr_sh9_map(lx_ctx *ctx, const lx_sh9 *sh, lx_sh9_window window, l
     }
     double *colx = NULL;
 #ifdef LX_SH9_AVX2
-    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && !getenv("LX_NOVECTOR")) {
+    if (lx_simd_level() >= LX_SIMD_AVX2) {
         size_t n = (size_t)W * out->channels;
         colx = malloc(4 * n * sizeof *colx);
         for (size_t x = 0; colx && x < n; x++)

@@ -13,8 +13,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#define KM_2 683.002  /* lm/W, CIE 015:2018, as lx_spd_colorimetry */
-#define KM_10 683.599 /* lm/W, 10 deg observer */
 #define CHUNK_PIX 65536
 
 int lx__spectral_channel(const char *name, int *kind, double *lambda_nm)
@@ -286,7 +284,7 @@ lx_status lx_spectral_exr_read_xyz(lx_ctx *ctx, const char *path, lx_observer ob
     const lx_function f2[3] = {LX_FN_XBAR_2, LX_FN_YBAR_2, LX_FN_ZBAR_2},
                       f10[3] = {LX_FN_XBAR_10, LX_FN_YBAR_10, LX_FN_ZBAR_10};
     const lx_function *fns = observer == LX_OBSERVER_10 ? f10 : f2;
-    const double km = observer == LX_OBSERVER_10 ? KM_10 : KM_2;
+    const double km = observer == LX_OBSERVER_10 ? LX__KM_10 : LX__KM_2;
     /* non-uniform wavelengths: the linear1nm rule (interpolate linearly to whole nm over 360-830 nm,
      * where the colour-matching functions are defined, then sum at 1 nm). Interpolation and the sum
      * are both linear in the samples, so the rule is one nl x 3 matrix: resample and integrate the nl
@@ -363,39 +361,5 @@ done:
     if (inited) exr_encoding_destroy(e, &enc);
     st = lx__exr_write_end(ctx, path, &s, &e, tmp, st);
     free(f);
-    return st;
-}
-
-lx_status lx_xyz_png_write(lx_ctx *ctx, const char *path, const lx_xyz_image *img)
-{
-    if (!path || !img || !img->xyz) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_xyz_png_write: NULL argument");
-    /* XYZ -> linear sRGB (IEC 61966-2-1); lx__canvas_tonemap does exposure, tone curve, encoding */
-    static const double M[3][3] = {{3.2406, -1.5372, -0.4986}, {-0.9689, 1.8758, 0.0415}, {0.0557, -0.2040, 1.0570}};
-    size_t npix = (size_t)img->width * img->height;
-    float *rgb = malloc(sizeof(float) * 3 * npix);
-    if (!rgb) return lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
-    for (size_t p = 0; p < npix; p++)
-        for (int i = 0; i < 3; i++) {
-            const double *q = img->xyz + 3 * p;
-            rgb[3 * p + i] = (float)(M[i][0] * q[0] + M[i][1] * q[1] + M[i][2] * q[2]);
-        }
-    int w = img->width, h = img->height;
-    if (w < 256) {
-        int s = (256 + w - 1) / w;
-        w *= s, h *= s;
-    }
-    if (w > 4096) h = (int)((long)h * 4096 / w), w = 4096;
-    if (h > 4096) w = (int)((long)w * 4096 / h), h = 4096;
-    if (w < 1) w = 1;
-    if (h < 1) h = 1;
-    static const unsigned char black[3] = {0, 0, 0};
-    lx__canvas c;
-    lx_status st = lx__canvas_init(ctx, &c, w, h, black);
-    if (!st) {
-        lx__canvas_tonemap(&c, 0, 0, w, h, rgb, 3, img->width, img->height);
-        st = lx__canvas_write_png(ctx, &c, path);
-    }
-    lx__canvas_free(&c);
-    free(rgb);
     return st;
 }

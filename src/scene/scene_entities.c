@@ -227,14 +227,14 @@ lx_status lx__scene_lum_finish(lx_ctx *ctx, lx_scene *sc, scene__lum_raw *r)
     switch (l.kind) {
     case LX_SLUM_POINT:
         NEED_ONE("flux", r->has_flux, "intensity", r->has_intensity);
-        l.intensity_cd = r->has_flux ? r->flux / (4 * M_PI) : r->intensity;
-        l.flux_lm = 4 * M_PI * l.intensity_cd;
+        l.intensity_cd = r->has_flux ? r->flux / (4 * LX__PI) : r->intensity;
+        l.flux_lm = 4 * LX__PI * l.intensity_cd;
         break;
     case LX_SLUM_SPOT:
         NEED_ONE("flux", r->has_flux, "intensity", r->has_intensity);
         NEED_ONE("exponent", r->has_exponent, "beam", r->has_beam);
         if (r->has_beam) {
-            if (!(r->beam > 0 && r->beam < M_PI)) {
+            if (!(r->beam > 0 && r->beam < LX__PI)) {
                 st = lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': beam must be between 0 and 180 deg", r->name);
                 goto out;
             }
@@ -249,8 +249,8 @@ lx_status lx__scene_lum_finish(lx_ctx *ctx, lx_scene *sc, scene__lum_raw *r)
             }
             l.exponent = r->exponent;
         }
-        l.intensity_cd = r->has_flux ? (l.exponent + 1) * r->flux / (2 * M_PI) : r->intensity;
-        l.flux_lm = 2 * M_PI * l.intensity_cd / (l.exponent + 1);
+        l.intensity_cd = r->has_flux ? (l.exponent + 1) * r->flux / (2 * LX__PI) : r->intensity;
+        l.flux_lm = 2 * LX__PI * l.intensity_cd / (l.exponent + 1);
         break;
     case LX_SLUM_DISK:
     case LX_SLUM_RECT: {
@@ -263,7 +263,7 @@ lx_status lx__scene_lum_finish(lx_ctx *ctx, lx_scene *sc, scene__lum_raw *r)
             }
             POSITIVE(r->radius, "radius");
             l.radius_m = r->radius;
-            area = M_PI * r->radius * r->radius;
+            area = LX__PI * r->radius * r->radius;
         } else {
             if (!r->has_width || !r->has_length) {
                 st = lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': missing 'width' or 'length'", r->name);
@@ -276,8 +276,8 @@ lx_status lx__scene_lum_finish(lx_ctx *ctx, lx_scene *sc, scene__lum_raw *r)
             area = r->width * r->length;
         }
         /* a Lambertian emitter: exitance M = pi L, flux F = pi L A */
-        l.luminance_cd_m2 = r->has_flux ? r->flux / (M_PI * area) : r->luminance;
-        l.flux_lm = M_PI * l.luminance_cd_m2 * area;
+        l.luminance_cd_m2 = r->has_flux ? r->flux / (LX__PI * area) : r->luminance;
+        l.flux_lm = LX__PI * l.luminance_cd_m2 * area;
         l.intensity_cd = l.luminance_cd_m2 * area; /* on the axis */
         break;
     }

@@ -62,7 +62,7 @@ static double intensity(lx_ctx *ctx, const lum_eval *le, const double u[3], doub
         return c > 0 ? l->luminance_cd_m2 * le->area * c * frac : 0;
     }
     case LX_SLUM_FILE:
-        if (!le->gonio) return l->flux_lm / (4 * M_PI) * frac;
+        if (!le->gonio) return l->flux_lm / (4 * LX__PI) * frac;
         ctx->counters.goniometric_lookups++;
         return l->scale * frac *
                lx_luminaire_intensity_dir(l->lum, LX_INTERP_BILINEAR, dot(u, le->ex), dot(u, le->ey), dot(u, le->ez));
@@ -226,7 +226,7 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
         lum_eval *e = &le[l];
         e->l = &sc->lum[l];
         lx__scene_frame(e->l, e->ex, e->ey, e->ez);
-        e->area = e->l->radius_m > 0 ? M_PI * e->l->radius_m * e->l->radius_m : e->l->width_m * e->l->length_m;
+        e->area = e->l->radius_m > 0 ? LX__PI * e->l->radius_m * e->l->radius_m : e->l->width_m * e->l->length_m;
         e->spot_falloff = plan->on[LX_EFFECT_SPOT_FALLOFF];
         e->gonio = plan->on[LX_EFFECT_GONIOMETRIC];
         e->cosine = plan->on[LX_EFFECT_COSINE];
@@ -267,7 +267,7 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
             double E = 0;
             for (size_t k = 0; k < nc; k++) E += c[k];
             res->E_lx[g] = E;
-            res->L_cd_m2[g] = sc->want_luminance && rc->reflectance >= 0 ? rc->reflectance * E / M_PI : NAN;
+            res->L_cd_m2[g] = sc->want_luminance && rc->reflectance >= 0 ? rc->reflectance * E / LX__PI : NAN;
             res->cct_K[g] = res->duv[g] = res->melanopic_edi_lx[g] = NAN;
             if (spectral && E > 0) {
                 /* linearity: X, Y, Z and the melanopic irradiance of the summed spectral

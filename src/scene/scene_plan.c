@@ -239,8 +239,8 @@ lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, int backend, lx_sc
         if (sc->sky == LX_SKY_OVERCAST)
             for (size_t r = 0; r < sc->n_rec; r++)
                 if (sc->rec[r].normal[2] != 1) {
-                    double nz = sc->rec[r].normal[2], cut = fabs(M_PI / 2 - acos(nz > 1 ? 1 : nz < -1 ? -1 : nz));
-                    p->estimate.environment_samples += (unsigned long long)sc->sky_samples * ((cut > 0) + (cut < M_PI / 2));
+                    double nz = sc->rec[r].normal[2], cut = fabs(LX__PI / 2 - acos(nz > 1 ? 1 : nz < -1 ? -1 : nz));
+                    p->estimate.environment_samples += (unsigned long long)sc->sky_samples * ((cut > 0) + (cut < LX__PI / 2));
                 }
     }
     /* the point-source work (far pairs) */

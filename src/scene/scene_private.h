@@ -3,11 +3,9 @@
 #ifndef LX_SCENE_PRIVATE_H
 #define LX_SCENE_PRIVATE_H
 
-#include "lx_private.h"
+#include "lighting/lighting_private.h"
+#include "radiance/radiance_private.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 /* Raw keys of a [luminaire] section, checked when the section ends. */
 typedef struct scene__lum_raw {

@@ -1,8 +1,7 @@
 /* scene_read.c - the scene file reader: INI-like sections, `key = value` with units on every
  * number, `#` comments, includes relative to the including file (cycles detected). Every error
  * names the scene file and line; unknown sections and keys are errors. */
-#include "lx_private.h"
-#include "scene_private.h"
+#include "scene/scene_private.h"
 
 #include <ctype.h>
 #include <errno.h>

@@ -12,7 +12,7 @@
 static void gauss_legendre(int n, double *x, double *w)
 {
     for (int i = 0; i < (n + 1) / 2; i++) {
-        double z = cos(M_PI * (i + 0.75) / (n + 0.5)), dp = 1;
+        double z = cos(LX__PI * (i + 0.75) / (n + 0.5)), dp = 1;
         for (int it = 0; it < 100; it++) {
             double p0 = 1, p1 = z;
             for (int k = 2; k <= n; k++) {
@@ -36,7 +36,7 @@ static void gauss_legendre(int n, double *x, double *w)
  * with a = cos(beta) cos(theta), b = sin(beta) sin(theta) >= 0, the integrand is a + b cos(phi). */
 static double azimuth_integral(double a, double b)
 {
-    if (a >= b) return 2 * M_PI * a;
+    if (a >= b) return 2 * LX__PI * a;
     if (a <= -b) return 0;
     double p0 = acos(-a / b);
     return 2 * (a * p0 + b * sin(p0));
@@ -50,7 +50,7 @@ static double overcast_tilted(lx_ctx *ctx, double Lz, double beta, int nodes)
     if (!x) return NAN;
     double *w = x + nodes;
     gauss_legendre(nodes, x, w);
-    double cut = fabs(M_PI / 2 - beta), edges[3] = {0, cut, M_PI / 2}, sum = 0;
+    double cut = fabs(LX__PI / 2 - beta), edges[3] = {0, cut, LX__PI / 2}, sum = 0;
     for (int piece = 0; piece < 2; piece++) {
         double t0 = edges[piece], t1 = edges[piece + 1], h = (t1 - t0) / 2;
         if (!(h > 0)) continue;
@@ -129,13 +129,13 @@ lx_status lx__scene_sky_eval(lx_ctx *ctx, const lx_scene *sc, const void *map, c
     case LX_SKY_UNIFORM:
         /* isotropic sky: the view factor of the sky dome from a plane tilted by beta is
          * (1 + cos beta)/2, so E = pi L (1 + cos beta)/2 (horizontal: pi L, vertical: pi L / 2) */
-        E_h = M_PI * sc->sky_luminance_cd_m2;
+        E_h = LX__PI * sc->sky_luminance_cd_m2;
         E_sky = E_h * (1 + cb) / 2;
         break;
     case LX_SKY_OVERCAST:
         /* CIE standard overcast sky (Moon & Spencer 1942, CIE S 011 type 1): L = Lz (1 + 2 cos t)/3,
          * horizontal E = 2 pi Lz/3 (1/2 + 2/3) = 7 pi Lz / 9 */
-        E_h = 7 * M_PI * sc->sky_luminance_cd_m2 / 9;
+        E_h = 7 * LX__PI * sc->sky_luminance_cd_m2 / 9;
         if (cb == 1) E_sky = E_h;
         else E_sky = overcast_tilted(ctx, sc->sky_luminance_cd_m2, beta, sc->sky_samples);
         if (!isfinite(E_sky)) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
@@ -150,7 +150,7 @@ lx_status lx__scene_sky_eval(lx_ctx *ctx, const lx_scene *sc, const void *map, c
     }
     /* the ground: uniform Lambertian luminance rho E_h / pi below the horizon, seen with the
      * view factor (1 - cos beta)/2 */
-    double Lg = sc->ground_reflectance * E_h / M_PI;
-    *E_lx = E_sky + M_PI * Lg * (1 - cb) / 2;
+    double Lg = sc->ground_reflectance * E_h / LX__PI;
+    *E_lx = E_sky + LX__PI * Lg * (1 - cb) / 2;
     return LX_OK;
 }

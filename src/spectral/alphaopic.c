@@ -1,11 +1,10 @@
 /* alphaopic.c - CIE S 026:2018 alpha-opic irradiances, equivalent daylight (D65) illuminances
  * (EDI) and daylight efficacy ratios (DER), for one spectrum and for batches. */
-#include "lx_private.h"
+#include "spectral/spectral_private.h"
 
 #include <math.h>
 #include <stdlib.h>
 
-#define LX_KM_2 683.002 /* lm/W, CIE 015:2018 */
 
 /* K_alpha,v^D65 in W/lm, CIE S 026:2018 Table 2 (alpha-opic ELR of D65); also in the provenance
  * header of src/data/cie_s026_alphaopic_1nm.csv. */
@@ -32,7 +31,7 @@ lx_status lx_alphaopic_compute(lx_ctx *ctx, const lx_spd *spd, lx_method method,
     double y;
     if ((st = lx_function_get(ctx, LX_FN_YBAR_2, &w)) != LX_OK) return st;
     if ((st = lx_spd_integrate(ctx, spd, &w, method, &y)) != LX_OK) return st;
-    r.illuminance = LX_KM_2 * y;
+    r.illuminance = LX__KM_2 * y;
     for (int k = 0; k < 5; k++) {
         r.edi[k] = r.irradiance[k] / k_d65[k];
         r.elr[k] = r.illuminance != 0 ? r.irradiance[k] / r.illuminance : NAN;
@@ -49,6 +48,6 @@ lx_status lx_alphaopic_batch(lx_ctx *ctx, const lx_batch *batch, lx_batch_opts *
     if (!batch || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "alpha-opic batch: NULL argument");
     lx_status st = lx_batch_integrate(ctx, batch, fns, 6, opts, out);
     if (st != LX_OK) return st;
-    for (size_t i = 0; i < batch->n_spectra; i++) out[i * 6 + 5] *= LX_KM_2;
+    for (size_t i = 0; i < batch->n_spectra; i++) out[i * 6 + 5] *= LX__KM_2;
     return LX_OK;
 }

@@ -1,15 +1,13 @@
 /* batch.c - batch spectral integration: N spectra on one uniform grid against K weighting
  * functions (cie15 rule), on the CPU (AVX-512 or AVX2/FMA, pthreads, double accumulation) or on
  * OpenCL (kernels/spd_batch.cl, chunked by CL_DEVICE_MAX_MEM_ALLOC_SIZE); backend choice; resampling. */
-#include "lx_private.h"
+#include "spectral/spectral_private.h"
 
 #include <math.h>
-#include <pthread.h>
 #include <stdatomic.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #if defined(__GNUC__) && defined(__x86_64__)
 #include <immintrin.h>
@@ -25,26 +23,6 @@
  * keeps the CPU path for it. */
 #define LX_AUTO_COLD_SAMPLES 2000000000.0 /* ~4e6 spectra of 471 samples */
 #define LX_AUTO_WARM_SAMPLES 50000000.0   /* ~1e5 spectra of 471 samples */
-
-/* ---- backend names ---- */
-
-lx_status lx_backend_parse(lx_ctx *ctx, const char *text, lx_backend *out)
-{
-    if (!text || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "backend: NULL argument");
-    if (!strcmp(text, "auto")) *out = LX_BACKEND_AUTO;
-    else if (!strcmp(text, "cpu")) *out = LX_BACKEND_CPU;
-    else if (!strcmp(text, "opencl")) *out = LX_BACKEND_OPENCL;
-    else return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown backend '%s' (expected auto, cpu or opencl)", text);
-    return LX_OK;
-}
-
-lx_backend lx_backend_from_env(void)
-{
-    const char *s = getenv("LX_BACKEND");
-    lx_backend b = LX_BACKEND_AUTO;
-    if (s && *s) lx_backend_parse(NULL, s, &b);
-    return b;
-}
 
 /* ---- weights ---- */
 
@@ -251,27 +229,11 @@ static void avx512_rows(const cpu_job *J, size_t i0, size_t i1)
     for (; i < i1; i++) f32 ? avx512_f32_x1(J, i) : avx512_f64_x1(J, i);
 }
 
-/* 2: AVX-512 (F, VL, DQ) with FMA; 1: AVX2 with FMA; 0: neither. LX_NOVECTOR=1 forces the scalar
- * path, LX_NOVECTOR=avx512 the AVX2 one (for tests and measurements). */
-static int cpu_vector_level(void)
-{
-    static int cached = -1; /* the answer never changes; a race writes the same value */
-    if (cached < 0) {
-        __builtin_cpu_init();
-        int avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-        int avx512 = avx2 && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
-                     __builtin_cpu_supports("avx512dq");
-        cached = avx512 ? 2 : avx2 ? 1 : 0;
-    }
-    const char *nv = getenv("LX_NOVECTOR");
-    if (nv && !strcmp(nv, "avx512")) return cached > 1 ? 1 : cached;
-    if (nv && *nv && strcmp(nv, "0")) return 0;
-    return cached;
-}
 #endif
 
-static void *cpu_thread(void *arg)
+static void cpu_thread(void *arg, int t)
 {
+    (void)t;
     cpu_job J = *(const cpu_job *)arg;
     for (;;) {
         size_t i0 = atomic_fetch_add_explicit(J.next, LX_CPU_GRAIN, memory_order_relaxed);
@@ -291,13 +253,6 @@ static void *cpu_thread(void *arg)
         J.i0 = i0, J.i1 = i1;
         scalar_rows(&J);
     }
-    return NULL;
-}
-
-static int online_cores(void)
-{
-    long n = sysconf(_SC_NPROCESSORS_ONLN);
-    return n < 1 ? 1 : n > 64 ? 64 : (int)n;
 }
 
 /* The weights of one (functions, grid) in the three layouts the CPU loops read. A context keeps
@@ -314,8 +269,9 @@ struct lx__wcache {
     double *w8; /* AVX-512 layout: [group][block][4 functions][8 lanes], 64-byte aligned */
 };
 
-void lx__wcache_free(struct lx__wcache *c)
+static void wcache_free(void *p)
 {
+    struct lx__wcache *c = p;
     if (!c) return;
     free(c->w);
     free(c->w4);
@@ -327,7 +283,7 @@ static lx_status batch_weights_cached(lx_ctx *ctx, const lx_batch *b, const lx_f
                                       struct lx__wcache **out)
 {
     size_t n = b->n_lambda, nb = (n + 3) / 4, nb8 = (n + 7) / 8, k4 = (k + 3) / 4 * 4;
-    struct lx__wcache *c = ctx ? ctx->wcache : NULL;
+    struct lx__wcache *c = lx__slot_get(ctx, LX__SLOT_WEIGHTS);
     if (c && c->k == k && c->n == n && c->start_nm == b->start_nm && c->step_nm == b->step_nm &&
         !memcmp(c->fns, fns, k * sizeof *fns)) {
         *out = c;
@@ -342,7 +298,7 @@ static lx_status batch_weights_cached(lx_ctx *ctx, const lx_batch *b, const lx_f
     lx_status st = !c || !c->w || !c->w4 || !c->w8 ? lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for the batch weights")
                                                  : lx__batch_weights(ctx, fns, k, b->start_nm, b->step_nm, n, c->w);
     if (st) {
-        lx__wcache_free(c);
+        wcache_free(c);
         return st;
     }
     memset(c->w8, 0, k4 / 4 * nb8 * 32 * sizeof *c->w8);
@@ -353,10 +309,7 @@ static lx_status batch_weights_cached(lx_ctx *ctx, const lx_batch *b, const lx_f
         }
     c->k = k, c->n = n, c->start_nm = b->start_nm, c->step_nm = b->step_nm;
     if (k <= LX_FN_COUNT_MAX) memcpy(c->fns, fns, k * sizeof *fns);
-    if (ctx && k <= LX_FN_COUNT_MAX) {
-        lx__wcache_free(ctx->wcache);
-        ctx->wcache = c;
-    }
+    if (ctx && k <= LX_FN_COUNT_MAX) lx__slot_set(ctx, LX__SLOT_WEIGHTS, c, wcache_free);
     *out = c;
     return LX_OK;
 }
@@ -371,25 +324,17 @@ static lx_status batch_cpu(lx_ctx *ctx, const lx_batch *b, const lx_function *fn
     const double *w = c->w, *w4 = c->w4, *w8 = c->w8;
     int vector = 0;
 #if LX_HAVE_AVX2_PATH
-    vector = cpu_vector_level();
+    vector = (int)lx_simd_level();
 #endif
-    int T = threads > 0 ? threads : online_cores();
     size_t per_thread_min = 512; /* below this a thread costs more than it saves */
-    if ((size_t)T > b->n_spectra / per_thread_min) T = (int)(b->n_spectra / per_thread_min);
-    if (T < 1) T = 1;
-    if (T > 64) T = 64;
-    pthread_t tid[64];
-    int started[64] = {0};
+    int T = lx__threads(threads, (long)(b->n_spectra / per_thread_min));
     _Atomic size_t next = 0;
     cpu_job J = {.b = b, .stride = b->row_stride ? b->row_stride : n, .k = k, .k4 = k4, .nb = nb, .nb8 = nb8,
                  .w = w, .w4 = w4, .w8 = w8, .out = out, .next = &next, .n_total = b->n_spectra, .vector = vector};
     /* every thread takes spectra from one counter until none are left: a thread that another
      * process keeps off its core holds up at most LX_CPU_GRAIN spectra */
-    for (int t = 1; t < T; t++) started[t] = pthread_create(&tid[t], NULL, cpu_thread, &J) == 0;
-    cpu_thread(&J);
-    for (int t = 1; t < T; t++)
-        if (started[t]) pthread_join(tid[t], NULL);
-    if (!ctx || c != ctx->wcache) lx__wcache_free(c); /* not kept (no context, or too many functions) */
+    lx__parallel_run(T, cpu_thread, &J);
+    if (c != lx__slot_get(ctx, LX__SLOT_WEIGHTS)) wcache_free(c); /* not kept (no context, or too many functions) */
     return LX_OK;
 }
 
@@ -509,32 +454,6 @@ done:
 
 /* ---- backend choice ---- */
 
-/* The backend to try for `samples` of work: CPU or OPENCL (AUTO resolved). */
-static lx_backend choose_backend(lx_ctx *ctx, lx_backend asked, double samples)
-{
-    if (asked == LX_BACKEND_AUTO) asked = lx_backend_from_env();
-    if (asked != LX_BACKEND_AUTO) return asked;
-#if LX_OPENCL
-    int warm = lx_cl_ready(ctx);
-    double limit = warm ? LX_AUTO_WARM_SAMPLES : LX_AUTO_COLD_SAMPLES;
-    const char *be = getenv("LX_AUTO_BREAK_EVEN"); /* samples; for measuring and tests */
-    if (be && *be) limit = atof(be);
-    else if (warm && ((lx__cl *)ctx->cl)->info.is_cpu) {
-        lx__log(ctx, LX_LOG_DEBUG, "backend auto: the OpenCL device is a CPU (same cores); using the CPU path");
-        return LX_BACKEND_CPU;
-    }
-    if (samples < limit) {
-        lx__log(ctx, LX_LOG_DEBUG, "backend auto: %.3g samples below the OpenCL break-even %.3g; using the CPU path",
-                samples, limit);
-        return LX_BACKEND_CPU;
-    }
-    return LX_BACKEND_OPENCL;
-#else
-    (void)ctx, (void)samples;
-    return LX_BACKEND_CPU;
-#endif
-}
-
 static lx_status check_batch(lx_ctx *ctx, const lx_batch *b, const lx_function *fns, size_t k, const double *out)
 {
     if (!b || !out || (k && !fns)) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch: NULL argument");
@@ -562,21 +481,20 @@ lx_status lx_batch_integrate(lx_ctx *ctx, const lx_batch *b, const lx_function *
         opts->used = LX_BACKEND_CPU;
         return LX_OK;
     }
-    lx_backend asked = opts->backend == LX_BACKEND_AUTO ? lx_backend_from_env() : opts->backend;
-    lx_backend be = choose_backend(ctx, asked, (double)b->n_spectra * (double)b->n_lambda);
-    if (be == LX_BACKEND_OPENCL) {
+    lx_backend be;
+    st = lx__backend_choose(ctx, "batch", opts->backend, (double)b->n_spectra * (double)b->n_lambda,
+                            LX_AUTO_COLD_SAMPLES, LX_AUTO_WARM_SAMPLES, &be);
+    if (st) return st;
 #if LX_OPENCL
+    if (be == LX_BACKEND_OPENCL) {
         st = batch_opencl(ctx, b, fns, k, opts->chunk_spectra, out);
         if (st == LX_OK) {
             opts->used = LX_BACKEND_OPENCL;
             return LX_OK;
         }
-        if (asked == LX_BACKEND_OPENCL || st == LX_ENOMEM || st == LX_EINVAL) return st;
-        lx__log(ctx, LX_LOG_INFO, "OpenCL unavailable (%s); falling back to the CPU path", lx_ctx_errmsg(ctx));
-#else
-        if (asked == LX_BACKEND_OPENCL) return lx__error(ctx, LX_EUNSUPPORTED, NULL, 0, "this build has no OpenCL (built with LX_OPENCL=0)");
-#endif
+        if (!lx__backend_fallback(ctx, "batch", opts->backend, st)) return st;
     }
+#endif
     st = batch_cpu(ctx, b, fns, k, opts->threads, out);
     if (!st) opts->used = LX_BACKEND_CPU;
     return st;
@@ -697,21 +615,20 @@ lx_status lx_batch_resample(lx_ctx *ctx, size_t n_spectra, const double *lambda_
         opts->used = LX_BACKEND_CPU;
         return LX_OK;
     }
-    lx_backend asked = opts->backend == LX_BACKEND_AUTO ? lx_backend_from_env() : opts->backend;
-    lx_backend be = choose_backend(ctx, asked, (double)n_spectra * (double)dst->n_lambda);
-    if (be == LX_BACKEND_OPENCL) {
+    lx_backend be;
+    lx_status st = lx__backend_choose(ctx, "resample", opts->backend, (double)n_spectra * (double)dst->n_lambda,
+                                      LX_AUTO_COLD_SAMPLES, LX_AUTO_WARM_SAMPLES, &be);
+    if (st) return st;
 #if LX_OPENCL
-        lx_status st = resample_opencl(ctx, n_spectra, lambda_nm, value, offset, n_in, dst);
+    if (be == LX_BACKEND_OPENCL) {
+        st = resample_opencl(ctx, n_spectra, lambda_nm, value, offset, n_in, dst);
         if (st == LX_OK) {
             opts->used = LX_BACKEND_OPENCL;
             return LX_OK;
         }
-        if (asked == LX_BACKEND_OPENCL || st == LX_ENOMEM) return st;
-        lx__log(ctx, LX_LOG_INFO, "OpenCL unavailable (%s); falling back to the CPU path", lx_ctx_errmsg(ctx));
-#else
-        if (asked == LX_BACKEND_OPENCL) return lx__error(ctx, LX_EUNSUPPORTED, NULL, 0, "this build has no OpenCL (built with LX_OPENCL=0)");
-#endif
+        if (!lx__backend_fallback(ctx, "resample", opts->backend, st)) return st;
     }
+#endif
     resample_cpu(n_spectra, lambda_nm, value, offset, n_in, dst);
     opts->used = LX_BACKEND_CPU;
     return LX_OK;

@@ -1,18 +1,15 @@
 /* batch_colorimetry.c - every colorimetric quantity for a batch of spectra on one grid: the
  * integrals at once (lx_batch_integrate), then CCT/Duv and the rest per spectrum on threads. */
-#include "lx_private.h"
+#include "spectral/spectral_private.h"
 
-#include <pthread.h>
 #include <stdlib.h>
-#include <unistd.h>
 
 typedef struct job {
     const lx_batch *b;
     lx_observer obs;
     const double *ints; /* n x 4: xbar, ybar, zbar, V' integrals */
     lx_colorimetry *out;
-    size_t i0, i1;
-    lx_status st;
+    lx_status st[64];   /* per thread */
 } job;
 
 static double radiant_of(const lx_batch *b, size_t i)
@@ -30,18 +27,18 @@ static double radiant_of(const lx_batch *b, size_t i)
     return 0.5 * b->step_nm * sum; /* the trapezoid rule, as lx_spd_integrate_radiant */
 }
 
-static void *work(void *arg)
+/* Spectra [i0, i1) on thread t, with a context of its own (a context is one thread's). */
+static void work(void *arg, long i0, long i1, int t)
 {
     job *j = arg;
     lx_ctx *ctx = NULL;
-    if ((j->st = lx_ctx_create(&ctx)) != LX_OK) return NULL;
-    for (size_t i = j->i0; i < j->i1 && j->st == LX_OK; i++) {
+    if ((j->st[t] = lx_ctx_create(&ctx)) != LX_OK) return;
+    for (long i = i0; i < i1 && j->st[t] == LX_OK; i++) {
         j->out[i].method = LX_METHOD_CIE15;
-        j->st = lx_colorimetry_from_integrals(ctx, j->obs, j->ints + 4 * i, j->ints[4 * i + 3], radiant_of(j->b, i),
+        j->st[t] = lx_colorimetry_from_integrals(ctx, j->obs, j->ints + 4 * i, j->ints[4 * i + 3], radiant_of(j->b, i),
                                               &j->out[i]);
     }
     lx_ctx_destroy(ctx);
-    return NULL;
 }
 
 lx_status lx_batch_colorimetry(lx_ctx *ctx, const lx_batch *b, lx_observer obs, lx_batch_opts *opts, lx_colorimetry *out)
@@ -60,23 +57,12 @@ lx_status lx_batch_colorimetry(lx_ctx *ctx, const lx_batch *b, lx_observer obs, 
         free(ints);
         return st;
     }
-    long ncpu = sysconf(_SC_NPROCESSORS_ONLN);
-    size_t nt = opts && opts->threads > 0 ? (size_t)opts->threads : ncpu > 0 ? (size_t)ncpu : 1;
-    if (nt > 64) nt = 64;
-    if (b->n_spectra < 256) nt = 1; /* a thread costs more than a few CCT solves */
-    job jobs[64];
-    pthread_t tid[64];
-    int started[64] = {0};
-    for (size_t t = 0; t < nt; t++) {
-        jobs[t] = (job){b, obs, ints, out, b->n_spectra * t / nt, b->n_spectra * (t + 1) / nt, LX_OK};
-        if (t + 1 < nt && pthread_create(&tid[t], NULL, work, &jobs[t]) == 0) started[t] = 1;
-    }
-    for (size_t t = 0; t < nt; t++)
-        if (!started[t]) work(&jobs[t]); /* the last range, and any whose thread did not start */
-    for (size_t t = 0; t < nt; t++)
-        if (started[t]) pthread_join(tid[t], NULL);
+    /* below 256 spectra a thread costs more than the CCT solves it takes over */
+    int nt = b->n_spectra < 256 ? 1 : lx__threads(opts ? opts->threads : 0, (long)b->n_spectra);
+    job J = {.b = b, .obs = obs, .ints = ints, .out = out};
+    lx__parallel_for(ctx, nt, (long)b->n_spectra, work, &J);
     free(ints);
-    for (size_t t = 0; t < nt; t++)
-        if (jobs[t].st != LX_OK) return lx__error(ctx, jobs[t].st, NULL, 0, "batch colorimetry failed: %s", lx_strerror(jobs[t].st));
+    for (int t = 0; t < nt; t++)
+        if (J.st[t] != LX_OK) return lx__error(ctx, J.st[t], NULL, 0, "batch colorimetry failed: %s", lx_strerror(J.st[t]));
     return LX_OK;
 }

@@ -3,12 +3,11 @@
  * chunk by chunk (lx_batch_table_stream, lx_batch_table_integrate_file); lines of short decimals by
  * the AVX-512 line parser of csv_vector.c, others by a SWAR number parser and lx__parse_double
  * (all exact, as strtod). */
-#include "lx_private.h"
+#include "spectral/spectral_private.h"
 
 #include <errno.h>
 #include <float.h>
 #include <math.h>
-#include <pthread.h>
 #include <stdatomic.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -194,8 +193,7 @@ static void *parse_part(void *arg)
     long line = p->line0;
     char sep = p->sep;
     int f32 = t->batch.dtype == LX_F32;
-    const char *nf = getenv("LX_NOVECTOR"); /* also turns the vector CSV line parser off */
-    int fast = lx__csv_have_fast_line() && !(nf && *nf && strcmp(nf, "0"));
+    int fast = lx__csv_have_fast_line();
     size_t names_cap = (size_t)(p->e - p->s) / 8 + p->rows_cap + 16, r = 0;
     if (p->names_cap < names_cap) { /* buffers are kept from one chunk to the next when streaming */
         free(p->names);
@@ -300,6 +298,10 @@ typedef struct csv_header {
     double start, step;
 } csv_header;
 
+/* count_part / parse_part on part t of an array, as thread t of lx__parallel_run */
+static void count_each(void *arg, int t) { count_part((part *)arg + t); }
+static void parse_each(void *arg, int t) { parse_part((part *)arg + t); }
+
 static lx_status read_header(lx_ctx *ctx, const char *file, const char *text, size_t len, csv_header *H)
 {
     const char *end = text + len, *s = text;
@@ -392,12 +394,8 @@ lx_status lx_batch_table_read_mem(lx_ctx *ctx, const char *file, const char *tex
     double start = H.start, step = H.step;
 
     /* split the rest into parts at line boundaries; count rows in parallel */
-    int T = threads > 0 ? threads : (int)sysconf(_SC_NPROCESSORS_ONLN);
-    if (T < 1) T = 1;
-    if (T > 64) T = 64;
-    if ((size_t)(end - s) < ((size_t)1 << 20)) T = 1;
+    int T = (size_t)(end - s) < ((size_t)1 << 20) ? 1 : lx__threads(threads, 0);
     part parts[64];
-    pthread_t tid[64];
     memset(parts, 0, sizeof parts);
     const char *ps = s;
     for (int i = 0; i < T; i++) {
@@ -411,14 +409,7 @@ lx_status lx_batch_table_read_mem(lx_ctx *ctx, const char *file, const char *tex
         parts[i].e = pe;
         ps = pe;
     }
-    for (int i = 1; i < T; i++)
-        if (pthread_create(&tid[i], NULL, count_part, &parts[i])) {
-            count_part(&parts[i]);
-            tid[i] = 0;
-        }
-    count_part(&parts[0]);
-    for (int i = 1; i < T; i++)
-        if (tid[i]) pthread_join(tid[i], NULL);
+    for (int i = lx__parallel_run(T, count_each, parts); i < T; i++) count_part(&parts[i]);
     size_t rows = 0;
     long ln = line + 1;
     for (int i = 0; i < T; i++) {
@@ -444,14 +435,7 @@ lx_status lx_batch_table_read_mem(lx_ctx *ctx, const char *file, const char *tex
         parts[i].rows_cap = parts[i].rows;
         parts[i].values = (char *)vals + parts[i].row0 * n * es;
     }
-    for (int i = 1; i < T; i++)
-        if (pthread_create(&tid[i], NULL, parse_part, &parts[i])) {
-            parse_part(&parts[i]);
-            tid[i] = 0;
-        }
-    parse_part(&parts[0]);
-    for (int i = 1; i < T; i++)
-        if (tid[i]) pthread_join(tid[i], NULL);
+    for (int i = lx__parallel_run(T, parse_each, parts); i < T; i++) parse_part(&parts[i]);
     lx_status st = LX_OK;
     size_t names_len = 0;
     for (int i = 0; i < T && !st; i++) {
@@ -569,11 +553,12 @@ typedef struct part_set {
     long first_line;  /* line number of the first line of p[0] */
 } part_set;
 
-static void *parse_thread(void *arg)
+/* Parts of a set, taken one at a time from its counter by each thread of a team. */
+static void parse_set(void *arg, int t)
 {
+    (void)t;
     part_set *S = arg;
     for (int i; (i = atomic_fetch_add_explicit(&S->next, 1, memory_order_relaxed)) < S->count;) parse_part(&S->p[i]);
-    return NULL;
 }
 
 lx_status lx_batch_table_stream(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads, lx_batch_chunk_fn fn,
@@ -589,9 +574,7 @@ lx_status lx_batch_table_stream(lx_ctx *ctx, const char *path, lx_dtype dtype, i
         text_close(&tf);
         return st;
     }
-    int T = threads > 0 ? threads : (int)sysconf(_SC_NPROCESSORS_ONLN);
-    if (T < 1) T = 1;
-    if (T > 64) T = 64;
+    int T = lx__threads(threads, 0);
     size_t n = H.n, es = dtype == LX_F32 ? sizeof(float) : sizeof(double);
     const char *end = tf.text + tf.len, *pos = H.body;
     /* the table parse_part reads its grid and dtype from */
@@ -608,8 +591,7 @@ lx_status lx_batch_table_stream(lx_ctx *ctx, const char *path, lx_dtype dtype, i
         part_set *S = &sets[cur], *P = &sets[cur ^ 1];
         S->count = 0;
         S->first_line = next_line;
-        pthread_t tid[64];
-        int started[64] = {0};
+        lx__team team = {.started = 0};
         int max_parts = STREAM_PARTS_PER_THREAD * T < 64 ? STREAM_PARTS_PER_THREAD * T : 64;
         while (pos < end && S->count < max_parts) { /* cut the next chunk into parts at line boundaries */
             part *q = &S->p[S->count];
@@ -642,7 +624,7 @@ lx_status lx_batch_table_stream(lx_ctx *ctx, const char *path, lx_dtype dtype, i
         }
         if (st) break;
         atomic_store(&S->next, 0);
-        for (int i = 0; i < T && S->count; i++) started[i] = pthread_create(&tid[i], NULL, parse_thread, S) == 0;
+        if (S->count) lx__team_start(&team, T, 0, parse_set, S);
         /* meanwhile: the previous chunk, in file order, on this thread */
         if (have_prev) {
             for (int i = 0; i < P->count && !st; i++) {
@@ -655,9 +637,8 @@ lx_status lx_batch_table_stream(lx_ctx *ctx, const char *path, lx_dtype dtype, i
             }
             have_prev = 0;
         }
-        for (int i = 0; i < T; i++)
-            if (started[i]) pthread_join(tid[i], NULL);
-        parse_thread(S); /* parts no thread took (none started, say) */
+        lx__team_join(&team);
+        parse_set(S, 0); /* parts no thread took (none started, say) */
         if (st) break;
         long line = S->first_line;
         for (int i = 0; i < S->count && !st; i++) {

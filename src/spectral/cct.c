@@ -1,6 +1,6 @@
 /* cct.c - correlated colour temperature and Duv: an exact solve for the nearest point of the
  * Planckian locus in CIE 1960 uv, the locus computed with the observer's own CMFs (1 nm sums). */
-#include "lx_private.h"
+#include "spectral/spectral_private.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -10,7 +10,6 @@
 #define TABLE_T_MIN 400.0  /* the table reaches beyond it, so a CCT near either end is bracketed */
 #define TABLE_T_MAX 1.25e6
 #define LOCUS_NODES 168
-#define C2_NM_K 1.4388e7 /* c2 = 1.4388e-2 m K in nm K */
 
 typedef struct cmf3 {
     lx_spd x, y, z;
@@ -33,14 +32,14 @@ static void planck_uv(const cmf3 *c, double T, double *u, double *v, double *du,
 {
     double X = 0, Y = 0, Z = 0, dX = 0, dY = 0, dZ = 0;
     /* scale by exp(c2 / (lambda_last T)) so the longest wavelength has factor 1: no underflow */
-    double xref = C2_NM_K / (c->y.lambda_nm[c->y.n - 1] * T);
+    double xref = LX__C2_NM_K / (c->y.lambda_nm[c->y.n - 1] * T);
     /* Above 300 K one exp per wavelength does: exp(xref - x) = exp(xref) exp(-x) cannot overflow
      * (xref < 58) and 1 - exp(-x) keeps full precision while x > 0.01 (eps / x < 3e-14). */
     int fast = T >= 300.0;
     double exref = fast ? exp(xref) : 0.0;
     for (size_t i = 0; i < c->y.n; i++) {
         double l = c->y.lambda_nm[i];
-        double x = C2_NM_K / (l * T);
+        double x = LX__C2_NM_K / (l * T);
         double l5 = l * l * l * l * l;
         double e = fast ? exp(-x) : 0.0;
         double q = fast && x > 0.01 ? 1.0 - e : -expm1(-x); /* 1 - exp(-x) */
@@ -60,11 +59,33 @@ static void planck_uv(const cmf3 *c, double T, double *u, double *v, double *du,
     if (dv) *dv = 6 * (dY * D - Y * dD) / (D * D);
 }
 
+/* The locus cache of a context (its LX__SLOT_LOCUS): CIE 1960 uv of the Planckian radiator at
+ * nodes spaced evenly in log T, one per observer ([0] 2 deg, [1] 10 deg). */
+typedef struct lx__locus {
+    int ready;
+    int n;
+    double logt0, dlogt;
+    double *u, *v; /* v, du/ds and dv/ds follow u in one block of 4n doubles */
+} lx__locus;
+
+static void locus_free(void *p)
+{
+    lx__locus *pair = p;
+    for (int i = 0; i < 2; i++) free(pair[i].u); /* one block holds u, v and their derivatives */
+    free(pair);
+}
+
 static lx_status locus(lx_ctx *ctx, lx_observer obs, lx__locus **out, cmf3 *c)
 {
     lx_status st = get_cmf(ctx, obs, c);
     if (st != LX_OK) return st;
-    lx__locus *L = &ctx->locus[obs == LX_OBSERVER_2 ? 0 : 1];
+    lx__locus *pair = lx__slot_get(ctx, LX__SLOT_LOCUS);
+    if (!pair) {
+        pair = calloc(2, sizeof *pair);
+        if (!pair) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for the locus table");
+        lx__slot_set(ctx, LX__SLOT_LOCUS, pair, locus_free);
+    }
+    lx__locus *L = &pair[obs == LX_OBSERVER_2 ? 0 : 1];
     if (!L->ready) {
         L->n = LOCUS_NODES;
         L->logt0 = log(TABLE_T_MIN);

@@ -1,7 +1,7 @@
 /* cgats.c - reads CGATS spectral files (X-Rite CGATS.17, Argyll .sp/.ti3/.cgats): keywords,
  * BEGIN_DATA_FORMAT field lists with SPECTRAL_NM380 / SPEC_380 style fields, SPECTRAL_BANDS /
  * _START_NM / _END_NM / _NORM, and the data sets, one spectrum per set. */
-#include "lx_private.h"
+#include "spectral/spectral_private.h"
 
 #include <math.h>
 #include <stdio.h>

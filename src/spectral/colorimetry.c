@@ -1,13 +1,10 @@
 /* colorimetry.c - all colorimetric and photometric quantities of one spectrum: absolute XYZ,
  * chromaticities, CCT and Duv, luminous efficacy of radiation, scotopic quantities. */
-#include "lx_private.h"
+#include "spectral/spectral_private.h"
 
 #include <math.h>
 #include <string.h>
 
-#define LX_KM_2 683.002    /* lm/W, photopic, CIE 015:2018 (683 lm/W at 540 THz) */
-#define LX_KM_10 683.599   /* lm/W, for the 10 deg observer, CIE 015:2018 */
-#define LX_KM_SCOT 1700.06 /* lm/W, scotopic K'm, CIE 018:2019 */
 
 lx_status lx_colorimetry_from_integrals(lx_ctx *ctx, lx_observer obs, const double xyz[3], double vprime,
                                         double radiant, lx_colorimetry *out)
@@ -15,7 +12,7 @@ lx_status lx_colorimetry_from_integrals(lx_ctx *ctx, lx_observer obs, const doub
     if (!out || !xyz) return lx__error(ctx, LX_EINVAL, NULL, 0, "integrals and output are required");
     if (obs != LX_OBSERVER_2 && obs != LX_OBSERVER_10)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "observer must be 2 or 10 degrees, not %d", (int)obs);
-    double km = obs == LX_OBSERVER_2 ? LX_KM_2 : LX_KM_10;
+    double km = obs == LX_OBSERVER_2 ? LX__KM_2 : LX__KM_10;
     lx_colorimetry r;
     r.method = out->method;
     r.X = km * xyz[0];
@@ -29,7 +26,7 @@ lx_status lx_colorimetry_from_integrals(lx_ctx *ctx, lx_observer obs, const doub
     r.v_prime = d != 0 ? 9 * r.Y / d : NAN;
     r.radiant = radiant;
     r.ler_lm_per_W = radiant != 0 ? r.Y / radiant : NAN;
-    r.scotopic_Y = LX_KM_SCOT * vprime;
+    r.scotopic_Y = LX__KM_SCOT * vprime;
     r.sp_ratio = r.Y != 0 ? r.scotopic_Y / r.Y : NAN;
     r.cct_K = r.duv = NAN;
     r.cct_valid = 0;

@@ -10,7 +10,7 @@
  * signed digits m and the count of fraction digits nf; (3) eight at a time, m / 10^nf in double:
  * at most 15 digits and nf <= 14 make both exact doubles, so one division rounds correctly
  * (Clinger 1990), as strtod does. */
-#include "lx_private.h"
+#include "spectral/spectral_private.h"
 
 #include <stdint.h>
 #include <string.h>
@@ -168,17 +168,7 @@ __attribute__((target(LX_AVX512_LINE))) int lx__csv_fast_line(const char *q, con
     return 1;
 }
 
-int lx__csv_have_fast_line(void)
-{
-    static int cached = -1; /* the answer never changes; a race writes the same value */
-    if (cached < 0) {
-        __builtin_cpu_init();
-        cached = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
-                 __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl") &&
-                 __builtin_cpu_supports("avx512bitalg") && __builtin_cpu_supports("bmi") && __builtin_cpu_supports("bmi2") && __builtin_cpu_supports("popcnt");
-    }
-    return cached;
-}
+int lx__csv_have_fast_line(void) { return lx_simd_level() == LX_SIMD_AVX512 && lx__cpu_has_bitalg(); }
 
 #else
 

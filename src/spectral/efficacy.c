@@ -1,6 +1,6 @@
 /* efficacy.c - the luminous efficacy of radiation of a measured spectrum file, for the
  * radiometric <-> photometric conversions of the lighting commands (uses the spectra API). */
-#include "lx_private.h"
+#include "spectral/spectral_private.h"
 
 #include <math.h>
 

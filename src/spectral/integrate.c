@@ -1,6 +1,6 @@
 /* integrate.c - integration of a sampled spectrum against a weighting function: the CIE 015
  * summation, the exact integral of two piecewise-linear functions, and 1 nm resampling. */
-#include "lx_private.h"
+#include "spectral/spectral_private.h"
 
 #include <math.h>
 

@@ -1,6 +1,6 @@
 /* mesopic.c - CIE 191:2010 recommended system for mesopic photometry (MES2): mesopic luminance
  * from photopic and scotopic luminance with the adaptation coefficient m, solved iteratively. */
-#include "lx_private.h"
+#include "spectral/spectral_private.h"
 
 #include <math.h>
 

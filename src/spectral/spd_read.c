@@ -1,7 +1,7 @@
 /* spd_read.c - reads spectra from text: the columns layout (wavelength, value...) and the rows
  * layout (a header of wavelengths, one spectrum per row), separator detection, BOM/CRLF/comments,
  * and the lx_spd_set that owns the result. CGATS files are handed to cgats.c. */
-#include "lx_private.h"
+#include "spectral/spectral_private.h"
 
 #include <errno.h>
 #include <math.h>
@@ -12,63 +12,7 @@
 
 /* ---- small helpers ---- */
 
-int lx__next_line(lx__lines *it, const char **s, const char **e)
-{
-    if (it->p >= it->end) return 0;
-    const char *nl = memchr(it->p, '\n', (size_t)(it->end - it->p));
-    const char *le = nl ? nl : it->end;
-    *s = it->p;
-    if (le > it->p && le[-1] == '\r') le--;
-    *e = le;
-    it->p = nl ? nl + 1 : it->end;
-    it->line++;
-    return 1;
-}
-
-static char *dup_range(const char *s, const char *e)
-{
-    size_t n = (size_t)(e - s);
-    char *r = malloc(n + 1);
-    if (!r) return NULL;
-    memcpy(r, s, n);
-    r[n] = '\0';
-    return r;
-}
-
 static int is_blank(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
-
-static int lower_eq(const char *s, const char *e, const char *word)
-{
-    size_t n = strlen(word);
-    if ((size_t)(e - s) != n) return 0;
-    for (size_t i = 0; i < n; i++) {
-        char c = s[i];
-        if (c >= 'A' && c <= 'Z') c = (char)(c - 'A' + 'a');
-        if (c != word[i]) return 0;
-    }
-    return 1;
-}
-
-lx_status lx__parse_field(lx_ctx *ctx, const char *file, long line, const char *s, const char *e,
-                          char point, const char *what, double *out)
-{
-    double d = 0;
-    const char *q = lx__parse_double_ex(s, e, point, &d);
-    int shown = (int)(e - s > 40 ? 40 : e - s);
-    if (!q || q != e) {
-        const char *t = s;
-        if (t < e && (*t == '+' || *t == '-')) t++;
-        if (lower_eq(t, e, "nan") || lower_eq(t, e, "inf") || lower_eq(t, e, "infinity") ||
-            (e - t > 4 && lower_eq(t, t + 4, "nan(")))
-            return lx__error(ctx, LX_EPARSE, file, line, "%s is not finite: '%.*s'", what, shown, s);
-        return lx__error(ctx, LX_EPARSE, file, line, "%s is not a number: '%.*s'", what, shown, s);
-    }
-    if (!isfinite(d))
-        return lx__error(ctx, LX_EPARSE, file, line, "%s is out of range (not finite): '%.*s'", what,
-                         shown, s);
-    *out = d;
-    return LX_OK;
-}
 
 /* ---- the set ---- */
 
@@ -141,7 +85,7 @@ lx_status lx__spd_set_build(lx_ctx *ctx, const char *file, size_t nlam, const do
     }
     lx_spd_set *set = calloc(1, sizeof *set);
     if (!set) goto nomem;
-    set->file = dup_range(file, file + strlen(file));
+    set->file = lx__strndup(file, file + strlen(file));
     set->spd = calloc(nspec ? nspec : 1, sizeof *set->spd);
     set->line = calloc(nspec ? nspec : 1, sizeof *set->line);
     if (!set->file || !set->spd || !set->line) goto nomem;
@@ -154,7 +98,7 @@ lx_status lx__spd_set_build(lx_ctx *ctx, const char *file, size_t nlam, const do
         }
         double *l = malloc(nlam * sizeof *l);
         double *v = malloc(nlam * sizeof *v);
-        char *name = dup_range(nm, nm + strlen(nm));
+        char *name = lx__strndup(nm, nm + strlen(nm));
         set->spd[s].lambda_nm = l;
         set->spd[s].value = v;
         set->spd[s].name = name;
@@ -414,7 +358,7 @@ static lx_status read_text(lx_ctx *ctx, const char *file, const char *text, size
             char **nn = realloc(names, (nnames + 1) * sizeof *nn);
             if (!nn) goto nomem;
             names = nn;
-            names[nnames] = dup_range(cs.c[0].s, cs.c[0].e);
+            names[nnames] = lx__strndup(cs.c[0].s, cs.c[0].e);
             if (!names[nnames]) goto nomem;
             nnames++;
         }
@@ -468,7 +412,7 @@ static lx_status read_text(lx_ctx *ctx, const char *file, const char *text, size
     for (size_t c = 1; c < ncols; c++) {
         lines[c - 1] = header ? header_line : first_line;
         if (header && hdr.c[c].e > hdr.c[c].s) {
-            names[c - 1] = dup_range(hdr.c[c].s, hdr.c[c].e);
+            names[c - 1] = lx__strndup(hdr.c[c].s, hdr.c[c].e);
             if (!names[c - 1]) goto nomem;
         }
     }

@@ -1,20 +1,17 @@
 /* illuminants.c - spectra defined by formulas: Planck's law, Stefan-Boltzmann, CIE illuminant A
  * by its defining formula, and the CIE D-series daylight from the S0/S1/S2 basis. */
-#include "lx_private.h"
+#include "tables/tables_private.h"
 
 #include <math.h>
 
-#define LX_C1L 1.191042972e-16 /* 2hc^2 in W m^2 / sr (CODATA 2018) */
-#define LX_C2 1.4388e-2        /* second radiation constant in m K, as CIE 015 uses */
-#define LX_SIGMA 5.670374419e-8 /* Stefan-Boltzmann constant, W m^-2 K^-4 (CODATA 2018) */
 
 double lx_planck(double lambda_nm, double T_K)
 {
     if (!(lambda_nm > 0) || !(T_K > 0) || !isfinite(lambda_nm) || !isfinite(T_K)) return NAN;
     double lm = lambda_nm * 1e-9;
-    double x = LX_C2 / (lm * T_K);
+    double x = LX__C2 / (lm * T_K);
     double l5 = lm * lm * lm * lm * lm;
-    double pre = LX_C1L / l5 * 1e-9; /* per nm */
+    double pre = LX__C1L / l5 * 1e-9; /* per nm */
     if (x > 700.0) return pre * exp(-x); /* exp(x) - 1 == exp(x) here; underflows to 0 cleanly */
     return pre / expm1(x);
 }
@@ -22,7 +19,7 @@ double lx_planck(double lambda_nm, double T_K)
 double lx_stefan_boltzmann(double T_K)
 {
     double t2 = T_K * T_K;
-    return LX_SIGMA * t2 * t2;
+    return LX__SIGMA * t2 * t2;
 }
 
 double lx_illuminant_a(double lambda_nm)

@@ -1,6 +1,6 @@
 /* tables.c - access to the embedded CIE tables: lookup by name, column views, the weighting
  * functions (colour-matching functions, V', alpha-opic) and the named illuminants. */
-#include "lx_private.h"
+#include "tables/tables_private.h"
 
 #include <math.h>
 #include <pthread.h>

@@ -1,6 +1,6 @@
 /* tcs.c - public views of the CIE 13.3-1995 test colour samples of the embedded table (used by
  * `luxcalc bench accuracy` to show what a 3-coefficient RGB light gets wrong on coloured surfaces). */
-#include "lx_private.h"
+#include "tables/tables_private.h"
 
 #include <stdio.h>
 

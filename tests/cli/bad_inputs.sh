@@ -8,7 +8,7 @@ MEM_KB=1048576
 re_escape() { printf '%s' "$1" | sed 's/[][\.*^$+?(){}|/]/\\&/g'; }
 # sanitizer and valgrind builds reserve far more address space than they use: no memory bound there
 if sh -c 'ulimit -v "$1" && "$2" --version' sh $MEM_KB "$LUXCALC" >/dev/null 2>&1; then memlim=$MEM_KB; else memlim=unlimited
-  echo "# bad_inputs: this luxcalc cannot run under ulimit -v (sanitizer build?): memory bound not applied"; fi
+  skip "memory bound (ulimit -v)" "this luxcalc cannot run under ulimit -v (sanitizer build?)"; fi
 # bounded COMMAND ARGS...: run with a 10 s and 1 GiB bound; sets $out, $err, $rc, $ms
 bounded() {
   t0=$(date +%s%N)
@@ -83,7 +83,7 @@ done
 cp "$B/good/reference.ies" "$G/unreadable.ies"
 chmod 000 "$G/unreadable.ies"
 if [ "$(id -u)" = 0 ]; then
-  echo "# bad_inputs: running as root, which reads any file: the unreadable-file case is skipped"
+  skip "unreadable file" "running as root, which reads any file"
 else
   bounded ies "$G/unreadable.ies"
   check "an unreadable file" 2 "$G/unreadable.ies" - "Permission denied" ies

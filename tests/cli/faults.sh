@@ -24,7 +24,7 @@ untouched() { # NAME
 # luxcalc rightly keeps ignored what its parent ignored: env --default-signal (coreutils >= 8.31)
 # gives the job the defaults back
 if env --default-signal=INT,TERM,HUP true 2>/dev/null; then dflt="env --default-signal=INT,TERM,HUP"; sigs="TERM INT HUP"
-else dflt=""; sigs="TERM"; echo "# faults: no env --default-signal: the SIGINT and SIGHUP cases are skipped"; fi
+else dflt=""; sigs="TERM"; skip "SIGINT and SIGHUP cases" "no env --default-signal"; fi
 for sig in $sigs; do
   reset_out
   $dflt "$LUXCALC" spd "$D/*.csv" --metrics all --format csv -o "$OUT" >/dev/null 2>"$T/err" &
@@ -78,9 +78,13 @@ l=$(leftovers)
 # OpenCL faults through the CLI (LX_CL_FAULT, see tests/test_faults.c for the library): --backend opencl
 # gives exit 3 and names the call; auto (made to pick OpenCL) logs the fall-back with -v and prints the
 # CPU's own numbers
+# (the fault hooks exist only in the test build of the library: tests/luxcalc-faults)
 if [ "$("$LUXCALC" devices 2>/dev/null | grep -c '^device_name')" -gt 0 ]; then
   run spd "$src" --backend cpu --format csv
   cpu_out=$out
+  LX_CL_FAULT=clGetPlatformIDs run spd "$src" --backend opencl --format csv
+  expect_rc 0 "the shipped luxcalc has no fault hooks (LX_CL_FAULT does nothing)"
+  LUXCALC=$LX_BUILD_DIR/tests/luxcalc-faults
   for fault in clGetPlatformIDs clBuildProgram clCreateBuffer clEnqueueNDRangeKernel clFinish; do
     LX_CL_FAULT=$fault run spd "$src" --backend opencl --format csv
     expect_rc 3 "$fault: --backend opencl exits 3"
@@ -93,6 +97,6 @@ if [ "$("$LUXCALC" devices 2>/dev/null | grep -c '^device_name')" -gt 0 ]; then
       notok "$fault: --backend auto prints the CPU's numbers" "differs"
   done
 else
-  echo "# faults: no OpenCL device: the CLI fault cases are skipped"
+  skip "OpenCL faults through the CLI" "no OpenCL device"
 fi
 exit 0

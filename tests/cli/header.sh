@@ -8,5 +8,5 @@ cp "$T/h.c" "$T/h.cpp"
 if command -v c++ >/dev/null 2>&1; then
   if c++ -std=c++11 -Wall -Wextra -Wpedantic -Werror -Isrc -fsyntax-only "$T/h.cpp" 2>"$T/err"; then ok "header compiles as C++"; else notok "header C++" "$(cat "$T/err")"; fi
 else
-  ok "header C++ (no c++ compiler: skipped)"
+  skip "header compiles as C++" "no c++ compiler"
 fi

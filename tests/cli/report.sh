@@ -81,5 +81,5 @@ if command -v script >/dev/null 2>&1 && script -qc true /dev/null >/dev/null 2>&
   if grep -q '%' "$T/typescript2"; then notok "-q: no progress bar" "$(cat "$T/typescript2")"; else ok "-q: no progress bar"; fi
   if [ "$(wc -l < "$T/pty_out")" -eq 301 ]; then ok "results intact with a bar"; else notok "results intact with a bar" "$(wc -l < "$T/pty_out") lines"; fi
 else
-  echo "ok progress bar on a terminal # skip: no util-linux script"
+  skip "progress bar on a terminal" "no util-linux script"
 fi

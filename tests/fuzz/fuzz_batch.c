@@ -2,7 +2,7 @@
  * path of `luxcalc spd` for big batches) on any bytes, in float and double, on 1 and 2 threads.
  * Properties: never crash; a parse error names a line; an accepted batch has a finite uniform grid,
  * a name per row and finite values; the vector line parser (csv_vector.c, where the CPU has
- * AVX-512) and the general one (LX_NOVECTOR=1) agree: same status, same error line, the same
+ * AVX-512) and the general one (LX_SIMD=scalar) agree: same status, same error line, the same
  * values bit for bit and the same names. */
 #include "luxcalc.h"
 
@@ -15,12 +15,12 @@
 static void same_without_vector(lx_ctx *ctx, const uint8_t *data, size_t size, lx_status st, long line,
                                 const lx_batch_table *t)
 {
-    const char *was = getenv("LX_NOVECTOR");
+    const char *was = getenv("LX_SIMD");
     if (was) return; /* already the general parser */
-    setenv("LX_NOVECTOR", "1", 1);
+    setenv("LX_SIMD", "scalar", 1);
     lx_batch_table *g = NULL;
     lx_status sg = lx_batch_table_read_mem(ctx, "fuzz.csv", (const char *)data, size, LX_F64, 1, &g);
-    unsetenv("LX_NOVECTOR");
+    unsetenv("LX_SIMD");
     if (sg != st) abort();
     if (st != LX_OK) {
         if (st == LX_EPARSE && lx_ctx_errline(ctx) != line) abort();

@@ -1,7 +1,7 @@
 /* bench_accuracy.c - `luxcalc bench accuracy`: each method's error against an independent reference
  * and its time, on the same inputs, as markdown tables and one error-against-time PNG per topic:
  * spectra (here), radiance fields and lighting (bench_accuracy_fields.c). */
-#include "cli.h"
+#include "cli/cli.h"
 #include "bench_accuracy.h"
 
 #include <math.h>

@@ -1,7 +1,7 @@
 /* bench_accuracy_fields.c - `luxcalc bench accuracy`, radiance fields and lighting: irradiance
  * methods against brute force at full resolution; point model and near-field subdivision against
  * the closed-form area sources; intensity-table interpolation against the analytic Warn lobe. */
-#include "cli.h"
+#include "cli/cli.h"
 #include "bench_accuracy.h"
 
 #include <math.h>

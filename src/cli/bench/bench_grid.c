@@ -2,7 +2,7 @@
  * luminaires (CPU exact bilinear, CPU table twin at 1024, 256 and 128 rows, OpenCL table in float
  * and double), each table run's largest error against the exact bilinear result, beside the numpy
  * peer ../shared/peers/illum_numpy.py run in the same process tree. */
-#include "cli.h"
+#include "cli/cli.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -1,7 +1,7 @@
 /* bench_irradiance.c - `luxcalc bench irradiance`: time and error of each irradiance method on the
  * sky-with-sun map of ../shared/peers/envmap_numpy.py at 512x256, 2048x1024 and 4096x2048, beside
  * the numpy peer (run in the same session when /tmp/peers/bin/python and the script are found). */
-#include "cli.h"
+#include "cli/cli.h"
 
 #include <math.h>
 #include <stdio.h>

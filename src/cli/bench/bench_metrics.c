@@ -1,6 +1,6 @@
 /* bench_metrics.c - `luxcalc bench metrics`: colour rendering (CIE 13.3 CRI, CIE 224 / TM-30) and
  * alpha-opic throughput over 1e5 spectra on every core, beside colour-science and luxpy if installed. */
-#include "cli.h"
+#include "cli/cli.h"
 
 #include <math.h>
 #include <pthread.h>

@@ -1,0 +1,218 @@
+/* core_private.h - the bottom layer's internals, shared by every library file (never installed):
+ * the context layout and its per-layer slots, error recording and the log, physical constants,
+ * text input (whole-file reader, line cursor, number parsing), threads, CPU-feature dispatch,
+ * the CPU/OpenCL backend rule and the OpenCL runtime. Nothing here knows a higher layer. */
+#ifndef LX_CORE_PRIVATE_H
+#define LX_CORE_PRIVATE_H
+
+#include "luxcalc.h"
+
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+
+#include "core/constants.h"
+
+#define LX__ERRMSG_MAX 1024
+
+/* ---- the context ---- */
+
+/* State a higher layer keeps on a context (a cache), freed by its own function when the context
+ * is destroyed. The slot ids are only names: core never looks inside. */
+typedef enum lx__slot_id {
+    LX__SLOT_LOCUS,   /* the Planckian locus tables of the CCT solver (spectral/cct.c) */
+    LX__SLOT_WEIGHTS, /* the last CPU batch weights (spectral/batch.c) */
+    LX__SLOT_COUNT
+} lx__slot_id;
+
+typedef struct lx__slot {
+    void *data;
+    void (*free_fn)(void *data);
+} lx__slot;
+
+struct lx_ctx {
+    lx_status status;
+    char errmsg[LX__ERRMSG_MAX];
+    char errfile[256];
+    long errline;
+    lx_log_fn log_fn;
+    void *log_user;
+    lx_log_level log_max;
+    lx__slot slot[LX__SLOT_COUNT];
+    void *cl;                         /* OpenCL state, NULL until first used */
+    void (*cl_release)(lx_ctx *ctx);  /* frees cl; set by whoever creates it */
+    lx_counters counters;             /* work counters of the lighting and scene layers */
+};
+
+/* The data in slot id of ctx (NULL when empty or ctx is NULL). */
+void *lx__slot_get(const lx_ctx *ctx, lx__slot_id id);
+/* Replaces slot id's data (the old data is freed with its function); free_fn frees data with the
+ * context. Returns data. */
+void *lx__slot_set(lx_ctx *ctx, lx__slot_id id, void *data, void (*free_fn)(void *data));
+
+/* Records an error on ctx and returns status. file may be NULL, line <= 0 when it does not apply. */
+lx_status lx__error(lx_ctx *ctx, lx_status status, const char *file, long line, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 5, 6)))
+#endif
+    ;
+
+/* Delivers a message to the log callback when one is installed and level <= its maximum. */
+void lx__log(lx_ctx *ctx, lx_log_level level, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+/* ---- text input (file_open.c, lines.c, numparse.c) ---- */
+
+/* Opens path for reading: "-" gives stdin; a directory or a missing file is LX_EIO naming the path;
+ * a FIFO waits at most LX_FIFO_WAIT_S seconds (default 10, 0: for ever) for its first data. */
+lx_status lx__open_read(lx_ctx *ctx, const char *path, FILE **out);
+/* Reads a whole input file (as lx__open_read opens it; "-" is standard input) into *text (malloc'ed,
+ * not terminated) and *len. Errors name the file: LX_EIO, LX_ENOMEM, and lx__open_read's. */
+lx_status lx__read_all(lx_ctx *ctx, const char *path, char **text, size_t *len);
+
+/* A cursor over the lines of a buffer: LF or CRLF; line counts from 1 after the first call. */
+typedef struct lx__lines {
+    const char *p, *end;
+    long line;
+} lx__lines;
+/* Sets [*s, *e) to the next line without its line ending; returns 0 at the end of the buffer. */
+int lx__next_line(lx__lines *it, const char **s, const char **e);
+/* A copy of [s, e) as a NUL-terminated string (NULL on allocation failure). */
+char *lx__strndup(const char *s, const char *e);
+
+/* Parses one decimal number at [s, end): optional sign, digits with an optional '.', optional
+ * exponent. Returns the end of the number, or NULL when there is none or it runs straight into
+ * more word characters ("nan", "inf", "0x1p3", "1e", "12abc" all give NULL). Correctly rounded
+ * (bit-identical to strtod); overflow gives +-HUGE_VAL like strtod. Thread-safe. */
+const char *lx__parse_double(const char *s, const char *end, double *out);
+/* The same, accepting point (e.g. ',') as a decimal point besides '.' (0 for none). */
+const char *lx__parse_double_ex(const char *s, const char *end, char point, double *out);
+/* Parses the whole of [s, e) as a finite number or records an LX_EPARSE naming file:line and
+ * what ("wavelength", "value"): not a number, NaN/Inf text, or overflow. */
+lx_status lx__parse_field(lx_ctx *ctx, const char *file, long line, const char *s, const char *e,
+                          char point, const char *what, double *out);
+
+/* ---- threads (parallel.c) ---- */
+
+/* Threads to use for `asked` (0: every online core), at least 1 and at most `work` (when > 0). */
+int lx__threads(int asked, long work);
+/* Runs fn(arg, i0, i1, t) on `threads` threads (t = 0..threads-1) splitting [0, n) into contiguous
+ * ranges; the calling thread runs the last one. A thread that cannot start leaves its range to the
+ * calling thread, so the work is always done. */
+lx_status lx__parallel_for(lx_ctx *ctx, int threads, long n, void (*fn)(void *arg, long i0, long i1, int t), void *arg);
+/* Runs fn(arg, t) once on each of `threads` threads (t = 0..threads-1; the calling thread runs
+ * t = 0), for work that hands out its own pieces (an atomic counter) or keeps per-thread state.
+ * Returns the number of threads that ran (at least 1: when a thread cannot start, its t is not run,
+ * and fn must not rely on every t running). */
+int lx__parallel_run(int threads, void (*fn)(void *arg, int t), void *arg);
+/* A team of threads running fn(arg, t) for t = t0 .. t0 + threads - 1 in the background while the
+ * caller goes on (a pipeline: parse the next chunk while the caller hands on the last one).
+ * lx__team_start returns how many started (the first that fails to start stops it; the caller
+ * does the rest of the work itself); lx__team_join waits for them. */
+#include <pthread.h>
+typedef struct lx__team_job {
+    void (*fn)(void *, int);
+    void *arg;
+    int t;
+} lx__team_job;
+typedef struct lx__team {
+    pthread_t tid[64];
+    lx__team_job job[64];
+    int started;
+} lx__team;
+int lx__team_start(lx__team *team, int threads, int t0, void (*fn)(void *arg, int t), void *arg);
+void lx__team_join(lx__team *team);
+
+/* ---- CPU features (cpu.c) ---- */
+
+/* The SIMD level is public (lx_simd_cpu, lx_simd_level, lx_simd_name in luxcalc.h). Extras
+ * beyond a level's set, for the one path that uses them: */
+/* 1 when the CPU has AVX-512 BITALG besides the AVX-512 set (the vector CSV line parser). */
+int lx__cpu_has_bitalg(void);
+
+/* ---- the backend rule (backend.c) ---- */
+
+/* The backend for `work` units of a job whose OpenCL break-even is break_even units on a cold
+ * context (OpenCL not yet initialised: the estimate includes starting it) and break_even_warm on
+ * a warm one: asked (AUTO reads LX_BACKEND) resolved to CPU or OPENCL in *out. AUTO picks the CPU
+ * when the build has no OpenCL, when work is below the break-even (OpenCL is then never touched),
+ * when no device starts, or when the device is a CPU (the same cores); every decision is logged at
+ * debug level as "JOB: backend auto: ...". LX_AUTO_BREAK_EVEN (in the job's units) overrides both
+ * break-evens and the CPU-device rule (for measuring and tests). LX_EUNSUPPORTED when OPENCL is
+ * asked of a build without OpenCL. */
+lx_status lx__backend_choose(lx_ctx *ctx, const char *job, lx_backend asked, double work, double break_even,
+                             double break_even_warm, lx_backend *out);
+/* After an OpenCL attempt failed with st: logs "JOB: OpenCL failed (...), using the CPU path" at
+ * warning level and returns 1 when the caller should fall back (AUTO asked), else 0 (OPENCL asked:
+ * the error stands). */
+int lx__backend_fallback(lx_ctx *ctx, const char *job, lx_backend asked, lx_status st);
+
+/* ---- OpenCL runtime (opencl.c) and the embedded kernels ---- */
+typedef struct lx__kernel_source {
+    const char *name;   /* file name, e.g. "spd_integrate.cl" */
+    const char *source; /* the text */
+} lx__kernel_source;
+
+extern const lx__kernel_source lx__kernel_sources[];
+extern const int lx__nkernel_sources;
+
+#if LX_OPENCL
+#include <CL/cl.h>
+/* The OpenCL state behind ctx->cl: the device choice, then (once initialised) the context,
+ * queue and the lazily built program with its build log. */
+typedef struct lx__cl {
+    int sel_platform, sel_device; /* -1: any (environment LX_PLATFORM / LX_DEVICE apply) */
+    lx_cl_type sel_type;
+    int ready;                    /* context and queue exist */
+    int borrowed;                 /* context and queue came from the caller */
+    cl_platform_id platform;
+    cl_device_id device;
+    cl_context context;
+    cl_command_queue queue;
+    lx_cl_device_info info;
+    cl_program program;           /* NULL until the first kernel is needed */
+    char *build_log;              /* of the last build (kept for error messages) */
+} lx__cl;
+
+/* The OpenCL state of ctx, initialised on first call (platform, device, context, queue). */
+lx_status lx__cl_get(lx_ctx *ctx, lx__cl **out);
+/* A kernel by name from the program, built on first call (embedded sources or LX_KERNEL_DIR). */
+lx_status lx__cl_kernel(lx_ctx *ctx, lx__cl *cl, const char *name, cl_kernel *out);
+/* The OpenCL error name for a code ("CL_OUT_OF_RESOURCES"), or "CL_UNKNOWN_ERROR". */
+const char *lx__cl_errname(cl_int err);
+/* Records LX_EDEVICE "CALL failed: NAME (CODE)" on ctx when err != CL_SUCCESS; returns the status. */
+lx_status lx__cl_check(lx_ctx *ctx, cl_int err, const char *call);
+
+#if defined(LX_FAULTS)
+/* OpenCL fault injection, compiled only into test builds (LX_FAULTS; cl_faults.c): with
+ * LX_CL_FAULT=CALL (every call of CALL fails) or CALL:N (its N-th call in this process fails,
+ * counting from 1), the wrapped call fails as a real device would: clGetPlatformIDs finds no
+ * platform, clBuildProgram fails to build, clCreateBuffer fails to allocate,
+ * clEnqueueNDRangeKernel / clEnqueueReadBuffer / clFinish fail as a failing kernel does. The call
+ * counters are atomic, so contexts on several threads may use it. */
+cl_int lx__clGetPlatformIDs(cl_uint n, cl_platform_id *p, cl_uint *np);
+cl_int lx__clBuildProgram(cl_program p, cl_uint nd, const cl_device_id *d, const char *o,
+                          void (CL_CALLBACK *fn)(cl_program, void *), void *u);
+cl_mem lx__clCreateBuffer(cl_context c, cl_mem_flags f, size_t size, void *host, cl_int *err);
+cl_int lx__clEnqueueNDRangeKernel(cl_command_queue q, cl_kernel k, cl_uint dim, const size_t *off, const size_t *gs,
+                                  const size_t *ls, cl_uint nw, const cl_event *wl, cl_event *ev);
+cl_int lx__clEnqueueReadBuffer(cl_command_queue q, cl_mem b, cl_bool blocking, size_t off, size_t size, void *ptr,
+                               cl_uint nw, const cl_event *wl, cl_event *ev);
+cl_int lx__clFinish(cl_command_queue q);
+/* Called when a context starts OpenCL: CALL:N counts from there. */
+void lx__cl_fault_epoch(void);
+#if !defined(LX_FAULTS_IMPL)
+#define clGetPlatformIDs(...) lx__clGetPlatformIDs(__VA_ARGS__)
+#define clBuildProgram(...) lx__clBuildProgram(__VA_ARGS__)
+#define clCreateBuffer(...) lx__clCreateBuffer(__VA_ARGS__)
+#define clEnqueueNDRangeKernel(...) lx__clEnqueueNDRangeKernel(__VA_ARGS__)
+#define clEnqueueReadBuffer(...) lx__clEnqueueReadBuffer(__VA_ARGS__)
+#define clFinish(...) lx__clFinish(__VA_ARGS__)
+#endif
+#endif /* LX_FAULTS */
+#endif /* LX_OPENCL */
+
+#endif /* LX_CORE_PRIVATE_H */

@@ -1,0 +1,47 @@
+/* radiance_private.h - the radiance-field layer's internals (never installed): exact pixel
+ * geometry of lat-long maps, the irradiance back ends, cube-map texel integrals and spectral
+ * channel names. */
+#ifndef LX_RADIANCE_PRIVATE_H
+#define LX_RADIANCE_PRIVATE_H
+
+#include "spectral/spectral_private.h"
+
+/* Per-row and per-column factors of the exact pixel integrals of a w x h lat-long map: a pixel's
+ * solid angle is row_sr[j] * dphi and its first moment (integral of omega) is
+ * (row_s2[j] col_gx[i], row_s2[j] col_gy[i], row_sc[j] dphi). */
+typedef struct lx__llgeom {
+    int w, h;
+    double dphi;    /* 2 pi / w */
+    double *row_sr; /* cos t0 - cos t1 */
+    double *row_s2; /* integral of sin^2 t dt over the row */
+    double *row_sc; /* integral of sin t cos t dt over the row */
+    double *col_gx; /* sin p1 - sin p0 */
+    double *col_gy; /* cos p0 - cos p1 */
+} lx__llgeom;
+lx_status lx__llgeom_init(lx_ctx *ctx, lx__llgeom *g, int w, int h);
+void lx__llgeom_free(lx__llgeom *g);
+
+/* The irradiance back ends: n_dirs unit normals (3 doubles each) -> out[n * channels]. */
+lx_status lx__irr_brute_cpu(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const double *dirs, int threads,
+                            double *out);
+lx_status lx__irr_brute_cl(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const double *dirs, double *out);
+lx_status lx__irr_fast(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const double *dirs, int threads,
+                       double *out);
+lx_status lx__irr_sh9_map(lx_ctx *ctx, const lx_sh9 *sh, lx_sh9_window window, lx_envmap *out);
+
+/* Cube maps (envmap_cube.c). lx__cube_frame[f] = {axis, u, v}: the luxcalc directions of face f's
+ * normal, image column and image row (downwards). A face-local table holds, per texel of an N x N
+ * face (row-major), LX__CUBE_NT exact integrals over the texel in the frame (axis n, u, v):
+ * solid angle, first moment (n, u, v), second moments (nn, uu, vv, nu, nv, uv). */
+#define LX__CUBE_NT 10
+extern const double lx__cube_frame[6][3][3];
+double *lx__cube_table(int n); /* malloc'd N * N * LX__CUBE_NT doubles, NULL on no memory */
+lx_status lx__sh9_project_cube(lx_ctx *ctx, const lx_envmap *map, lx_sh9 *out);
+lx_status lx__irr_cube(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const double *dirs, int threads, int fast,
+                       double *out);
+
+/* Parses a Fichet et al. 2021 spectral channel name: *kind 0-3 for S0-S3 (emissive), 4 for T
+ * (reflective), wavelength in nm; returns 0 on success, -1 when the name is not spectral. */
+int lx__spectral_channel(const char *name, int *kind, double *lambda_nm);
+
+#endif /* LX_RADIANCE_PRIVATE_H */

@@ -1,0 +1,36 @@
+/* spectral_private.h - the spectral layer's internals (never installed): the spectrum-set builder
+ * shared by the readers, the CGATS reader, the batch weight matrix and the vector CSV line parser. */
+#ifndef LX_SPECTRAL_PRIVATE_H
+#define LX_SPECTRAL_PRIVATE_H
+
+#include "tables/tables_private.h"
+
+/* Builds a set from parsed data: nlam wavelengths lambda[k * lam_stride] (on lines lam_line[k],
+ * or all on lam_line_all when lam_line is NULL), nspec spectra whose value at sample k is
+ * val[s * ss + k * ks], names[s] (copied; NULL gives "1", "2", ...), lines[s]. Sorts samples by
+ * wavelength, rejects duplicates, non-positive or non-finite wavelengths, fewer than 2 samples. */
+lx_status lx__spd_set_build(lx_ctx *ctx, const char *file, size_t nlam, const double *lambda,
+                            size_t lam_stride, const long *lam_line, long lam_line_all, size_t nspec,
+                            const double *val, size_t ss, size_t ks, char *const *names,
+                            const long *lines, lx_spd_set **out);
+
+/* CGATS / Argyll spectral files (cgats.c): detection by content, and the reader. */
+int lx__cgats_detect(const char *text, size_t len);
+lx_status lx__cgats_read(lx_ctx *ctx, const char *file, const char *text, size_t len, lx_spd_set **out);
+
+/* The batch weight matrix: w[f * n_lambda + j] = w_f(start + j step) * step (cie15 rule). */
+lx_status lx__batch_weights(lx_ctx *ctx, const lx_function *fns, size_t k, double start_nm, double step_nm,
+                            size_t n_lambda, double *w);
+
+/* The vector line parser of the batch CSV reader (csv_vector.c): the line of n short decimals
+ * separated by sep that starts at q, up to its '\n' (or '\r\n') before stop, or up to stop itself
+ * when whole (stop is the end of the text); 64 bytes past stop are readable. The values go to dst
+ * (float when f32), each correctly rounded as strtod; *line_end gets the line's end (its '\n', or
+ * stop). 0 when any field is not "-?D+(.D*)?" of at most 15 characters, the count is not n, or no
+ * line end comes before stop (the general parser then reads the line). lx__csv_have_fast_line: 1
+ * when this CPU runs it (lx_simd_level() is AVX-512 and lx__cpu_has_bitalg()). */
+int lx__csv_fast_line(const char *q, const char *stop, int whole, char sep, size_t n, int f32, void *dst,
+                      const char **line_end);
+int lx__csv_have_fast_line(void);
+
+#endif /* LX_SPECTRAL_PRIVATE_H */
