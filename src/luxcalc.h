@@ -37,9 +37,27 @@ extern "C" {
 /** The library version as "MAJOR.MINOR.PATCH" (static storage). Thread-safe. */
 LX_API const char *lx_version(void);
 
-/* ------------------------------------------------------------------------------------------ */
-/* Status codes and the context                                                                */
-/* ------------------------------------------------------------------------------------------ */
+/* Contents, by layer (each section is one layer of src/, lowest first; README "Development"):
+ *   1. core      Context, errors and the log
+ *   2. core      Backends, SIMD paths and OpenCL devices
+ *   3. tables    Spectra as views; embedded tables: weighting functions, illuminants, test colour samples
+ *   4. spectral  Spectra: reading, integration, colorimetry
+ *   5. spectral  Correlated colour temperature
+ *   6. spectral  Batches: many spectra on one grid, CSV files end to end
+ *   7. spectral  Photobiology: alpha-opic and mesopic quantities, efficacy of a file
+ *   8. colour    Colour rendering: CIE 13.3 CRI, CIE 224 / TM-30
+ *   9. lighting  Units and quantities
+ *  10. lighting  Sources, inverse problems and solid angles
+ *  11. lighting  Luminaires (IES LM-63, EULUMDAT) and illuminance grids
+ *  12. radiance  Environment maps, OpenEXR and irradiance
+ *  13. radiance  Spectral OpenEXR images
+ *  14. scene     Scenes: files, the planner, evaluation and work counters
+ *  15. plot      Plots (PNG, written atomically)
+ */
+
+/* ============================================================================================ */
+/* 1. Context, errors and the log (src/core) */
+/* ============================================================================================ */
 
 typedef enum lx_status {
     LX_OK = 0,           /* success */
@@ -83,9 +101,82 @@ LX_API long lx_ctx_errline(const lx_ctx *ctx);
 /** Installs a log callback (NULL removes it). Messages at or below max_level are delivered. */
 LX_API void lx_ctx_set_log(lx_ctx *ctx, lx_log_fn fn, void *user, lx_log_level max_level);
 
-/* ------------------------------------------------------------------------------------------ */
-/* Spectra                                                                                     */
-/* ------------------------------------------------------------------------------------------ */
+/* ============================================================================================ */
+/* 2. Backends, SIMD paths and OpenCL devices (src/core) */
+/* ============================================================================================ */
+
+/** Where batch work runs. AUTO: the CPU unless the batch is large enough to repay OpenCL
+ * start-up (see README "opencl"); never an error when no OpenCL platform exists. */
+typedef enum lx_backend { LX_BACKEND_AUTO = 0, LX_BACKEND_CPU = 1, LX_BACKEND_OPENCL = 2 } lx_backend;
+
+/** Parses "auto", "cpu" or "opencl" into *out; returns LX_EINVAL (message names the text) otherwise. */
+LX_API lx_status lx_backend_parse(lx_ctx *ctx, const char *text, lx_backend *out);
+
+/** The backend named by the environment variable LX_BACKEND, or LX_BACKEND_AUTO when unset/invalid. */
+LX_API lx_backend lx_backend_from_env(void);
+
+/** The SIMD paths of the CPU code. A path runs only on a CPU with every instruction-set extension
+ * its code uses (AVX2: the x86-64-v3 set, AVX2 FMA F16C BMI1 BMI2 LZCNT MOVBE POPCNT; AVX512: the
+ * x86-64-v4 set, adding AVX-512 F CD BW DQ VL). Each SIMD path is a twin of a plain C loop that
+ * stays the reference. The environment variable LX_SIMD=scalar|avx2|avx512 caps the path used,
+ * in every module alike (it never raises the path above what the CPU has). */
+typedef enum lx_simd { LX_SIMD_SCALAR = 0, LX_SIMD_AVX2 = 1, LX_SIMD_AVX512 = 2 } lx_simd;
+
+/** The highest SIMD path this CPU can run, ignoring LX_SIMD. Thread-safe. */
+LX_API lx_simd lx_simd_cpu(void);
+
+/** The SIMD path the library uses now: lx_simd_cpu() capped by LX_SIMD (read on every call; an
+ * unknown value does not cap). Thread-safe. */
+LX_API lx_simd lx_simd_level(void);
+
+/** "scalar", "avx2" or "avx512"; NULL for a value that is none of them. */
+LX_API const char *lx_simd_name(lx_simd simd);
+
+/** Parses "scalar", "avx2" or "avx512" into *out; LX_EINVAL (message names the text) otherwise. */
+LX_API lx_status lx_simd_parse(lx_ctx *ctx, const char *text, lx_simd *out);
+
+/** OpenCL device types for the device choice. */
+typedef enum lx_cl_type { LX_CL_AUTO = 0, LX_CL_CPU = 1, LX_CL_GPU = 2 } lx_cl_type;
+
+/** Chooses the OpenCL device this context will use, before its first OpenCL work: platform and
+ * device indices (-1: any; then the environment LX_PLATFORM / LX_DEVICE apply) and a type (AUTO
+ * prefers a GPU, then any device). Releases an OpenCL state the context already holds.
+ * Returns LX_EUNSUPPORTED in a build without OpenCL. Does not initialise OpenCL. */
+LX_API lx_status lx_cl_select(lx_ctx *ctx, int platform, int device, lx_cl_type type);
+
+/** Borrows a caller's OpenCL context and command queue (cl_context and cl_command_queue passed
+ * as void*, so this header needs no OpenCL headers). The library retains both and releases them
+ * at lx_ctx_destroy; the device is the queue's. Returns LX_EUNSUPPORTED without OpenCL. */
+LX_API lx_status lx_cl_borrow(lx_ctx *ctx, void *cl_context, void *cl_command_queue);
+
+/** Description of one OpenCL device. */
+typedef struct lx_cl_device_info {
+    int platform, device;           /* indices as LX_PLATFORM / LX_DEVICE count them */
+    char platform_name[128];
+    char device_name[128];
+    char version[64];               /* CL_DEVICE_VERSION */
+    int is_gpu, is_cpu;
+    unsigned compute_units;
+    unsigned long long global_mem_bytes;
+    unsigned long long max_alloc_bytes; /* CL_DEVICE_MAX_MEM_ALLOC_SIZE, the chunk limit */
+    int fp64;                       /* 1 when cl_khr_fp64 (or OpenCL >= 1.2 double) is available */
+    int is_default;                 /* 1 for the device the AUTO choice (and environment) picks */
+} lx_cl_device_info;
+
+/** Lists every OpenCL device of every platform into *out (malloc'ed, free with free()), *n of
+ * them. No platform is not an error: *n = 0. Does not create an OpenCL context. */
+LX_API lx_status lx_cl_devices(lx_ctx *ctx, lx_cl_device_info **out, size_t *n);
+
+/** Initialises OpenCL on ctx if not done yet (device choice, context, queue) and describes the
+ * device in use. LX_EDEVICE when no device can be used, with the OpenCL call and code. */
+LX_API lx_status lx_cl_info(lx_ctx *ctx, lx_cl_device_info *out);
+
+/** 1 when ctx already holds an initialised OpenCL state (start-up already paid), else 0. */
+LX_API int lx_cl_ready(const lx_ctx *ctx);
+
+/* ============================================================================================ */
+/* 3. Spectra as views; embedded tables: weighting functions, illuminants, test colour samples (src/tables) */
+/* ============================================================================================ */
 
 /** A sampled spectrum: a view of n samples at strictly increasing wavelengths. The library
  * treats a spectrum as piecewise linear between samples and zero outside [lambda_nm[0],
@@ -96,6 +187,56 @@ typedef struct lx_spd {
     const double *lambda_nm; /* wavelengths in nm, strictly increasing */
     const double *value;     /* values, unit set by the caller (W/nm, W/m2/nm, relative, ...) */
 } lx_spd;
+
+/** Weighting functions embedded from the CIE tables (views valid for the life of the program). */
+typedef enum lx_function {
+    LX_FN_XBAR_2 = 0, LX_FN_YBAR_2, LX_FN_ZBAR_2,    /* CIE 1931 2 deg, 360-830 nm at 1 nm */
+    LX_FN_XBAR_10, LX_FN_YBAR_10, LX_FN_ZBAR_10,     /* CIE 1964 10 deg, 360-830 nm at 1 nm */
+    LX_FN_VPRIME,                                    /* CIE 1951 scotopic V'(lambda), 380-780 nm */
+    LX_FN_ALPHA_SC, LX_FN_ALPHA_MC, LX_FN_ALPHA_LC,  /* CIE S 026 alpha-opic action spectra, */
+    LX_FN_ALPHA_RH, LX_FN_ALPHA_MEL,                 /* 380-780 nm at 1 nm, peak 1 */
+    LX_FN_COUNT
+} lx_function;
+
+/** A view of an embedded weighting function. Returns LX_EINVAL for an unknown id. */
+LX_API lx_status lx_function_get(lx_ctx *ctx, lx_function fn, lx_spd *out);
+
+/** A view of a CIE illuminant from the embedded tables by name: "A", "D50", "D55", "D65", "D75",
+ * "E", "FL1".."FL12", "FL3.1".."FL3.15", "LED-B1".."LED-V2", "HP1".."HP5" (relative SPDs as
+ * published, 5 nm). Returns LX_EINVAL for an unknown name. */
+LX_API lx_status lx_illuminant_get(lx_ctx *ctx, const char *name, lx_spd *out);
+
+/** The names of the embedded illuminants, NULL-terminated (static storage). */
+LX_API const char *const *lx_illuminant_names(void);
+
+/** CIE illuminant A by its defining formula (CIE 015:2018 eq. 4.1), any wavelength: 100 at 560 nm. */
+LX_API double lx_illuminant_a(double lambda_nm);
+
+/** Planck's law: spectral radiance of a blackbody in W/(sr m2 nm) at lambda_nm and T_K, with
+ * c1L = 1.191042972e-16 W m2/sr and c2 = 1.4388e-2 m K. Stable for 1 K to 1e9 K (no overflow;
+ * underflows to 0). Returns NaN when lambda_nm or T_K is not positive and finite. Thread-safe. */
+LX_API double lx_planck(double lambda_nm, double T_K);
+
+/** Total radiant exitance of a blackbody, Stefan-Boltzmann sigma T^4 in W/m2. */
+LX_API double lx_stefan_boltzmann(double T_K);
+
+/** CIE D-series relative SPD for a correlated colour temperature 4000-25000 K (CIE 015:2018
+ * 4.1.2; M1, M2 rounded to 3 decimals as the standard prescribes) at n wavelengths (300-830 nm,
+ * basis linearly interpolated; 0 outside). Returns LX_ERANGE for a CCT outside 4000-25000 K. */
+LX_API lx_status lx_daylight(lx_ctx *ctx, double cct_K, size_t n, const double *lambda_nm,
+                             double *value);
+
+/** Chromaticity of CIE daylight at cct_K (CIE 015:2018 eq. 4.7-4.8). */
+LX_API lx_status lx_daylight_xy(lx_ctx *ctx, double cct_K, double *x, double *y);
+
+/** A view of CIE 13.3-1995 test colour sample TCS01..TCS14 (index 1..14): spectral reflectance
+ * factor, 360-830 nm at 5 nm, from the embedded table (valid for the life of the program).
+ * LX_EINVAL for another index. Thread-safe. */
+LX_API lx_status lx_tcs_get(lx_ctx *ctx, int index, lx_spd *out);
+
+/* ============================================================================================ */
+/* 4. Spectra: reading, integration, colorimetry (src/spectral) */
+/* ============================================================================================ */
 
 /** Spectra read from one file. Owns every array and string it points to. */
 typedef struct lx_spd_set {
@@ -174,63 +315,9 @@ LX_API lx_status lx_spd_colorimetry(lx_ctx *ctx, const lx_spd *spd, lx_observer 
 LX_API lx_status lx_colorimetry_from_integrals(lx_ctx *ctx, lx_observer observer, const double xyz[3],
                                                double vprime, double radiant, lx_colorimetry *out);
 
-/** Colorimetry of every spectrum of a batch (N spectra on one uniform grid, see lx_batch below)
- * with the cie15 rule: the integrals by lx_batch_integrate on opts->backend, the derived
- * quantities (CCT and Duv solved per spectrum) on opts->threads threads. out: n_spectra entries.
- * Agrees with lx_spd_colorimetry (method cie15) to 1e-9 relative. opts may be NULL. */
-struct lx_batch;
-struct lx_batch_opts;
-LX_API lx_status lx_batch_colorimetry(lx_ctx *ctx, const struct lx_batch *batch, lx_observer observer,
-                                      struct lx_batch_opts *opts, lx_colorimetry *out);
-
-/* ------------------------------------------------------------------------------------------ */
-/* CIE tables, illuminants, Planck and daylight                                                */
-/* ------------------------------------------------------------------------------------------ */
-
-/** Weighting functions embedded from the CIE tables (views valid for the life of the program). */
-typedef enum lx_function {
-    LX_FN_XBAR_2 = 0, LX_FN_YBAR_2, LX_FN_ZBAR_2,    /* CIE 1931 2 deg, 360-830 nm at 1 nm */
-    LX_FN_XBAR_10, LX_FN_YBAR_10, LX_FN_ZBAR_10,     /* CIE 1964 10 deg, 360-830 nm at 1 nm */
-    LX_FN_VPRIME,                                    /* CIE 1951 scotopic V'(lambda), 380-780 nm */
-    LX_FN_ALPHA_SC, LX_FN_ALPHA_MC, LX_FN_ALPHA_LC,  /* CIE S 026 alpha-opic action spectra, */
-    LX_FN_ALPHA_RH, LX_FN_ALPHA_MEL,                 /* 380-780 nm at 1 nm, peak 1 */
-    LX_FN_COUNT
-} lx_function;
-
-/** A view of an embedded weighting function. Returns LX_EINVAL for an unknown id. */
-LX_API lx_status lx_function_get(lx_ctx *ctx, lx_function fn, lx_spd *out);
-
-/** A view of a CIE illuminant from the embedded tables by name: "A", "D50", "D55", "D65", "D75",
- * "E", "FL1".."FL12", "FL3.1".."FL3.15", "LED-B1".."LED-V2", "HP1".."HP5" (relative SPDs as
- * published, 5 nm). Returns LX_EINVAL for an unknown name. */
-LX_API lx_status lx_illuminant_get(lx_ctx *ctx, const char *name, lx_spd *out);
-
-/** The names of the embedded illuminants, NULL-terminated (static storage). */
-LX_API const char *const *lx_illuminant_names(void);
-
-/** CIE illuminant A by its defining formula (CIE 015:2018 eq. 4.1), any wavelength: 100 at 560 nm. */
-LX_API double lx_illuminant_a(double lambda_nm);
-
-/** Planck's law: spectral radiance of a blackbody in W/(sr m2 nm) at lambda_nm and T_K, with
- * c1L = 1.191042972e-16 W m2/sr and c2 = 1.4388e-2 m K. Stable for 1 K to 1e9 K (no overflow;
- * underflows to 0). Returns NaN when lambda_nm or T_K is not positive and finite. Thread-safe. */
-LX_API double lx_planck(double lambda_nm, double T_K);
-
-/** Total radiant exitance of a blackbody, Stefan-Boltzmann sigma T^4 in W/m2. */
-LX_API double lx_stefan_boltzmann(double T_K);
-
-/** CIE D-series relative SPD for a correlated colour temperature 4000-25000 K (CIE 015:2018
- * 4.1.2; M1, M2 rounded to 3 decimals as the standard prescribes) at n wavelengths (300-830 nm,
- * basis linearly interpolated; 0 outside). Returns LX_ERANGE for a CCT outside 4000-25000 K. */
-LX_API lx_status lx_daylight(lx_ctx *ctx, double cct_K, size_t n, const double *lambda_nm,
-                             double *value);
-
-/** Chromaticity of CIE daylight at cct_K (CIE 015:2018 eq. 4.7-4.8). */
-LX_API lx_status lx_daylight_xy(lx_ctx *ctx, double cct_K, double *x, double *y);
-
-/* ------------------------------------------------------------------------------------------ */
-/* Chromaticity                                                                                */
-/* ------------------------------------------------------------------------------------------ */
+/* ============================================================================================ */
+/* 5. Correlated colour temperature (src/spectral) */
+/* ============================================================================================ */
 
 /** CCT and Duv from CIE 1960 (u, v), solved exactly on the Planckian locus computed with the
  * observer's colour-matching functions (360-830 nm, 1 nm) and c2 = 1.4388e-2 m K. Searches
@@ -245,76 +332,9 @@ LX_API lx_status lx_cct_from_xy(lx_ctx *ctx, lx_observer observer, double x, dou
 /** CIE 1960 uv of the Planckian radiator at T_K with the observer's CMFs. */
 LX_API lx_status lx_planck_uv(lx_ctx *ctx, lx_observer observer, double T_K, double *u, double *v);
 
-/* ---- OpenCL runtime and batches (issue 3) ---- */
-
-/** Where batch work runs. AUTO: the CPU unless the batch is large enough to repay OpenCL
- * start-up (see README "opencl"); never an error when no OpenCL platform exists. */
-typedef enum lx_backend { LX_BACKEND_AUTO = 0, LX_BACKEND_CPU = 1, LX_BACKEND_OPENCL = 2 } lx_backend;
-
-/** Parses "auto", "cpu" or "opencl" into *out; returns LX_EINVAL (message names the text) otherwise. */
-LX_API lx_status lx_backend_parse(lx_ctx *ctx, const char *text, lx_backend *out);
-
-/** The backend named by the environment variable LX_BACKEND, or LX_BACKEND_AUTO when unset/invalid. */
-LX_API lx_backend lx_backend_from_env(void);
-
-/** The SIMD paths of the CPU code. A path runs only on a CPU with every instruction-set extension
- * its code uses (AVX2: the x86-64-v3 set, AVX2 FMA F16C BMI1 BMI2 LZCNT MOVBE POPCNT; AVX512: the
- * x86-64-v4 set, adding AVX-512 F CD BW DQ VL). Each SIMD path is a twin of a plain C loop that
- * stays the reference. The environment variable LX_SIMD=scalar|avx2|avx512 caps the path used,
- * in every module alike (it never raises the path above what the CPU has). */
-typedef enum lx_simd { LX_SIMD_SCALAR = 0, LX_SIMD_AVX2 = 1, LX_SIMD_AVX512 = 2 } lx_simd;
-
-/** The highest SIMD path this CPU can run, ignoring LX_SIMD. Thread-safe. */
-LX_API lx_simd lx_simd_cpu(void);
-
-/** The SIMD path the library uses now: lx_simd_cpu() capped by LX_SIMD (read on every call; an
- * unknown value does not cap). Thread-safe. */
-LX_API lx_simd lx_simd_level(void);
-
-/** "scalar", "avx2" or "avx512"; NULL for a value that is none of them. */
-LX_API const char *lx_simd_name(lx_simd simd);
-
-/** Parses "scalar", "avx2" or "avx512" into *out; LX_EINVAL (message names the text) otherwise. */
-LX_API lx_status lx_simd_parse(lx_ctx *ctx, const char *text, lx_simd *out);
-
-/** OpenCL device types for the device choice. */
-typedef enum lx_cl_type { LX_CL_AUTO = 0, LX_CL_CPU = 1, LX_CL_GPU = 2 } lx_cl_type;
-
-/** Chooses the OpenCL device this context will use, before its first OpenCL work: platform and
- * device indices (-1: any; then the environment LX_PLATFORM / LX_DEVICE apply) and a type (AUTO
- * prefers a GPU, then any device). Releases an OpenCL state the context already holds.
- * Returns LX_EUNSUPPORTED in a build without OpenCL. Does not initialise OpenCL. */
-LX_API lx_status lx_cl_select(lx_ctx *ctx, int platform, int device, lx_cl_type type);
-
-/** Borrows a caller's OpenCL context and command queue (cl_context and cl_command_queue passed
- * as void*, so this header needs no OpenCL headers). The library retains both and releases them
- * at lx_ctx_destroy; the device is the queue's. Returns LX_EUNSUPPORTED without OpenCL. */
-LX_API lx_status lx_cl_borrow(lx_ctx *ctx, void *cl_context, void *cl_command_queue);
-
-/** Description of one OpenCL device. */
-typedef struct lx_cl_device_info {
-    int platform, device;           /* indices as LX_PLATFORM / LX_DEVICE count them */
-    char platform_name[128];
-    char device_name[128];
-    char version[64];               /* CL_DEVICE_VERSION */
-    int is_gpu, is_cpu;
-    unsigned compute_units;
-    unsigned long long global_mem_bytes;
-    unsigned long long max_alloc_bytes; /* CL_DEVICE_MAX_MEM_ALLOC_SIZE, the chunk limit */
-    int fp64;                       /* 1 when cl_khr_fp64 (or OpenCL >= 1.2 double) is available */
-    int is_default;                 /* 1 for the device the AUTO choice (and environment) picks */
-} lx_cl_device_info;
-
-/** Lists every OpenCL device of every platform into *out (malloc'ed, free with free()), *n of
- * them. No platform is not an error: *n = 0. Does not create an OpenCL context. */
-LX_API lx_status lx_cl_devices(lx_ctx *ctx, lx_cl_device_info **out, size_t *n);
-
-/** Initialises OpenCL on ctx if not done yet (device choice, context, queue) and describes the
- * device in use. LX_EDEVICE when no device can be used, with the OpenCL call and code. */
-LX_API lx_status lx_cl_info(lx_ctx *ctx, lx_cl_device_info *out);
-
-/** 1 when ctx already holds an initialised OpenCL state (start-up already paid), else 0. */
-LX_API int lx_cl_ready(const lx_ctx *ctx);
+/* ============================================================================================ */
+/* 6. Batches: many spectra on one grid, CSV files end to end (src/spectral) */
+/* ============================================================================================ */
 
 /** Element type of batch values. */
 typedef enum lx_dtype { LX_F32 = 0, LX_F64 = 1 } lx_dtype;
@@ -393,7 +413,69 @@ LX_API lx_status lx_batch_table_integrate_file(lx_ctx *ctx, const char *path, co
 LX_API lx_status lx_batch_resample(lx_ctx *ctx, size_t n_spectra, const double *lambda_nm, const double *value,
                                    const size_t *offset, const size_t *n_in, lx_batch *dst, lx_batch_opts *opts);
 
-/* ---- colour rendering and photobiology (issue 7) ---- */
+/** Colorimetry of every spectrum of a batch (N spectra on one uniform grid, lx_batch)
+ * with the cie15 rule: the integrals by lx_batch_integrate on opts->backend, the derived
+ * quantities (CCT and Duv solved per spectrum) on opts->threads threads. out: n_spectra entries.
+ * Agrees with lx_spd_colorimetry (method cie15) to 1e-9 relative. opts may be NULL. */
+LX_API lx_status lx_batch_colorimetry(lx_ctx *ctx, const lx_batch *batch, lx_observer observer,
+                                      lx_batch_opts *opts, lx_colorimetry *out);
+
+/* ============================================================================================ */
+/* 7. Photobiology: alpha-opic and mesopic quantities, efficacy of a file (src/spectral) */
+/* ============================================================================================ */
+
+/** The five CIE S 026 photoreceptors, in the order of every alpha-opic array. */
+typedef enum lx_alphaopic_kind {
+    LX_AO_SC = 0, /* S-cone opic (cyanopic) */
+    LX_AO_MC = 1, /* M-cone opic (chloropic) */
+    LX_AO_LC = 2, /* L-cone opic (erythropic) */
+    LX_AO_RH = 3, /* rhodopic (rods) */
+    LX_AO_MEL = 4 /* melanopic (ipRGC), the headline quantity */
+} lx_alphaopic_kind;
+
+/** CIE S 026:2018 alpha-opic quantities of one spectrum. Units follow the spectrum: for
+ * W/m2/nm input, irradiance is in W/m2, illuminance and edi in lx (W/sr/m2/nm: W/(sr m2) and
+ * cd/m2, i.e. radiance and equivalent daylight luminance; W/nm: W and lm). */
+typedef struct lx_alphaopic {
+    double irradiance[5]; /* alpha-opic irradiance E_alpha = integral E(l) s_alpha(l) dl */
+    double illuminance;   /* E_v = 683.002 lm/W * integral E(l) V(l) dl (2 deg ybar) */
+    double elr[5];        /* alpha-opic efficacy of radiation E_alpha / E_v, W/lm (NaN when E_v = 0) */
+    double edi[5];        /* alpha-opic equivalent daylight (D65) illuminance E_alpha / K_alpha^D65, lx */
+    double der[5];        /* daylight efficacy ratio elr / K_alpha^D65 (NaN when E_v = 0) */
+} lx_alphaopic;
+
+/** K_alpha,v^D65 of CIE S 026:2018 Table 2 in W/lm (melanopic 1.3262e-3); NaN for a bad index. */
+LX_API double lx_alphaopic_d65_efficacy(lx_alphaopic_kind kind);
+
+/** CIE S 026:2018 alpha-opic irradiances, equivalent daylight illuminances and DERs with the
+ * integration method of lx_spd_integrate (action spectra 380-780 nm, 1 nm). Thread-safe for
+ * distinct contexts. */
+LX_API lx_status lx_alphaopic_compute(lx_ctx *ctx, const lx_spd *spd, lx_method method, lx_alphaopic *out);
+
+/** The same for a batch (cie15 rule, see lx_batch_integrate; OpenCL when opts->backend asks for
+ * it or AUTO finds it pays). out[i*6 + k]: the five alpha-opic irradiances (k = 0..4, order of
+ * lx_alphaopic_kind) and the illuminance E_v (k = 5) of spectrum i; EDI = out[k] /
+ * lx_alphaopic_d65_efficacy(k). opts may be NULL. */
+LX_API lx_status lx_alphaopic_batch(lx_ctx *ctx, const lx_batch *batch, lx_batch_opts *opts,
+                                    double *out);
+
+/** CIE 191:2010 MES2 mesopic luminance from photopic luminance L_p and scotopic luminance L_s
+ * (cd/m2, L_s with K'm = 1699 lm/W as CIE 191 writes V'(555 nm) = 683/1699): solves
+ * L_mes = (m L_p + (1 - m) L_s V'0) / (m + (1 - m) V'0), m = 0.7670 + 0.3334 log10(L_mes)
+ * clamped to [0, 1], by the standard's iteration from m = 0.5 (bisection if it ever fails to
+ * converge). L_p >= 5 cd/m2 gives m = 1, L_mes = L_p. *m_out (may be NULL) receives m.
+ * LX_EINVAL for negative or non-finite input. Thread-safe. */
+LX_API lx_status lx_mesopic_luminance(lx_ctx *ctx, double photopic_cd_m2, double scotopic_cd_m2,
+                                      double *mesopic_cd_m2, double *m_out);
+
+/** The luminous efficacy of radiation (lm/W, 2 deg observer, auto method) of the single
+ * spectrum in a file read with lx_spd_read_file (efficacy.c). LX_EINVAL when the file holds
+ * more than one spectrum or its radiant integral is zero. */
+LX_API lx_status lx_efficacy_from_spd_file(lx_ctx *ctx, const char *path, double *ler_lm_per_W);
+
+/* ============================================================================================ */
+/* 8. Colour rendering: CIE 13.3 CRI, CIE 224 / TM-30 (src/colour) */
+/* ============================================================================================ */
 
 /** CIE 13.3-1995 colour rendering of one spectrum. */
 typedef struct lx_cri {
@@ -436,302 +518,9 @@ typedef struct lx_tm30 {
  * (LX_ERANGE) as for lx_cri_compute. Thread-safe for distinct contexts. */
 LX_API lx_status lx_tm30_compute(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out);
 
-/** The five CIE S 026 photoreceptors, in the order of every alpha-opic array. */
-typedef enum lx_alphaopic_kind {
-    LX_AO_SC = 0, /* S-cone opic (cyanopic) */
-    LX_AO_MC = 1, /* M-cone opic (chloropic) */
-    LX_AO_LC = 2, /* L-cone opic (erythropic) */
-    LX_AO_RH = 3, /* rhodopic (rods) */
-    LX_AO_MEL = 4 /* melanopic (ipRGC), the headline quantity */
-} lx_alphaopic_kind;
-
-/** CIE S 026:2018 alpha-opic quantities of one spectrum. Units follow the spectrum: for
- * W/m2/nm input, irradiance is in W/m2, illuminance and edi in lx (W/sr/m2/nm: W/(sr m2) and
- * cd/m2, i.e. radiance and equivalent daylight luminance; W/nm: W and lm). */
-typedef struct lx_alphaopic {
-    double irradiance[5]; /* alpha-opic irradiance E_alpha = integral E(l) s_alpha(l) dl */
-    double illuminance;   /* E_v = 683.002 lm/W * integral E(l) V(l) dl (2 deg ybar) */
-    double elr[5];        /* alpha-opic efficacy of radiation E_alpha / E_v, W/lm (NaN when E_v = 0) */
-    double edi[5];        /* alpha-opic equivalent daylight (D65) illuminance E_alpha / K_alpha^D65, lx */
-    double der[5];        /* daylight efficacy ratio elr / K_alpha^D65 (NaN when E_v = 0) */
-} lx_alphaopic;
-
-/** K_alpha,v^D65 of CIE S 026:2018 Table 2 in W/lm (melanopic 1.3262e-3); NaN for a bad index. */
-LX_API double lx_alphaopic_d65_efficacy(lx_alphaopic_kind kind);
-
-/** CIE S 026:2018 alpha-opic irradiances, equivalent daylight illuminances and DERs with the
- * integration method of lx_spd_integrate (action spectra 380-780 nm, 1 nm). Thread-safe for
- * distinct contexts. */
-LX_API lx_status lx_alphaopic_compute(lx_ctx *ctx, const lx_spd *spd, lx_method method, lx_alphaopic *out);
-
-/** The same for a batch (cie15 rule, see lx_batch_integrate; OpenCL when opts->backend asks for
- * it or AUTO finds it pays). out[i*6 + k]: the five alpha-opic irradiances (k = 0..4, order of
- * lx_alphaopic_kind) and the illuminance E_v (k = 5) of spectrum i; EDI = out[k] /
- * lx_alphaopic_d65_efficacy(k). opts may be NULL. */
-struct lx_batch;      /* defined below (OpenCL runtime and batches) */
-struct lx_batch_opts;
-LX_API lx_status lx_alphaopic_batch(lx_ctx *ctx, const struct lx_batch *batch, struct lx_batch_opts *opts,
-                                    double *out);
-
-/** CIE 191:2010 MES2 mesopic luminance from photopic luminance L_p and scotopic luminance L_s
- * (cd/m2, L_s with K'm = 1699 lm/W as CIE 191 writes V'(555 nm) = 683/1699): solves
- * L_mes = (m L_p + (1 - m) L_s V'0) / (m + (1 - m) V'0), m = 0.7670 + 0.3334 log10(L_mes)
- * clamped to [0, 1], by the standard's iteration from m = 0.5 (bisection if it ever fails to
- * converge). L_p >= 5 cd/m2 gives m = 1, L_mes = L_p. *m_out (may be NULL) receives m.
- * LX_EINVAL for negative or non-finite input. Thread-safe. */
-LX_API lx_status lx_mesopic_luminance(lx_ctx *ctx, double photopic_cd_m2, double scotopic_cd_m2,
-                                      double *mesopic_cd_m2, double *m_out);
-
-/** One-page PNG report of one spectrum (report_png.c), written atomically (temporary file +
- * rename; nothing is left at path on failure): the SPD with the area under it in the colour of
- * each wavelength (approximate sRGB), the colour of the light as a normalised sRGB swatch, the
- * CIE xy diagram of the observer (spectral locus, Planckian locus with isotemperature ticks at
- * Duv +-0.02, the point), CIE 13.3 Ra and R1-R14 bars with values, the TM-30 colour vector
- * graphic, and x, y, CCT, Duv, Ra, R9, Rf, Rg and melanopic DER. A metric that is undefined for
- * the spectrum (lx_cri_compute or lx_tm30_compute refuse) is shown with its reason instead.
- * title: the heading (NULL: spd->name). 1100 x 800 pixels. Errors: those of lx_spd_check and
- * lx_spd_colorimetry, LX_EIO (path not writable), LX_ENOMEM. Thread-safe for distinct contexts. */
-LX_API lx_status lx_spd_report_png(lx_ctx *ctx, const lx_spd *spd, lx_observer observer, const char *title,
-                                   const char *path);
-
-/* ---- spectral OpenEXR images (issue 3: spectral_exr.c) ---- */
-
-/* Spectral EXR images in the layout of Fichet et al. 2021, "An OpenEXR Layout for Spectral
- * Images" (JCGT 10(3)): emissive channels "S0.<wavelength, comma as decimal point><unit>", e.g.
- * "S0.550,000000nm" (units nm, um, mm, m, pm); polarised S1-S3 channels are ignored; reflective
- * "T." channels alone are LX_EUNSUPPORTED. Values are spectral radiance W/(sr m2 nm). */
-
-/** A spectral image integrated per pixel to absolute CIE XYZ. Owns its arrays. */
-typedef struct lx_xyz_image {
-    int width, height;     /* the data window */
-    double *xyz;           /* width * height * 3, row-major, X Y Z interleaved: Km * integral of S xbar
-                            * etc. (cd/m2 for radiance channels; Km 683.002, 10 deg: 683.599) */
-    size_t n_lambda;       /* S0 channels used */
-    double *lambda_nm;     /* their wavelengths, increasing */
-    int resampled;         /* 0: summed on the channels' own uniform grid (cie15 rule, as
-                            * lx_spd_colorimetry with LX_METHOD_CIE15); 1: wavelengths not uniform,
-                            * resampled to 1 nm (lx_batch_resample, the exact method's model) first */
-    int polarised_ignored; /* number of S1-S3 channels ignored */
-} lx_xyz_image;
-
-/** Reads a spectral OpenEXR file (scanline or tiled, half or float, any compression; first part)
- * and integrates every pixel with lx_batch_integrate (opts may be NULL; opts->backend chooses CPU
- * or OpenCL). Errors name the file: LX_EPARSE (not EXR, no S0 channels, a malformed wavelength,
- * a duplicate or non-finite value), LX_EUNSUPPORTED (reflective only, subsampled or integer
- * channels, deep data), LX_EIO. Free *out with lx_xyz_image_free. */
-LX_API lx_status lx_spectral_exr_read_xyz(lx_ctx *ctx, const char *path, lx_observer observer, lx_batch_opts *opts,
-                                          lx_xyz_image **out);
-
-/** Writes the image as a float OpenEXR with channels X, Y, Z (ZIP), atomically (temporary file +
- * rename; an existing file is replaced only on success). */
-LX_API lx_status lx_xyz_exr_write(lx_ctx *ctx, const char *path, const lx_xyz_image *img);
-
-/** Writes an sRGB preview PNG (XYZ -> linear sRGB, exposure from the median luminance, Reinhard
- * tone curve), enlarged to at least 256 pixels wide, atomically. */
-LX_API lx_status lx_xyz_png_write(lx_ctx *ctx, const char *path, const lx_xyz_image *img);
-
-/** Frees an image. Accepts NULL. */
-LX_API void lx_xyz_image_free(lx_xyz_image *img);
-
-/* ---- radiance fields (issue 6) ---- */
-
-/* Lat-long (equirectangular) environment maps (envmap.c). Direction convention (CLI.md): +z up,
- * theta from +z, phi from +x towards +y. In a width x height map, pixel (row j, column i) covers
- * theta in [j, j+1] pi/height and phi in [i, i+1] 2 pi/width; row 0 touches theta = 0. The map is
- * read as piecewise constant: each pixel's radiance holds over its whole patch of sphere. */
-
-/** What the channels of a map measure. */
-typedef enum lx_envmap_units {
-    LX_ENV_AUTO = 0,      /* reading: LUMINANCE when the file has a whiteLuminance attribute, else RADIANCE */
-    LX_ENV_RADIANCE = 1,  /* W/(sr m2) per channel; luminance = lum_per_unit * Y (efficacy, default 179 lm/W) */
-    LX_ENV_LUMINANCE = 2  /* relative photometric values: luminance = lum_per_unit * Y in cd/m2 */
-} lx_envmap_units;
-
-/** Luminous efficacy that turns the Y combination of W/(sr m2) channels into cd/m2 by default:
- * 179 lm/W, the white efficacy of the Radiance system (equal-energy white over 380-780 nm). */
-#define LX_ENV_DEFAULT_EFFICACY 179.0
-
-/** A lat-long map with 1 (Y) or 3 (R, G, B) channels stored as float (as read; all arithmetic on
- * it is double). Owns data. Create with lx_envmap_create or lx_exr_read, free with lx_envmap_free. */
-typedef struct lx_envmap {
-    int width, height;      /* pixels (any sizes >= 1; lat-long maps are usually width = 2 height) */
-    int channels;           /* 1 or 3 */
-    float *data;            /* row-major, channels interleaved: data[(j * width + i) * channels + c] */
-    double y_weights[3];    /* Y = sum y_weights[c] * channel c: the Y row of RGB->XYZ from the
-                             * file's chromaticities, else Rec.709/sRGB (0.2126729, 0.7151522,
-                             * 0.0721750); {1, 0, 0} for one channel */
-    int has_chromaticities; /* 1 when y_weights came from a chromaticities attribute */
-    double chroma_xy[8];    /* that attribute (rx ry gx gy bx by wx wy), written back by lx_exr_write */
-    lx_envmap_units units;  /* RADIANCE or LUMINANCE (never AUTO once read) */
-    double lum_per_unit;    /* cd/m2 per unit of Y: efficacy (RADIANCE) or whiteLuminance / 1 (LUMINANCE) */
-    int layout;             /* lx_envmap_layout: LATLONG (0, what lx_envmap_create makes) or CUBE */
-} lx_envmap;
-
-/** Map layouts. A CUBE map is the OpenEXR cube layout: width N, height 6 N, six N x N faces stacked
- * top to bottom in the file order +X, -X, +Y, -Y, +Z, -Z, each oriented as OpenEXR's ImfEnvmap.h
- * draws it. OpenEXR's axes (y up) become luxcalc's (+z up) by the same mapping that its lat-long
- * layout needs to match ours: (x, y, z)_exr -> (-z, x, y), so the file's +Y face is our zenith,
- * its +X face looks towards our +y and its -Z face towards our +x. Texel (r, c) of a face covers
- * the square [2c/N - 1, 2(c+1)/N - 1] x [2r/N - 1, 2(r+1)/N - 1] of the face at unit distance (the
- * texels tile the cube; OpenEXR's direction() samples texel centres at the face edges instead). */
-typedef enum lx_envmap_layout {
-    LX_ENV_LATLONG = 0,
-    LX_ENV_CUBE = 1
-} lx_envmap_layout;
-
-/** Creates a zero-filled cube map with faces of size x size texels (width size, height 6 size). */
-LX_API lx_status lx_envmap_create_cube(lx_ctx *ctx, int size, int channels, lx_envmap **out);
-
-/** Unit vector of a cube-map point at fractional map coordinates (row in [0, 6 size), col in
- * [0, size]); texel centres are (r + 0.5, c + 0.5). Thread-safe. */
-LX_API void lx_envmap_cube_direction(int size, double row, double col, double dir[3]);
-
-/** Exact solid angle of cube texel (row, col) of a face (row 0..size-1; the same on every face):
- * the corner sum of atan(a b / sqrt(1 + a^2 + b^2)) over the texel's square, in sr. */
-LX_API double lx_envmap_cube_texel_sr(int size, int row, int col);
-
-/** Exact first moment (integral of omega d omega, Lambert's polygon formula) of the cube texel at
- * map row (0..6 size - 1) and column. Thread-safe. */
-LX_API void lx_envmap_cube_texel_moment(int size, int row, int col, double m[3]);
-
-/** Exact solid angle of any pixel of a map (lat-long or cube), in sr. */
-LX_API double lx_envmap_texel_sr(const lx_envmap *map, int row, int col);
-
-/** Unit vector of the centre of pixel (row, col) of a map (lat-long or cube). */
-LX_API void lx_envmap_texel_direction(const lx_envmap *map, int row, int col, double dir[3]);
-
-/** Creates a zero-filled map (Rec.709 weights, RADIANCE, efficacy 179 lm/W). channels 1 or 3. */
-LX_API lx_status lx_envmap_create(lx_ctx *ctx, int width, int height, int channels, lx_envmap **out);
-
-/** Frees a map. Accepts NULL. */
-LX_API void lx_envmap_free(lx_envmap *map);
-
-/** Unit vector of the pixel centre of (row j + 0.5, column i + 0.5) as fractional coordinates
- * (row, col): theta = row pi / height, phi = col 2 pi / width. Thread-safe. */
-LX_API void lx_envmap_direction(int width, int height, double row, double col, double dir[3]);
-
-/** Exact solid angle of a pixel of row j: (2 pi / width)(cos theta0 - cos theta1), in sr. */
-LX_API double lx_envmap_pixel_sr(int width, int height, int row);
-
-/** Exact first moment of a pixel, m = integral over the pixel of omega d omega (a vector whose
- * length is slightly below its solid angle): the projected solid angle seen by a normal n that
- * sees the whole pixel is n . m. Thread-safe. */
-LX_API void lx_envmap_pixel_moment(int width, int height, int row, int col, double m[3]);
-
-/** Luminance Y of a map's channel values: sum y_weights[c] v[c] (no lum_per_unit factor). */
-LX_API double lx_envmap_y(const lx_envmap *map, const float *pixel);
-
-/** Per-pixel luminance in cd/m2 (lum_per_unit * Y) into out (width * height doubles). */
-LX_API lx_status lx_envmap_luminance(lx_ctx *ctx, const lx_envmap *map, double *out);
-
-/** Solid-angle-weighted box filter to a width x height map whose sizes divide the input's: each
- * output pixel is sum(L d omega) / sum(d omega) over the input pixels it covers, so the radiant
- * power of every block is kept exactly. *out is a new map (same weights and units). */
-LX_API lx_status lx_envmap_downsample(lx_ctx *ctx, const lx_envmap *in, int width, int height, lx_envmap **out);
-
-/** Luminance weights (the Y row of the RGB -> XYZ matrix) of RGB primaries and white point given
- * as CIE xy: rx, ry, gx, gy, bx, by, wx, wy. Returns LX_EINVAL for degenerate primaries. */
-LX_API lx_status lx_rgb_y_weights(lx_ctx *ctx, const double xy[8], double weights[3]);
-
-/* OpenEXR input and output (exr_io.c, OpenEXRCore). */
-
-/** Reads a lat-long map from an OpenEXR file: scanline or tiled (level 0 of mip/rip maps), half
- * or float channels, any compression OpenEXR supports, channels R,G,B[,A] or Y (or a single
- * channel of any name); A is ignored. The map covers the display window; data-window pixels
- * outside it are dropped and display pixels without data are 0. chromaticities sets y_weights,
- * whiteLuminance makes units LUMINANCE (lum_per_unit = its value). Cube maps, deep and
- * multi-part-only-deep files give LX_EUNSUPPORTED; malformed files LX_EPARSE, unreadable LX_EIO. */
-LX_API lx_status lx_exr_read(lx_ctx *ctx, const char *path, lx_envmap **out);
-
-/** As lx_exr_read, and also reads cube maps (envmap attribute cube, display window N x 6N):
- * map->layout says which. For callers that handle both layouts. */
-LX_API lx_status lx_exr_read_any(lx_ctx *ctx, const char *path, lx_envmap **out);
-
-/** EXR compressions (the values of the file format). */
-typedef enum lx_exr_compression {
-    LX_EXR_NONE = 0, LX_EXR_RLE = 1, LX_EXR_ZIPS = 2, LX_EXR_ZIP = 3, LX_EXR_PIZ = 4,
-    LX_EXR_PXR24 = 5, LX_EXR_B44 = 6, LX_EXR_B44A = 7, LX_EXR_DWAA = 8, LX_EXR_DWAB = 9
-} lx_exr_compression;
-
-/** Options of lx_exr_write (zero-initialise for defaults: float, ZIP, scanlines). */
-typedef struct lx_exr_write_opts {
-    int half;                       /* 1: half channels (values rounded to nearest half), 0: float */
-    int use_compression;            /* 0: ZIP; 1: the compression below */
-    lx_exr_compression compression;
-    int tile_size;                  /* > 0: a tiled file with square tiles of this size */
-} lx_exr_write_opts;
-
-/** Writes a map as an OpenEXR lat-long or cube file (envmap attribute latlong or cube as map->layout
- * says, channels R,G,B or Y,
- * chromaticities when the map has them, whiteLuminance for LUMINANCE maps) atomically: a
- * temporary file renamed into place, an existing file replaced only on success. opts may be NULL. */
-LX_API lx_status lx_exr_write(lx_ctx *ctx, const char *path, const lx_envmap *map, const lx_exr_write_opts *opts);
-
-/* Irradiance from radiance (irradiance*.c): E(n) = integral L(omega) max(0, n . omega) d omega. */
-
-/** Irradiance methods (see README "radiance"). */
-typedef enum lx_irr_method {
-    LX_IRR_SH9 = 0,   /* 9 spherical-harmonic coefficients, exact per-pixel basis integrals */
-    LX_IRR_BRUTE = 1, /* every input pixel for every output: sum L_p max(0, n . m_p) (OpenCL or CPU) */
-    LX_IRR_FAST = 2   /* the same sum as BRUTE, by per-row prefix sums: O(rows) per output */
-} lx_irr_method;
-
-/** SH9 windows applied to bands l = 0, 1, 2. */
-typedef enum lx_sh9_window {
-    LX_SH9_WINDOW_NONE = 0,  /* (1, 1, 1): Ramamoorthi-Hanrahan; a point source rings below zero */
-    LX_SH9_WINDOW_NONNEG = 1 /* (1, 6/7, 32/35): point-source response (3/28)(1 + 2 cos g)^2 >= 0 */
-} lx_sh9_window;
-
-/** Options of the irradiance calls (zero-initialise for defaults). */
-typedef struct lx_irr_opts {
-    lx_irr_method method;
-    lx_sh9_window window;    /* SH9 only */
-    lx_backend backend;      /* BRUTE only: AUTO uses OpenCL when the work is large, CPU otherwise */
-    int threads;             /* CPU threads; 0 = every online core */
-    lx_backend used;         /* OUT: where BRUTE ran (CPU for the other methods) */
-} lx_irr_opts;
-
-/** Spherical-harmonic coefficients L_lm of a map (l <= 2, index l^2 + l + m, real orthonormal
- * basis of Ramamoorthi and Hanrahan 2001), per channel. */
-typedef struct lx_sh9 {
-    int channels;
-    double c[9][3];
-} lx_sh9;
-
-/** Projects a map onto 9 SH coefficients: each pixel's basis integral is exact (closed forms over
- * its theta and phi range), so the projection of the piecewise-constant map is exact. */
-LX_API lx_status lx_sh9_project(lx_ctx *ctx, const lx_envmap *map, lx_sh9 *out);
-
-/** E(n) per channel from SH9 coefficients: sum_l w_l A_l L_lm Y_lm(n), A = (pi, 2pi/3, pi/4).
- * n need not be normalised (it is). out has sh->channels values. */
-LX_API lx_status lx_sh9_irradiance(lx_ctx *ctx, const lx_sh9 *sh, lx_sh9_window window, const double n[3], double *out);
-
-/** Irradiance for n_dirs normals (3 doubles each) into out (n_dirs * map->channels doubles, in
- * the map's unit times sr: W/m2 for RADIANCE maps). opts may be NULL (SH9). */
-LX_API lx_status lx_irradiance_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const double *dirs,
-                                    lx_irr_opts *opts, double *out);
-
-/** Irradiance environment map: E at the pixel centre directions of a width x height map in the
- * input's layout (the input's size when both are 0; a cube input needs height = 6 width). *out is a new map with the input's channels,
- * weights and units. opts may be NULL (SH9). */
-LX_API lx_status lx_irradiance_map(lx_ctx *ctx, const lx_envmap *map, int width, int height,
-                                   lx_irr_opts *opts, lx_envmap **out);
-
-/* PNG pictures of maps (png_plot.c). Both write atomically (temporary file + rename). */
-
-/** A false-colour PNG of w x h values (row-major; NaN drawn grey) with a colour legend titled
- * legend_title, on a linear or log10 scale between vmin and vmax (NaN: the data's range). Small
- * maps are enlarged to at least 512 pixels wide. The palette runs dark violet - blue - cyan -
- * green - yellow - orange - red, the look of Radiance falsecolor. */
-LX_API lx_status lx_png_falsecolor(lx_ctx *ctx, const char *path, int w, int h, const double *values, double vmin,
-                                   double vmax, int log_scale, const char *legend_title);
-
-/** Tone-mapped previews of n maps side by side (each panel 512 pixels wide, its own exposure:
- * median luminance to 0.18, Reinhard x/(1+x), sRGB), each labelled with labels[k] (may be NULL). */
-LX_API lx_status lx_png_preview(lx_ctx *ctx, const char *path, int n, const lx_envmap *const *maps,
-                                const char *const *labels);
-
-/* ---- lighting (issue 4) ---- */
+/* ============================================================================================ */
+/* 9. Units and quantities (src/lighting) */
+/* ============================================================================================ */
 
 /* Units and quantities (units.c). Values are converted to and from the SI unit of their
  * quantity (lm, W, cd, W/sr, lx, W/m2, cd/m2, W/sr/m2, sr, m, rad, K, lm/W). */
@@ -805,10 +594,9 @@ LX_API lx_status lx_radiometric_convert(lx_ctx *ctx, double value_si, lx_quantit
                                         double efficacy_lm_per_W, double *out_si,
                                         lx_quantity *out_q);
 
-/** The luminous efficacy of radiation (lm/W, 2 deg observer, auto method) of the single
- * spectrum in a file read with lx_spd_read_file (efficacy.c). LX_EINVAL when the file holds
- * more than one spectrum or its radiant integral is zero. */
-LX_API lx_status lx_efficacy_from_spd_file(lx_ctx *ctx, const char *path, double *ler_lm_per_W);
+/* ============================================================================================ */
+/* 10. Sources, inverse problems and solid angles (src/lighting) */
+/* ============================================================================================ */
 
 /* Sources (sources.c). Distances in m, angles in rad, luminance in cd/m2. A distance that is
  * zero, negative or not finite is LX_EINVAL (never infinity). Receivers facing away get 0. */
@@ -906,7 +694,9 @@ LX_API lx_status lx_solid_angle_latlong_pixel(lx_ctx *ctx, int width, int height
 LX_API lx_status lx_solid_angle_rect(lx_ctx *ctx, double x0, double x1, double y0, double y1,
                                      double distance_m, double *sr);
 
-/* ---- luminaires and grids (issue 5) ---- */
+/* ============================================================================================ */
+/* 11. Luminaires (IES LM-63, EULUMDAT) and illuminance grids (src/lighting) */
+/* ============================================================================================ */
 
 /* Photometric files (ies_read.c, ldt_read.c), the intensity model (photometry.c) and the writer
  * (ies_write.c). Angles in the luminaire's own frame: type C, gamma from the nadir (-z, gamma 0)
@@ -1104,14 +894,232 @@ LX_API lx_status lx_plane_points(lx_ctx *ctx, const lx_plane *plane, double **po
 typedef struct lx_grid_stats { double avg, min, max, u0; } lx_grid_stats;
 LX_API lx_status lx_grid_stats_compute(lx_ctx *ctx, const double *E, size_t n, lx_grid_stats *out);
 
-/** Writes a false-colour PNG of the illuminance E (na x nb values of the plane, A fastest, as
- * lx_plane_points orders them): a colour legend in lux, iso-lux contour lines at round levels,
- * the positions of the m luminaires (projected on the plane, those inside its area) and axis
- * ticks in metres; title (may be NULL) on top. Written atomically (temporary file + rename). */
-LX_API lx_status lx_grid_write_png(lx_ctx *ctx, const char *path, const lx_plane *plane, const double *E,
-                                   const lx_placement *lums, size_t m, const char *title);
+/* ============================================================================================ */
+/* 12. Environment maps, OpenEXR and irradiance (src/radiance) */
+/* ============================================================================================ */
 
-/* ---- scenes (issue 8) ---- */
+/* Lat-long (equirectangular) environment maps (envmap.c). Direction convention (CLI.md): +z up,
+ * theta from +z, phi from +x towards +y. In a width x height map, pixel (row j, column i) covers
+ * theta in [j, j+1] pi/height and phi in [i, i+1] 2 pi/width; row 0 touches theta = 0. The map is
+ * read as piecewise constant: each pixel's radiance holds over its whole patch of sphere. */
+
+/** What the channels of a map measure. */
+typedef enum lx_envmap_units {
+    LX_ENV_AUTO = 0,      /* reading: LUMINANCE when the file has a whiteLuminance attribute, else RADIANCE */
+    LX_ENV_RADIANCE = 1,  /* W/(sr m2) per channel; luminance = lum_per_unit * Y (efficacy, default 179 lm/W) */
+    LX_ENV_LUMINANCE = 2  /* relative photometric values: luminance = lum_per_unit * Y in cd/m2 */
+} lx_envmap_units;
+
+/** Luminous efficacy that turns the Y combination of W/(sr m2) channels into cd/m2 by default:
+ * 179 lm/W, the white efficacy of the Radiance system (equal-energy white over 380-780 nm). */
+#define LX_ENV_DEFAULT_EFFICACY 179.0
+
+/** A lat-long map with 1 (Y) or 3 (R, G, B) channels stored as float (as read; all arithmetic on
+ * it is double). Owns data. Create with lx_envmap_create or lx_exr_read, free with lx_envmap_free. */
+typedef struct lx_envmap {
+    int width, height;      /* pixels (any sizes >= 1; lat-long maps are usually width = 2 height) */
+    int channels;           /* 1 or 3 */
+    float *data;            /* row-major, channels interleaved: data[(j * width + i) * channels + c] */
+    double y_weights[3];    /* Y = sum y_weights[c] * channel c: the Y row of RGB->XYZ from the
+                             * file's chromaticities, else Rec.709/sRGB (0.2126729, 0.7151522,
+                             * 0.0721750); {1, 0, 0} for one channel */
+    int has_chromaticities; /* 1 when y_weights came from a chromaticities attribute */
+    double chroma_xy[8];    /* that attribute (rx ry gx gy bx by wx wy), written back by lx_exr_write */
+    lx_envmap_units units;  /* RADIANCE or LUMINANCE (never AUTO once read) */
+    double lum_per_unit;    /* cd/m2 per unit of Y: efficacy (RADIANCE) or whiteLuminance / 1 (LUMINANCE) */
+    int layout;             /* lx_envmap_layout: LATLONG (0, what lx_envmap_create makes) or CUBE */
+} lx_envmap;
+
+/** Map layouts. A CUBE map is the OpenEXR cube layout: width N, height 6 N, six N x N faces stacked
+ * top to bottom in the file order +X, -X, +Y, -Y, +Z, -Z, each oriented as OpenEXR's ImfEnvmap.h
+ * draws it. OpenEXR's axes (y up) become luxcalc's (+z up) by the same mapping that its lat-long
+ * layout needs to match ours: (x, y, z)_exr -> (-z, x, y), so the file's +Y face is our zenith,
+ * its +X face looks towards our +y and its -Z face towards our +x. Texel (r, c) of a face covers
+ * the square [2c/N - 1, 2(c+1)/N - 1] x [2r/N - 1, 2(r+1)/N - 1] of the face at unit distance (the
+ * texels tile the cube; OpenEXR's direction() samples texel centres at the face edges instead). */
+typedef enum lx_envmap_layout {
+    LX_ENV_LATLONG = 0,
+    LX_ENV_CUBE = 1
+} lx_envmap_layout;
+
+/** Creates a zero-filled cube map with faces of size x size texels (width size, height 6 size). */
+LX_API lx_status lx_envmap_create_cube(lx_ctx *ctx, int size, int channels, lx_envmap **out);
+
+/** Unit vector of a cube-map point at fractional map coordinates (row in [0, 6 size), col in
+ * [0, size]); texel centres are (r + 0.5, c + 0.5). Thread-safe. */
+LX_API void lx_envmap_cube_direction(int size, double row, double col, double dir[3]);
+
+/** Exact solid angle of cube texel (row, col) of a face (row 0..size-1; the same on every face):
+ * the corner sum of atan(a b / sqrt(1 + a^2 + b^2)) over the texel's square, in sr. */
+LX_API double lx_envmap_cube_texel_sr(int size, int row, int col);
+
+/** Exact first moment (integral of omega d omega, Lambert's polygon formula) of the cube texel at
+ * map row (0..6 size - 1) and column. Thread-safe. */
+LX_API void lx_envmap_cube_texel_moment(int size, int row, int col, double m[3]);
+
+/** Exact solid angle of any pixel of a map (lat-long or cube), in sr. */
+LX_API double lx_envmap_texel_sr(const lx_envmap *map, int row, int col);
+
+/** Unit vector of the centre of pixel (row, col) of a map (lat-long or cube). */
+LX_API void lx_envmap_texel_direction(const lx_envmap *map, int row, int col, double dir[3]);
+
+/** Creates a zero-filled map (Rec.709 weights, RADIANCE, efficacy 179 lm/W). channels 1 or 3. */
+LX_API lx_status lx_envmap_create(lx_ctx *ctx, int width, int height, int channels, lx_envmap **out);
+
+/** Frees a map. Accepts NULL. */
+LX_API void lx_envmap_free(lx_envmap *map);
+
+/** Unit vector of the pixel centre of (row j + 0.5, column i + 0.5) as fractional coordinates
+ * (row, col): theta = row pi / height, phi = col 2 pi / width. Thread-safe. */
+LX_API void lx_envmap_direction(int width, int height, double row, double col, double dir[3]);
+
+/** Exact solid angle of a pixel of row j: (2 pi / width)(cos theta0 - cos theta1), in sr. */
+LX_API double lx_envmap_pixel_sr(int width, int height, int row);
+
+/** Exact first moment of a pixel, m = integral over the pixel of omega d omega (a vector whose
+ * length is slightly below its solid angle): the projected solid angle seen by a normal n that
+ * sees the whole pixel is n . m. Thread-safe. */
+LX_API void lx_envmap_pixel_moment(int width, int height, int row, int col, double m[3]);
+
+/** Luminance Y of a map's channel values: sum y_weights[c] v[c] (no lum_per_unit factor). */
+LX_API double lx_envmap_y(const lx_envmap *map, const float *pixel);
+
+/** Per-pixel luminance in cd/m2 (lum_per_unit * Y) into out (width * height doubles). */
+LX_API lx_status lx_envmap_luminance(lx_ctx *ctx, const lx_envmap *map, double *out);
+
+/** Solid-angle-weighted box filter to a width x height map whose sizes divide the input's: each
+ * output pixel is sum(L d omega) / sum(d omega) over the input pixels it covers, so the radiant
+ * power of every block is kept exactly. *out is a new map (same weights and units). */
+LX_API lx_status lx_envmap_downsample(lx_ctx *ctx, const lx_envmap *in, int width, int height, lx_envmap **out);
+
+/** Luminance weights (the Y row of the RGB -> XYZ matrix) of RGB primaries and white point given
+ * as CIE xy: rx, ry, gx, gy, bx, by, wx, wy. Returns LX_EINVAL for degenerate primaries. */
+LX_API lx_status lx_rgb_y_weights(lx_ctx *ctx, const double xy[8], double weights[3]);
+
+/* OpenEXR input and output (exr_io.c, OpenEXRCore). */
+
+/** Reads a lat-long map from an OpenEXR file: scanline or tiled (level 0 of mip/rip maps), half
+ * or float channels, any compression OpenEXR supports, channels R,G,B[,A] or Y (or a single
+ * channel of any name); A is ignored. The map covers the display window; data-window pixels
+ * outside it are dropped and display pixels without data are 0. chromaticities sets y_weights,
+ * whiteLuminance makes units LUMINANCE (lum_per_unit = its value). Cube maps, deep and
+ * multi-part-only-deep files give LX_EUNSUPPORTED; malformed files LX_EPARSE, unreadable LX_EIO. */
+LX_API lx_status lx_exr_read(lx_ctx *ctx, const char *path, lx_envmap **out);
+
+/** As lx_exr_read, and also reads cube maps (envmap attribute cube, display window N x 6N):
+ * map->layout says which. For callers that handle both layouts. */
+LX_API lx_status lx_exr_read_any(lx_ctx *ctx, const char *path, lx_envmap **out);
+
+/** EXR compressions (the values of the file format). */
+typedef enum lx_exr_compression {
+    LX_EXR_NONE = 0, LX_EXR_RLE = 1, LX_EXR_ZIPS = 2, LX_EXR_ZIP = 3, LX_EXR_PIZ = 4,
+    LX_EXR_PXR24 = 5, LX_EXR_B44 = 6, LX_EXR_B44A = 7, LX_EXR_DWAA = 8, LX_EXR_DWAB = 9
+} lx_exr_compression;
+
+/** Options of lx_exr_write (zero-initialise for defaults: float, ZIP, scanlines). */
+typedef struct lx_exr_write_opts {
+    int half;                       /* 1: half channels (values rounded to nearest half), 0: float */
+    int use_compression;            /* 0: ZIP; 1: the compression below */
+    lx_exr_compression compression;
+    int tile_size;                  /* > 0: a tiled file with square tiles of this size */
+} lx_exr_write_opts;
+
+/** Writes a map as an OpenEXR lat-long or cube file (envmap attribute latlong or cube as map->layout
+ * says, channels R,G,B or Y,
+ * chromaticities when the map has them, whiteLuminance for LUMINANCE maps) atomically: a
+ * temporary file renamed into place, an existing file replaced only on success. opts may be NULL. */
+LX_API lx_status lx_exr_write(lx_ctx *ctx, const char *path, const lx_envmap *map, const lx_exr_write_opts *opts);
+
+/* Irradiance from radiance (irradiance*.c): E(n) = integral L(omega) max(0, n . omega) d omega. */
+
+/** Irradiance methods (see README "radiance"). */
+typedef enum lx_irr_method {
+    LX_IRR_SH9 = 0,   /* 9 spherical-harmonic coefficients, exact per-pixel basis integrals */
+    LX_IRR_BRUTE = 1, /* every input pixel for every output: sum L_p max(0, n . m_p) (OpenCL or CPU) */
+    LX_IRR_FAST = 2   /* the same sum as BRUTE, by per-row prefix sums: O(rows) per output */
+} lx_irr_method;
+
+/** SH9 windows applied to bands l = 0, 1, 2. */
+typedef enum lx_sh9_window {
+    LX_SH9_WINDOW_NONE = 0,  /* (1, 1, 1): Ramamoorthi-Hanrahan; a point source rings below zero */
+    LX_SH9_WINDOW_NONNEG = 1 /* (1, 6/7, 32/35): point-source response (3/28)(1 + 2 cos g)^2 >= 0 */
+} lx_sh9_window;
+
+/** Options of the irradiance calls (zero-initialise for defaults). */
+typedef struct lx_irr_opts {
+    lx_irr_method method;
+    lx_sh9_window window;    /* SH9 only */
+    lx_backend backend;      /* BRUTE only: AUTO uses OpenCL when the work is large, CPU otherwise */
+    int threads;             /* CPU threads; 0 = every online core */
+    lx_backend used;         /* OUT: where BRUTE ran (CPU for the other methods) */
+} lx_irr_opts;
+
+/** Spherical-harmonic coefficients L_lm of a map (l <= 2, index l^2 + l + m, real orthonormal
+ * basis of Ramamoorthi and Hanrahan 2001), per channel. */
+typedef struct lx_sh9 {
+    int channels;
+    double c[9][3];
+} lx_sh9;
+
+/** Projects a map onto 9 SH coefficients: each pixel's basis integral is exact (closed forms over
+ * its theta and phi range), so the projection of the piecewise-constant map is exact. */
+LX_API lx_status lx_sh9_project(lx_ctx *ctx, const lx_envmap *map, lx_sh9 *out);
+
+/** E(n) per channel from SH9 coefficients: sum_l w_l A_l L_lm Y_lm(n), A = (pi, 2pi/3, pi/4).
+ * n need not be normalised (it is). out has sh->channels values. */
+LX_API lx_status lx_sh9_irradiance(lx_ctx *ctx, const lx_sh9 *sh, lx_sh9_window window, const double n[3], double *out);
+
+/** Irradiance for n_dirs normals (3 doubles each) into out (n_dirs * map->channels doubles, in
+ * the map's unit times sr: W/m2 for RADIANCE maps). opts may be NULL (SH9). */
+LX_API lx_status lx_irradiance_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const double *dirs,
+                                    lx_irr_opts *opts, double *out);
+
+/** Irradiance environment map: E at the pixel centre directions of a width x height map in the
+ * input's layout (the input's size when both are 0; a cube input needs height = 6 width). *out is a new map with the input's channels,
+ * weights and units. opts may be NULL (SH9). */
+LX_API lx_status lx_irradiance_map(lx_ctx *ctx, const lx_envmap *map, int width, int height,
+                                   lx_irr_opts *opts, lx_envmap **out);
+
+/* ============================================================================================ */
+/* 13. Spectral OpenEXR images (src/radiance) */
+/* ============================================================================================ */
+
+/* Spectral EXR images in the layout of Fichet et al. 2021, "An OpenEXR Layout for Spectral
+ * Images" (JCGT 10(3)): emissive channels "S0.<wavelength, comma as decimal point><unit>", e.g.
+ * "S0.550,000000nm" (units nm, um, mm, m, pm); polarised S1-S3 channels are ignored; reflective
+ * "T." channels alone are LX_EUNSUPPORTED. Values are spectral radiance W/(sr m2 nm). */
+
+/** A spectral image integrated per pixel to absolute CIE XYZ. Owns its arrays. */
+typedef struct lx_xyz_image {
+    int width, height;     /* the data window */
+    double *xyz;           /* width * height * 3, row-major, X Y Z interleaved: Km * integral of S xbar
+                            * etc. (cd/m2 for radiance channels; Km 683.002, 10 deg: 683.599) */
+    size_t n_lambda;       /* S0 channels used */
+    double *lambda_nm;     /* their wavelengths, increasing */
+    int resampled;         /* 0: summed on the channels' own uniform grid (cie15 rule, as
+                            * lx_spd_colorimetry with LX_METHOD_CIE15); 1: wavelengths not uniform,
+                            * resampled to 1 nm (lx_batch_resample, the exact method's model) first */
+    int polarised_ignored; /* number of S1-S3 channels ignored */
+} lx_xyz_image;
+
+/** Reads a spectral OpenEXR file (scanline or tiled, half or float, any compression; first part)
+ * and integrates every pixel with lx_batch_integrate (opts may be NULL; opts->backend chooses CPU
+ * or OpenCL). Errors name the file: LX_EPARSE (not EXR, no S0 channels, a malformed wavelength,
+ * a duplicate or non-finite value), LX_EUNSUPPORTED (reflective only, subsampled or integer
+ * channels, deep data), LX_EIO. Free *out with lx_xyz_image_free. */
+LX_API lx_status lx_spectral_exr_read_xyz(lx_ctx *ctx, const char *path, lx_observer observer, lx_batch_opts *opts,
+                                          lx_xyz_image **out);
+
+/** Writes the image as a float OpenEXR with channels X, Y, Z (ZIP), atomically (temporary file +
+ * rename; an existing file is replaced only on success). */
+LX_API lx_status lx_xyz_exr_write(lx_ctx *ctx, const char *path, const lx_xyz_image *img);
+
+/** Frees an image. Accepts NULL. */
+LX_API void lx_xyz_image_free(lx_xyz_image *img);
+
+/* ============================================================================================ */
+/* 14. Scenes: files, the planner, evaluation and work counters (src/scene) */
+/* ============================================================================================ */
 
 /* Scene files (scene_read.c), the planner (scene_plan.c) and the evaluation (scene_eval.c,
  * scene_sky.c, scene_spectral.c). World frame in metres, z up. See README "scenes" for the format. */
@@ -1297,12 +1305,46 @@ LX_API lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *scene, const lx_scen
                                const lx_scene_eval_opts *opts, lx_scene_result **out);
 LX_API void lx_scene_result_free(lx_scene_result *res);
 
-/* ---- accuracy plots (issue 9) ---- */
+/* ============================================================================================ */
+/* 15. Plots (PNG, written atomically) (src/plot) */
+/* ============================================================================================ */
 
-/** A view of CIE 13.3-1995 test colour sample TCS01..TCS14 (index 1..14): spectral reflectance
- * factor, 360-830 nm at 5 nm, from the embedded table (valid for the life of the program).
- * LX_EINVAL for another index. Thread-safe. */
-LX_API lx_status lx_tcs_get(lx_ctx *ctx, int index, lx_spd *out);
+/* PNG pictures of maps (png_plot.c). Both write atomically (temporary file + rename). */
+
+/** A false-colour PNG of w x h values (row-major; NaN drawn grey) with a colour legend titled
+ * legend_title, on a linear or log10 scale between vmin and vmax (NaN: the data's range). Small
+ * maps are enlarged to at least 512 pixels wide. The palette runs dark violet - blue - cyan -
+ * green - yellow - orange - red, the look of Radiance falsecolor. */
+LX_API lx_status lx_png_falsecolor(lx_ctx *ctx, const char *path, int w, int h, const double *values, double vmin,
+                                   double vmax, int log_scale, const char *legend_title);
+
+/** Tone-mapped previews of n maps side by side (each panel 512 pixels wide, its own exposure:
+ * median luminance to 0.18, Reinhard x/(1+x), sRGB), each labelled with labels[k] (may be NULL). */
+LX_API lx_status lx_png_preview(lx_ctx *ctx, const char *path, int n, const lx_envmap *const *maps,
+                                const char *const *labels);
+
+/** One-page PNG report of one spectrum (report_png.c), written atomically (temporary file +
+ * rename; nothing is left at path on failure): the SPD with the area under it in the colour of
+ * each wavelength (approximate sRGB), the colour of the light as a normalised sRGB swatch, the
+ * CIE xy diagram of the observer (spectral locus, Planckian locus with isotemperature ticks at
+ * Duv +-0.02, the point), CIE 13.3 Ra and R1-R14 bars with values, the TM-30 colour vector
+ * graphic, and x, y, CCT, Duv, Ra, R9, Rf, Rg and melanopic DER. A metric that is undefined for
+ * the spectrum (lx_cri_compute or lx_tm30_compute refuse) is shown with its reason instead.
+ * title: the heading (NULL: spd->name). 1100 x 800 pixels. Errors: those of lx_spd_check and
+ * lx_spd_colorimetry, LX_EIO (path not writable), LX_ENOMEM. Thread-safe for distinct contexts. */
+LX_API lx_status lx_spd_report_png(lx_ctx *ctx, const lx_spd *spd, lx_observer observer, const char *title,
+                                   const char *path);
+
+/** Writes an sRGB preview PNG (XYZ -> linear sRGB, exposure from the median luminance, Reinhard
+ * tone curve), enlarged to at least 256 pixels wide, atomically. */
+LX_API lx_status lx_xyz_png_write(lx_ctx *ctx, const char *path, const lx_xyz_image *img);
+
+/** Writes a false-colour PNG of the illuminance E (na x nb values of the plane, A fastest, as
+ * lx_plane_points orders them): a colour legend in lux, iso-lux contour lines at round levels,
+ * the positions of the m luminaires (projected on the plane, those inside its area) and axis
+ * ticks in metres; title (may be NULL) on top. Written atomically (temporary file + rename). */
+LX_API lx_status lx_grid_write_png(lx_ctx *ctx, const char *path, const lx_plane *plane, const double *E,
+                                   const lx_placement *lums, size_t m, const char *title);
 
 /** One point of an error-against-time plot: a method's time (s) and error (any unit > 0; 0 or
  * less is drawn on the bottom edge, marked "=0"), its label and series (marker shape and colour). */
