@@ -299,7 +299,7 @@ int cmd_scene(int argc, char **argv)
     lx_scene_plan *plan = NULL;
     lx_scene_result *res = NULL;
     lx_status st = lx_scene_read_file(ctx, argv[optind], &sc);
-    if (st == LX_OK) st = lx_scene_plan_make(ctx, sc, (int)backend, &plan);
+    if (st == LX_OK) st = lx_scene_plan_make(ctx, sc, backend, &plan);
     if (st == LX_OK) st = lx_scene_eval(ctx, sc, plan, NULL, &res);
     int rc = CLI_OK;
     if (st == LX_OK && png_dir) st = write_pngs(ctx, sc, res, argv[optind], png_dir);
