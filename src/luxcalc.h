@@ -235,7 +235,8 @@ typedef struct lx_cl_device_info {
 
 /** Lists every OpenCL device of every platform into *out, *n of them; free the array with
  * lx_cl_devices_free. No platform is not an error: *n = 0 and *out NULL, also in a build without
- * OpenCL. Does not create an OpenCL context. */
+ * OpenCL. Does not create an OpenCL context. Errors: only the general ones (NULL arguments,
+ * LX_ENOMEM). */
 LX_API lx_status lx_cl_devices(lx_ctx *ctx, lx_cl_device_info **out, size_t *n);
 
 /** Frees the array of lx_cl_devices. Accepts NULL. */
@@ -1156,7 +1157,8 @@ LX_API void lx_envmap_pixel_moment(int width, int height, int row, int col, doub
  * lum_per_unit factor). */
 LX_API double lx_envmap_y(const lx_envmap *map, const float *pixel);
 
-/** Per-pixel luminance in cd/m2 (lum_per_unit * Y) into out (width * height doubles, the caller's). */
+/** Per-pixel luminance in cd/m2 (lum_per_unit * Y) into out (width * height doubles, the caller's).
+ * Errors: only the general ones (a NULL map or out). */
 LX_API lx_status lx_envmap_luminance(lx_ctx *ctx, const lx_envmap *map, double *out);
 
 /** Solid-angle-weighted box filter to a width x height map whose sizes divide the input's: each
@@ -1473,8 +1475,8 @@ typedef struct lx_scene_plan {
 
 /** Plans a scene: which effects, and which pairs take the near-field path. backend: AUTO lets
  * the size of the work decide (OpenCL for >= 1e7 far-field IES evaluations on grids), CPU never
- * uses a device, OPENCL sends every eligible grid batch to one. LX_EPARSE (naming the [effects] or [output]
- * line) when a forced effect cannot be honoured (spectral forced on without spectra,
+ * uses a device, OPENCL sends every eligible grid batch to one. Errors: LX_EPARSE (naming the [effects]
+ * or [output] line) when a forced effect cannot be honoured (spectral forced on without spectra,
  * environment forced on without a sky); LX_EINVAL (an unknown backend). The caller owns *out (NULL
  * on failure) and frees it with lx_scene_plan_free, which accepts NULL. The plan refers to the
  * scene: use it only with that scene, and free it before the scene. */
