@@ -49,7 +49,7 @@ LX_API const char *lx_version(void);
  *   9. lighting  Units and quantities
  *  10. lighting  Sources, inverse problems and solid angles
  *  11. lighting  Luminaires (IES LM-63, EULUMDAT) and illuminance grids
- *  12. radiance  Environment maps, OpenEXR and irradiance
+ *  12. radiance  Environment maps, OpenEXR and irradiance; daylight skies and the sun
  *  13. radiance  Spectral OpenEXR images
  *  14. scene     Scenes: files, the planner, evaluation and work counters
  *  15. plot      Plots (PNG, written atomically)
@@ -895,7 +895,7 @@ typedef struct lx_grid_stats { double avg, min, max, u0; } lx_grid_stats;
 LX_API lx_status lx_grid_stats_compute(lx_ctx *ctx, const double *E, size_t n, lx_grid_stats *out);
 
 /* ============================================================================================ */
-/* 12. Environment maps, OpenEXR and irradiance (src/radiance) */
+/* 12. Environment maps, OpenEXR and irradiance; daylight skies and the sun (src/radiance) */
 /* ============================================================================================ */
 
 /* Lat-long (equirectangular) environment maps (envmap.c). Direction convention (CLI.md): +z up,
@@ -1079,6 +1079,132 @@ LX_API lx_status lx_irradiance_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n_
  * weights and units. opts may be NULL (SH9). */
 LX_API lx_status lx_irradiance_map(lx_ctx *ctx, const lx_envmap *map, int width, int height,
                                    lx_irr_opts *opts, lx_envmap **out);
+
+/* Daylight: the CIE standard general skies, the Perez all-weather sky (sky.c, sky_perez.c), the
+ * sun's position (sun.c, NREL SPA) and sky maps (sky_map.c). World directions: +z up, +y north,
+ * +x east (the convention of Radiance gensky/gendaylit); solar azimuth is measured from north
+ * towards east. Luminance in cd/m2, illuminance in lx, irradiance in W/m2. */
+
+/** Sky models. */
+typedef enum lx_sky_model {
+    LX_SKY_MODEL_CIE = 0,   /* ISO 15469 / CIE S 011 standard general sky, types 1..15 */
+    LX_SKY_MODEL_PEREZ = 1  /* Perez, Seals & Michalsky 1993 all-weather sky */
+} lx_sky_model;
+
+/** A sky luminance distribution L(dir) = zenith_cd_m2 * rel(dir) / rel(zenith), zero below the
+ * horizon. rel = (1 + a exp(b / cos Z)) * indicatrix(chi): CIE 1 + c (exp(d chi) - exp(d pi/2))
+ * + e cos^2 chi; Perez 1 + c exp(d chi) + e cos^2 chi (Z zenith angle of the element, chi its
+ * angle from the sun). Plain data: copy freely; evaluating it is thread-safe. */
+typedef struct lx_sky {
+    lx_sky_model model;
+    int cie_type;               /* 1..15 (CIE), 0 for Perez */
+    double a, b, c, d, e;       /* the model's parameters */
+    double sun_dir[3];          /* unit vector towards the sun (may be below the horizon for CIE types
+                                 * whose indicatrix is uniform: 1, 3, 5) */
+    double zenith_cd_m2;        /* Lz */
+    double diffuse_horizontal_lx; /* Dv: the horizontal illuminance from the sky (without the sun) */
+    double epsilon, delta;      /* Perez: sky clearness and brightness (NaN for CIE) */
+    int perez_bin;              /* Perez: clearness bin 1..8 (0 for CIE) */
+    double sun_normal_lx;       /* Perez: the direct normal illuminance Evn from the efficacy model (lx);
+                                 * CIE: NaN (the sun's illuminance is given separately) */
+} lx_sky;
+
+/** How a CIE sky is scaled: by its zenith luminance (cd/m2) or by its diffuse horizontal
+ * illuminance Dv (lx). */
+typedef enum lx_sky_scale { LX_SKY_BY_ZENITH = 0, LX_SKY_BY_HORIZONTAL = 1 } lx_sky_scale;
+
+/** A CIE standard general sky of type 1..15 with the sun towards sun_dir (any length > 0), scaled
+ * to value (zenith luminance or horizontal illuminance, > 0). Dv is the exact integral of the
+ * distribution (adaptive quadrature to 1e-12 relative). LX_EINVAL for a bad type, value or a sun
+ * below the horizon on a type whose indicatrix is not uniform. */
+LX_API lx_status lx_sky_cie(lx_ctx *ctx, int type, const double sun_dir[3], lx_sky_scale scale, double value,
+                            lx_sky *out);
+
+/** The parameters (a, b, c, d, e) of CIE type 1..15 from the embedded table (src/data). */
+LX_API lx_status lx_sky_cie_params(lx_ctx *ctx, int type, double params[5]);
+
+/** Inputs of the Perez sky: the sun and the measured irradiance, as gendaylit -W takes them. */
+typedef struct lx_perez_input {
+    double sun_dir[3];           /* towards the sun, above the horizon */
+    double direct_normal_W_m2;   /* DNI, >= 0 */
+    double diffuse_horizontal_W_m2; /* DHI, > 0 */
+    int day_of_year;             /* 1..366 (the extraterrestrial irradiance's eccentricity factor) */
+    double precipitable_water_cm;/* atmospheric precipitable water for the efficacy models (0: 2 cm, gendaylit's default) */
+} lx_perez_input;
+
+/** The Perez all-weather sky for the given irradiance: sky clearness epsilon and brightness Delta
+ * (Perez 1990: Kasten air mass, solar constant 1367 W/m2), the coefficients of its clearness bin
+ * (Perez 1993, gendaylit's adjustments: Delta >= 0.2 for 1.065 < epsilon < 2.8), the diffuse
+ * horizontal and direct normal illuminance from the Perez 1990 efficacy models, and the
+ * distribution scaled so its horizontal illuminance is that diffuse illuminance (exact quadrature;
+ * gendaylit uses a 145-point sum instead). epsilon is clamped to at most 12 (gendaylit's range);
+ * Delta is clamped to 0.01..0.6 (gendaylit's range) and the luminance to >= 0. LX_EINVAL for a sun at or
+ * below the horizon or bad irradiance. */
+LX_API lx_status lx_sky_perez(lx_ctx *ctx, const lx_perez_input *in, lx_sky *out);
+
+/** Luminance (cd/m2) of the sky towards dir (any length > 0); 0 below the horizon. Thread-safe. */
+LX_API double lx_sky_luminance(const lx_sky *sky, const double dir[3]);
+
+/** Illuminance (lx) from the sky alone (no sun, no ground) on a plane with normal n (any length
+ * > 0): the integral of L max(0, n . w) over the sky hemisphere by Gauss-Legendre quadrature on
+ * pieces split at the receiver's horizon and at the sun (nodes per piece and axis, 8..1024; 0:
+ * 48: 1e-8 relative or better on the CIE skies). Thread-safe. */
+LX_API lx_status lx_sky_illuminance(lx_ctx *ctx, const lx_sky *sky, const double n[3], int nodes, double *E_lx);
+
+/** Inputs of the solar position algorithm (NREL SPA, Reda & Andreas 2004). */
+typedef struct lx_sun_input {
+    int year, month, day, hour, minute; /* local standard time; year -2000..6000 */
+    double second;
+    double timezone_h;        /* hours east of Greenwich (-7 for US Mountain Standard Time) */
+    double delta_ut1_s;       /* UT1 - UTC, -1..1 s (0 when unknown) */
+    double delta_t_s;         /* TT - UT1 (about 69 s in the 2020s) */
+    double latitude_deg;      /* north positive */
+    double longitude_deg;     /* east positive */
+    double elevation_m;
+    double pressure_mbar;     /* annual mean local pressure (for refraction; 1013.25 at sea level) */
+    double temperature_C;     /* annual mean local temperature */
+    double refraction_deg;    /* atmospheric refraction at sunrise and sunset (0.5667 usually) */
+} lx_sun_input;
+
+/** The sun's position and the intermediate SPA values the algorithm's published test prints. */
+typedef struct lx_sun_position {
+    double julian_day;
+    double L_deg, B_deg, R_au;     /* Earth heliocentric longitude, latitude, radius vector */
+    double delta_psi_deg, delta_epsilon_deg, epsilon_deg; /* nutation and true obliquity */
+    double hour_angle_deg;         /* observer local hour angle H (before parallax) */
+    double declination_deg;        /* topocentric declination */
+    double zenith_deg;             /* topocentric zenith angle, refraction applied */
+    double azimuth_deg;            /* from north towards east, 0..360 */
+    double dir[3];                 /* unit vector towards the sun (x east, y north, z up) */
+} lx_sun_position;
+
+/** NREL SPA (Reda & Andreas 2004, NREL/TP-560-34302): the sun's topocentric zenith and azimuth,
+ * uncertainty +-0.0003 deg for years -2000..6000. LX_EINVAL (message names the field) for inputs
+ * outside SPA's ranges. Thread-safe. */
+LX_API lx_status lx_sun_spa(lx_ctx *ctx, const lx_sun_input *in, lx_sun_position *out);
+
+/** The direction towards the sun (x east, y north, z up) at altitude and azimuth (from north
+ * towards east), in radians. Thread-safe. */
+LX_API void lx_sun_direction(double altitude_rad, double azimuth_rad, double dir[3]);
+
+/** Half the angle the solar disc subtends: 0.2665 deg (Radiance gendaylit), in radians. */
+#define LX_SUN_HALF_ANGLE_RAD (0.2665 * 3.14159265358979323846 / 180.0)
+
+/** Options of lx_sky_map (zero-initialise for defaults). */
+typedef struct lx_sky_map_opts {
+    int width, height;           /* lat-long size (0: 1024 x 512) */
+    double sun_normal_lx;        /* direct normal illuminance of the sun disc (0: no sun) */
+    double ground_reflectance;   /* below the horizon: uniform rho (Dv + Evn sin(altitude)) / pi (0: black) */
+    int supersample;             /* sky samples per pixel and axis, Gauss-Legendre in cos(theta) and phi (0: 4) */
+} lx_sky_map_opts;
+
+/** Renders a sky (and the sun disc) as a one-channel (Y) lat-long map in the convention of
+ * lx_envmap (+z up, theta from +z, phi from +x towards +y) with units LUMINANCE (lum_per_unit 1:
+ * values are cd/m2). Each sky pixel holds the solid-angle mean of the luminance over its patch;
+ * the sun disc (half angle LX_SUN_HALF_ANGLE_RAD) is spread over the pixels it covers in proportion
+ * to the covered solid angle, scaled so the map's sum of L dOmega over the disc is exactly
+ * sun_normal_lx. *out is a new map. */
+LX_API lx_status lx_sky_map(lx_ctx *ctx, const lx_sky *sky, const lx_sky_map_opts *opts, lx_envmap **out);
 
 /* ============================================================================================ */
 /* 13. Spectral OpenEXR images (src/radiance) */
