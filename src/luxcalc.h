@@ -1340,7 +1340,22 @@ typedef struct lx_scene_receiver {
 } lx_scene_receiver;
 
 /** The sky kinds. */
-typedef enum lx_scene_sky_kind { LX_SKY_NONE = 0, LX_SKY_UNIFORM, LX_SKY_OVERCAST, LX_SKY_MAP } lx_scene_sky_kind;
+typedef enum lx_scene_sky_kind {
+    LX_SKY_NONE = 0, LX_SKY_UNIFORM, LX_SKY_OVERCAST, LX_SKY_MAP,
+    LX_SKY_CIE,   /* a CIE standard general sky (type 1..15), by zenith luminance or horizontal illuminance */
+    LX_SKY_PEREZ  /* the Perez all-weather sky from direct-normal and diffuse-horizontal irradiance */
+} lx_scene_sky_kind;
+
+/** A glare observer: UGR (CIE 117) at an eye position looking along view. */
+typedef struct lx_scene_observer {
+    char *name;
+    const char *file;         /* the scene file and line of its section header */
+    long line;
+    double pos_m[3];          /* the eye */
+    double view[3];           /* unit line of sight */
+    double up[3];             /* unit, orthogonal to view: the vertical of the visual field (from +z) */
+    double background_cd_m2;  /* Lb given in the scene (NaN: none) */
+} lx_scene_observer;
 
 /** Forced state of an effect in [effects]. */
 typedef enum lx_effect_force { LX_FORCE_AUTO = 0, LX_FORCE_ON = 1, LX_FORCE_OFF = 2 } lx_effect_force;
@@ -1369,6 +1384,23 @@ typedef struct lx_scene {
     long spectral_line;                   /* the [output] line that first asked for cct or melanopic_edi */
     char **names;                         /* the file names the entities point to (owned) */
     size_t n_names;
+    /* daylight: CIE and Perez skies, the sun, glare observers (scene_daylight.c) */
+    int sky_cie_type;                     /* cie: 1..15 */
+    int sky_by_illuminance;               /* cie: scaled by `illuminance` (Dv) instead of `luminance` (Lz) */
+    double sky_illuminance_lx;            /* cie: the horizontal illuminance given */
+    double sky_dni_W_m2, sky_dhi_W_m2;    /* perez: direct normal and diffuse horizontal irradiance */
+    double sky_water_cm;                  /* perez: precipitable water (0: 2 cm) */
+    int sky_day_of_year;                  /* perez: from [sky] day_of_year or the [sun] date (0: unset) */
+    lx_sky sky_model;                     /* cie, perez: the distribution, set when the scene is read */
+    int has_sun;                          /* a [sun] section */
+    double sun_dir[3];                    /* towards the sun (x east, y north, z up) */
+    double sun_normal_lx;                 /* its direct normal illuminance (0: the sun only places the sky) */
+    int sun_by_date;                      /* 1: placed by date, time and site (sun_position holds SPA's result) */
+    lx_sun_position sun_position;
+    const char *sun_file_at;              /* the scene file and line of [sun] */
+    long sun_line;
+    size_t n_obs;                         /* [observer NAME] sections */
+    lx_scene_observer *obs;
 } lx_scene;
 
 /** Reads a scene file ('-' is standard input); includes are resolved relative to the including
