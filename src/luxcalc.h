@@ -894,6 +894,45 @@ LX_API lx_status lx_plane_points(lx_ctx *ctx, const lx_plane *plane, double **po
 typedef struct lx_grid_stats { double avg, min, max, u0; } lx_grid_stats;
 LX_API lx_status lx_grid_stats_compute(lx_ctx *ctx, const double *E, size_t n, lx_grid_stats *out);
 
+/* Glare (ugr.c): the CIE 117-1995 unified glare rating and the CIE 190:2010 tabular method. */
+
+/** The Guth position index of a source seen at sigma (the angle between the line of sight and the
+ * direction to the source) and tau (the angle, about the line of sight, between the vertical of
+ * the visual field and the plane through the line of sight and the source: 0 straight above),
+ * both in degrees. Above the line of sight (tau <= 90): the Luckiesh-Guth fit CIE 117 gives,
+ * ln p = (35.2 - 0.31889 tau - 1.22 exp(-2 tau / 9)) 1e-3 sigma + (21 + 0.26667 tau - 0.002963
+ * tau^2) 1e-5 sigma^2; below it (tau > 90): Iwata & Tokura 1997, p = 1 + 0.8 R/D for R/D < 0.6,
+ * else 1 + 1.2 R/D, R/D = tan(sigma) (as Radiance evalglare). Thread-safe. */
+LX_API double lx_guth_position_index(double sigma_deg, double tau_deg);
+
+/** UGR = 8 log10(0.25 / Lb sum L^2 omega / p^2) over n glare sources (luminance cd/m2, solid angle
+ * sr, position index), background luminance Lb > 0 (cd/m2). terms (n values, may be NULL) gets
+ * each source's L^2 omega / p^2. *ugr is NaN when the sum is 0 (no glare source). */
+LX_API lx_status lx_ugr(lx_ctx *ctx, double background_cd_m2, size_t n, const double *luminance_cd_m2,
+                        const double *solid_angle_sr, const double *position_index, double *terms, double *ugr);
+
+/** The luminous area of a luminaire projected towards the unit direction (x, y, z) of its own frame
+ * (nadir -z, C0 +x): W L |z| + H (L |x| + W |y|) for a rectangular opening of width W (along C0),
+ * length L and height H; pi D^2/4 |z| + D H sqrt(x^2 + y^2) for a circular one (IES: negative
+ * width; EULUMDAT: width 0, length the diameter). 0 for a point (no opening). m^2. Thread-safe. */
+LX_API double lx_luminaire_projected_area(const lx_luminaire *lum, double x, double y, double z);
+
+/** The CIE 190:2010 UGR table of a luminaire: 19 rooms X x Y (X across the line of sight, 2H..12H),
+ * 5 reflectance combinations (ceiling/walls/floor cavity 70/50/20, 70/30/20, 50/50/20, 50/30/20,
+ * 30/30/20), viewed crosswise and endwise, uncorrected (the luminaire's own lamp flux). The
+ * observer's eye is H = 2 m below the luminaire plane at the middle of a wall; luminaires on a
+ * square grid of spacing 0.25 H; those with T/R > 3 or gamma > 85 deg are left out (CIE 117
+ * 4.5); Lb from CIE 190 eqs. 7-12 (10-degree zonal fluxes, Tables 4 and 5). L = I / A_p with A_p
+ * the projected luminous area (lx_luminaire_projected_area; LX_EINVAL without one). */
+typedef struct lx_ugr_table {
+    double x_h[19], y_h[19];       /* room sizes in multiples of H */
+    double ugr[19][10];            /* [room][0..4 crosswise, 5..9 endwise] per reflectance combination */
+    double lamp_flux_lm;           /* the flux the table is for */
+    double spacing_h;              /* 0.25 */
+    double lb_cd_m2[19][5];        /* the background luminance per room and reflectance combination */
+} lx_ugr_table;
+LX_API lx_status lx_ugr_table_compute(lx_ctx *ctx, const lx_luminaire *lum, lx_ugr_table *out);
+
 /* ============================================================================================ */
 /* 12. Environment maps, OpenEXR and irradiance; daylight skies and the sun (src/radiance) */
 /* ============================================================================================ */
@@ -1462,6 +1501,32 @@ typedef struct lx_scene_eval_opts {
 LX_API lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *scene, const lx_scene_plan *plan,
                                const lx_scene_eval_opts *opts, lx_scene_result **out);
 LX_API void lx_scene_result_free(lx_scene_result *res);
+
+/** One luminaire as a glare source for one observer (CIE 117). */
+typedef struct lx_glare_term {
+    int visible;                /* 1 when it counts: a luminous area, in front of the eye (sigma < 90 deg) and lit towards it */
+    double luminance_cd_m2;     /* L = I(towards the eye) / projected luminous area */
+    double solid_angle_sr;      /* omega = projected area / d^2 */
+    double position_index;      /* Guth p (lx_guth_position_index) */
+    double sigma_deg, tau_deg;  /* the source's angle from the line of sight, and about it from the vertical */
+    double term;                /* L^2 omega / p^2 */
+} lx_glare_term;
+
+/** The glare of a scene at its observers. */
+typedef struct lx_scene_glare {
+    size_t n_obs, n_lum;
+    double *ugr;                /* n_obs: UGR (NaN when no luminaire counts) */
+    double *background_cd_m2;   /* n_obs: Lb used */
+    lx_glare_term *terms;       /* n_obs x n_lum, observer-major */
+} lx_scene_glare;
+
+/** UGR (CIE 117-1995) at every [observer]: UGR = 8 log10(0.25 / Lb sum L^2 omega / p^2) over the
+ * luminaires with a luminous area (disk, rect, file luminaires with an opening; points and spots
+ * have none and are left out). Lb is the observer's background_luminance (LX_EPARSE naming the
+ * observer when it has none: the background from a room's indirect illuminance needs rooms). Free
+ * with lx_scene_glare_free. */
+LX_API lx_status lx_scene_glare_eval(lx_ctx *ctx, const lx_scene *scene, lx_scene_glare **out);
+LX_API void lx_scene_glare_free(lx_scene_glare *glare);
 
 /* ============================================================================================ */
 /* 15. Plots (PNG, written atomically) (src/plot) */
