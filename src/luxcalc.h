@@ -108,9 +108,10 @@ LX_API void lx_ctx_set_log(lx_ctx *ctx, lx_log_fn fn, void *user, lx_log_level m
 typedef enum lx_input_kind {
     LX_INPUT_SPECTRUM = 0,  /* spectra: SPD text, CGATS, instrument exports (default 256 MB) */
     LX_INPUT_LUMINAIRE = 1, /* photometric files: IES LM-63, EULUMDAT, TILT tables (default 16 MB) */
-    LX_INPUT_SCENE = 2      /* scene files and their includes (default 16 MB) */
+    LX_INPUT_SCENE = 2,     /* scene files and their includes (default 16 MB) */
+    LX_INPUT_KERNEL = 3     /* OpenCL kernel sources read from LX_KERNEL_DIR (default 16 MB) */
 } lx_input_kind;
-#define LX_INPUT_KIND_COUNT 3
+#define LX_INPUT_KIND_COUNT 4
 
 /** Sets the size limit in bytes for files of `kind` read through ctx; 0 restores the default:
  * the environment variable LX_MAX_INPUT_MB (a whole number of MB of 2^20 bytes, 1 to 1048576,
