@@ -101,6 +101,26 @@ LX_API long lx_ctx_errline(const lx_ctx *ctx);
 /** Installs a log callback (NULL removes it). Messages at or below max_level are delivered. */
 LX_API void lx_ctx_set_log(lx_ctx *ctx, lx_log_fn fn, void *user, lx_log_level max_level);
 
+/** The kinds of text file the library reads whole, each with a size limit (README "Robustness",
+ * src/core/limits.h). A reader refuses a larger file, device or stream when it reaches the limit
+ * ("FILE: larger than N MB (raise with LX_MAX_INPUT_MB)", LX_EIO), and refuses binary data (a NUL
+ * byte, UTF-16 text, control bytes in the first block; LX_EPARSE naming the line) as it arrives. */
+typedef enum lx_input_kind {
+    LX_INPUT_SPECTRUM = 0,  /* spectra: SPD text, CGATS, instrument exports (default 256 MB) */
+    LX_INPUT_LUMINAIRE = 1, /* photometric files: IES LM-63, EULUMDAT, TILT tables (default 16 MB) */
+    LX_INPUT_SCENE = 2,     /* scene files and their includes (default 16 MB) */
+    LX_INPUT_KERNEL = 3     /* OpenCL kernel sources read from LX_KERNEL_DIR (default 16 MB) */
+} lx_input_kind;
+#define LX_INPUT_KIND_COUNT 4
+
+/** Sets the size limit in bytes for files of `kind` read through ctx; 0 restores the default:
+ * the environment variable LX_MAX_INPUT_MB (a whole number of MB of 2^20 bytes, 1 to 1048576,
+ * for every kind) when set, else the kind's default. LX_EINVAL for an unknown kind. */
+LX_API lx_status lx_ctx_set_input_limit(lx_ctx *ctx, lx_input_kind kind, size_t max_bytes);
+
+/** The size limit in bytes in effect for `kind` on ctx (ctx may be NULL: the default). */
+LX_API size_t lx_ctx_input_limit(const lx_ctx *ctx, lx_input_kind kind);
+
 /* ============================================================================================ */
 /* 2. Backends, SIMD paths and OpenCL devices (src/core) */
 /* ============================================================================================ */

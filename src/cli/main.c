@@ -86,15 +86,25 @@ int main(int argc, char **argv)
     }
     /* the environment's switches, checked once for every command (the library ignores bad values) */
     const char *simd = getenv("LX_SIMD"), *backend = getenv("LX_BACKEND");
-    lx_simd sp;
-    lx_backend bp;
-    if (simd && *simd && lx_simd_parse(NULL, simd, &sp) != LX_OK) {
-        fprintf(stderr, "luxcalc: LX_SIMD='%s' is not scalar, avx2 or avx512\n", simd);
-        return CLI_USAGE;
-    }
-    if (backend && *backend && lx_backend_parse(NULL, backend, &bp) != LX_OK) {
-        fprintf(stderr, "luxcalc: LX_BACKEND='%s' is not auto, cpu or opencl\n", backend);
-        return CLI_USAGE;
+    if ((simd && *simd) || (backend && *backend)) {
+        lx_simd sp;
+        lx_backend bp;
+        lx_ctx *ctx = NULL;
+        if (lx_ctx_create(&ctx) != LX_OK) {
+            fprintf(stderr, "luxcalc: out of memory\n");
+            return CLI_RUNTIME;
+        }
+        int bad_simd = simd && *simd && lx_simd_parse(ctx, simd, &sp) != LX_OK;
+        int bad_backend = !bad_simd && backend && *backend && lx_backend_parse(ctx, backend, &bp) != LX_OK;
+        lx_ctx_destroy(ctx);
+        if (bad_simd) {
+            fprintf(stderr, "luxcalc: LX_SIMD='%s' is not scalar, avx2 or avx512\n", simd);
+            return CLI_USAGE;
+        }
+        if (bad_backend) {
+            fprintf(stderr, "luxcalc: LX_BACKEND='%s' is not auto, cpu or opencl\n", backend);
+            return CLI_USAGE;
+        }
     }
     for (const cli_cmd *c = cli_commands; c->name; c++)
         if (!strcmp(c->name, argv[i])) return c->run(argc - i, argv + i);

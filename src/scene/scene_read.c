@@ -223,13 +223,19 @@ static lx_status do_include(reader *r, const char *file, long line, const char *
     if (!path) return lx__error(r->ctx, LX_ENOMEM, file, line, "out of memory");
     char *text = NULL;
     size_t len = 0;
-    lx_status st = lx__read_all(r->ctx, path, &text, &len);
+    lx_status st = lx__read_all(r->ctx, path, LX_INPUT_SCENE, &text, &len);
     if (st != LX_OK) { /* lx__read_all's reason, at the include line */
         char why[LX__ERRMSG_MAX];
         const char *m = lx_ctx_errmsg(r->ctx);
         size_t pl = strlen(path);
-        if (!strncmp(m, path, pl) && !strncmp(m + pl, ": ", 2)) m += pl + 2; /* the path is said once */
-        snprintf(why, sizeof why, "%s", m);
+        long at = lx_ctx_errline(r->ctx);
+        if (!strncmp(m, path, pl) && m[pl] == ':') { /* the path is said once, its line after the reason */
+            const char *q = m + pl;
+            if (at > 0) q += strspn(q + 1, "0123456789") + 1; /* "PATH:LINE: why" */
+            if (q[0] == ':' && q[1] == ' ') m = q + 2;
+        }
+        if (at > 0) snprintf(why, sizeof why, "%s (its line %ld)", m, at);
+        else snprintf(why, sizeof why, "%s", m);
         lx__error(r->ctx, st, file, line, "include: cannot read '%s': %s", path, why);
         free(path);
         return st;
@@ -406,7 +412,7 @@ lx_status lx_scene_read_file(lx_ctx *ctx, const char *path, lx_scene **out)
     *out = NULL;
     char *text = NULL;
     size_t len = 0;
-    lx_status st = lx__read_all(ctx, path, &text, &len); /* its errors name the file */
+    lx_status st = lx__read_all(ctx, path, LX_INPUT_SCENE, &text, &len); /* its errors name the file */
     if (st != LX_OK) return st;
     st = lx_scene_read_mem(ctx, path, text, len, out);
     free(text);
