@@ -16,6 +16,7 @@
 static lx_ctx *C;           /* the real context the fixtures were made with */
 static lx_spd D65;          /* a view of the embedded D65 table */
 static lx_luminaire *LUM;   /* a 1000 lm isotropic model */
+static lx_luminaire *PANEL; /* a 1000 lm Lambertian 0.6 m x 0.6 m panel (a luminous area: UGR) */
 static lx_envmap *MAP;      /* 8 x 4, one channel, 1.0 everywhere */
 static lx_scene *SCENE;     /* tests/data/scenes/point.scene from memory */
 static lx_scene_plan *PLAN;
@@ -35,7 +36,9 @@ static int setup(void **state)
     (void)state;
     if (lx_ctx_create(&C)) return -1;
     lx_lum_model m = {.kind = LX_LUM_MODEL_POINT, .flux_lm = 1000};
+    lx_lum_model pm = {.kind = LX_LUM_MODEL_LAMBERT, .flux_lm = 1000, .width_m = 0.6, .length_m = 0.6};
     if (lx_illuminant_get(C, "D65", &D65) || lx_luminaire_from_model(C, &m, &LUM) ||
+        lx_luminaire_from_model(C, &pm, &PANEL) ||
         lx_envmap_create(C, 8, 4, 1, &MAP) ||
         lx_scene_read_mem(C, "tests/data/scenes/api.scene", SCENE_TEXT, strlen(SCENE_TEXT), &SCENE) ||
         lx_scene_plan_make(C, SCENE, LX_BACKEND_CPU, &PLAN)) {
@@ -54,6 +57,7 @@ static int teardown(void **state)
     lx_scene_free(SCENE);
     lx_envmap_free(MAP);
     lx_luminaire_free(LUM);
+    lx_luminaire_free(PANEL);
     lx_ctx_destroy(C);
     rmdir(DIR_);
     return 0;
@@ -608,6 +612,84 @@ static void t_lx_png_error_time(void)
     assert_absent(p);
 }
 
+static void t_lx_ctx_set_input_limit(void) { EXPECT_EINVAL(lx_ctx_set_input_limit(NULL, LX_INPUT_SPECTRUM, 1024)); }
+static void t_lx_ctx_input_limit(void) /* NULL: the default limit, the same as a fresh context's */
+{
+    assert_true(lx_ctx_input_limit(NULL, LX_INPUT_SCENE) > 0);
+    lx_ctx *c = NULL;
+    lx_assert_ok(c, lx_ctx_create(&c));
+    assert_int_equal(lx_ctx_input_limit(NULL, LX_INPUT_SCENE), lx_ctx_input_limit(c, LX_INPUT_SCENE));
+    lx_ctx_destroy(c);
+}
+static void t_lx_ugr(void)
+{
+    const double L[1] = {1e4}, w[1] = {1e-3}, p[1] = {1.5};
+    double t[1] = {SENT}, u = SENT;
+    EXPECT_EINVAL(lx_ugr(NULL, 40, 1, L, w, p, t, &u));
+    assert_true(t[0] == SENT && u == SENT);
+}
+static void t_lx_ugr_table_compute(void)
+{
+    static lx_ugr_table t;
+    t.lamp_flux_lm = SENT;
+    EXPECT_EINVAL(lx_ugr_table_compute(NULL, LUM, &t));
+    assert_true(t.lamp_flux_lm == SENT);
+}
+static const double SUN_DIR[3] = {0, -0.5, 0.8660254037844386};
+static void t_lx_sky_cie(void)
+{
+    lx_sky s = {.zenith_cd_m2 = SENT};
+    EXPECT_EINVAL(lx_sky_cie(NULL, 12, SUN_DIR, LX_SKY_BY_ZENITH, 5000, &s));
+    assert_true(s.zenith_cd_m2 == SENT);
+}
+static void t_lx_sky_cie_params(void)
+{
+    double p[5] = {SENT, SENT, SENT, SENT, SENT};
+    EXPECT_EINVAL(lx_sky_cie_params(NULL, 12, p));
+    assert_true(p[0] == SENT && p[4] == SENT);
+}
+static void t_lx_sky_perez(void)
+{
+    lx_perez_input in = {.sun_dir = {0, -0.5, 0.8660254037844386}, .direct_normal_W_m2 = 600,
+                         .diffuse_horizontal_W_m2 = 120, .day_of_year = 172};
+    lx_sky s = {.zenith_cd_m2 = SENT};
+    EXPECT_EINVAL(lx_sky_perez(NULL, &in, &s));
+    assert_true(s.zenith_cd_m2 == SENT);
+}
+static void t_lx_sky_illuminance(void)
+{
+    lx_sky s;
+    lx_assert_ok(C, lx_sky_cie(C, 12, SUN_DIR, LX_SKY_BY_ZENITH, 5000, &s));
+    const double up[3] = {0, 0, 1};
+    double E = SENT;
+    EXPECT_EINVAL(lx_sky_illuminance(NULL, &s, up, 0, &E));
+    assert_true(E == SENT);
+}
+static void t_lx_sun_spa(void)
+{
+    lx_sun_input in = {.year = 2003, .month = 10, .day = 17, .hour = 12, .minute = 30, .second = 30, .timezone_h = -7,
+                       .delta_t_s = 67, .latitude_deg = 39.742476, .longitude_deg = -105.1786, .elevation_m = 1830.14,
+                       .pressure_mbar = 820, .temperature_C = 11, .refraction_deg = 0.5667};
+    lx_sun_position p = {.julian_day = SENT};
+    EXPECT_EINVAL(lx_sun_spa(NULL, &in, &p));
+    assert_true(p.julian_day == SENT);
+}
+static void t_lx_sky_map(void)
+{
+    lx_sky s;
+    lx_assert_ok(C, lx_sky_cie(C, 12, SUN_DIR, LX_SKY_BY_ZENITH, 5000, &s));
+    lx_sky_map_opts o = {.width = 16, .height = 8};
+    lx_envmap *m = PSENT;
+    EXPECT_EINVAL(lx_sky_map(NULL, &s, &o, &m));
+    assert_ptr_equal(m, PSENT);
+}
+static void t_lx_scene_glare_eval(void)
+{
+    lx_scene_glare *g = PSENT;
+    EXPECT_EINVAL(lx_scene_glare_eval(NULL, SCENE, &g));
+    assert_ptr_equal(g, PSENT);
+}
+
 #define CASE(f) {#f, t_##f}
 static const struct api_case {
     const char *name;
@@ -637,7 +719,9 @@ static const struct api_case {
     CASE(lx_irradiance_dirs), CASE(lx_irradiance_map), CASE(lx_spectral_exr_read_xyz), CASE(lx_xyz_image_write_exr),
     CASE(lx_scene_read_file), CASE(lx_scene_read_mem), CASE(lx_scene_plan_make), CASE(lx_scene_eval),
     CASE(lx_png_falsecolor), CASE(lx_png_preview), CASE(lx_spd_report_png), CASE(lx_xyz_png_write),
-    CASE(lx_grid_write_png), CASE(lx_png_error_time),
+    CASE(lx_grid_write_png), CASE(lx_png_error_time), CASE(lx_ctx_set_input_limit), CASE(lx_ctx_input_limit),
+    CASE(lx_ugr), CASE(lx_ugr_table_compute), CASE(lx_sky_cie), CASE(lx_sky_cie_params), CASE(lx_sky_perez),
+    CASE(lx_sky_illuminance), CASE(lx_sun_spa), CASE(lx_sky_map), CASE(lx_scene_glare_eval),
 };
 #define NCASES (sizeof CASES / sizeof CASES[0])
 
@@ -755,6 +839,25 @@ static void nonzero_reserved_options_refused(void **state)
     lx_luminaire *l = PSENT;
     EXPECT_EINVAL(lx_luminaire_from_model(ctx, &lm, &l));
     assert_null(l);
+
+    lx_sky sky;
+    lx_assert_ok(ctx, lx_sky_cie(ctx, 12, SUN_DIR, LX_SKY_BY_ZENITH, 5000, &sky));
+    lx_sky_map_opts mo = {.width = 16, .height = 8};
+    mo.reserved[3] = 1;
+    m = PSENT;
+    EXPECT_EINVAL(lx_sky_map(ctx, &sky, &mo, &m));
+    assert_null(m);
+    lx_perez_input pi = {.sun_dir = {0, -0.5, 0.8660254037844386}, .direct_normal_W_m2 = 600,
+                         .diffuse_horizontal_W_m2 = 120, .day_of_year = 172};
+    pi.reserved[0] = 1;
+    lx_sky ps;
+    EXPECT_EINVAL(lx_sky_perez(ctx, &pi, &ps));
+    lx_sun_input si = {.year = 2003, .month = 10, .day = 17, .hour = 12, .timezone_h = -7, .delta_t_s = 67,
+                       .latitude_deg = 39.7, .longitude_deg = -105.2, .pressure_mbar = 820, .temperature_C = 11,
+                       .refraction_deg = 0.5667};
+    si.reserved[1] = 1;
+    lx_sun_position sp;
+    EXPECT_EINVAL(lx_sun_spa(ctx, &si, &sp));
 }
 
 /* ABI policy: results are written whole, their reserved space as zero (whatever the caller left there). */
@@ -812,6 +915,26 @@ static void results_write_reserved_as_zero(void **state)
     lx_assert_ok(ctx, lx_cl_devices(ctx, &d, &n));
     for (size_t i = 0; i < n; i++) ZERO_RESERVED(d[i]);
     lx_cl_devices_free(d);
+    lx_sky sky;
+    DIRTY(sky);
+    lx_assert_ok(ctx, lx_sky_cie(ctx, 12, SUN_DIR, LX_SKY_BY_ZENITH, 5000, &sky));
+    ZERO_RESERVED(sky);
+    lx_perez_input pi = {.sun_dir = {0, -0.5, 0.8660254037844386}, .direct_normal_W_m2 = 600,
+                         .diffuse_horizontal_W_m2 = 120, .day_of_year = 172};
+    DIRTY(sky);
+    lx_assert_ok(ctx, lx_sky_perez(ctx, &pi, &sky));
+    ZERO_RESERVED(sky);
+    lx_sun_input si = {.year = 2003, .month = 10, .day = 17, .hour = 12, .timezone_h = -7, .delta_t_s = 67,
+                       .latitude_deg = 39.7, .longitude_deg = -105.2, .pressure_mbar = 820, .temperature_C = 11,
+                       .refraction_deg = 0.5667};
+    lx_sun_position sp;
+    DIRTY(sp);
+    lx_assert_ok(ctx, lx_sun_spa(ctx, &si, &sp));
+    ZERO_RESERVED(sp);
+    static lx_ugr_table ut;
+    DIRTY(ut);
+    lx_assert_ok(ctx, lx_ugr_table_compute(ctx, PANEL, &ut));
+    ZERO_RESERVED(ut);
 }
 
 /* Creating functions set *out to NULL when they fail (here: on an argument they refuse). */

@@ -10,6 +10,8 @@ int cmd_daylight(int argc, char **argv);
 int cmd_ies(int argc, char **argv);
 int cmd_grid(int argc, char **argv);
 /* ---- command declarations (one line per command) ---- */
+int cmd_sky(int argc, char **argv);
+int cmd_ugr(int argc, char **argv);
 int cmd_irradiance(int argc, char **argv);
 int cmd_luminance_map(int argc, char **argv);
 int cmd_scene(int argc, char **argv);
@@ -40,6 +42,8 @@ const cli_cmd cli_commands[] = {
     {"devices", cmd_devices, "the OpenCL platforms and devices, and which one auto would use"},
     {"bench", cmd_bench, "measured performance and accuracy-against-time tables (spd, metrics, irradiance, grid, accuracy)"},
     /* ---- command table entries (one line per command) ---- */
+    {"sky", cmd_sky, "a CIE standard general or Perez sky with the sun as a lat-long luminance EXR"},
+    {"ugr", cmd_ugr, "the CIE 190 tabular UGR table of an IES/EULUMDAT luminaire"},
     {NULL, NULL, NULL},
 };
 

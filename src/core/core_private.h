@@ -12,6 +12,7 @@
 #include <stdio.h>
 
 #include "core/constants.h"
+#include "core/limits.h"
 
 #define LX__ERRMSG_MAX 1024
 
@@ -43,6 +44,7 @@ struct lx_ctx {
     void (*cl_release)(lx_ctx *ctx);  /* frees cl; set by whoever creates it */
     lx_counters counters;             /* work counters of the lighting and scene layers */
     lx_backend backend_used;          /* lx_ctx_backend_used: AUTO until a backend-choosing call succeeds */
+    size_t input_limit[LX_INPUT_KIND_COUNT]; /* bytes per lx_input_kind; 0: the default */
 };
 
 /* The data in slot id of ctx (NULL when empty or ctx is NULL). */
@@ -79,11 +81,17 @@ void lx__log(lx_ctx *ctx, lx_log_level level, const char *fmt, ...)
 /* ---- text input (file_open.c, lines.c, numparse.c) ---- */
 
 /* Opens path for reading: "-" gives stdin; a directory or a missing file is LX_EIO naming the path;
- * a FIFO waits at most LX_FIFO_WAIT_S seconds (default 10, 0: for ever) for its first data. */
+ * a FIFO waits at most LX_FIFO_WAIT_S seconds (default LX__FIFO_WAIT_S, 0: for ever) for its first data. */
 lx_status lx__open_read(lx_ctx *ctx, const char *path, FILE **out);
-/* Reads a whole input file (as lx__open_read opens it; "-" is standard input) into *text (malloc'ed,
- * not terminated) and *len. Errors name the file: LX_EIO, LX_ENOMEM, and lx__open_read's. */
-lx_status lx__read_all(lx_ctx *ctx, const char *path, char **text, size_t *len);
+/* Reads a whole text input file of `kind` (as lx__open_read opens it; "-" is standard input: a
+ * regular file, a character device, a FIFO or a pipe alike) into *text (malloc'ed, not terminated)
+ * and *len, under the kind's size limit (lx_ctx_input_limit): a regular file larger than the limit
+ * is refused before it is read, a stream when the limit is reached ("FILE: larger than N MB (raise
+ * with LX_MAX_INPUT_MB)", LX_EIO). Binary input is refused as it arrives (LX_EPARSE, FILE:LINE): a
+ * NUL byte anywhere; in the first LX__TEXT_PROBE_BYTES a UTF-16 byte-order mark or pattern, or
+ * control bytes. Memory stays within the limit plus one block. Errors name the file: LX_EIO,
+ * LX_EPARSE, LX_ENOMEM, LX_EINVAL (an unknown kind), and lx__open_read's. */
+lx_status lx__read_all(lx_ctx *ctx, const char *path, lx_input_kind kind, char **text, size_t *len);
 
 /* A cursor over the lines of a buffer: LF or CRLF; line counts from 1 after the first call. */
 typedef struct lx__lines {

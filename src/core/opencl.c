@@ -316,7 +316,7 @@ static lx_status build_program(lx_ctx *ctx, lx__cl *cl)
         if (dir && *dir) { /* kernel work: the files of LX_KERNEL_DIR instead of the embedded text */
             char path[1024];
             snprintf(path, sizeof path, "%s/%s", dir, lx__kernel_sources[i].name);
-            st = lx__read_all(ctx, path, &owned[i], &lens[i]);
+            st = lx__read_all(ctx, path, LX_INPUT_KERNEL, &owned[i], &lens[i]);
             if (st) { /* the reader's message names the file; say where the path came from */
                 char why[LX__ERRMSG_MAX / 2];
                 snprintf(why, sizeof why, "%s", lx_ctx_errmsg(ctx));

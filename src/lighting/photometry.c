@@ -110,7 +110,7 @@ lx_status lx_luminaire_read_file(lx_ctx *ctx, const char *path, lx_luminaire **o
     if (!path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_read_file: NULL argument");
     char *buf;
     size_t len;
-    lx_status st = lx__read_all(ctx, path, &buf, &len);
+    lx_status st = lx__read_all(ctx, path, LX_INPUT_LUMINAIRE, &buf, &len);
     if (st != LX_OK) return st;
     st = lx_luminaire_read_mem(ctx, path, buf, len, out);
     free(buf);
