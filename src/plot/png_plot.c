@@ -1,6 +1,6 @@
 /* png_plot.c - reusable PNG plots: an RGB8 canvas, a 5x7 bitmap font of our own, a false-colour
  * scale with a labelled legend (the look of Radiance falsecolor), a tone-mapped HDR preview and an
- * atomic PNG writer (libpng; temporary file + rename). Declarations in lx_private.h. */
+ * atomic PNG writer (libpng; temporary file + rename). Declarations in plot/plot_private.h. */
 #include "plot/plot_private.h"
 
 #include <errno.h>

@@ -9,7 +9,7 @@
 #include <string.h>
 
 
-/* ---- geometry and colour (shared with the tests through lx_private.h) ---- */
+/* ---- geometry and colour (shared with the tests through plot/plot_private.h) ---- */
 
 /* linear sRGB from XYZ (IEC 61966-2-1, D65 white) */
 static const double XYZ_TO_SRGB[3][3] = {{3.2406, -1.5372, -0.4986}, {-0.9689, 1.8758, 0.0415}, {0.0557, -0.2040, 1.0570}};
