@@ -78,12 +78,14 @@ deps:
 	  fi; \
 	fi
 
-# ---- the flags of this build dir ----
-# The compiler, flags and libraries this BUILD dir's objects were made with: every object depends on
-# this file, which is rewritten only when they change, so switching LX_OPENCL or CFLAGS in one
-# BUILD dir rebuilds it instead of mixing objects (not rewritten by make -n, which only looks).
+# ---- the configuration of this build dir ----
+# The compiler and preprocessor flags (LX_OPENCL, CPPFLAGS) this BUILD dir's objects were made with:
+# every object depends on this file, which is rewritten only when they change, so switching
+# LX_OPENCL in one BUILD dir rebuilds it instead of mixing objects of both (not rewritten by make -n,
+# which only looks). CFLAGS and LDFLAGS are not tracked: each sanitizer has its own BUILD dir, and
+# tests/cli/install.sh runs make install in them without repeating their CFLAGS.
 FLAGS_STAMP := $(BUILD)/flags.txt
-FLAGS_NOW = $(subst ',,$(CC) $(ALL_CPPFLAGS) $(ALL_CFLAGS) $(LDFLAGS) $(LIBS))
+FLAGS_NOW = $(subst ',,$(CC) $(ALL_CPPFLAGS))
 ifeq ($(findstring n,$(firstword -$(MAKEFLAGS))),)
 $(shell mkdir -p $(BUILD) && { printf '%s\n' '$(FLAGS_NOW)' | cmp -s - $(FLAGS_STAMP) || printf '%s\n' '$(FLAGS_NOW)' >$(FLAGS_STAMP); })
 endif

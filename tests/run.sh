@@ -18,18 +18,21 @@ if [ "${LX_TEST_CLI:-1}" != 0 ]; then
     i=$((i + 1)); echo "$i cli $c"
   done >>"$W/list"
 fi
-# one job: its output to W/INDEX.out, its exit status to W/INDEX.rc
+# one job: its output to W/INDEX.out, its exit status to W/INDEX.rc, its wall time (s) to W/INDEX.s
 run_one() {
+  t0=$(date +%s)
   if [ "$2" = bin ]; then "$3" </dev/null >"$W/$1.out" 2>&1
   else LUXCALC="$build/luxcalc" sh "$3" </dev/null >"$W/$1.out" 2>&1; fi
   echo $? >"$W/$1.rc"
+  echo $(($(date +%s) - t0)) >"$W/$1.s"
 }
 passed=0; failed=0; skipped=0; bad=""
 # adds a finished job to the totals and prints its report
 report() {
-  rc=$(cat "$W/$1.rc"); name=$(basename "$3")
+  rc=$(cat "$W/$1.rc"); name=$(basename "$3"); secs=$(cat "$W/$1.s")
   if [ "$2" = bin ]; then
     cat "$W/$1.out"
+    echo "[ TIME ] $name: $secs s"
     p=$(sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' "$W/$1.out" | tail -n 1)
     f=$(sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' "$W/$1.out" | tail -n 1)
     s=$(sed -n 's/^\[  SKIPPED \] \([0-9]*\) test.*/\1/p' "$W/$1.out" | tail -n 1)
@@ -44,16 +47,18 @@ report() {
     grep '^not ok ' "$W/$1.out" | sed "s|^|$name: |"
     passed=$((passed + n)); failed=$((failed + nf)); skipped=$((skipped + ns))
     if [ "$rc" -ne 0 ] && [ "$nf" -eq 0 ]; then failed=$((failed + 1)); bad="$bad $name"; fi
-    echo "[ CLI ] $name: $n passed, $nf failed, $ns skipped"
+    echo "[ CLI ] $name: $n passed, $nf failed, $ns skipped ($secs s)"
     [ "$nf" -gt 0 ] && bad="$bad $name"
   fi
 }
 if [ "$jobs" -gt 1 ]; then
   export W build
   xargs -P "$jobs" -L 1 sh -c '  # run_one, in the shell xargs starts
+    t0=$(date +%s)
     if [ "$2" = bin ]; then "$3" </dev/null >"$W/$1.out" 2>&1
     else LUXCALC="$build/luxcalc" sh "$3" </dev/null >"$W/$1.out" 2>&1; fi
-    echo $? >"$W/$1.rc"' sh <"$W/list"
+    echo $? >"$W/$1.rc"
+    echo $(($(date +%s) - t0)) >"$W/$1.s"' sh <"$W/list"
   while read -r idx kind path; do report "$idx" "$kind" "$path"; done <"$W/list"
 else
   while read -r idx kind path; do run_one "$idx" "$kind" "$path"; report "$idx" "$kind" "$path"; done <"$W/list"
