@@ -279,9 +279,9 @@ int cmd_spd(int argc, char **argv)
                           r.scotopic_Y, r.sp_ratio, r.radiant};
             for (size_t j = 0; j < sizeof v / sizeof *v; j++) cli_table_num(t, v[j]);
             cli_table_str(t, method_name(r.method));
-            if (msel.any)
-                cli_metrics_row(t, ctx, &msel, &set->spd[k], method, units[unit].name, &r, set->file,
-                                set->line ? set->line[k] : 0L, cmd);
+            if (msel.any && cli_metrics_row(t, ctx, &msel, &set->spd[k], method, units[unit].name, &r, set->file,
+                                            set->line ? set->line[k] : 0L, cmd) > 0 && rc < CLI_INPUT)
+                rc = CLI_INPUT;
             if (report_dir) {
                 int e = cli_spd_report(ctx, cmd, report_dir, set->file, k, &set->spd[k], obs);
                 if (e > rc) rc = e;

@@ -59,6 +59,9 @@ lx_status lx__error(lx_ctx *ctx, lx_status status, const char *file, long line, 
 #endif
     ;
 
+/* v as "%.3g" with a bare exponent (1e308, 2.5e-7), for messages. */
+void lx__fmt_magnitude(char *buf, size_t cap, double v);
+
 /* Delivers a message to the log callback when one is installed and level <= its maximum. */
 void lx__log(lx_ctx *ctx, lx_log_level level, const char *fmt, ...)
 #if defined(__GNUC__)

@@ -99,21 +99,6 @@ static double exact_product(const lx_spd *a, const lx_spd *b)
     return sum + comp;
 }
 
-void lx__fmt_magnitude(char *buf, size_t cap, double v)
-{
-    char t[48];
-    snprintf(t, sizeof t, "%.3g", v);
-    char *e = strchr(t, 'e');
-    if (e) { /* 1e+308 -> 1e308, 3e-05 -> 3e-5 */
-        char *q = e + 1, *d = e + 1;
-        if (*q == '+') q++;
-        else if (*q == '-') *d++ = *q++;
-        while (*q == '0' && q[1]) q++;
-        memmove(d, q, strlen(q) + 1);
-    }
-    snprintf(buf, cap, "%s", t);
-}
-
 double lx__spd_max_abs(const lx_spd *spd)
 {
     double m = 0;

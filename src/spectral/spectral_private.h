@@ -14,8 +14,7 @@ lx_status lx__spd_set_build(lx_ctx *ctx, const char *file, size_t nlam, const do
                             const double *val, size_t ss, size_t ks, char *const *names,
                             const long *lines, lx_spd_set **out);
 
-/* v as "%.3g" with a bare exponent (1e308, 2.5e-7), for messages; the largest |value| of spd. */
-void lx__fmt_magnitude(char *buf, size_t cap, double v);
+/* The largest |value| of spd. */
 double lx__spd_max_abs(const lx_spd *spd);
 
 /* CGATS / Argyll spectral files (cgats.c): detection by content, and the reader. */
