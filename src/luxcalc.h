@@ -49,7 +49,7 @@ LX_API const char *lx_version(void);
  *   9. lighting  Units and quantities
  *  10. lighting  Sources, inverse problems and solid angles
  *  11. lighting  Luminaires (IES LM-63, EULUMDAT) and illuminance grids
- *  12. radiance  Environment maps, OpenEXR and irradiance
+ *  12. radiance  Environment maps, OpenEXR and irradiance; daylight skies and the sun
  *  13. radiance  Spectral OpenEXR images
  *  14. scene     Scenes: files, the planner, evaluation and work counters
  *  15. plot      Plots (PNG, written atomically)
@@ -108,9 +108,10 @@ LX_API void lx_ctx_set_log(lx_ctx *ctx, lx_log_fn fn, void *user, lx_log_level m
 typedef enum lx_input_kind {
     LX_INPUT_SPECTRUM = 0,  /* spectra: SPD text, CGATS, instrument exports (default 256 MB) */
     LX_INPUT_LUMINAIRE = 1, /* photometric files: IES LM-63, EULUMDAT, TILT tables (default 16 MB) */
-    LX_INPUT_SCENE = 2      /* scene files and their includes (default 16 MB) */
+    LX_INPUT_SCENE = 2,     /* scene files and their includes (default 16 MB) */
+    LX_INPUT_KERNEL = 3     /* OpenCL kernel sources read from LX_KERNEL_DIR (default 16 MB) */
 } lx_input_kind;
-#define LX_INPUT_KIND_COUNT 3
+#define LX_INPUT_KIND_COUNT 4
 
 /** Sets the size limit in bytes for files of `kind` read through ctx; 0 restores the default:
  * the environment variable LX_MAX_INPUT_MB (a whole number of MB of 2^20 bytes, 1 to 1048576,
@@ -922,8 +923,47 @@ LX_API lx_status lx_plane_points(lx_ctx *ctx, const lx_plane *plane, double **po
 typedef struct lx_grid_stats { double avg, min, max, u0; } lx_grid_stats;
 LX_API lx_status lx_grid_stats_compute(lx_ctx *ctx, const double *E, size_t n, lx_grid_stats *out);
 
+/* Glare (ugr.c): the CIE 117-1995 unified glare rating and the CIE 190:2010 tabular method. */
+
+/** The Guth position index of a source seen at sigma (the angle between the line of sight and the
+ * direction to the source) and tau (the angle, about the line of sight, between the vertical of
+ * the visual field and the plane through the line of sight and the source: 0 straight above),
+ * both in degrees. Above the line of sight (tau <= 90): the Luckiesh-Guth fit CIE 117 gives,
+ * ln p = (35.2 - 0.31889 tau - 1.22 exp(-2 tau / 9)) 1e-3 sigma + (21 + 0.26667 tau - 0.002963
+ * tau^2) 1e-5 sigma^2; below it (tau > 90): Iwata & Tokura 1997, p = 1 + 0.8 R/D for R/D < 0.6,
+ * else 1 + 1.2 R/D, R/D = tan(sigma) (as Radiance evalglare). Thread-safe. */
+LX_API double lx_guth_position_index(double sigma_deg, double tau_deg);
+
+/** UGR = 8 log10(0.25 / Lb sum L^2 omega / p^2) over n glare sources (luminance cd/m2, solid angle
+ * sr, position index), background luminance Lb > 0 (cd/m2). terms (n values, may be NULL) gets
+ * each source's L^2 omega / p^2. *ugr is NaN when the sum is 0 (no glare source). */
+LX_API lx_status lx_ugr(lx_ctx *ctx, double background_cd_m2, size_t n, const double *luminance_cd_m2,
+                        const double *solid_angle_sr, const double *position_index, double *terms, double *ugr);
+
+/** The luminous area of a luminaire projected towards the unit direction (x, y, z) of its own frame
+ * (nadir -z, C0 +x): W L |z| + H (L |x| + W |y|) for a rectangular opening of width W (along C0),
+ * length L and height H; pi D^2/4 |z| + D H sqrt(x^2 + y^2) for a circular one (IES: negative
+ * width; EULUMDAT: width 0, length the diameter). 0 for a point (no opening). m^2. Thread-safe. */
+LX_API double lx_luminaire_projected_area(const lx_luminaire *lum, double x, double y, double z);
+
+/** The CIE 190:2010 UGR table of a luminaire: 19 rooms X x Y (X across the line of sight, 2H..12H),
+ * 5 reflectance combinations (ceiling/walls/floor cavity 70/50/20, 70/30/20, 50/50/20, 50/30/20,
+ * 30/30/20), viewed crosswise and endwise, uncorrected (the luminaire's own lamp flux). The
+ * observer's eye is H = 2 m below the luminaire plane at the middle of a wall; luminaires on a
+ * square grid of spacing 0.25 H; those with T/R > 3 or gamma > 85 deg are left out (CIE 117
+ * 4.5); Lb from CIE 190 eqs. 7-12 (10-degree zonal fluxes, Tables 4 and 5). L = I / A_p with A_p
+ * the projected luminous area (lx_luminaire_projected_area; LX_EINVAL without one). */
+typedef struct lx_ugr_table {
+    double x_h[19], y_h[19];       /* room sizes in multiples of H */
+    double ugr[19][10];            /* [room][0..4 crosswise, 5..9 endwise] per reflectance combination */
+    double lamp_flux_lm;           /* the flux the table is for */
+    double spacing_h;              /* 0.25 */
+    double lb_cd_m2[19][5];        /* the background luminance per room and reflectance combination */
+} lx_ugr_table;
+LX_API lx_status lx_ugr_table_compute(lx_ctx *ctx, const lx_luminaire *lum, lx_ugr_table *out);
+
 /* ============================================================================================ */
-/* 12. Environment maps, OpenEXR and irradiance (src/radiance) */
+/* 12. Environment maps, OpenEXR and irradiance; daylight skies and the sun (src/radiance) */
 /* ============================================================================================ */
 
 /* Lat-long (equirectangular) environment maps (envmap.c). Direction convention (CLI.md): +z up,
@@ -1108,6 +1148,132 @@ LX_API lx_status lx_irradiance_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n_
 LX_API lx_status lx_irradiance_map(lx_ctx *ctx, const lx_envmap *map, int width, int height,
                                    lx_irr_opts *opts, lx_envmap **out);
 
+/* Daylight: the CIE standard general skies, the Perez all-weather sky (sky.c, sky_perez.c), the
+ * sun's position (sun.c, NREL SPA) and sky maps (sky_map.c). World directions: +z up, +y north,
+ * +x east (the convention of Radiance gensky/gendaylit); solar azimuth is measured from north
+ * towards east. Luminance in cd/m2, illuminance in lx, irradiance in W/m2. */
+
+/** Sky models. */
+typedef enum lx_sky_model {
+    LX_SKY_MODEL_CIE = 0,   /* ISO 15469 / CIE S 011 standard general sky, types 1..15 */
+    LX_SKY_MODEL_PEREZ = 1  /* Perez, Seals & Michalsky 1993 all-weather sky */
+} lx_sky_model;
+
+/** A sky luminance distribution L(dir) = zenith_cd_m2 * rel(dir) / rel(zenith), zero below the
+ * horizon. rel = (1 + a exp(b / cos Z)) * indicatrix(chi): CIE 1 + c (exp(d chi) - exp(d pi/2))
+ * + e cos^2 chi; Perez 1 + c exp(d chi) + e cos^2 chi (Z zenith angle of the element, chi its
+ * angle from the sun). Plain data: copy freely; evaluating it is thread-safe. */
+typedef struct lx_sky {
+    lx_sky_model model;
+    int cie_type;               /* 1..15 (CIE), 0 for Perez */
+    double a, b, c, d, e;       /* the model's parameters */
+    double sun_dir[3];          /* unit vector towards the sun (may be below the horizon for CIE types
+                                 * whose indicatrix is uniform: 1, 3, 5) */
+    double zenith_cd_m2;        /* Lz */
+    double diffuse_horizontal_lx; /* Dv: the horizontal illuminance from the sky (without the sun) */
+    double epsilon, delta;      /* Perez: sky clearness and brightness (NaN for CIE) */
+    int perez_bin;              /* Perez: clearness bin 1..8 (0 for CIE) */
+    double sun_normal_lx;       /* Perez: the direct normal illuminance Evn from the efficacy model (lx);
+                                 * CIE: NaN (the sun's illuminance is given separately) */
+} lx_sky;
+
+/** How a CIE sky is scaled: by its zenith luminance (cd/m2) or by its diffuse horizontal
+ * illuminance Dv (lx). */
+typedef enum lx_sky_scale { LX_SKY_BY_ZENITH = 0, LX_SKY_BY_HORIZONTAL = 1 } lx_sky_scale;
+
+/** A CIE standard general sky of type 1..15 with the sun towards sun_dir (any length > 0), scaled
+ * to value (zenith luminance or horizontal illuminance, > 0). Dv is the exact integral of the
+ * distribution (adaptive quadrature to 1e-12 relative). LX_EINVAL for a bad type, value or a sun
+ * below the horizon on a type whose indicatrix is not uniform. */
+LX_API lx_status lx_sky_cie(lx_ctx *ctx, int type, const double sun_dir[3], lx_sky_scale scale, double value,
+                            lx_sky *out);
+
+/** The parameters (a, b, c, d, e) of CIE type 1..15 from the embedded table (src/data). */
+LX_API lx_status lx_sky_cie_params(lx_ctx *ctx, int type, double params[5]);
+
+/** Inputs of the Perez sky: the sun and the measured irradiance, as gendaylit -W takes them. */
+typedef struct lx_perez_input {
+    double sun_dir[3];           /* towards the sun, above the horizon */
+    double direct_normal_W_m2;   /* DNI, >= 0 */
+    double diffuse_horizontal_W_m2; /* DHI, > 0 */
+    int day_of_year;             /* 1..366 (the extraterrestrial irradiance's eccentricity factor) */
+    double precipitable_water_cm;/* atmospheric precipitable water for the efficacy models (0: 2 cm, gendaylit's default) */
+} lx_perez_input;
+
+/** The Perez all-weather sky for the given irradiance: sky clearness epsilon and brightness Delta
+ * (Perez 1990: Kasten air mass, solar constant 1367 W/m2), the coefficients of its clearness bin
+ * (Perez 1993, gendaylit's adjustments: Delta >= 0.2 for 1.065 < epsilon < 2.8), the diffuse
+ * horizontal and direct normal illuminance from the Perez 1990 efficacy models, and the
+ * distribution scaled so its horizontal illuminance is that diffuse illuminance (exact quadrature;
+ * gendaylit uses a 145-point sum instead). epsilon is clamped to at most 12 (gendaylit's range);
+ * Delta is clamped to 0.01..0.6 (gendaylit's range) and the luminance to >= 0. LX_EINVAL for a sun at or
+ * below the horizon or bad irradiance. */
+LX_API lx_status lx_sky_perez(lx_ctx *ctx, const lx_perez_input *in, lx_sky *out);
+
+/** Luminance (cd/m2) of the sky towards dir (any length > 0); 0 below the horizon. Thread-safe. */
+LX_API double lx_sky_luminance(const lx_sky *sky, const double dir[3]);
+
+/** Illuminance (lx) from the sky alone (no sun, no ground) on a plane with normal n (any length
+ * > 0): the integral of L max(0, n . w) over the sky hemisphere by Gauss-Legendre quadrature on
+ * pieces split at the receiver's horizon and at the sun (nodes per piece and axis, 8..1024; 0:
+ * 48: 1e-8 relative or better on the CIE skies). Thread-safe. */
+LX_API lx_status lx_sky_illuminance(lx_ctx *ctx, const lx_sky *sky, const double n[3], int nodes, double *E_lx);
+
+/** Inputs of the solar position algorithm (NREL SPA, Reda & Andreas 2004). */
+typedef struct lx_sun_input {
+    int year, month, day, hour, minute; /* local standard time; year -2000..6000 */
+    double second;
+    double timezone_h;        /* hours east of Greenwich (-7 for US Mountain Standard Time) */
+    double delta_ut1_s;       /* UT1 - UTC, -1..1 s (0 when unknown) */
+    double delta_t_s;         /* TT - UT1 (about 69 s in the 2020s) */
+    double latitude_deg;      /* north positive */
+    double longitude_deg;     /* east positive */
+    double elevation_m;
+    double pressure_mbar;     /* annual mean local pressure (for refraction; 1013.25 at sea level) */
+    double temperature_C;     /* annual mean local temperature */
+    double refraction_deg;    /* atmospheric refraction at sunrise and sunset (0.5667 usually) */
+} lx_sun_input;
+
+/** The sun's position and the intermediate SPA values the algorithm's published test prints. */
+typedef struct lx_sun_position {
+    double julian_day;
+    double L_deg, B_deg, R_au;     /* Earth heliocentric longitude, latitude, radius vector */
+    double delta_psi_deg, delta_epsilon_deg, epsilon_deg; /* nutation and true obliquity */
+    double hour_angle_deg;         /* observer local hour angle H (before parallax) */
+    double declination_deg;        /* topocentric declination */
+    double zenith_deg;             /* topocentric zenith angle, refraction applied */
+    double azimuth_deg;            /* from north towards east, 0..360 */
+    double dir[3];                 /* unit vector towards the sun (x east, y north, z up) */
+} lx_sun_position;
+
+/** NREL SPA (Reda & Andreas 2004, NREL/TP-560-34302): the sun's topocentric zenith and azimuth,
+ * uncertainty +-0.0003 deg for years -2000..6000. LX_EINVAL (message names the field) for inputs
+ * outside SPA's ranges. Thread-safe. */
+LX_API lx_status lx_sun_spa(lx_ctx *ctx, const lx_sun_input *in, lx_sun_position *out);
+
+/** The direction towards the sun (x east, y north, z up) at altitude and azimuth (from north
+ * towards east), in radians. Thread-safe. */
+LX_API void lx_sun_direction(double altitude_rad, double azimuth_rad, double dir[3]);
+
+/** Half the angle the solar disc subtends: 0.2665 deg (Radiance gendaylit), in radians. */
+#define LX_SUN_HALF_ANGLE_RAD (0.2665 * 3.14159265358979323846 / 180.0)
+
+/** Options of lx_sky_map (zero-initialise for defaults). */
+typedef struct lx_sky_map_opts {
+    int width, height;           /* lat-long size (0: 1024 x 512) */
+    double sun_normal_lx;        /* direct normal illuminance of the sun disc (0: no sun) */
+    double ground_reflectance;   /* below the horizon: uniform rho (Dv + Evn sin(altitude)) / pi (0: black) */
+    int supersample;             /* sky samples per pixel and axis, Gauss-Legendre in cos(theta) and phi (0: 4) */
+} lx_sky_map_opts;
+
+/** Renders a sky (and the sun disc) as a one-channel (Y) lat-long map in the convention of
+ * lx_envmap (+z up, theta from +z, phi from +x towards +y) with units LUMINANCE (lum_per_unit 1:
+ * values are cd/m2). Each sky pixel holds the solid-angle mean of the luminance over its patch;
+ * the sun disc (half angle LX_SUN_HALF_ANGLE_RAD) is spread over the pixels it covers in proportion
+ * to the covered solid angle, scaled so the map's sum of L dOmega over the disc is exactly
+ * sun_normal_lx. *out is a new map. */
+LX_API lx_status lx_sky_map(lx_ctx *ctx, const lx_sky *sky, const lx_sky_map_opts *opts, lx_envmap **out);
+
 /* ============================================================================================ */
 /* 13. Spectral OpenEXR images (src/radiance) */
 /* ============================================================================================ */
@@ -1242,7 +1408,22 @@ typedef struct lx_scene_receiver {
 } lx_scene_receiver;
 
 /** The sky kinds. */
-typedef enum lx_scene_sky_kind { LX_SKY_NONE = 0, LX_SKY_UNIFORM, LX_SKY_OVERCAST, LX_SKY_MAP } lx_scene_sky_kind;
+typedef enum lx_scene_sky_kind {
+    LX_SKY_NONE = 0, LX_SKY_UNIFORM, LX_SKY_OVERCAST, LX_SKY_MAP,
+    LX_SKY_CIE,   /* a CIE standard general sky (type 1..15), by zenith luminance or horizontal illuminance */
+    LX_SKY_PEREZ  /* the Perez all-weather sky from direct-normal and diffuse-horizontal irradiance */
+} lx_scene_sky_kind;
+
+/** A glare observer: UGR (CIE 117) at an eye position looking along view. */
+typedef struct lx_scene_observer {
+    char *name;
+    const char *file;         /* the scene file and line of its section header */
+    long line;
+    double pos_m[3];          /* the eye */
+    double view[3];           /* unit line of sight */
+    double up[3];             /* unit, orthogonal to view: the vertical of the visual field (from +z) */
+    double background_cd_m2;  /* Lb given in the scene (NaN: none) */
+} lx_scene_observer;
 
 /** Forced state of an effect in [effects]. */
 typedef enum lx_effect_force { LX_FORCE_AUTO = 0, LX_FORCE_ON = 1, LX_FORCE_OFF = 2 } lx_effect_force;
@@ -1271,6 +1452,23 @@ typedef struct lx_scene {
     long spectral_line;                   /* the [output] line that first asked for cct or melanopic_edi */
     char **names;                         /* the file names the entities point to (owned) */
     size_t n_names;
+    /* daylight: CIE and Perez skies, the sun, glare observers (scene_daylight.c) */
+    int sky_cie_type;                     /* cie: 1..15 */
+    int sky_by_illuminance;               /* cie: scaled by `illuminance` (Dv) instead of `luminance` (Lz) */
+    double sky_illuminance_lx;            /* cie: the horizontal illuminance given */
+    double sky_dni_W_m2, sky_dhi_W_m2;    /* perez: direct normal and diffuse horizontal irradiance */
+    double sky_water_cm;                  /* perez: precipitable water (0: 2 cm) */
+    int sky_day_of_year;                  /* perez: from [sky] day_of_year or the [sun] date (0: unset) */
+    lx_sky sky_model;                     /* cie, perez: the distribution, set when the scene is read */
+    int has_sun;                          /* a [sun] section */
+    double sun_dir[3];                    /* towards the sun (x east, y north, z up) */
+    double sun_normal_lx;                 /* its direct normal illuminance (0: the sun only places the sky) */
+    int sun_by_date;                      /* 1: placed by date, time and site (sun_position holds SPA's result) */
+    lx_sun_position sun_position;
+    const char *sun_file_at;              /* the scene file and line of [sun] */
+    long sun_line;
+    size_t n_obs;                         /* [observer NAME] sections */
+    lx_scene_observer *obs;
 } lx_scene;
 
 /** Reads a scene file ('-' is standard input); includes are resolved relative to the including
@@ -1332,6 +1530,32 @@ typedef struct lx_scene_eval_opts {
 LX_API lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *scene, const lx_scene_plan *plan,
                                const lx_scene_eval_opts *opts, lx_scene_result **out);
 LX_API void lx_scene_result_free(lx_scene_result *res);
+
+/** One luminaire as a glare source for one observer (CIE 117). */
+typedef struct lx_glare_term {
+    int visible;                /* 1 when it counts: a luminous area, in front of the eye (sigma < 90 deg) and lit towards it */
+    double luminance_cd_m2;     /* L = I(towards the eye) / projected luminous area */
+    double solid_angle_sr;      /* omega = projected area / d^2 */
+    double position_index;      /* Guth p (lx_guth_position_index) */
+    double sigma_deg, tau_deg;  /* the source's angle from the line of sight, and about it from the vertical */
+    double term;                /* L^2 omega / p^2 */
+} lx_glare_term;
+
+/** The glare of a scene at its observers. */
+typedef struct lx_scene_glare {
+    size_t n_obs, n_lum;
+    double *ugr;                /* n_obs: UGR (NaN when no luminaire counts) */
+    double *background_cd_m2;   /* n_obs: Lb used */
+    lx_glare_term *terms;       /* n_obs x n_lum, observer-major */
+} lx_scene_glare;
+
+/** UGR (CIE 117-1995) at every [observer]: UGR = 8 log10(0.25 / Lb sum L^2 omega / p^2) over the
+ * luminaires with a luminous area (disk, rect, file luminaires with an opening; points and spots
+ * have none and are left out). Lb is the observer's background_luminance (LX_EPARSE naming the
+ * observer when it has none: the background from a room's indirect illuminance needs rooms). Free
+ * with lx_scene_glare_free. */
+LX_API lx_status lx_scene_glare_eval(lx_ctx *ctx, const lx_scene *scene, lx_scene_glare **out);
+LX_API void lx_scene_glare_free(lx_scene_glare *glare);
 
 /* ============================================================================================ */
 /* 15. Plots (PNG, written atomically) (src/plot) */

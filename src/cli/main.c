@@ -10,6 +10,8 @@ int cmd_daylight(int argc, char **argv);
 int cmd_ies(int argc, char **argv);
 int cmd_grid(int argc, char **argv);
 /* ---- command declarations (one line per command) ---- */
+int cmd_sky(int argc, char **argv);
+int cmd_ugr(int argc, char **argv);
 int cmd_irradiance(int argc, char **argv);
 int cmd_luminance_map(int argc, char **argv);
 int cmd_scene(int argc, char **argv);
@@ -40,6 +42,8 @@ const cli_cmd cli_commands[] = {
     {"devices", cmd_devices, "the OpenCL platforms and devices, and which one auto would use"},
     {"bench", cmd_bench, "measured performance and accuracy-against-time tables (spd, metrics, irradiance, grid, accuracy)"},
     /* ---- command table entries (one line per command) ---- */
+    {"sky", cmd_sky, "a CIE standard general or Perez sky with the sun as a lat-long luminance EXR"},
+    {"ugr", cmd_ugr, "the CIE 190 tabular UGR table of an IES/EULUMDAT luminaire"},
     {NULL, NULL, NULL},
 };
 
@@ -91,15 +95,25 @@ int main(int argc, char **argv)
     }
     /* the environment's switches, checked once for every command (the library ignores bad values) */
     const char *simd = getenv("LX_SIMD"), *backend = getenv("LX_BACKEND");
-    lx_simd sp;
-    lx_backend bp;
-    if (simd && *simd && lx_simd_parse(NULL, simd, &sp) != LX_OK) {
-        fprintf(stderr, "luxcalc: LX_SIMD='%s' is not scalar, avx2 or avx512\n", simd);
-        return CLI_USAGE;
-    }
-    if (backend && *backend && lx_backend_parse(NULL, backend, &bp) != LX_OK) {
-        fprintf(stderr, "luxcalc: LX_BACKEND='%s' is not auto, cpu or opencl\n", backend);
-        return CLI_USAGE;
+    if ((simd && *simd) || (backend && *backend)) {
+        lx_simd sp;
+        lx_backend bp;
+        lx_ctx *ctx = NULL;
+        if (lx_ctx_create(&ctx) != LX_OK) {
+            fprintf(stderr, "luxcalc: out of memory\n");
+            return CLI_RUNTIME;
+        }
+        int bad_simd = simd && *simd && lx_simd_parse(ctx, simd, &sp) != LX_OK;
+        int bad_backend = !bad_simd && backend && *backend && lx_backend_parse(ctx, backend, &bp) != LX_OK;
+        lx_ctx_destroy(ctx);
+        if (bad_simd) {
+            fprintf(stderr, "luxcalc: LX_SIMD='%s' is not scalar, avx2 or avx512\n", simd);
+            return CLI_USAGE;
+        }
+        if (bad_backend) {
+            fprintf(stderr, "luxcalc: LX_BACKEND='%s' is not auto, cpu or opencl\n", backend);
+            return CLI_USAGE;
+        }
     }
     const char *maxin = getenv("LX_MAX_INPUT_MB");
     size_t mb;

@@ -52,6 +52,13 @@ void *lx__slot_get(const lx_ctx *ctx, lx__slot_id id);
  * context. Returns data. */
 void *lx__slot_set(lx_ctx *ctx, lx__slot_id id, void *data, void (*free_fn)(void *data));
 
+/* The first statement of every public function that takes a context: a NULL context is LX_EINVAL
+ * (there is nowhere to put the message; nothing else is read or written). */
+#define LX__NEED_CTX(ctx)                                                                                    \
+    do {                                                                                                     \
+        if (!(ctx)) return LX_EINVAL;                                                                        \
+    } while (0)
+
 /* Records an error on ctx and returns status. file may be NULL, line <= 0 when it does not apply. */
 lx_status lx__error(lx_ctx *ctx, lx_status status, const char *file, long line, const char *fmt, ...)
 #if defined(__GNUC__)

@@ -83,6 +83,7 @@ static const struct {
     [LX_INPUT_SPECTRUM] = {LX__MAX_SPECTRUM_MB, "a spectrum file"},
     [LX_INPUT_LUMINAIRE] = {LX__MAX_LUMINAIRE_MB, "a photometric file"},
     [LX_INPUT_SCENE] = {LX__MAX_SCENE_MB, "a scene file"},
+    [LX_INPUT_KERNEL] = {LX__MAX_KERNEL_MB, "an OpenCL kernel source"},
 };
 
 /* LX_MAX_INPUT_MB in bytes, or 0 when unset or not a whole number from 1 to LX__MAX_INPUT_MB_ENV. */

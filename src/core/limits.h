@@ -10,6 +10,7 @@
 #define LX__MAX_SPECTRUM_MB 256  /* LX_INPUT_SPECTRUM: SPD text, CGATS, instrument exports */
 #define LX__MAX_LUMINAIRE_MB 16  /* LX_INPUT_LUMINAIRE: IES, EULUMDAT, TILT tables */
 #define LX__MAX_SCENE_MB 16      /* LX_INPUT_SCENE: a scene file, and each of its includes */
+#define LX__MAX_KERNEL_MB 16     /* LX_INPUT_KERNEL: an OpenCL kernel source from LX_KERNEL_DIR */
 #define LX__MAX_INPUT_MB_ENV 1048576 /* the largest LX_MAX_INPUT_MB accepted (1 TB) */
 /* Bytes of the first block a text reader inspects for binary data (NUL bytes, a UTF-16 byte-order
  * mark or pattern, control bytes); NUL bytes are refused anywhere, as each block arrives. */

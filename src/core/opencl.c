@@ -288,60 +288,41 @@ lx_status lx_cl_info(lx_ctx *ctx, lx_cl_device_info *out)
     return LX_OK;
 }
 
-/* Reads a whole file into a NUL-terminated buffer (NULL on failure). */
-static char *slurp(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    size_t cap = 1 << 14, n = 0, got;
-    char *buf = malloc(cap + 1);
-    while (buf && (got = fread(buf + n, 1, cap - n, f)) > 0) {
-        n += got;
-        if (n == cap) {
-            char *b = realloc(buf, (cap *= 2) + 1);
-            if (!b) {
-                free(buf);
-                buf = NULL;
-            }
-            buf = b;
-        }
-    }
-    fclose(f);
-    if (buf) buf[n] = 0;
-    return buf;
-}
-
 static lx_status build_program(lx_ctx *ctx, lx__cl *cl)
 {
     int n = lx__nkernel_sources;
     if (n == 0) return lx__error(ctx, LX_EUNSUPPORTED, NULL, 0, "no OpenCL kernels were embedded in this build");
     const char **srcs = calloc((size_t)n, sizeof *srcs);
     char **owned = calloc((size_t)n, sizeof *owned);
-    if (!srcs || !owned) {
+    size_t *lens = calloc((size_t)n, sizeof *lens);
+    if (!srcs || !owned || !lens) {
         free(srcs);
         free(owned);
+        free(lens);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
     const char *dir = getenv("LX_KERNEL_DIR");
     lx_status st = LX_OK;
-    for (int i = 0; i < n; i++) {
-        if (dir && *dir) {
+    for (int i = 0; i < n && !st; i++) {
+        if (dir && *dir) { /* kernel work: the files of LX_KERNEL_DIR instead of the embedded text */
             char path[1024];
             snprintf(path, sizeof path, "%s/%s", dir, lx__kernel_sources[i].name);
-            owned[i] = slurp(path);
-            if (!owned[i]) {
-                st = lx__error(ctx, LX_EIO, path, 0, "cannot read kernel (LX_KERNEL_DIR)");
-                break;
+            st = lx__read_all(ctx, path, LX_INPUT_KERNEL, &owned[i], &lens[i]);
+            if (st) { /* the reader's message names the file; say where the path came from */
+                char why[LX__ERRMSG_MAX / 2];
+                snprintf(why, sizeof why, "%s", lx_ctx_errmsg(ctx));
+                lx__error(ctx, st, NULL, 0, "cannot read kernel (LX_KERNEL_DIR): %s", why);
             }
             srcs[i] = owned[i];
         } else {
             srcs[i] = lx__kernel_sources[i].source;
+            lens[i] = strlen(srcs[i]);
         }
     }
     cl_int err = CL_SUCCESS;
     cl_program prog = NULL;
     if (!st) {
-        prog = clCreateProgramWithSource(cl->context, (cl_uint)n, srcs, NULL, &err);
+        prog = clCreateProgramWithSource(cl->context, (cl_uint)n, srcs, lens, &err);
         st = lx__cl_check(ctx, err, "clCreateProgramWithSource");
     }
     if (!st) {
@@ -368,6 +349,7 @@ static lx_status build_program(lx_ctx *ctx, lx__cl *cl)
     for (int i = 0; i < n; i++) free(owned[i]);
     free(owned);
     free(srcs);
+    free(lens);
     if (!st) cl->program = prog;
     return st;
 }
