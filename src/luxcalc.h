@@ -324,7 +324,9 @@ typedef struct lx_colorimetry {
 } lx_colorimetry;
 
 /** Computes every quantity of lx_colorimetry for one spectrum. A spectrum with zero luminous
- * content gives X = Y = Z = 0 and NaN chromaticities (not an error). */
+ * content gives X = Y = Z = 0 and NaN chromaticities (not an error; lx_colorimetry_check reports
+ * it). Values near the top of the double range are integrated scaled (a spectrum at 1e300
+ * computes); LX_ERANGE "integral overflows: values up to M ..." when a result itself leaves it. */
 LX_API lx_status lx_spd_colorimetry(lx_ctx *ctx, const lx_spd *spd, lx_observer observer,
                                     lx_method method, lx_colorimetry *out);
 
@@ -334,6 +336,13 @@ LX_API lx_status lx_spd_colorimetry(lx_ctx *ctx, const lx_spd *spd, lx_observer 
  * spectra at once (lx_batch_integrate) and need every other column. */
 LX_API lx_status lx_colorimetry_from_integrals(lx_ctx *ctx, lx_observer observer, const double xyz[3],
                                                double vprime, double radiant, lx_colorimetry *out);
+
+/** Checks a result before it is reported: LX_ERANGE when an integral left the double range
+ * ("integral overflows: values up to M give X beyond the double range"; max_abs, the largest
+ * |value| of the spectrum, or NaN when unknown) or when a quantity that is always defined is
+ * NaN or infinite ("x is undefined (NaN): X + Y + Z = 0 (no luminous content)"); the message
+ * names the quantity. cct_K and duv are not checked (NaN there means no CCT, cct_valid = 0). */
+LX_API lx_status lx_colorimetry_check(lx_ctx *ctx, const lx_colorimetry *r, double max_abs);
 
 /* ============================================================================================ */
 /* 5. Correlated colour temperature (src/spectral) */

@@ -198,6 +198,10 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
                 if (isfinite(res->cct_K[g])) cs += res->cct_K[g], cn++;
             }
             double n = (double)(b - a), avg = sum / n;
+            if (!isfinite(avg)) { /* finite values whose sum overflows: the mean of e / n instead */
+                avg = 0;
+                for (size_t g = a; g < b; g++) avg += res->E_lx[g] / n;
+            }
             cli_table_str(t, sc->rec[r].name);
             cli_table_int(t, (long long)(b - a));
             cli_table_num(t, avg);

@@ -226,7 +226,7 @@ int cmd_spd(int argc, char **argv)
     spd_out so;
     memset(&so, 0, sizeof so);
     so.t = t, so.fmt = (cli_format)fmt, so.cmd = cmd;
-    cli_spd_batch B = {ctx, cmd, t, obs, method, backend, backend_given, spd_flush, &so};
+    cli_spd_batch B = {ctx, cmd, t, obs, method, backend, backend_given, spd_flush, &so, 0};
     so.path = outpath;
     int nfiles = 0;
     char **files = cli_expand_files(argc - optind, argv + optind, &nfiles);
@@ -239,7 +239,9 @@ int cmd_spd(int argc, char **argv)
             continue;
         }
         /* rows-layout files: streamed, integrated chunk by chunk (spd_batch.c); else the general reader */
-        if (!msel.any && !report_dir && cli_spd_batch_file(&B, arg)) {
+        int streamed = !msel.any && !report_dir ? cli_spd_batch_file(&B, arg) : 0;
+        if (streamed < 0 && -streamed > rc) rc = -streamed;
+        if (streamed) {
             spd_flush(&so);
             continue;
         }
@@ -263,6 +265,7 @@ int cmd_spd(int argc, char **argv)
             cli_progress_update(k);
             lx_colorimetry r;
             st = lx_spd_colorimetry(ctx, &set->spd[k], obs, method, &r);
+            if (st == LX_OK) st = lx_colorimetry_check(ctx, &r, NAN); /* before printing: no blank columns */
             if (st != LX_OK) {
                 cli_error(cmd, "%s:%ld: spectrum '%s': %s", set->file, set->line ? set->line[k] : 0L,
                           set->spd[k].name ? set->spd[k].name : "", lx_ctx_errmsg(ctx));
@@ -276,9 +279,9 @@ int cmd_spd(int argc, char **argv)
                           r.scotopic_Y, r.sp_ratio, r.radiant};
             for (size_t j = 0; j < sizeof v / sizeof *v; j++) cli_table_num(t, v[j]);
             cli_table_str(t, method_name(r.method));
-            if (msel.any)
-                cli_metrics_row(t, ctx, &msel, &set->spd[k], method, units[unit].name, &r, set->file,
-                                set->line ? set->line[k] : 0L, cmd);
+            if (msel.any && cli_metrics_row(t, ctx, &msel, &set->spd[k], method, units[unit].name, &r, set->file,
+                                            set->line ? set->line[k] : 0L, cmd) > 0 && rc < CLI_INPUT)
+                rc = CLI_INPUT;
             if (report_dir) {
                 int e = cli_spd_report(ctx, cmd, report_dir, set->file, k, &set->spd[k], obs);
                 if (e > rc) rc = e;
@@ -288,6 +291,7 @@ int cmd_spd(int argc, char **argv)
         lx_spd_set_free(set);
         spd_flush(&so);
     }
+    if (B.rejected && rc < CLI_INPUT) rc = CLI_INPUT; /* batch spectra reported instead of printed */
     /* nothing computed and something failed: leave any existing output file as it was */
     if (!(rc != CLI_OK && cli_table_rows(t) == 0)) {
         if (!so.opened && spd_open(&so) != 0) rc = CLI_INPUT;

@@ -66,6 +66,9 @@ lx_status lx__error(lx_ctx *ctx, lx_status status, const char *file, long line, 
 #endif
     ;
 
+/* v as "%.3g" with a bare exponent (1e308, 2.5e-7), for messages. */
+void lx__fmt_magnitude(char *buf, size_t cap, double v);
+
 /* Delivers a message to the log callback when one is installed and level <= its maximum. */
 void lx__log(lx_ctx *ctx, lx_log_level level, const char *fmt, ...)
 #if defined(__GNUC__)
@@ -87,6 +90,11 @@ lx_status lx__open_read(lx_ctx *ctx, const char *path, FILE **out);
  * control bytes. Memory stays within the limit plus one block. Errors name the file: LX_EIO,
  * LX_EPARSE, LX_ENOMEM, LX_EINVAL (an unknown kind), and lx__open_read's. */
 lx_status lx__read_all(lx_ctx *ctx, const char *path, lx_input_kind kind, char **text, size_t *len);
+/* For readers that map a file instead (the streamed batch CSV): LX_OK when size is within kind's
+ * limit, else lx__read_all's "larger than" error; and lx__read_all's binary-data checks on the
+ * first block [buf, buf + n) of a text (only its first LX__TEXT_PROBE_BYTES are looked at). */
+lx_status lx__input_size_check(lx_ctx *ctx, const char *path, lx_input_kind kind, unsigned long long size);
+lx_status lx__text_check(lx_ctx *ctx, const char *path, const char *buf, size_t n);
 
 /* A cursor over the lines of a buffer: LF or CRLF; line counts from 1 after the first call. */
 typedef struct lx__lines {

@@ -118,6 +118,7 @@ size_t lx_ctx_input_limit(const lx_ctx *ctx, lx_input_kind kind)
 
 static lx_status too_large(lx_ctx *ctx, const char *path, lx_input_kind kind, size_t limit)
 {
+    if (limit > SIZE_MAX / 4) limit = SIZE_MAX / 4;
     if (limit % MB == 0)
         return lx__error(ctx, LX_EIO, path, 0, "larger than %zu MB, the limit for %s (raise with LX_MAX_INPUT_MB)",
                          limit / MB, kinds[kind].what);
@@ -168,6 +169,22 @@ static lx_status nul_byte(lx_ctx *ctx, const char *path, const char *buf, size_t
     return lx__error(ctx, LX_EPARSE, path, line_at(buf, off), "binary data (NUL byte at offset %zu); not a text file", off);
 }
 
+lx_status lx__input_size_check(lx_ctx *ctx, const char *path, lx_input_kind kind, unsigned long long size)
+{
+    if ((unsigned)kind >= LX_INPUT_KIND_COUNT)
+        return lx__error(ctx, LX_EINVAL, path, 0, "unknown input kind %d", (int)kind);
+    size_t limit = lx_ctx_input_limit(ctx, kind);
+    return size > limit ? too_large(ctx, path, kind, limit) : LX_OK;
+}
+
+lx_status lx__text_check(lx_ctx *ctx, const char *path, const char *buf, size_t n)
+{
+    if (n > LX__TEXT_PROBE_BYTES) n = LX__TEXT_PROBE_BYTES;
+    const char *nul = n ? memchr(buf, 0, n) : NULL;
+    if (nul) return nul_byte(ctx, path, buf, n, (size_t)(nul - buf));
+    return probe_first_block(ctx, path, (const unsigned char *)buf, n);
+}
+
 /* ---- the whole-file reader ---- */
 
 lx_status lx__read_all(lx_ctx *ctx, const char *path, lx_input_kind kind, char **text, size_t *len)
@@ -185,7 +202,7 @@ lx_status lx__read_all(lx_ctx *ctx, const char *path, lx_input_kind kind, char *
     struct stat sb;
     size_t cap = 1 << 16;
     if (fstat(fileno(fp), &sb) == 0 && S_ISREG(sb.st_mode) && sb.st_size > 0) {
-        if ((uintmax_t)sb.st_size > limit) {
+        if ((unsigned long long)sb.st_size > limit) {
             if (fp != stdin) fclose(fp);
             return too_large(ctx, path, kind, limit);
         }

@@ -83,6 +83,19 @@ lx_status lx_grid_stats_compute(lx_ctx *ctx, const double *E, size_t n, lx_grid_
         if (E[i] > mx) mx = E[i];
     }
     out->avg = (sum + c) / (double)n;
+    if (!isfinite(out->avg) && isfinite(mn) && isfinite(mx)) {
+        /* values near the top of the double range: the sum again of E / 2^e (exact), then back */
+        int e = 0;
+        frexp(fmax(fabs(mn), fabs(mx)), &e);
+        e += 64; /* room for 2^64 values */
+        sum = c = 0;
+        for (size_t i = 0; i < n; i++) {
+            double v = ldexp(E[i], -e), t = sum + v;
+            c += fabs(sum) >= fabs(v) ? (sum - t) + v : (v - t) + sum;
+            sum = t;
+        }
+        out->avg = ldexp((sum + c) / (double)n, e);
+    }
     out->min = mn;
     out->max = mx;
     out->u0 = out->avg > 0 ? mn / out->avg : NAN;
@@ -517,6 +530,18 @@ lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, c
         if (m == 0) memset(E, 0, n * sizeof *E);
         else st = run_cpu(ctx, pl, m, points, n, normals, shared_normal, o.interp, o.model, tol, o.threads, E);
     }
+    for (size_t i = 0; st == LX_OK && i < n; i++)
+        if (!isfinite(E[i])) { /* never a NaN or an infinity handed on as an illuminance */
+            double peak = 0;
+            for (size_t k = 0; k < m; k++)
+                for (size_t j = 0; j < lums[k].lum->n_c * lums[k].lum->n_g; j++) peak = fmax(peak, fabs(lums[k].lum->full_cd[j]));
+            char mb[48];
+            lx__fmt_magnitude(mb, sizeof mb, peak);
+            st = lx__error(ctx, LX_ERANGE, NULL, 0,
+                           "illuminance at point %zu (%g, %g, %g m) is %s: intensities up to %s cd%s leave the range of the "
+                           "arithmetic", i + 1, points[3 * i], points[3 * i + 1], points[3 * i + 2], isnan(E[i]) ? "NaN" : "infinite",
+                           mb, o.interp == LX_INTERP_TABLE ? " (float tables: 3.4e38)" : "");
+        }
     if (st == LX_OK) {
         memcpy(E_lx, E, n * sizeof *E);
         if (opts) opts->used = o.used;

@@ -483,10 +483,33 @@ lx_status lx_luminaire_summary(lx_ctx *ctx, const lx_luminaire *l, lx_lum_summar
 {
     if (!ctx || !l || !out || !l->full_cd) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_summary: NULL argument");
     lx_lum_summary s;
-    double tf = lx_luminaire_tilt_factor(l, 0);
+    double tf = lx_luminaire_tilt_factor(l, 0), down = NAN;
     s.lumens = tf * integrate(l, -1e9, 1e9);
+    if (l->photometric_type == 1) down = tf * integrate(l, -1e9, 90);
+    double peak = 0;
+    for (size_t k = 0; k < l->n_c * l->n_g; k++) peak = fmax(peak, fabs(l->full_cd[k]));
+    if (!isfinite(s.lumens) && isfinite(peak)) {
+        /* candela near the top of the double range: the cell sums again on the table scaled by
+         * 2^-e (exact), then back, so a partial sum that overflowed does not make the flux overflow */
+        int e = 0;
+        frexp(peak, &e);
+        lx_luminaire scaled = *l;
+        double *cd = malloc(l->n_c * l->n_g * sizeof *cd);
+        if (!cd) return lx__error(ctx, LX_ENOMEM, l->file, 0, "out of memory");
+        for (size_t k = 0; k < l->n_c * l->n_g; k++) cd[k] = ldexp(l->full_cd[k], -e);
+        scaled.full_cd = cd;
+        s.lumens = ldexp(tf * integrate(&scaled, -1e9, 1e9), e);
+        if (l->photometric_type == 1) down = ldexp(tf * integrate(&scaled, -1e9, 90), e);
+        free(cd);
+    }
+    if (!isfinite(s.lumens)) {
+        char mb[48];
+        lx__fmt_magnitude(mb, sizeof mb, peak);
+        return lx__error(ctx, LX_ERANGE, l->file, 0, "integral overflows: candela values up to %s give lumens beyond the double range",
+                         mb);
+    }
     s.downward_fraction = NAN;
-    if (l->photometric_type == 1 && s.lumens > 0) s.downward_fraction = tf * integrate(l, -1e9, 90) / s.lumens;
+    if (l->photometric_type == 1 && s.lumens > 0) s.downward_fraction = down / s.lumens;
     s.max_intensity_cd = 0;
     s.peak_c_deg = s.peak_gamma_deg = 0;
     for (size_t i = 0; i < l->n_c; i++)

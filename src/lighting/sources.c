@@ -114,6 +114,17 @@ static void finish(lx_source_result *r, lx_model model)
     r->illuminance_lx = r->model == LX_MODEL_EXACT ? r->exact_lx : r->point_lx;
 }
 
+/* An exact or point illuminance beyond the double range is an error naming it, never an
+ * infinity (or the NaN of its error ratio) handed on. */
+static lx_status check_result(lx_ctx *ctx, const lx_source_result *r, double luminance)
+{
+    const char *what = !isfinite(r->exact_lx) ? "the exact illuminance" : !isfinite(r->point_lx) ? "the point-model illuminance" : NULL;
+    if (!what) return LX_OK;
+    char mb[48];
+    lx__fmt_magnitude(mb, sizeof mb, luminance);
+    return lx__error(ctx, LX_ERANGE, NULL, 0, "%s overflows (luminance %s cd/m2)", what, mb);
+}
+
 static lx_status check_model(lx_ctx *ctx, lx_model model)
 {
     if (model != LX_MODEL_AUTO && model != LX_MODEL_POINT && model != LX_MODEL_EXACT)
@@ -158,9 +169,14 @@ lx_status lx_disk_illuminance(lx_ctx *ctx, double luminance_cd_m2, double radius
     /* point: I(theta) = L pi R^2 cos theta at distance d, incidence theta: E = I cos theta / d^2 */
     double d2 = h * h + x * x;
     res.point_lx = luminance_cd_m2 * LX__PI * (R * R) * (h * h) / (d2 * d2);
+    /* L near the top of the double range: pi L overflows where the result need not; the
+     * luminance multiplies last then */
+    if (!isfinite(res.exact_lx)) res.exact_lx = luminance_cd_m2 * (LX__PI * disk_factor(R, h, x));
+    if (!isfinite(res.point_lx)) res.point_lx = luminance_cd_m2 * (LX__PI * (R * R) * (h * h) / (d2 * d2));
     res.distance_m = sqrt(d2) * s;
     res.largest_dimension_m = 2 * radius_m;
     finish(&res, model);
+    if ((st = check_result(ctx, &res, luminance_cd_m2)) != LX_OK) return st;
     *out = res;
     return LX_OK;
 }
@@ -293,9 +309,11 @@ lx_status lx_rect_illuminance(lx_ctx *ctx, double luminance_cd_m2, double width_
     res.exact_rel_error = fmin(res.exact_rel_error, 1.0);
     double d2 = h * h + x * x + y * y;
     res.point_lx = luminance_cd_m2 * a * b * (h * h) / (d2 * d2);
+    if (!isfinite(res.point_lx)) res.point_lx = luminance_cd_m2 * (a * b * (h * h) / (d2 * d2));
     res.distance_m = sqrt(d2) * s;
     res.largest_dimension_m = hypot(width_m, length_m);
     finish(&res, model);
+    if ((st = check_result(ctx, &res, luminance_cd_m2)) != LX_OK) return st;
     *out = res;
     return LX_OK;
 }
