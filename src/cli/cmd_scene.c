@@ -359,7 +359,7 @@ int cmd_scene(int argc, char **argv)
         lx_ctx_destroy(ctx);
         return grc;
     }
-    if (st == LX_OK) st = lx_scene_plan_make(ctx, sc, (int)backend, &plan);
+    if (st == LX_OK) st = lx_scene_plan_make(ctx, sc, backend, &plan);
     if (st == LX_OK) st = lx_scene_eval(ctx, sc, plan, NULL, &res);
     int rc = CLI_OK;
     if (st == LX_OK && png_dir) st = write_pngs(ctx, sc, res, argv[optind], png_dir);

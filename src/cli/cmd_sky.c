@@ -251,7 +251,7 @@ int cmd_sky(int argc, char **argv)
     lx_envmap *map = NULL;
     if (rc == CLI_OK && a.out) {
         lx_status st = lx_sky_map(ctx, &sky, &mo, &map);
-        if (st == LX_OK) st = lx_exr_write(ctx, a.out, map, NULL);
+        if (st == LX_OK) st = lx_envmap_write_exr(ctx, a.out, map, NULL);
         if (st != LX_OK) rc = cli_fail("sky", ctx, st);
         else if (!cli_quiet) fprintf(stderr, "luxcalc: sky: wrote %s (%dx%d)\n", a.out, map->width, map->height);
     }

@@ -75,6 +75,10 @@ lx_status lx__backend_choose(lx_ctx *ctx, const char *job, lx_backend asked, dou
 #endif
 }
 
+void lx__backend_used(lx_ctx *ctx, lx_backend used) { ctx->backend_used = used; }
+
+lx_backend lx_ctx_backend_used(const lx_ctx *ctx) { return ctx ? ctx->backend_used : LX_BACKEND_AUTO; }
+
 int lx__backend_fallback(lx_ctx *ctx, const char *job, lx_backend asked, lx_status st)
 {
     if (asked == LX_BACKEND_AUTO) asked = lx_backend_from_env();

@@ -44,6 +44,7 @@ struct lx_ctx {
     void (*cl_release)(lx_ctx *ctx);  /* frees cl; set by whoever creates it */
     lx_counters counters;             /* work counters of the lighting and scene layers */
     size_t input_limit[LX_INPUT_KIND_COUNT]; /* bytes per lx_input_kind; 0: the default */
+    lx_backend backend_used;          /* lx_ctx_backend_used: AUTO until a backend-choosing call succeeds */
 };
 
 /* The data in slot id of ctx (NULL when empty or ctx is NULL). */
@@ -68,6 +69,9 @@ lx_status lx__error(lx_ctx *ctx, lx_status status, const char *file, long line, 
 
 /* v as "%.3g" with a bare exponent (1e308, 2.5e-7), for messages. */
 void lx__fmt_magnitude(char *buf, size_t cap, double v);
+/* Checks the reserved space of an option struct (ABI policy, luxcalc.h): n bytes at p must be zero,
+ * else LX_EINVAL naming what ("batch options"). */
+lx_status lx__check_reserved(lx_ctx *ctx, const char *what, const void *p, size_t n);
 
 /* Delivers a message to the log callback when one is installed and level <= its maximum. */
 void lx__log(lx_ctx *ctx, lx_log_level level, const char *fmt, ...)
@@ -168,6 +172,8 @@ int lx__cpu_has_bitalg(void);
  * asked of a build without OpenCL. */
 lx_status lx__backend_choose(lx_ctx *ctx, const char *job, lx_backend asked, double work, double break_even,
                              double break_even_warm, lx_backend *out);
+/* Records on ctx the backend a successful backend-choosing call used (lx_ctx_backend_used). */
+void lx__backend_used(lx_ctx *ctx, lx_backend used);
 /* After an OpenCL attempt failed with st: logs "JOB: OpenCL failed (...), using the CPU path" at
  * warning level and returns 1 when the caller should fall back (AUTO asked), else 0 (OPENCL asked:
  * the error stands). */

@@ -98,6 +98,16 @@ void lx__fmt_magnitude(char *buf, size_t cap, double v)
     snprintf(buf, cap, "%s", t);
 }
 
+lx_status lx__check_reserved(lx_ctx *ctx, const char *what, const void *p, size_t n)
+{
+    const unsigned char *b = p;
+    for (size_t i = 0; i < n; i++)
+        if (b[i]) return lx__error(ctx, LX_EINVAL, NULL, 0, "%s: reserved must be zero (zero-initialise the struct)", what);
+    return LX_OK;
+}
+
+void lx_text_free(char *text) { free(text); }
+
 void lx__log(lx_ctx *ctx, lx_log_level level, const char *fmt, ...)
 {
     if (!ctx || !ctx->log_fn || level > ctx->log_max) return;

@@ -101,7 +101,7 @@ static size_t env_limit(void)
 
 lx_status lx_ctx_set_input_limit(lx_ctx *ctx, lx_input_kind kind, size_t max_bytes)
 {
-    if (!ctx) return LX_EINVAL;
+    LX__NEED_CTX(ctx);
     if ((unsigned)kind >= LX_INPUT_KIND_COUNT)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_ctx_set_input_limit: unknown input kind %d", (int)kind);
     ctx->input_limit[kind] = max_bytes;

@@ -96,7 +96,11 @@ static void describe(cl_platform_id p, cl_device_id d, int pi, int di, lx_cl_dev
     info->max_alloc_bytes = a;
     cl_device_fp_config fp = 0;
     clGetDeviceInfo(d, CL_DEVICE_DOUBLE_FP_CONFIG, sizeof fp, &fp, NULL);
-    info->fp64 = fp != 0;
+    /* LX_CL_FP64=0 treats the device as one without fp64: the program is built with LX_FP64=0 and
+     * every kernel takes its float path (for devices whose fp64 is slow, and so that CI compiles and
+     * runs the variants of devices that have none) */
+    const char *f = getenv("LX_CL_FP64");
+    info->fp64 = fp != 0 && !(f && !strcmp(f, "0"));
 }
 
 /* Every device of every platform: ids and descriptions. Returns the count (0 when none). */
@@ -169,6 +173,7 @@ static void effective_choice(const lx__cl *cl, int *plat, int *dev, lx_cl_type *
 
 lx_status lx_cl_devices(lx_ctx *ctx, lx_cl_device_info **out, size_t *n)
 {
+    LX__NEED_CTX(ctx);
     if (!out || !n) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_cl_devices: NULL output");
     cl_platform_id pids[MAX_DEVICES];
     cl_device_id dids[MAX_DEVICES];
@@ -176,7 +181,7 @@ lx_status lx_cl_devices(lx_ctx *ctx, lx_cl_device_info **out, size_t *n)
     int cnt = enumerate(pids, dids, infos, MAX_DEVICES);
     int plat, dev;
     lx_cl_type type;
-    effective_choice(ctx ? ctx->cl : NULL, &plat, &dev, &type);
+    effective_choice(ctx->cl, &plat, &dev, &type);
     int def = choose(infos, cnt, plat, dev, type);
     if (def >= 0) infos[def].is_default = 1;
     *out = NULL;
@@ -192,7 +197,9 @@ lx_status lx_cl_devices(lx_ctx *ctx, lx_cl_device_info **out, size_t *n)
 
 lx_status lx_cl_select(lx_ctx *ctx, int platform, int device, lx_cl_type type)
 {
-    if (!ctx) return LX_EINVAL;
+    LX__NEED_CTX(ctx);
+    if (type != LX_CL_AUTO && type != LX_CL_CPU && type != LX_CL_GPU)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_cl_select: unknown device type %d", (int)type);
     if (ctx->cl) cl_release(ctx);
     lx__cl *cl = NULL;
     lx_status st = cl_state(ctx, &cl);
@@ -205,7 +212,8 @@ lx_status lx_cl_select(lx_ctx *ctx, int platform, int device, lx_cl_type type)
 
 lx_status lx_cl_borrow(lx_ctx *ctx, void *context, void *queue)
 {
-    if (!ctx || !context || !queue)
+    LX__NEED_CTX(ctx);
+    if (!context || !queue)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_cl_borrow: context and queue are required");
     cl_context c = context;
     cl_command_queue q = queue;
@@ -280,7 +288,8 @@ lx_status lx__cl_get(lx_ctx *ctx, lx__cl **out)
 
 lx_status lx_cl_info(lx_ctx *ctx, lx_cl_device_info *out)
 {
-    if (!ctx || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_cl_info: NULL argument");
+    LX__NEED_CTX(ctx);
+    if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_cl_info: NULL argument");
     lx__cl *cl = NULL;
     lx_status st = lx__cl_get(ctx, &cl);
     if (st) return st;
@@ -372,6 +381,7 @@ lx_status lx__cl_kernel(lx_ctx *ctx, lx__cl *cl, const char *name, cl_kernel *ou
 
 static lx_status no_cl(lx_ctx *ctx)
 {
+    LX__NEED_CTX(ctx);
     return lx__error(ctx, LX_EUNSUPPORTED, NULL, 0, "this build has no OpenCL (built with LX_OPENCL=0)");
 }
 
@@ -389,6 +399,7 @@ lx_status lx_cl_borrow(lx_ctx *ctx, void *cl_context, void *cl_command_queue)
 
 lx_status lx_cl_devices(lx_ctx *ctx, lx_cl_device_info **out, size_t *n)
 {
+    LX__NEED_CTX(ctx);
     if (!out || !n) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_cl_devices: NULL output");
     *out = NULL;
     *n = 0;
@@ -397,7 +408,8 @@ lx_status lx_cl_devices(lx_ctx *ctx, lx_cl_device_info **out, size_t *n)
 
 lx_status lx_cl_info(lx_ctx *ctx, lx_cl_device_info *out)
 {
-    (void)out;
+    LX__NEED_CTX(ctx);
+    if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_cl_info: NULL argument");
     return no_cl(ctx);
 }
 
@@ -408,3 +420,5 @@ int lx_cl_ready(const lx_ctx *ctx)
 }
 
 #endif /* LX_OPENCL */
+
+void lx_cl_devices_free(lx_cl_device_info *devices) { free(devices); }

@@ -90,8 +90,9 @@ static int has_tilt_line(const char *text, size_t len)
 
 lx_status lx_luminaire_read_mem(lx_ctx *ctx, const char *name, const char *text, size_t len, lx_luminaire **out)
 {
+    LX__NEED_CTX(ctx);
     if (out) *out = NULL;
-    if (!ctx || !out || (!text && len)) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_read_mem: NULL argument");
+    if (!out || (!text && len)) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_read_mem: NULL argument");
     if (!name) name = "(memory)";
     if (len == 0) return lx__error(ctx, LX_EPARSE, name, 1, "empty file");
     /* LM-63 by its TILT= line, or by its version line (then the IES reader reports the missing TILT) */
@@ -104,8 +105,9 @@ lx_status lx_luminaire_read_mem(lx_ctx *ctx, const char *name, const char *text,
 
 lx_status lx_luminaire_read_file(lx_ctx *ctx, const char *path, lx_luminaire **out)
 {
+    LX__NEED_CTX(ctx);
     if (out) *out = NULL;
-    if (!ctx || !path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_read_file: NULL argument");
+    if (!path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_read_file: NULL argument");
     char *buf;
     size_t len;
     lx_status st = lx__read_all(ctx, path, LX_INPUT_LUMINAIRE, &buf, &len);
@@ -481,8 +483,10 @@ static double spread_angle(const lx_luminaire *l, double ca, double frac, double
 
 lx_status lx_luminaire_summary(lx_ctx *ctx, const lx_luminaire *l, lx_lum_summary *out)
 {
-    if (!ctx || !l || !out || !l->full_cd) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_summary: NULL argument");
+    LX__NEED_CTX(ctx);
+    if (!l || !out || !l->full_cd) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_summary: NULL argument");
     lx_lum_summary s;
+    memset(&s, 0, sizeof s); /* reserved included (ABI policy) */
     double tf = lx_luminaire_tilt_factor(l, 0), down = NAN;
     s.lumens = tf * integrate(l, -1e9, 1e9);
     if (l->photometric_type == 1) down = tf * integrate(l, -1e9, 90);
@@ -535,8 +539,13 @@ lx_status lx_luminaire_summary(lx_ctx *ctx, const lx_luminaire *l, lx_lum_summar
 
 lx_status lx_luminaire_from_model(lx_ctx *ctx, const lx_lum_model *m, lx_luminaire **out)
 {
+    LX__NEED_CTX(ctx);
     if (out) *out = NULL;
-    if (!ctx || !m || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_from_model: NULL argument");
+    if (!m || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_from_model: NULL argument");
+    lx_status st0 = lx__check_reserved(ctx, "luminaire model", m->reserved, sizeof m->reserved);
+    if (st0) return st0;
+    if (m->kind != LX_LUM_MODEL_POINT && m->kind != LX_LUM_MODEL_WARN && m->kind != LX_LUM_MODEL_LAMBERT)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown luminaire model %d", (int)m->kind);
     if (!(m->flux_lm > 0) || !isfinite(m->flux_lm))
         return lx__error(ctx, LX_EINVAL, NULL, 0, "the model's flux must be positive and finite (got %g lm)", m->flux_lm);
     if (m->kind == LX_LUM_MODEL_WARN && (!(m->exponent >= 0) || !isfinite(m->exponent) || m->exponent > 1e6))

@@ -19,6 +19,7 @@ double lx_guth_position_index(double sigma, double tau)
 lx_status lx_ugr(lx_ctx *ctx, double Lb, size_t n, const double *L, const double *w, const double *p, double *terms,
                  double *ugr)
 {
+    LX__NEED_CTX(ctx);
     if (!ugr || (n && (!L || !w || !p))) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_ugr: NULL argument");
     if (!(Lb > 0) || !isfinite(Lb))
         return lx__error(ctx, LX_EINVAL, NULL, 0, "UGR: the background luminance must be positive (got %g cd/m2)", Lb);
@@ -114,6 +115,7 @@ static double room_ugr(const lx_luminaire *lum, double xh, double yh, int endwis
 
 lx_status lx_ugr_table_compute(lx_ctx *ctx, const lx_luminaire *lum, lx_ugr_table *out)
 {
+    LX__NEED_CTX(ctx);
     if (!lum || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_ugr_table_compute: NULL argument");
     const lx__table *t = lx__table_find("cie190_ugr_factors");
     if (!t || t->nrows != 19 || t->ncols != 23)

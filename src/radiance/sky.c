@@ -20,6 +20,7 @@ lx_status lx__unit3(lx_ctx *ctx, const char *what, const double v[3], double u[3
 
 lx_status lx_sky_cie_params(lx_ctx *ctx, int type, double params[5])
 {
+    LX__NEED_CTX(ctx);
     const lx__table *t = lx__table_find("cie_s011_sky_types");
     if (!t || t->ncols != 8 || t->nrows != 15)
         return lx__error(ctx, LX_EUNSUPPORTED, NULL, 0, "CIE sky: the sky-type table is missing from this build");
@@ -158,6 +159,7 @@ double lx__sky_horizontal_rel(const lx_sky *s)
 
 lx_status lx_sky_illuminance(lx_ctx *ctx, const lx_sky *sky, const double n[3], int nodes, double *E_lx)
 {
+    LX__NEED_CTX(ctx);
     if (!sky || !E_lx) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_sky_illuminance: NULL argument");
     if (nodes == 0) nodes = 48;
     if (nodes < 8 || nodes > 1024) return lx__error(ctx, LX_EINVAL, NULL, 0, "sky illuminance: nodes must be 8..1024");
@@ -195,6 +197,7 @@ lx_status lx__sky_scale(lx_ctx *ctx, lx_sky *s, lx_sky_scale scale, double value
 
 lx_status lx_sky_cie(lx_ctx *ctx, int type, const double sun_dir[3], lx_sky_scale scale, double value, lx_sky *out)
 {
+    LX__NEED_CTX(ctx);
     if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_sky_cie: NULL argument");
     double p[5];
     lx_status st = lx_sky_cie_params(ctx, type, p);

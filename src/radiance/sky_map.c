@@ -103,6 +103,7 @@ nomem:
 
 lx_status lx_sky_map(lx_ctx *ctx, const lx_sky *sky, const lx_sky_map_opts *opts, lx_envmap **out)
 {
+    LX__NEED_CTX(ctx);
     if (!sky || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_sky_map: NULL argument");
     lx_sky_map_opts o;
     memset(&o, 0, sizeof o);

@@ -21,6 +21,7 @@ static double eccentricity(int dn)
 
 lx_status lx_sky_perez(lx_ctx *ctx, const lx_perez_input *in, lx_sky *out)
 {
+    LX__NEED_CTX(ctx);
     if (!in || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_sky_perez: NULL argument");
     const lx__table *ct = lx__table_find("perez1993_sky_coefficients"), *et = lx__table_find("perez1990_efficacy");
     if (!ct || !et || ct->ncols != 23 || ct->nrows != 8 || et->ncols != 9 || et->nrows != 8)

@@ -78,6 +78,7 @@ static lx_status check_input(lx_ctx *ctx, const lx_sun_input *in)
 
 lx_status lx_sun_spa(lx_ctx *ctx, const lx_sun_input *in, lx_sun_position *out)
 {
+    LX__NEED_CTX(ctx);
     if (!in || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_sun_spa: NULL argument");
     lx_status st = check_input(ctx, in);
     if (st != LX_OK) return st;

@@ -181,7 +181,7 @@ static lx_status device_blocks(lx_ctx *ctx, const lx_scene *sc, const lx_scene_p
             double tilt = lx_luminaire_tilt_factor(L->lum, acos(fmax(-1.0, fmin(1.0, -L->aim[2]))));
             double k = tilt > 0 ? L->scale / tilt : 0;
             for (size_t i = 0; i < rc->n; i++) contrib[(g0 + i) * (nl + 1) + l] = E[i] * k;
-            ctx->counters.kernel_launches += o.used == LX_BACKEND_OPENCL;
+            ctx->counters.kernel_launches += lx_ctx_backend_used(ctx) == LX_BACKEND_OPENCL;
             ctx->counters.point_evaluations += rc->n;
             ctx->counters.goniometric_lookups += rc->n;
             d[l * sc->n_rec + r] = 1;
@@ -225,7 +225,11 @@ static lx_status check_finite(lx_ctx *ctx, const lx_scene *sc, const lx_scene_re
 lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *plan, const lx_scene_eval_opts *opts,
                         lx_scene_result **out)
 {
-    if (!ctx || !sc || !plan || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_eval: NULL argument");
+    LX__NEED_CTX(ctx);
+    if (!sc || !plan || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_eval: NULL argument");
+    *out = NULL;
+    lx_status st0 = opts ? lx__check_reserved(ctx, "scene options", opts->reserved, sizeof opts->reserved) : LX_OK;
+    if (st0) return st0;
     long only = opts && opts->single ? (long)opts->index : -1;
     if (opts && opts->single && opts->index >= sc->n_lum)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_eval: no luminaire %zu", opts->index);
@@ -323,6 +327,7 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
     free(spec);
     counters_diff(&ctx->counters, &before, &res->work);
     res->seconds = now_s() - t0;
+    lx__backend_used(ctx, res->work.kernel_launches ? LX_BACKEND_OPENCL : LX_BACKEND_CPU);
     *out = res;
     return LX_OK;
 nomem:

@@ -44,6 +44,7 @@ static void source(const lx_scene_luminaire *l, const double u[3], double *I, do
 
 lx_status lx_scene_glare_eval(lx_ctx *ctx, const lx_scene *sc, lx_scene_glare **out)
 {
+    LX__NEED_CTX(ctx);
     if (!sc || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_glare_eval: NULL argument");
     *out = NULL;
     for (size_t o = 0; o < sc->n_obs; o++)

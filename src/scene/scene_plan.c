@@ -82,10 +82,13 @@ static unsigned long long near_patches(double size, double d, double tol, int di
     return total;
 }
 
-lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, int backend, lx_scene_plan **out)
+lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, lx_backend backend, lx_scene_plan **out)
 {
-    if (!ctx || !sc || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_plan_make: NULL argument");
+    LX__NEED_CTX(ctx);
+    if (!sc || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_plan_make: NULL argument");
     *out = NULL;
+    if (backend != LX_BACKEND_AUTO && backend != LX_BACKEND_CPU && backend != LX_BACKEND_OPENCL)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_plan_make: unknown backend %d", (int)backend);
     lx_scene_plan *p = calloc(1, sizeof *p);
     if (!p) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t r = 0; r < sc->n_rec; r++) p->n_points += sc->rec[r].n;

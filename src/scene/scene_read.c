@@ -382,7 +382,8 @@ static lx_status read_file(reader *r, const char *path, const char *text, size_t
 
 lx_status lx_scene_read_mem(lx_ctx *ctx, const char *name, const char *text, size_t len, lx_scene **out)
 {
-    if (!ctx || !name || (!text && len) || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_read_mem: NULL argument");
+    LX__NEED_CTX(ctx);
+    if (!name || (!text && len) || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_read_mem: NULL argument");
     *out = NULL;
     reader r;
     memset(&r, 0, sizeof r);
@@ -409,7 +410,8 @@ lx_status lx_scene_read_mem(lx_ctx *ctx, const char *name, const char *text, siz
 
 lx_status lx_scene_read_file(lx_ctx *ctx, const char *path, lx_scene **out)
 {
-    if (!ctx || !path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_read_file: NULL argument");
+    LX__NEED_CTX(ctx);
+    if (!path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_read_file: NULL argument");
     *out = NULL;
     char *text = NULL;
     size_t len = 0;

@@ -61,8 +61,10 @@ static void work(void *arg, long i0, long i1, int t)
     lx_ctx_destroy(ctx);
 }
 
-lx_status lx_batch_colorimetry(lx_ctx *ctx, const lx_batch *b, lx_observer obs, lx_batch_opts *opts, lx_colorimetry *out)
+lx_status lx_batch_colorimetry(lx_ctx *ctx, const lx_batch *b, lx_observer obs, const lx_batch_opts *opts,
+                               lx_colorimetry *out)
 {
+    LX__NEED_CTX(ctx);
     if (!b || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch and output are required");
     if (obs != LX_OBSERVER_2 && obs != LX_OBSERVER_10)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "observer must be 2 or 10 degrees, not %d", (int)obs);

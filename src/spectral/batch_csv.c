@@ -397,8 +397,10 @@ static lx_status read_header(lx_ctx *ctx, const char *file, const char *text, si
 lx_status lx_batch_table_read_mem(lx_ctx *ctx, const char *file, const char *text, size_t len, lx_dtype dtype,
                                   int threads, lx_batch_table **out)
 {
+    LX__NEED_CTX(ctx);
     if (!text || !out) return lx__error(ctx, LX_EINVAL, file, 0, "batch csv: NULL argument");
     *out = NULL;
+    if (dtype != LX_F32 && dtype != LX_F64) return lx__error(ctx, LX_EINVAL, file, 0, "batch csv: unknown dtype");
     csv_header H;
     lx_status hst = read_header(ctx, file, text, len, &H);
     if (hst) return hst;
@@ -537,7 +539,9 @@ static void text_close(text_file *tf)
 
 lx_status lx_batch_table_read(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads, lx_batch_table **out)
 {
+    LX__NEED_CTX(ctx);
     if (!path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch csv: NULL argument");
+    *out = NULL;
     text_file tf;
     lx_status st = text_open(ctx, path, 1, &tf);
     if (st) return st;
@@ -574,6 +578,7 @@ static void parse_set(void *arg, int t)
 lx_status lx_batch_table_stream(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads, lx_batch_chunk_fn fn,
                                 void *user)
 {
+    LX__NEED_CTX(ctx);
     if (!path || !fn) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch csv: NULL argument");
     if (dtype != LX_F32 && dtype != LX_F64) return lx__error(ctx, LX_EINVAL, path, 0, "batch csv: unknown dtype");
     text_file tf;
@@ -719,10 +724,14 @@ static lx_status integ_chunk(void *user, const lx_batch_table *chunk, size_t row
     return lx_batch_integrate(I->ctx, &chunk->batch, I->fns, I->k, &o, I->out + row0 * I->k);
 }
 
+void lx_batch_results_free(double *results) { free(results); }
+
 lx_status lx_batch_table_integrate_file(lx_ctx *ctx, const char *path, const lx_function *fns, size_t k, int threads,
                                         double **out, size_t *n_spectra)
 {
+    LX__NEED_CTX(ctx);
     if (!path || !fns || !k || !out || !n_spectra) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch csv: NULL argument");
+    *out = NULL;
     integ I = {ctx, fns, k, 0, 0, NULL};
     /* double values: the same numbers strtod gives, summed in double */
     lx_status st = lx_batch_table_stream(ctx, path, LX_F64, threads, integ_chunk, &I);

@@ -11,11 +11,13 @@ static lx_status overflow_check(lx_ctx *ctx, const lx_colorimetry *r, double max
 lx_status lx_colorimetry_from_integrals(lx_ctx *ctx, lx_observer obs, const double xyz[3], double vprime,
                                         double radiant, lx_colorimetry *out)
 {
+    LX__NEED_CTX(ctx);
     if (!out || !xyz) return lx__error(ctx, LX_EINVAL, NULL, 0, "integrals and output are required");
     if (obs != LX_OBSERVER_2 && obs != LX_OBSERVER_10)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "observer must be 2 or 10 degrees, not %d", (int)obs);
     double km = obs == LX_OBSERVER_2 ? LX__KM_2 : LX__KM_10;
     lx_colorimetry r;
+    memset(&r, 0, sizeof r); /* reserved included (ABI policy) */
     r.method = out->method;
     r.X = km * xyz[0];
     r.Y = km * xyz[1];
@@ -64,6 +66,7 @@ lx_status lx_colorimetry_from_integrals(lx_ctx *ctx, lx_observer obs, const doub
 
 lx_status lx_spd_colorimetry(lx_ctx *ctx, const lx_spd *spd, lx_observer obs, lx_method method, lx_colorimetry *out)
 {
+    LX__NEED_CTX(ctx);
     if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "output is NULL");
     if (obs != LX_OBSERVER_2 && obs != LX_OBSERVER_10)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "observer must be 2 or 10 degrees, not %d", (int)obs);
@@ -114,6 +117,7 @@ static lx_status overflow_check(lx_ctx *ctx, const lx_colorimetry *r, double max
 
 lx_status lx_colorimetry_check(lx_ctx *ctx, const lx_colorimetry *r, double max_abs)
 {
+    LX__NEED_CTX(ctx);
     if (!r) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_colorimetry_check: NULL result");
     lx_status st = overflow_check(ctx, r, max_abs);
     if (st != LX_OK) return st;

@@ -36,6 +36,7 @@ lx_method lx_method_resolve(const lx_spd *spd, lx_method method)
 
 lx_status lx_spd_check(lx_ctx *ctx, const lx_spd *s)
 {
+    LX__NEED_CTX(ctx);
     if (!s || !s->lambda_nm || !s->value) return lx__error(ctx, LX_EINVAL, NULL, 0, "spectrum is NULL");
     const char *name = s->name ? s->name : "spectrum";
     if (s->n < 2) return lx__error(ctx, LX_EINVAL, NULL, 0, "%s: needs at least 2 samples, has %zu", name, s->n);
@@ -146,6 +147,7 @@ static lx_status weighted(lx_ctx *ctx, const lx_spd *spd, const void *arg, doubl
 
 lx_status lx_spd_integrate(lx_ctx *ctx, const lx_spd *spd, const lx_spd *w, lx_method method, double *out)
 {
+    LX__NEED_CTX(ctx);
     lx_status st = lx_spd_check(ctx, spd);
     if (st == LX_OK) st = lx_spd_check(ctx, w);
     if (st != LX_OK) return st;
@@ -192,6 +194,7 @@ static lx_status trapezoid(lx_ctx *ctx, const lx_spd *spd, const void *arg, doub
 
 lx_status lx_spd_integrate_radiant(lx_ctx *ctx, const lx_spd *spd, lx_method method, double *out)
 {
+    LX__NEED_CTX(ctx);
     /* The radiant integral is a property of the spectrum, not of a weighting: whatever the
      * method, it is the exact integral of the piecewise-linear spectrum (the trapezoid rule).
      * A CIE 015 sum would count the end samples a full step wide (405 W instead of 400 W for
