@@ -238,7 +238,9 @@ int cmd_grid(int argc, char **argv)
         rc = cli_fail("grid", ctx, st);
         goto done;
     }
-    if (png && (st = lx_grid_write_png(ctx, png, &p, E, &pl, 1, ies)) != LX_OK) {
+    lx_plot_mark mk = {{pl.pos_m[0], pl.pos_m[1], pl.pos_m[2]}, {pl.aim[0], pl.aim[1], pl.aim[2]}, NULL};
+    lx_isolux_opts io = {.marks = &mk, .n_marks = 1, .source = ies};
+    if (png && (st = lx_grid_write_png(ctx, png, &p, E, &io)) != LX_OK) {
         rc = cli_fail("grid", ctx, st);
         goto done;
     }

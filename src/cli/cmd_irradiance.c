@@ -208,11 +208,7 @@ int cmd_irradiance(int argc, char **argv)
         lx_exr_write_opts wo = {.half = half};
         if (!st) st = lx_exr_write(ctx, out, e, &wo);
         if (!st && png) {
-            const lx_envmap *maps[2] = {m, e};
-            char lab[64];
-            snprintf(lab, sizeof lab, "IRRADIANCE (%s)", mname[io.method]);
-            const char *labels[2] = {"RADIANCE (INPUT)", lab};
-            st = lx_png_preview(ctx, png, 2, maps, labels);
+            st = lx_irradiance_write_png(ctx, png, m, e, mname[io.method]);
         }
         if (st) rc = cli_fail(cmd, ctx, st);
         else if (cli_verbose)

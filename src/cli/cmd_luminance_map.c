@@ -117,8 +117,13 @@ int cmd_luminance_map(int argc, char **argv)
             cli_table_int(t, m->height);
             cli_table_str(t, in);
             if (png) {
-                st = lx_png_falsecolor(ctx, png, m->width, m->height, lum, vmin, vmax, log_scale,
-                                       log_scale ? "LUMINANCE CD/M2 (LOG)" : "LUMINANCE CD/M2");
+                const char *base = strrchr(in, '/');
+                char title[300];
+                snprintf(title, sizeof title, "Luminance \u2014 %s", base ? base + 1 : in);
+                lx_falsecolor_opts fo = {.scale = log_scale ? LX_PLOT_SCALE_LOG : LX_PLOT_SCALE_LINEAR,
+                                         .lo = isnan(vmin) ? 0 : vmin, .hi = isnan(vmax) ? 0 : vmax,
+                                         .quantity = "luminance", .unit = "cd/m\u00b2", .title = title};
+                st = lx_falsecolor_write_png(ctx, png, m->width, m->height, lum, &fo);
                 if (st) rc = cli_fail(cmd, ctx, st);
             }
             if (!rc) {

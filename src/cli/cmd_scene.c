@@ -224,32 +224,58 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
     return t;
 }
 
-/* Each grid receiver's illuminance as a false-colour PNG, drawn as seen from the side its
- * normal points to: the first free axis to the right, the second upwards. */
+/* The plane of a grid receiver (its first free axis as A, the second as B) for the isolux plot. */
+void cli_scene_plane(const lx_scene_receiver *rc, lx_plane *p)
+{
+    memset(p, 0, sizeof *p);
+    int k = rc->axis - 'x', ia = k == 0 ? 1 : 0, ib = k == 2 ? 1 : 2;
+    p->u[ia] = 1, p->v[ib] = 1;
+    p->origin_m[k] = rc->points[k];
+    const double *first = rc->points, *last_a = rc->points + 3 * (rc->na - 1), *last_b = rc->points + 3 * (rc->nb - 1) * rc->na;
+    p->a0 = first[ia], p->a1 = last_a[ia], p->b0 = first[ib], p->b1 = last_b[ib];
+    p->na = rc->na, p->nb = rc->nb;
+    memcpy(p->normal, rc->normal, sizeof p->normal);
+}
+
+/* The scene's luminaires as plot marks (free with free()); NULL when there are none or no memory. */
+lx_plot_mark *cli_scene_marks(const lx_scene *sc)
+{
+    lx_plot_mark *mk = sc->n_lum ? calloc(sc->n_lum, sizeof *mk) : NULL;
+    for (size_t l = 0; mk && l < sc->n_lum; l++) {
+        memcpy(mk[l].pos_m, sc->lum[l].pos_m, sizeof mk[l].pos_m);
+        memcpy(mk[l].aim, sc->lum[l].aim, sizeof mk[l].aim);
+        mk[l].name = sc->lum[l].name;
+    }
+    return mk;
+}
+
+/* Each grid receiver's illuminance as an isolux plot DIR/SCENE_RECEIVER.png (DIR created when
+ * missing), seen from the side its normal points to: the first free axis to the right, the
+ * second upwards. */
 static lx_status write_pngs(lx_ctx *ctx, const lx_scene *sc, const lx_scene_result *res, const char *scene_path,
-                            const char *dir)
+                            const char *dir, int imperial)
 {
     const char *base = strrchr(scene_path, '/');
     base = base ? base + 1 : scene_path;
     size_t bl = strlen(base);
     const char *dot = strrchr(base, '.');
     if (dot && dot != base) bl = (size_t)(dot - base);
-    for (size_t r = 0; r < sc->n_rec; r++) {
+    lx_plot_mark *mk = cli_scene_marks(sc);
+    lx_status st = LX_OK;
+    for (size_t r = 0; r < sc->n_rec && !st; r++) {
         const lx_scene_receiver *rc = &sc->rec[r];
         if (rc->kind != LX_SREC_GRID) continue;
-        double *v = malloc(rc->n * sizeof *v);
-        char path[4096], title[512];
-        if (!v) return LX_ENOMEM;
-        for (size_t j = 0; j < rc->nb; j++)
-            for (size_t i = 0; i < rc->na; i++) v[j * rc->na + i] = res->E_lx[res->first[r] + (rc->nb - 1 - j) * rc->na + i];
+        char path[4096];
+        lx_plane p;
+        cli_scene_plane(rc, &p);
         snprintf(path, sizeof path, "%s/%.*s_%s.png", dir, (int)bl, base, rc->name);
-        snprintf(title, sizeof title, "E (lx) %s", rc->name);
-        lx_status st = lx_png_falsecolor(ctx, path, (int)rc->na, (int)rc->nb, v, NAN, NAN, 0, title);
-        free(v);
-        if (st != LX_OK) return st;
-        if (!cli_quiet) fprintf(stderr, "luxcalc: scene: wrote %s\n", path);
+        lx_isolux_opts io = {.marks = mk, .n_marks = mk ? sc->n_lum : 0, .source = scene_path, .surface = rc->name,
+                             .caption = sc->title, .imperial = imperial};
+        st = lx_grid_write_png(ctx, path, &p, res->E_lx + res->first[r], &io);
+        if (!st && !cli_quiet) fprintf(stderr, "luxcalc: scene: wrote %s\n", path);
     }
-    return LX_OK;
+    free(mk);
+    return st;
 }
 
 int cmd_scene(int argc, char **argv)
@@ -302,7 +328,7 @@ int cmd_scene(int argc, char **argv)
     if (st == LX_OK) st = lx_scene_plan_make(ctx, sc, (int)backend, &plan);
     if (st == LX_OK) st = lx_scene_eval(ctx, sc, plan, NULL, &res);
     int rc = CLI_OK;
-    if (st == LX_OK && png_dir) st = write_pngs(ctx, sc, res, argv[optind], png_dir);
+    if (st == LX_OK && png_dir) st = write_pngs(ctx, sc, res, argv[optind], png_dir, 0);
     if (st != LX_OK) rc = cli_fail(cmd, ctx, st);
     else {
         cli_output o;

@@ -49,6 +49,8 @@ static const char help[] =
     "  --grid START:END:STEP  another, on the grid given by --grid (nm); spectra named 1, 2, ...\n"
     "  --report DIR           one PNG report per spectrum: DIR/<file-stem>_<spectrum>.png (SPD,\n"
     "                         swatch, CIE xy, R1-R14, TM-30 vector graphic, headline numbers)\n"
+    "  --diagram xy|uv        the report's chromaticity diagram: CIE 1931 xy (default) or\n"
+    "                         CIE 1976 u'v'\n"
     "  IMAGE.exr -o X.exr --png P.png  spectral EXR (S0.<nm>nm channels): per-pixel XYZ in cd/m2\n"
     "  -v, -q                 more messages / errors only (-q: no progress bar)\n"
     "  -h, --help             this help\n"
@@ -120,6 +122,7 @@ int cmd_spd(int argc, char **argv)
         {"backend", required_argument, NULL, 'B'},  {"input-format", required_argument, NULL, 'I'},
         {"grid", required_argument, NULL, 'G'},
         {"report", required_argument, NULL, 'R'}, {"png", required_argument, NULL, 'P'},
+        {"diagram", required_argument, NULL, 'D'},
         {NULL, 0, NULL, 0},
     };
     const char *cmd = "spd", *outpath = NULL;
@@ -130,6 +133,7 @@ int cmd_spd(int argc, char **argv)
     int f32 = 0, backend_given = getenv("LX_BACKEND") != NULL;
     const char *grid = NULL, *backend_text = getenv("LX_BACKEND");
     const char *report_dir = NULL, *png = NULL;
+    lx_diagram diagram = LX_DIAGRAM_XY;
     optind = 1;
     while ((c = getopt_long(argc, argv, "o:vqh", opts, NULL)) != -1) {
         switch (c) {
@@ -168,6 +172,11 @@ int cmd_spd(int argc, char **argv)
             break;
         case 'G': grid = optarg; break;
         case 'R': report_dir = optarg; break;
+        case 'D':
+            if (!strcmp(optarg, "xy")) diagram = LX_DIAGRAM_XY;
+            else if (!strcmp(optarg, "uv")) diagram = LX_DIAGRAM_UV;
+            else return cli_error(cmd, "--diagram: expected xy or uv, not '%s'", optarg), CLI_USAGE;
+            break;
         case 'P': png = optarg; break;
         case 'o': outpath = optarg; break;
         case 'v': cli_verbose++; break;
@@ -205,7 +214,7 @@ int cmd_spd(int argc, char **argv)
         lx_ctx_destroy(ctx);
         return e;
     }
-    if (report_dir && cli_report_dir(cmd, report_dir) != 0) {
+    if (report_dir && cli_make_dir(cmd, "--report", report_dir) != 0) {
         lx_ctx_destroy(ctx);
         return CLI_INPUT;
     }
@@ -228,6 +237,7 @@ int cmd_spd(int argc, char **argv)
     so.t = t, so.fmt = (cli_format)fmt, so.cmd = cmd;
     cli_spd_batch B = {ctx, cmd, t, obs, method, backend, backend_given, spd_flush, &so};
     so.path = outpath;
+    cli_reports reports = {.cmd = cmd, .dir = report_dir, .opts = {.observer = obs, .unit = units[unit].name, .diagram = diagram}};
     int nfiles = 0;
     char **files = cli_expand_files(argc - optind, argv + optind, &nfiles);
     for (int fi = 0; files && fi < nfiles; fi++) {
@@ -280,7 +290,7 @@ int cmd_spd(int argc, char **argv)
                 cli_metrics_row(t, ctx, &msel, &set->spd[k], method, units[unit].name, &r, set->file,
                                 set->line ? set->line[k] : 0L, cmd);
             if (report_dir) {
-                int e = cli_spd_report(ctx, cmd, report_dir, set->file, k, &set->spd[k], obs);
+                int e = cli_spd_report(&reports, ctx, set->file, k, &set->spd[k]);
                 if (e > rc) rc = e;
             }
         }
@@ -297,6 +307,7 @@ int cmd_spd(int argc, char **argv)
         }
     }
     cli_free_files(files, nfiles);
+    cli_reports_free(&reports);
     cli_table_free(t);
     lx_ctx_destroy(ctx);
     return rc;

@@ -36,6 +36,7 @@ int cli_exit_code(lx_status st)
     case LX_EINVAL:
     case LX_EUNSUPPORTED: return CLI_INPUT;
     case LX_ENOMEM:
+    case LX_EWRITE:
     case LX_EDEVICE: return CLI_RUNTIME;
     }
     return CLI_RUNTIME;

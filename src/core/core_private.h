@@ -73,6 +73,24 @@ lx_status lx__open_read(lx_ctx *ctx, const char *path, FILE **out);
  * not terminated) and *len. Errors name the file: LX_EIO, LX_ENOMEM, and lx__open_read's. */
 lx_status lx__read_all(lx_ctx *ctx, const char *path, char **text, size_t *len);
 
+/* ---- output files (file_write.c) ---- */
+
+/* An output file written atomically: lx__wfile_open creates a temporary file beside path
+ * (LX_EIO naming path when it cannot), lx__wfile_write writes all of buf (LX_EWRITE with the
+ * system's reason: "No space left on device"), lx__wfile_close(ctx, w, st) with st == LX_OK
+ * fsyncs, closes and renames into place, otherwise (or when anything failed) removes the
+ * temporary file and returns the first error. A path that exists and is not a regular file (a
+ * device, a FIFO) is opened and written directly (it is never replaced). */
+typedef struct lx__wfile {
+    int fd;
+    int err;          /* errno of the first failed write (0: none) */
+    const char *path; /* not owned */
+    char *tmp;        /* the temporary file, NULL when writing path directly */
+} lx__wfile;
+lx_status lx__wfile_open(lx_ctx *ctx, const char *path, lx__wfile *w);
+lx_status lx__wfile_write(lx_ctx *ctx, lx__wfile *w, const void *buf, size_t n);
+lx_status lx__wfile_close(lx_ctx *ctx, lx__wfile *w, lx_status st);
+
 /* A cursor over the lines of a buffer: LF or CRLF; line counts from 1 after the first call. */
 typedef struct lx__lines {
     const char *p, *end;

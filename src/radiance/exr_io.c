@@ -167,8 +167,7 @@ lx_status lx_exr_write(lx_ctx *ctx, const char *path, const lx_envmap *map, cons
     if ((int)comp < 0 || comp >= EXR_COMPRESSION_LAST_TYPE)
         return lx__error(ctx, LX_EINVAL, path, 0, "unknown EXR compression %d", (int)comp);
     lx__exr_stream s = {.fd = -1};
-    char *tmp = NULL;
-    lx_status st = lx__exr_write_begin(ctx, path, &s, &tmp);
+    lx_status st = lx__exr_write_begin(ctx, path, &s);
     if (st) return st;
     exr_context_initializer_t init;
     lx__exr_stream_init(&s, 1, &init);
@@ -226,5 +225,5 @@ lx_status lx_exr_write(lx_ctx *ctx, const char *path, const lx_envmap *map, cons
     if (rv) st = lx__exr_fail(ctx, path, &s, rv, "cannot encode the pixels");
 done:
     if (inited) exr_encoding_destroy(e, &enc);
-    return lx__exr_write_end(ctx, path, &s, &e, tmp, st);
+    return lx__exr_write_end(ctx, path, &s, &e, st);
 }
