@@ -96,7 +96,7 @@ int cmd_grid(int argc, char **argv)
     go.model = LX_MODEL_AUTO;
     int c;
     optind = 1;
-    while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":o:h", opts, NULL)) != -1) {
         switch (c) {
         case 'i': ies = optarg; break;
         case 'a': at = optarg; break;
@@ -146,7 +146,7 @@ int cmd_grid(int argc, char **argv)
             break;
         }
         case 'h': cli_print_help(help); return CLI_OK;
-        default: return CLI_USAGE;
+        default: return cli_bad_option("grid", argv, c);
         }
     }
     if (optind < argc) return cli_error("grid", "unexpected argument '%s'", argv[optind]), CLI_USAGE;

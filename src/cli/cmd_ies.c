@@ -71,7 +71,7 @@ int cmd_ies(int argc, char **argv)
     lx_lum_model m = {0};
     int c;
     optind = 1;
-    while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":o:h", opts, NULL)) != -1) {
         switch (c) {
         case 'f':
             if (lt_format("ies", optarg, &fmt)) return CLI_USAGE;
@@ -87,7 +87,7 @@ int cmd_ies(int argc, char **argv)
         case 's': step_t = optarg; break;
         case 'c': m.catalog = optarg; break;
         case 'h': cli_print_help(help); return CLI_OK;
-        default: return CLI_USAGE;
+        default: return cli_bad_option("ies", argv, c);
         }
     }
     lx_ctx *ctx = cli_ctx("ies");

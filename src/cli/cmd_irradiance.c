@@ -105,7 +105,7 @@ int cmd_irradiance(int argc, char **argv)
     int W = 0, H = 0, half = 0, c, fmt = CLI_FMT_TABLE;
     optind = 1;
     opterr = 0;
-    while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":o:h", opts, NULL)) != -1) {
         switch (c) {
         case 'm':
             if (!strcmp(optarg, "sh9")) io.method = LX_IRR_SH9;
@@ -147,7 +147,7 @@ int cmd_irradiance(int argc, char **argv)
             break;
         case 'o': out = optarg; break;
         case 'h': cli_print_help(help); return CLI_OK;
-        default: return cli_error(cmd, "bad option '%s' (see luxcalc irradiance --help)", argv[optind - 1]), CLI_USAGE;
+        default: return cli_bad_option(cmd, argv, c);
         }
     }
     if (optind + 1 != argc) return cli_error(cmd, "give exactly one input map (see --help)"), CLI_USAGE;
@@ -189,7 +189,7 @@ int cmd_irradiance(int argc, char **argv)
             if (cli_output_open(&o, out, cmd)) rc = CLI_INPUT;
             else {
                 int bad = cli_table_write(t, (cli_format)fmt, o.fp, 0);
-                if (cli_output_close(&o, !bad, cmd) || bad) rc = CLI_INPUT;
+                if (cli_output_close(&o, !bad, cmd) || bad) rc = CLI_RUNTIME;
             }
             cli_table_free(t);
         }

@@ -51,7 +51,7 @@ int cmd_luminance_map(int argc, char **argv)
     double vmin = NAN, vmax = NAN;
     optind = 1;
     opterr = 0;
-    while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":o:h", opts, NULL)) != -1) {
         switch (c) {
         case 'p': png = optarg; break;
         case 's':
@@ -75,7 +75,7 @@ int cmd_luminance_map(int argc, char **argv)
             break;
         case 'o': out = optarg; break;
         case 'h': cli_print_help(help); return CLI_OK;
-        default: return cli_error(cmd, "bad option '%s' (see luxcalc luminance-map --help)", argv[optind - 1]), CLI_USAGE;
+        default: return cli_bad_option(cmd, argv, c);
         }
     }
     if (optind + 1 != argc) return cli_error(cmd, "give exactly one input map (see --help)"), CLI_USAGE;
@@ -131,7 +131,7 @@ int cmd_luminance_map(int argc, char **argv)
                 if (cli_output_open(&o, out, cmd)) rc = CLI_INPUT;
                 else {
                     int bad = cli_table_write(t, (cli_format)fmt, o.fp, 0);
-                    if (cli_output_close(&o, !bad, cmd) || bad) rc = CLI_INPUT;
+                    if (cli_output_close(&o, !bad, cmd) || bad) rc = CLI_RUNTIME;
                 }
             }
             cli_table_free(t);

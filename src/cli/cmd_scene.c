@@ -289,7 +289,7 @@ int cmd_scene(int argc, char **argv)
     cli_format fmt = CLI_FMT_TABLE;
     optind = 1;
     opterr = 0;
-    while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":o:h", opts, NULL)) != -1) {
         switch (c) {
         case 'e': do_explain = 1; break;
         case 'c': contrib = 1; break;
@@ -306,7 +306,7 @@ int cmd_scene(int argc, char **argv)
             break;
         }
         case 'h': cli_print_help(help); return CLI_OK;
-        default: cli_error(cmd, "bad option '%s' (see luxcalc scene --help)", argv[optind - 1]); return CLI_USAGE;
+        default: return cli_bad_option(cmd, argv, c);
         }
     }
     if (optind + 1 != argc) {
@@ -335,14 +335,14 @@ int cmd_scene(int argc, char **argv)
         if (cli_output_open(&o, out, cmd) != 0) rc = CLI_INPUT;
         else if (do_explain) {
             explain(o.fp, sc, plan, res, fmt);
-            if (cli_output_close(&o, !ferror(o.fp), cmd) != 0) rc = CLI_INPUT;
+            if (cli_output_close(&o, !ferror(o.fp), cmd) != 0) rc = CLI_RUNTIME;
         } else {
             char **names = NULL;
             size_t nn = 0;
             cli_table *t = results(sc, res, fmt, contrib, &names, &nn);
             int ok = t && cli_table_write(t, fmt, o.fp, 1) == 0;
             if (!t) cli_error(cmd, "out of memory");
-            if (cli_output_close(&o, ok, cmd) != 0 || !ok) rc = t ? CLI_INPUT : CLI_RUNTIME;
+            if (cli_output_close(&o, ok, cmd) != 0 || !ok) rc = CLI_RUNTIME;
             cli_table_free(t);
             for (size_t i = 0; i < nn; i++) free(names[i]);
             free(names);

@@ -135,7 +135,7 @@ int cmd_spd(int argc, char **argv)
     const char *report_dir = NULL, *png = NULL;
     lx_diagram diagram = LX_DIAGRAM_XY;
     optind = 1;
-    while ((c = getopt_long(argc, argv, "o:vqh", opts, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":o:vqh", opts, NULL)) != -1) {
         switch (c) {
         case 'b':
             if (!strcmp(optarg, "2")) obs = LX_OBSERVER_2;
@@ -182,7 +182,7 @@ int cmd_spd(int argc, char **argv)
         case 'v': cli_verbose++; break;
         case 'q': cli_quiet = 1; break;
         case 'h': cli_print_help(help); return CLI_OK;
-        default: fprintf(stderr, "%s", help); return CLI_USAGE;
+        default: return cli_bad_option(cmd, argv, c);
         }
     }
     if (optind >= argc) {
@@ -303,7 +303,8 @@ int cmd_spd(int argc, char **argv)
         if (!so.opened && spd_open(&so) != 0) rc = CLI_INPUT;
         if (so.opened) {
             int ok = !so.failed && cli_table_flush(t, so.fmt, so.o.fp, 0, 1) == 0;
-            if (cli_output_close(&so.o, ok, cmd) != 0 || !ok) rc = rc ? rc : CLI_INPUT;
+            int e = cli_output_close(&so.o, ok, cmd);
+            if (e || !ok) rc = e ? e : rc ? rc : CLI_RUNTIME;
         }
     }
     cli_free_files(files, nfiles);

@@ -4,7 +4,16 @@
 #include "lighting.h"
 
 #include <getopt.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+
+double lt_echo(double v)
+{
+    char buf[32];
+    snprintf(buf, sizeof buf, "%.15g", v);
+    return strtod(buf, NULL);
+}
 
 int lt_format(const char *cmd, const char *s, cli_format *fmt)
 {
@@ -75,10 +84,7 @@ int lt_write(const char *cmd, cli_table *t, cli_format fmt, const char *out_path
     cli_output o;
     if (cli_output_open(&o, out_path, cmd) != 0) return CLI_INPUT;
     int ok = cli_table_write(t, fmt, o.fp, 0) == 0;
-    if (cli_output_close(&o, ok, cmd) != 0 || !ok) {
-        if (!ok && !out_path) cli_error(cmd, "cannot write the output");
-        return CLI_RUNTIME;
-    }
+    if (cli_output_close(&o, ok, cmd) != 0 || !ok) return CLI_RUNTIME;
     return CLI_OK;
 }
 
@@ -89,11 +95,7 @@ void lt_common_init(lt_common *co, const char *cmd, const char *help)
     opterr = 0;
 }
 
-int lt_bad_option(const lt_common *co, char **argv)
-{
-    cli_error(co->cmd, "bad option '%s' (see luxcalc %s --help)", argv[optind - 1], co->cmd);
-    return CLI_USAGE;
-}
+int lt_bad_option(const lt_common *co, char **argv, int c) { return cli_bad_option(co->cmd, argv, c); }
 
 int lt_common_opt(lt_common *co, int c, char **argv)
 {
@@ -103,7 +105,7 @@ int lt_common_opt(lt_common *co, int c, char **argv)
     case 'o': co->out = optarg; return LT_NEXT;
     case 'f': return lt_format(co->cmd, optarg, &co->fmt) ? CLI_USAGE : LT_NEXT;
     case 'h': cli_print_help(co->help); return CLI_OK;
-    default: return lt_bad_option(co, argv);
+    default: return lt_bad_option(co, argv, c);
     }
 }
 
