@@ -865,6 +865,13 @@ typedef struct lx_plane {
 LX_API lx_status lx_plane_axis(lx_ctx *ctx, char axis, double level_m, double a0, double a1, double b0,
                                double b1, double spacing_m, size_t na, size_t nb, lx_plane *out);
 
+/** The same area as calculation cells, as EN 12464-1 and DIALux lay out a grid: with a spacing,
+ * ceil((A1 - A0) / S) cells along A (at least one; each (A1 - A0) / n <= S) and likewise along B,
+ * or na x nb cells; one point at the centre of each cell, so the outer points lie half a cell
+ * inside the area's edges. The plane's a0 .. b1 are the outer points' coordinates. */
+LX_API lx_status lx_plane_cells(lx_ctx *ctx, char axis, double level_m, double a0, double a1, double b0,
+                                double b1, double spacing_m, size_t na, size_t nb, lx_plane *out);
+
 /** Options of lx_grid_illuminance (zero-initialise for defaults). */
 typedef struct lx_grid_opts {
     lx_model model;           /* LX_MODEL_POINT (default 0 = AUTO: where the point is closer than

@@ -1,7 +1,8 @@
 /* cmd_scene.c - `luxcalc scene FILE [--explain]`: reads a scene, plans which effects it needs,
  * evaluates it and prints the receivers' results, or (--explain) the plan with its reasons and
  * the estimated and measured work. */
-#include "cli.h"
+#include "grid.h"
+#include "spd_report.h"
 
 #include <getopt.h>
 #include <math.h>
@@ -19,11 +20,13 @@ static const char help[] =
     "  --explain         print the plan: each effect on or off with its reason, the pairs that take\n"
     "                    the near-field path, the estimated and the measured work (json: an object\n"
     "                    with \"effects\", \"reasons\", \"forced\", \"pairs\", \"estimated\", \"measured\")\n"
-    "  --contributions   csv/json: one more column per luminaire (E_NAME_lx) and the sky (E_sky_lx)\n"
+    "  --contributions   one more column per luminaire (E_NAME_lx; table: E_NAME_avg_lx, the mean over\n"
+    "                    the receiver) and, with a sky, the sky (E_sky_lx)\n"
     "  --format F        table (default: a summary per receiver), csv or json (one row per point)\n"
     "  -o FILE           write to FILE (atomically)\n"
-    "  --png DIR         also draw every grid receiver's illuminance as a false-colour PNG:\n"
-    "                    DIR/SCENE_RECEIVER.png (SCENE: the file name without its extension)\n"
+    "  --png DIR         also draw every grid receiver as an isolux plot (contours, luminaires,\n"
+    "                    legend, statistics): DIR/SCENE_RECEIVER.png (SCENE: the file name without\n"
+    "                    its extension; DIR is created when missing)\n"
     "  --backend B       auto (default, also LX_BACKEND), cpu or opencl: where the far-field work of\n"
     "                    IES luminaires on grids runs (auto: OpenCL from 1e7 evaluations)\n"
     "\n"
@@ -147,7 +150,7 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
     if (!names) return NULL;
     char **units = names + cap;
 #define COL(n, u) (names[nn] = strdup(n), units[nn] = strdup(u), nn++)
-    int table = fmt == CLI_FMT_TABLE;
+    int table = fmt == CLI_FMT_TABLE, sky = sc->sky != LX_SKY_NONE;
     COL("receiver", "");
     if (table) {
         COL("points", "");
@@ -155,9 +158,18 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
         COL("illuminance_min_lx", "lx");
         COL("illuminance_max_lx", "lx");
         COL("uniformity_u0", "");
+        COL("uniformity_min_max", "");
         if (sc->want_luminance) COL("luminance_avg_cd_m2", "cd/m2");
         if (sc->want_cct) COL("cct_avg_K", "K");
         if (sc->want_melanopic) COL("melanopic_edi_avg_lx", "lx");
+        if (contrib) {
+            for (size_t l = 0; l < sc->n_lum; l++) {
+                char b[300];
+                snprintf(b, sizeof b, "E_%s_avg_lx", sc->lum[l].name);
+                COL(b, "lx");
+            }
+            if (sky) COL("E_sky_avg_lx", "lx");
+        }
     } else {
         COL("x", "m");
         COL("y", "m");
@@ -172,7 +184,7 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
                 snprintf(b, sizeof b, "E_%s_lx", sc->lum[l].name);
                 COL(b, "lx");
             }
-            COL("E_sky_lx", "lx");
+            if (sky) COL("E_sky_lx", "lx");
         }
     }
     cli_table *t = cli_table_new((int)nn, (const char *const *)names, (const char *const *)units);
@@ -202,9 +214,15 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
             cli_table_num(t, mn);
             cli_table_num(t, mx);
             cli_table_num(t, avg > 0 ? mn / avg : NAN);
+            cli_table_num(t, mx > 0 ? mn / mx : NAN);
             if (sc->want_luminance) cli_table_num(t, ls / n);
             if (sc->want_cct) cli_table_num(t, cn == b - a ? cs / (double)cn : NAN);
             if (sc->want_melanopic) cli_table_num(t, ms / n);
+            for (size_t l = 0; contrib && l < sc->n_lum + (size_t)sky; l++) {
+                double c = 0;
+                for (size_t g = a; g < b; g++) c += res->contrib_lx[g * (sc->n_lum + 1) + l];
+                cli_table_num(t, c / n);
+            }
             continue;
         }
         for (size_t g = a; g < b; g++) {
@@ -216,7 +234,7 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
             if (sc->want_cct) cli_table_num(t, res->cct_K[g]), cli_table_num(t, res->duv[g]);
             if (sc->want_melanopic) cli_table_num(t, res->melanopic_edi_lx[g]);
             if (contrib)
-                for (size_t l = 0; l <= sc->n_lum; l++) cli_table_num(t, res->contrib_lx[g * (sc->n_lum + 1) + l]);
+                for (size_t l = 0; l < sc->n_lum + (size_t)sky; l++) cli_table_num(t, res->contrib_lx[g * (sc->n_lum + 1) + l]);
         }
     }
     *names_out = names;
@@ -328,7 +346,14 @@ int cmd_scene(int argc, char **argv)
     if (st == LX_OK) st = lx_scene_plan_make(ctx, sc, (int)backend, &plan);
     if (st == LX_OK) st = lx_scene_eval(ctx, sc, plan, NULL, &res);
     int rc = CLI_OK;
-    if (st == LX_OK && png_dir) st = write_pngs(ctx, sc, res, argv[optind], png_dir, 0);
+    if (st == LX_OK && png_dir && cli_make_dir(cmd, "--png", png_dir) != 0) {
+        lx_scene_result_free(res);
+        lx_scene_plan_free(plan);
+        lx_scene_free(sc);
+        lx_ctx_destroy(ctx);
+        return CLI_INPUT;
+    }
+    if (st == LX_OK && png_dir) st = write_pngs(ctx, sc, res, argv[optind], png_dir, cli_imperial());
     if (st != LX_OK) rc = cli_fail(cmd, ctx, st);
     else {
         cli_output o;

@@ -12,6 +12,13 @@
 int lt_quantity(lx_ctx *ctx, const char *cmd, const char *opt, const char *text, lx_quantity q,
                 const char *bare_unit, double efficacy, double *out);
 
+/* Parses n lengths separated by the characters of seps in turn (",," for X,Y,Z; ":,:" for
+ * A0:A1,B0:B1): each may carry its unit ("2m", "6.5ft"); a unit after the last applies to the bare
+ * ones before it ("6,4,9 ft", as in scene files); bare numbers alone are metres. Prints the error
+ * naming opt (expect says what is expected) and returns CLI_USAGE; 0 on success. */
+int lt_lengths(lx_ctx *ctx, const char *cmd, const char *opt, const char *text, const char *seps, const char *expect,
+               double *out);
+
 /* Resolves --efficacy TEXT or --spd FILE (at most one; both NULL gives 0 = none) into *efficacy
  * in lm/W. Returns 0, or the exit code after printing the error. */
 int lt_efficacy(lx_ctx *ctx, const char *cmd, const char *eff_text, const char *spd_path, double *efficacy);

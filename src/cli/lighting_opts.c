@@ -58,6 +58,36 @@ int lt_quantity(lx_ctx *ctx, const char *cmd, const char *opt, const char *text,
     return CLI_USAGE;
 }
 
+int lt_lengths(lx_ctx *ctx, const char *cmd, const char *opt, const char *text, const char *seps, const char *expect,
+               double *out)
+{
+    int n = (int)strlen(seps) + 1;
+    char tok[8][64] = {{0}};
+    const char *p = text;
+    for (int i = 0; i < n; i++) {
+        size_t len = i < n - 1 ? strcspn(p, (char[]){seps[i], 0}) : strlen(p);
+        if ((i < n - 1 && p[len] != seps[i]) || len >= sizeof tok[i] || n > 8) {
+            cli_error(cmd, "%s: expected %s (got '%s')", opt, expect, text);
+            return CLI_USAGE;
+        }
+        memcpy(tok[i], p, len);
+        tok[i][len] = 0;
+        p += len + (i < n - 1);
+    }
+    /* the unit written after the last number, for the bare ones before it */
+    char *end;
+    strtod(tok[n - 1], &end);
+    const char *unit = end + strspn(end, " ");
+    for (int i = 0; i < n; i++) {
+        char buf[200];
+        strtod(tok[i], &end);
+        int bare = *(end + strspn(end, " ")) == 0;
+        snprintf(buf, sizeof buf, "%.63s%s%.63s", tok[i], bare && *unit ? " " : "", bare ? unit : "");
+        if (lt_quantity(ctx, cmd, opt, buf, LX_Q_LENGTH, NULL, 0, &out[i])) return CLI_USAGE;
+    }
+    return 0;
+}
+
 int lt_efficacy(lx_ctx *ctx, const char *cmd, const char *eff_text, const char *spd_path, double *efficacy)
 {
     *efficacy = 0;

@@ -37,17 +37,21 @@ static void cr_weights(double t, double w[4])
 }
 
 /* E at display coordinates (a, b): bicubic (Catmull-Rom) between the points, so contours are
- * smooth curves (it passes through every computed value; the nodes beyond an edge repeat it), and
- * constant beyond the outer points */
+ * smooth curves (it passes through every computed value; the nodes beyond an edge repeat it); the
+ * outer cells' cubics carried on for up to one spacing beyond the outer points (the half cell
+ * around cell-centre points), constant beyond that */
 static double value_at(const iso *g, double a, double b)
 {
     const lx_plane *p = g->p;
     long na = (long)p->na, nb = (long)p->nb;
     double fa = na > 1 && g->pa1 > g->pa0 ? (a - g->pa0) / (g->pa1 - g->pa0) * (na - 1) : 0;
     double fb = nb > 1 && g->pb1 > g->pb0 ? (b - g->pb0) / (g->pb1 - g->pb0) * (nb - 1) : 0;
-    fa = fmax(0, fmin(fa, (double)(na - 1)));
-    fb = fmax(0, fmin(fb, (double)(nb - 1)));
-    long ia = na > 1 ? (long)fmin(floor(fa), (double)(na - 2)) : 0, ib = nb > 1 ? (long)fmin(floor(fb), (double)(nb - 2)) : 0;
+    fa = fmax(-1, fmin(fa, (double)na));
+    fb = fmax(-1, fmin(fb, (double)nb));
+    long ia = na > 1 ? (long)fmax(0, fmin(floor(fa), (double)(na - 2))) : 0;
+    long ib = nb > 1 ? (long)fmax(0, fmin(floor(fb), (double)(nb - 2))) : 0;
+    if (na == 1) fa = 0;
+    if (nb == 1) fb = 0;
     double wa[4], wb[4], sum = 0;
     cr_weights(fa - (double)ia, wa);
     cr_weights(fb - (double)ib, wb);
