@@ -765,6 +765,8 @@ typedef struct lx_luminaire {
     size_t n_tilt;
     double *tilt_deg, *tilt_factor;
     char *manufacturer, *catalog, *description; /* [MANUFAC], [LUMCAT], [LUMINAIRE] (or LDT lines); may be "" */
+    char *test, *testlab, *issuedate, *lamp; /* [TEST], [TESTLAB], [ISSUEDATE], [LAMP]; EULUMDAT: the
+                                * measurement report number and the date/user line; NULL when absent */
 } lx_luminaire;
 
 /** Reads an IES LM-63 file (1986, 1991, 1995, 2002, 2019) or EULUMDAT file ("-" is stdin),
@@ -938,6 +940,10 @@ typedef struct lx_envmap {
     lx_envmap_units units;  /* RADIANCE or LUMINANCE (never AUTO once read) */
     double lum_per_unit;    /* cd/m2 per unit of Y: efficacy (RADIANCE) or whiteLuminance / 1 (LUMINANCE) */
     int layout;             /* lx_envmap_layout: LATLONG (0, what lx_envmap_create makes) or CUBE */
+    int irradiance;         /* 1: the values are irradiance E(n) per normal (W/m2 for RADIANCE
+                             * units; lum_per_unit x Y is then an illuminance in lx): the maps
+                             * lx_irradiance_map makes, kept through lx_exr_write / lx_exr_read
+                             * (string attribute luxcalcQuantity = "irradiance"); 0: radiance */
 } lx_envmap;
 
 /** Map layouts. A CUBE map is the OpenEXR cube layout: width N, height 6 N, six N x N faces stacked
@@ -1339,10 +1345,11 @@ typedef struct lx_falsecolor_opts {
     lx_plot_scale scale;   /* AUTO: log */
     double lo, hi;         /* the colour range when hi > lo (log: lo <= 0 leaves the bottom
                             * automatic); otherwise automatic: log from the decade at or below
-                            * the smallest positive value (at most 6 decades below the top, at
-                            * least 2) to the decade at or above the largest; linear from 0 (or a
-                            * round value below a negative minimum) to the round value above the
-                            * largest. Values below the range take its lowest colour. */
+                            * the 1st percentile of the positive values (at most 6 decades below
+                            * the top, at least 2) to the decade at or above the largest; linear
+                            * from 0 (or a round value below a minimum under -5 % of the largest)
+                            * to the round value above the largest. Values below the range take
+                            * its lowest colour. */
     const char *quantity;  /* the legend's quantity ("luminance"; NULL: none) */
     const char *unit;      /* its unit ("cd/m²"; NULL: none) */
     const char *title;     /* the heading (NULL: none); a line of min / median / max follows it */
@@ -1361,11 +1368,11 @@ LX_API lx_status lx_envmap_preview_write_png(lx_ctx *ctx, const char *path, int 
                                              const char *const *labels);
 
 /** The preview of an irradiance computation: the radiance map tone-mapped on the left, the
- * irradiance map as illuminance (lum_per_unit x Y, lx) in false colour on a log scale on the
- * right, with its legend and its minimum, mean and maximum; label (may be NULL) names the
- * method. Both maps in the same layout (lat-long or cube). */
+ * irradiance map as illuminance (lum_per_unit x Y, lx) in false colour on the right (scale LOG or
+ * AUTO: decade ticks; LINEAR: round ticks), with its legend and its minimum, median and maximum;
+ * label (may be NULL) names the method. Both maps in the same layout (lat-long or cube). */
 LX_API lx_status lx_irradiance_write_png(lx_ctx *ctx, const char *path, const lx_envmap *radiance,
-                                         const lx_envmap *irradiance, const char *label);
+                                         const lx_envmap *irradiance, const char *label, lx_plot_scale scale);
 
 /** Chromaticity diagrams of the spectrum report. */
 typedef enum lx_diagram { LX_DIAGRAM_XY = 0 /* CIE 1931 x, y */, LX_DIAGRAM_UV = 1 /* CIE 1976 u', v' */ } lx_diagram;

@@ -260,7 +260,7 @@ static void irradiance_preview(void **state)
     char path[128];
     snprintf(path, sizeof path, "%s/irr.png", dir);
     lx__layout L = {0};
-    lx_assert_ok(ctx, lx__irradiance_png(ctx, path, m, e, "sh9", &L));
+    lx_assert_ok(ctx, lx__irradiance_png(ctx, path, m, e, "sh9", LX_PLOT_SCALE_LOG, &L));
     test_png png;
     test_png_read(path, &png);
     test_labels_ok(&png, &L);

@@ -164,14 +164,15 @@ static void style(const char *name, const char *unit, int *dec, int *sig, int *t
         *sig = cli_precision;
         return;
     }
-    static const char *const photometric[] = {"lx", "cd", "lm", "klm", "cd/m2", "fc", "fL", "cd/ft2", "nit"};
+    static const char *const photometric[] = {"lx", "cd", "lm", "klm", "cd/m2", "fc", "fL", "cd/ft2", "nit", "W", "lm/W"};
     if (!strcmp(name, "duv") || !strcmp(name, "cri_dc") || (!*unit && (!strcmp(name, "x") || !strcmp(name, "y") ||
                                                                          !strcmp(name, "u_prime") || !strcmp(name, "v_prime"))))
         *dec = 5;
     else if (!strcmp(unit, "K")) *dec = 1;
     else if (!strncmp(name, "tm30_rhs", 8)) *dec = 3;
     else if (!strncmp(name, "cri_", 4) || !strncmp(name, "tm30_", 5)) *dec = 1;
-    else if (!strcmp(name, "U0") || strstr(name, "uniformity")) *dec = 3;
+    else if (!strcmp(name, "U0") || strstr(name, "uniformity") || !strcmp(name, "lor") || !strcmp(name, "downward_fraction"))
+        *dec = 3;
     else if (!strcmp(unit, "m") || !strcmp(unit, "ft") || !strcmp(unit, "deg")) *dec = 3, *trim = 1;
     else
         for (size_t k = 0; k < sizeof photometric / sizeof *photometric; k++)

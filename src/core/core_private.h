@@ -90,6 +90,9 @@ typedef struct lx__wfile {
 lx_status lx__wfile_open(lx_ctx *ctx, const char *path, lx__wfile *w);
 lx_status lx__wfile_write(lx_ctx *ctx, lx__wfile *w, const void *buf, size_t n);
 lx_status lx__wfile_close(lx_ctx *ctx, lx__wfile *w, lx_status st);
+/* Today's date as "YYYY-MM-DD" (UTC; SOURCE_DATE_EPOCH's when it is set, for reproducible
+ * output), malloc'ed; NULL without memory. For the dates files carry (the IES [ISSUEDATE]). */
+char *lx__date_today(void);
 
 /* A cursor over the lines of a buffer: LF or CRLF; line counts from 1 after the first call. */
 typedef struct lx__lines {

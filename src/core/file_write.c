@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 lx_status lx__wfile_open(lx_ctx *ctx, const char *path, lx__wfile *w)
@@ -72,4 +73,21 @@ lx_status lx__wfile_close(lx_ctx *ctx, lx__wfile *w, lx_status st)
         w->tmp = NULL;
     }
     return st;
+}
+
+char *lx__date_today(void)
+{
+    time_t t = time(NULL);
+    const char *e = getenv("SOURCE_DATE_EPOCH");
+    if (e && *e) {
+        char *end;
+        long long v = strtoll(e, &end, 10);
+        if (!*end && v >= 0) t = (time_t)v;
+    }
+    struct tm tm;
+    char buf[32];
+    if (!gmtime_r(&t, &tm) || !strftime(buf, sizeof buf, "%Y-%m-%d", &tm)) snprintf(buf, sizeof buf, "unknown");
+    char *s = malloc(strlen(buf) + 1);
+    if (s) memcpy(s, buf, strlen(buf) + 1);
+    return s;
 }

@@ -65,7 +65,7 @@ void lx__scale_auto(lx__scale *s, const double *v, size_t n, int log, double lo,
         return;
     }
     if (!isfinite(mn)) mn = 0, mx = 1;
-    double l = mn >= 0 ? 0 : mn, h = mx;
+    double l = mn >= -0.05 * fabs(mx) ? 0 : mn, h = mx; /* a little ringing below 0 does not move the bottom */
     if (!(h > l)) h = l + (l != 0 ? fabs(l) : 1);
     double step = lx__nice_step(h - l, 5);
     l = floor(l / step + 1e-9) * step;

@@ -119,7 +119,7 @@ lx_status lx_envmap_preview_write_png(lx_ctx *ctx, const char *path, int n, cons
 }
 
 lx_status lx__irradiance_png(lx_ctx *ctx, const char *path, const lx_envmap *rad, const lx_envmap *irr,
-                             const char *label, lx__layout *out)
+                             const char *label, lx_plot_scale scale, lx__layout *out)
 {
     if (!path || !rad || !irr || !rad->data || !irr->data)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "irradiance preview: NULL argument");
@@ -151,7 +151,7 @@ lx_status lx__irradiance_png(lx_ctx *ctx, const char *path, const lx_envmap *rad
     y += lab;
     st = lx__page_tonemap(ctx, &pg, (lx__box){m, y, m + pw, y + rh}, rad->data, rad->channels, rad->width, rad->height);
     lx__scale s;
-    lx__scale_auto(&s, E, n, 1, NAN, NAN);
+    lx__scale_auto(&s, E, n, scale != LX_PLOT_SCALE_LINEAR, NAN, NAN);
     lx__box map = {m + pw + m, y, m + pw + m + pw, y + eh};
     pg.lay.area = map;
     lx__page_text(&pg, &fc, map.x0, map.y1 + 6, 0, 0, LX__TEXT_NOTE, NAN, cap);
@@ -165,7 +165,7 @@ lx_status lx__irradiance_png(lx_ctx *ctx, const char *path, const lx_envmap *rad
 }
 
 lx_status lx_irradiance_write_png(lx_ctx *ctx, const char *path, const lx_envmap *radiance, const lx_envmap *irradiance,
-                                  const char *label)
+                                  const char *label, lx_plot_scale scale)
 {
-    return lx__irradiance_png(ctx, path, radiance, irradiance, label, NULL);
+    return lx__irradiance_png(ctx, path, radiance, irradiance, label, scale, NULL);
 }

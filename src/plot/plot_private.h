@@ -142,8 +142,8 @@ typedef struct lx__scale {
 double lx__scale_t(const lx__scale *s, double v);
 /* A useful scale for n values (NaN skipped): log: from the decade at or below the 1st percentile
  * of the positive values (at most 6 decades below the top) to the decade at or above the largest,
- * at least two decades; linear: 0 (or the round value below a negative minimum) to the round
- * value at or above the maximum. lo or hi not NaN are kept as given. */
+ * at least two decades; linear: 0 (or the round value below a minimum under -5 % of the maximum)
+ * to the round value at or above the maximum. lo or hi not NaN are kept as given. */
 void lx__scale_auto(lx__scale *s, const double *v, size_t n, int log, double lo, double hi);
 /* The false-colour palette at t in [0, 1] (dark violet, blue, cyan, green, yellow, orange, red:
  * the look of Radiance falsecolor). */
@@ -179,7 +179,7 @@ lx_status lx__isolux_png(lx_ctx *ctx, const char *path, const lx_plane *plane, c
 lx_status lx__falsecolor_png(lx_ctx *ctx, const char *path, int w, int h, const double *values,
                              const lx_falsecolor_opts *opts, lx__layout *out);
 lx_status lx__irradiance_png(lx_ctx *ctx, const char *path, const lx_envmap *radiance, const lx_envmap *irradiance,
-                             const char *label, lx__layout *out);
+                             const char *label, lx_plot_scale scale, lx__layout *out);
 lx_status lx__report_png(lx_ctx *ctx, const lx_spd *spd, const lx_report_opts *opts, const char *path,
                          lx__layout *out);
 lx_status lx__error_time_png(lx_ctx *ctx, const char *path, const char *title, const char *x_title,

@@ -134,6 +134,10 @@ static lx_status exr_read(lx_ctx *ctx, const char *path, int allow_cube, lx_envm
         m->has_chromaticities = 1;
         memcpy(m->chroma_xy, xy, sizeof xy);
     }
+    const char *q = NULL;
+    int32_t ql = 0;
+    if (exr_attr_get_string(e, 0, "luxcalcQuantity", &ql, &q) == EXR_ERR_SUCCESS && q && ql == 10 && !memcmp(q, "irradiance", 10))
+        m->irradiance = 1;
     float wl;
     if (exr_attr_get_float(e, 0, "whiteLuminance", &wl) == EXR_ERR_SUCCESS && isfinite(wl) && wl > 0) {
         m->units = LX_ENV_LUMINANCE;
@@ -193,6 +197,7 @@ lx_status lx_exr_write(lx_ctx *ctx, const char *path, const lx_envmap *map, cons
         rv = exr_attr_set_chromaticities(e, part, "chromaticities", &chr);
     }
     if (!rv && map->units == LX_ENV_LUMINANCE) rv = exr_attr_set_float(e, part, "whiteLuminance", (float)map->lum_per_unit);
+    if (!rv && map->irradiance) rv = exr_attr_set_string(e, part, "luxcalcQuantity", "irradiance");
     if (!rv) rv = exr_write_header(e);
     if (rv) {
         st = lx__exr_fail(ctx, path, &s, rv, "cannot write the header");
