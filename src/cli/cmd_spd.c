@@ -17,6 +17,8 @@ static const char help[] =
     "CCT and Duv, luminous efficacy of radiation, scotopic Y and the S/P ratio.\n"
     "FILE: columns (wavelength_nm, value...) or rows (id,380,381,...), separators , ; tab space,\n"
     "'#' comments, optional header; CGATS/Argyll spectral files; '-' reads standard input.\n"
+    "Text files are read up to 256 MB (luxcalc --max-input-mb N, or LX_MAX_INPUT_MB, raises it);\n"
+    "rows-layout files on a 1 or 5 nm grid are streamed at any size (lines up to 4 MB).\n"
     "\n"
     "options:\n"
     "  --observer 2|10        CIE 1931 2 deg (default) or CIE 1964 10 deg observer\n"

@@ -143,15 +143,22 @@ static lx_status read_spectral(lx_ctx *ctx, const char *path, float **data, chan
         goto done;
     }
     long W = (long)dw.max.x - dw.min.x + 1, H = (long)dw.max.y - dw.min.y + 1;
-    if (W < 1 || H < 1 || (double)W * H * nl > 4e9) {
-        st = lx__error(ctx, LX_EPARSE, path, 0, "invalid or too large data window %ldx%ld x %d channels", W, H, nl);
+    if (W < 1 || H < 1) {
+        st = lx__error(ctx, LX_EPARSE, path, 0, "invalid data window %ldx%ld", W, H);
+        goto done;
+    }
+    if ((double)W * H * nl > LX__SPEXR_MAX_VALUES) {
+        char lim_s[48];
+        lx__fmt_magnitude(lim_s, sizeof lim_s, LX__SPEXR_MAX_VALUES);
+        st = lx__error(ctx, LX_EPARSE, path, 0, "data window %ldx%ld x %d channels over the limit of %s values", W, H, nl,
+                       lim_s);
         goto done;
     }
     /* the window is an untrusted count: check it against the file before sizing (and timing) the
      * work by it: 1M values, or 64 values per byte of file, beyond what compression reaches on real
      * spectra (a 855-byte file declaring 5.5 Mpixel of zeros took seconds to resample) */
     double fsize = fstat(s.fd, &sb) == 0 ? (double)sb.st_size : 0;
-    if ((double)W * H * nl > 1048576.0 + 64.0 * fsize) {
+    if ((double)W * H * nl > LX__SPEXR_VALUES_FREE + LX__SPEXR_VALUES_PER_BYTE * fsize) {
         st = lx__error(ctx, LX_EPARSE, path, 0, "data window %ldx%ld x %d channels too large for a file of %.0f bytes", W,
                        H, nl, fsize);
         goto done;
