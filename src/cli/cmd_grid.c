@@ -130,8 +130,10 @@ static int parse(int argc, char **argv, grid_args *g)
             else return cli_error("grid", "--interp: expected bilinear, smooth or table (got '%s')", optarg), CLI_USAGE;
             break;
         case 'b':
-            if (lx_backend_parse(NULL, optarg, &g->go.backend) != LX_OK)
-                return cli_error("grid", "--backend: expected auto, cpu or opencl (got '%s')", optarg), CLI_USAGE;
+            if (!strcmp(optarg, "auto")) g->go.backend = LX_BACKEND_AUTO;
+            else if (!strcmp(optarg, "cpu")) g->go.backend = LX_BACKEND_CPU;
+            else if (!strcmp(optarg, "opencl")) g->go.backend = LX_BACKEND_OPENCL;
+            else return cli_error("grid", "--backend: expected auto, cpu or opencl (got '%s')", optarg), CLI_USAGE;
             break;
         case 'h': cli_print_help(help); return CLI_OK;
         default: return cli_bad_option("grid", argv, c);
@@ -414,7 +416,7 @@ int cmd_grid(int argc, char **argv)
     }
     rc = output(&g, &p, pts, E, n);
 done:
-    free(pts);
+    lx_plane_points_free(pts);
     free(E);
     free(marks);
     lx_scene_free(sc);

@@ -15,6 +15,15 @@
 
 int cli_precision = 0;
 
+/* the context of the unit look-ups (the library wants one; made once, freed at exit) */
+static lx_ctx *uctx;
+static void free_uctx(void) { lx_ctx_destroy(uctx); }
+static lx_ctx *unit_ctx(void)
+{
+    if (!uctx && lx_ctx_create(&uctx) == LX_OK) atexit(free_uctx);
+    return uctx;
+}
+
 /* output units by quantity: the unit shown instead of the quantity's SI unit (NULL: SI) */
 static const lx_unit *out_unit[LX_Q_COUNT];
 
@@ -32,12 +41,12 @@ static int set_units(const char *text)
             static const char *const imp[3] = {"fc", "ft", "fL"};
             for (int k = 0; k < 3; k++) {
                 const lx_unit *u = NULL;
-                if (lx_unit_find(NULL, imp[k], &u) == LX_OK && u) set[u->quantity] = u;
+                if (lx_unit_find(unit_ctx(), imp[k], &u) == LX_OK && u) set[u->quantity] = u;
             }
             continue;
         }
         const lx_unit *u = NULL;
-        if (lx_unit_find(NULL, tok, &u) != LX_OK || !u) return -1; /* not ours: the command's own --units */
+        if (lx_unit_find(unit_ctx(), tok, &u) != LX_OK || !u) return -1; /* not ours: the command's own --units */
         set[u->quantity] = u;
     }
     memcpy(out_unit, set, sizeof set);
@@ -106,7 +115,7 @@ void cli_join_units(int *argc, char **argv)
         }
         const lx_unit *u = NULL;
         if (!strncmp(argv[r], "--", 2) && !strchr(argv[r], '=') && r + 2 < n && used < 16 && is_number(argv[r + 1]) &&
-            lx_unit_find(NULL, argv[r + 2], &u) == LX_OK && u) {
+            lx_unit_find(unit_ctx(), argv[r + 2], &u) == LX_OK && u) {
             snprintf(joined[used], sizeof joined[used], "%s %s", argv[r + 1], argv[r + 2]);
             argv[w++] = joined[used++];
             r += 2;
@@ -143,7 +152,7 @@ void cli_column_out(const char *name, const char *unit, cli_column *out)
     snprintf(out->unit, sizeof out->unit, "%s", unit ? unit : "");
     out->scale = 1;
     const lx_unit *u = NULL;
-    if (!unit || !*unit || lx_unit_find(NULL, unit, &u) != LX_OK || !u) return;
+    if (!unit || !*unit || lx_unit_find(unit_ctx(), unit, &u) != LX_OK || !u) return;
     const lx_unit *to = out_unit[u->quantity];
     if (!to || !strcmp(to->name, u->name)) return;
     out->scale = u->to_si / to->to_si;

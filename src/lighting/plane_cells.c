@@ -10,7 +10,8 @@ static double cells(double w, double s) { return w > 0 ? fmax(1, ceil(w / s - 1e
 lx_status lx_plane_cells(lx_ctx *ctx, char axis, double level_m, double a0, double a1, double b0, double b1,
                          double spacing_m, size_t na, size_t nb, lx_plane *out)
 {
-    if (!ctx || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_plane_cells: NULL argument");
+    LX__NEED_CTX(ctx);
+    if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_plane_cells: NULL argument");
     if (!isfinite(a0) || !isfinite(a1) || !isfinite(b0) || !isfinite(b1) || a1 < a0 || b1 < b0)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "the area must be finite with A0 <= A1 and B0 <= B1");
     if (spacing_m > 0) {

@@ -184,5 +184,6 @@ lx_status lx_error_time_write_png(lx_ctx *ctx, const char *path, const char *tit
                                   const char *y_title, size_t n, const lx_plot_point *pts, int n_series,
                                   const char *const *series_names)
 {
+    LX__NEED_CTX(ctx);
     return lx__error_time_png(ctx, path, title, x_title, y_title, n, pts, n_series, series_names, NULL);
 }

@@ -489,6 +489,8 @@ lx_status lx__isolux_png(lx_ctx *ctx, const char *path, const lx_plane *p, const
     if (!(p->a1 >= p->a0 && p->b1 >= p->b0)) return lx__error(ctx, LX_EINVAL, NULL, 0, "grid plot: empty area");
     lx_isolux_opts o = {0};
     if (opts) o = *opts;
+    lx_status rs = lx__check_reserved(ctx, "isolux options", o.reserved, sizeof o.reserved);
+    if (rs) return rs;
     iso g;
     double *E = NULL;
     lx_status st = setup(ctx, &g, p, E_lx, &o, &E);
@@ -534,5 +536,6 @@ fail:
 lx_status lx_grid_write_png(lx_ctx *ctx, const char *path, const lx_plane *plane, const double *E_lx,
                             const lx_isolux_opts *opts)
 {
+    LX__NEED_CTX(ctx);
     return lx__isolux_png(ctx, path, plane, E_lx, opts, NULL);
 }

@@ -51,6 +51,8 @@ lx_status lx__falsecolor_png(lx_ctx *ctx, const char *path, int w, int h, const 
     if (!path || !values || w < 1 || h < 1) return lx__error(ctx, LX_EINVAL, NULL, 0, "false-colour plot: no values");
     lx_falsecolor_opts o = {0};
     if (opts) o = *opts;
+    lx_status rs = lx__check_reserved(ctx, "false-colour options", o.reserved, sizeof o.reserved);
+    if (rs) return rs;
     lx__scale s;
     int log = o.scale != LX_PLOT_SCALE_LINEAR;
     double lo = o.hi > o.lo && (!log || o.lo > 0) ? o.lo : NAN, hi = o.hi > o.lo ? o.hi : NAN;
@@ -87,12 +89,14 @@ done:
 lx_status lx_falsecolor_write_png(lx_ctx *ctx, const char *path, int w, int h, const double *values,
                                   const lx_falsecolor_opts *opts)
 {
+    LX__NEED_CTX(ctx);
     return lx__falsecolor_png(ctx, path, w, h, values, opts, NULL);
 }
 
 lx_status lx_envmap_preview_write_png(lx_ctx *ctx, const char *path, int n, const lx_envmap *const *maps,
                                       const char *const *labels)
 {
+    LX__NEED_CTX(ctx);
     if (!path || n < 1 || !maps) return lx__error(ctx, LX_EINVAL, NULL, 0, "preview: nothing to draw");
     const int pw = 512, m = 12, lab = 22;
     int ph = 0;
@@ -167,5 +171,6 @@ lx_status lx__irradiance_png(lx_ctx *ctx, const char *path, const lx_envmap *rad
 lx_status lx_irradiance_write_png(lx_ctx *ctx, const char *path, const lx_envmap *radiance, const lx_envmap *irradiance,
                                   const char *label, lx_plot_scale scale)
 {
+    LX__NEED_CTX(ctx);
     return lx__irradiance_png(ctx, path, radiance, irradiance, label, scale, NULL);
 }

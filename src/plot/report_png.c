@@ -241,6 +241,8 @@ lx_status lx__report_png(lx_ctx *ctx, const lx_spd *spd, const lx_report_opts *o
     if (!spd || !path) return lx__error(ctx, LX_EINVAL, NULL, 0, "spectrum report: NULL argument");
     lx_report_opts o = {0};
     if (opts) o = *opts;
+    lx_status rs = lx__check_reserved(ctx, "report options", o.reserved, sizeof o.reserved);
+    if (rs) return rs;
     if (o.observer == 0) o.observer = LX_OBSERVER_2;
     if (o.observer != LX_OBSERVER_2 && o.observer != LX_OBSERVER_10)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "spectrum report: observer must be 2 or 10");
@@ -289,5 +291,6 @@ out:
 
 lx_status lx_spd_report_write_png(lx_ctx *ctx, const lx_spd *spd, const lx_report_opts *opts, const char *path)
 {
+    LX__NEED_CTX(ctx);
     return lx__report_png(ctx, spd, opts, path, NULL);
 }

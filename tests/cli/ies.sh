@@ -6,11 +6,12 @@
 . tests/cli/lib.sh
 SH=${LX_SHARED_DIR:-../shared}/ies
 
-printf '\000\001PK\003\004garbage\nmore\n' > "$T/zip.ies"
+# (binary files are refused before this, by the reader: tests/cli/bounded.sh)
+printf 'caf\351 lamp data\177 v2\nformat: custom\nrows: 3\n' > "$T/zip.ies"
 run ies "$T/zip.ies"
 expect_rc 2 "neither format: an input error"
 expect_err_match 'neither IES LM-63 .* nor EULUMDAT' "neither format: says so"
-expect_err_match 'begins "\\x00\\x01PK\\x03\\x04garbage"' "non-printable bytes escaped"
+expect_err_match 'begins "caf\\xE9 lamp data\\x7F v2"' "non-printable bytes escaped"
 
 run ies --write "$T/x.ldt" --model point --flux 1000lm
 expect_rc 1 "--write x.ldt is refused"
