@@ -51,6 +51,8 @@ static const char help[] =
     "  --grid START:END:STEP  another, on the grid given by --grid (nm); spectra named 1, 2, ...\n"
     "  --report DIR           one PNG report per spectrum: DIR/<file-stem>_<spectrum>.png (SPD,\n"
     "                         swatch, CIE xy, R1-R14, TM-30 vector graphic, headline numbers)\n"
+    "  --diagram xy|uv        the report's chromaticity diagram: CIE 1931 xy (default) or\n"
+    "                         CIE 1976 u'v'\n"
     "  IMAGE.exr -o X.exr --png P.png  spectral EXR (S0.<nm>nm channels): per-pixel XYZ in cd/m2\n"
     "  -v, -q                 more messages / errors only (-q: no progress bar)\n"
     "  -h, --help             this help\n"
@@ -122,6 +124,7 @@ int cmd_spd(int argc, char **argv)
         {"backend", required_argument, NULL, 'B'},  {"input-format", required_argument, NULL, 'I'},
         {"grid", required_argument, NULL, 'G'},
         {"report", required_argument, NULL, 'R'}, {"png", required_argument, NULL, 'P'},
+        {"diagram", required_argument, NULL, 'D'},
         {NULL, 0, NULL, 0},
     };
     const char *cmd = "spd", *outpath = NULL;
@@ -132,8 +135,9 @@ int cmd_spd(int argc, char **argv)
     int f32 = 0, backend_given = getenv("LX_BACKEND") != NULL;
     const char *grid = NULL, *backend_text = getenv("LX_BACKEND");
     const char *report_dir = NULL, *png = NULL;
+    lx_diagram diagram = LX_DIAGRAM_XY;
     optind = 1;
-    while ((c = getopt_long(argc, argv, "o:vqh", opts, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":o:vqh", opts, NULL)) != -1) {
         switch (c) {
         case 'b':
             if (!strcmp(optarg, "2")) obs = LX_OBSERVER_2;
@@ -170,12 +174,17 @@ int cmd_spd(int argc, char **argv)
             break;
         case 'G': grid = optarg; break;
         case 'R': report_dir = optarg; break;
+        case 'D':
+            if (!strcmp(optarg, "xy")) diagram = LX_DIAGRAM_XY;
+            else if (!strcmp(optarg, "uv")) diagram = LX_DIAGRAM_UV;
+            else return cli_error(cmd, "--diagram: expected xy or uv, not '%s'", optarg), CLI_USAGE;
+            break;
         case 'P': png = optarg; break;
         case 'o': outpath = optarg; break;
         case 'v': cli_verbose++; break;
         case 'q': cli_quiet = 1; break;
         case 'h': cli_print_help(help); return CLI_OK;
-        default: fprintf(stderr, "%s", help); return CLI_USAGE;
+        default: return cli_bad_option(cmd, argv, c);
         }
     }
     if (optind >= argc) {
@@ -207,7 +216,7 @@ int cmd_spd(int argc, char **argv)
         lx_ctx_destroy(ctx);
         return e;
     }
-    if (report_dir && cli_report_dir(cmd, report_dir) != 0) {
+    if (report_dir && cli_make_dir(cmd, "--report", report_dir) != 0) {
         lx_ctx_destroy(ctx);
         return CLI_INPUT;
     }
@@ -230,6 +239,7 @@ int cmd_spd(int argc, char **argv)
     so.t = t, so.fmt = (cli_format)fmt, so.cmd = cmd;
     cli_spd_batch B = {ctx, cmd, t, obs, method, backend, backend_given, spd_flush, &so, 0};
     so.path = outpath;
+    cli_reports reports = {.cmd = cmd, .dir = report_dir, .opts = {.observer = obs, .unit = units[unit].name, .diagram = diagram}};
     int nfiles = 0;
     char **files = cli_expand_files(argc - optind, argv + optind, &nfiles);
     for (int fi = 0; files && fi < nfiles; fi++) {
@@ -285,7 +295,7 @@ int cmd_spd(int argc, char **argv)
                                             set->line ? set->line[k] : 0L, cmd) > 0 && rc < CLI_INPUT)
                 rc = CLI_INPUT;
             if (report_dir) {
-                int e = cli_spd_report(ctx, cmd, report_dir, set->file, k, &set->spd[k], obs);
+                int e = cli_spd_report(&reports, ctx, set->file, k, &set->spd[k]);
                 if (e > rc) rc = e;
             }
         }
@@ -299,10 +309,12 @@ int cmd_spd(int argc, char **argv)
         if (!so.opened && spd_open(&so) != 0) rc = CLI_INPUT;
         if (so.opened) {
             int ok = !so.failed && cli_table_flush(t, so.fmt, so.o.fp, 0, 1) == 0;
-            if (cli_output_close(&so.o, ok, cmd) != 0 || !ok) rc = rc ? rc : CLI_INPUT;
+            int e = cli_output_close(&so.o, ok, cmd);
+            if (e || !ok) rc = e ? e : rc ? rc : CLI_RUNTIME;
         }
     }
     cli_free_files(files, nfiles);
+    cli_reports_free(&reports);
     cli_table_free(t);
     lx_ctx_destroy(ctx);
     return rc;

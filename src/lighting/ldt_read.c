@@ -83,11 +83,11 @@ lx_status lx__ldt_read(lx_ctx *ctx, const char *file, const char *buf, size_t le
     if ((st = num(ctx, &r, "Dc (C-plane step)", &dc))) goto fail;
     if ((st = whole(ctx, &r, "Ng (number of gamma angles)", 2, LX__LDT_MAX_GAMMA, &ng))) goto fail;
     if ((st = num(ctx, &r, "Dg (gamma step)", &dg))) goto fail;
-    if ((st = text(ctx, &r, "the measurement report number", NULL))) goto fail;
+    if ((st = text(ctx, &r, "the measurement report number", &l->test))) goto fail;
     if ((st = text(ctx, &r, "the luminaire name", &l->description))) goto fail;
     if ((st = text(ctx, &r, "the luminaire number", &l->catalog))) goto fail;
     if ((st = text(ctx, &r, "the file name", NULL))) goto fail;
-    if ((st = text(ctx, &r, "the date/user", NULL))) goto fail;
+    if ((st = text(ctx, &r, "the date/user", &l->issuedate))) goto fail;
     static const char *dn[9] = {"the luminaire length", "the luminaire width", "the luminaire height",
                                 "the luminous area length", "the luminous area width", "the luminous height C0",
                                 "the luminous height C90", "the luminous height C180", "the luminous height C270"};
@@ -108,7 +108,7 @@ lx_status lx__ldt_read(lx_ctx *ctx, const char *file, const char *buf, size_t le
                            "%g (got %g)", LX__LDT_MAX_LAMPS, lamps);
             goto fail;
         }
-        if ((st = text(ctx, &r, "the lamp type", NULL))) goto fail;
+        if ((st = text(ctx, &r, "the lamp type", k == 0 ? &l->lamp : NULL))) goto fail;
         if ((st = num(ctx, &r, "the lamps' luminous flux", &flux))) goto fail;
         if (!(flux > 0)) {
             st = lx__error(ctx, LX_EPARSE, file, r.it.line, "the lamps' luminous flux must be positive (got %g lm)", flux);
