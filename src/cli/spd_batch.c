@@ -164,12 +164,16 @@ static int plain_rows_header(const char *path)
     return c2 != NULL;
 }
 
+/* A file within the spectrum-file limit: every result is kept until the whole file parsed (so a
+ * problem falls back to the general reader, which names lines). A larger file, which the general
+ * reader cannot take: each chunk's rows are printed as it completes (memory stays a chunk), and a
+ * spectrum that fails is reported and skipped. */
 static lx_status stream_chunk(void *user, const lx_batch_table *chunk, size_t row0)
 {
     stream_acc *A = user;
     cli_spd_batch *B = A->B;
     const lx_batch *b = &chunk->batch;
-    size_t n = b->n_lambda;
+    size_t n = b->n_lambda, base = A->over_cap ? 0 : row0; /* where this chunk's results go */
     if (!A->checked) {
         double *lam = malloc(n * sizeof *lam);
         if (!lam) return LX_ENOMEM;
@@ -180,8 +184,8 @@ static lx_status stream_chunk(void *user, const lx_batch_table *chunk, size_t ro
         if (!ok) return LX_EUNSUPPORTED;
         A->checked = 1;
     }
-    if (row0 + b->n_spectra > A->cap) {
-        size_t cap = 2 * (row0 + b->n_spectra);
+    if (base + b->n_spectra > A->cap) {
+        size_t cap = 2 * (base + b->n_spectra);
         lx_colorimetry *r = realloc(A->res, cap * sizeof *r);
         if (r) A->res = r;
         unsigned char *f = r ? realloc(A->bad, cap) : NULL;
@@ -189,10 +193,24 @@ static lx_status stream_chunk(void *user, const lx_batch_table *chunk, size_t ro
         A->bad = f;
         A->cap = cap;
     }
+    memset(A->bad + base, 0, b->n_spectra);
     for (size_t i = 0; i < b->n_spectra; i++) { /* names as the general reader keeps them */
         const char *nm = chunk->names + chunk->name_at[i];
         size_t l = strlen(nm);
-        if (l && (nm[0] == ' ' || nm[l - 1] == ' ' || nm[l - 1] == '\t' || nm[0] == '\t')) return LX_EUNSUPPORTED;
+        /* the checks of the general path (cli_spd_batchable): each spectrum as lx_spd_check sees it */
+        const double *v = (const double *)b->values + i * n;
+        size_t j = 0;
+        while (j < n && isfinite(v[j])) j++;
+        if (A->over_cap) {
+            if (j < n) {
+                cli_error(B->cmd, "%s: spectrum '%s' (data row %zu): value %zu (%g nm) is not finite", A->path, nm, row0 + i + 1,
+                          j + 1, b->start_nm + (double)j * b->step_nm);
+                A->bad[i] = 1;
+                B->rejected++;
+            }
+            continue;
+        }
+        if (j < n || (l && (nm[0] == ' ' || nm[l - 1] == ' ' || nm[l - 1] == '\t' || nm[0] == '\t'))) return LX_EUNSUPPORTED;
         if (A->names_len + l + 1 > A->names_cap) {
             size_t cap = 2 * (A->names_len + l + 1) + 4096;
             char *q = realloc(A->names, cap);
@@ -202,24 +220,25 @@ static lx_status stream_chunk(void *user, const lx_batch_table *chunk, size_t ro
         }
         memcpy(A->names + A->names_len, nm, l + 1);
         A->names_len += l + 1;
-        /* the checks of the general path (cli_spd_batchable): each spectrum as lx_spd_check sees it */
-        const double *v = (const double *)b->values + i * n;
-        for (size_t j = 0; j < n; j++)
-            if (!isfinite(v[j])) return LX_EUNSUPPORTED;
     }
     lx_batch_opts opts;
     memset(&opts, 0, sizeof opts);
     opts.backend = B->backend;
     opts.threads = 1; /* the other cores parse the next chunk meanwhile */
-    lx_status st = lx_batch_colorimetry(B->ctx, b, B->observer, &opts, A->res + row0);
+    lx_status st = lx_batch_colorimetry(B->ctx, b, B->observer, &opts, A->res + base);
     A->rows = row0 + b->n_spectra;
     for (size_t i = 0; st == LX_OK && i < b->n_spectra; i++) {
-        A->bad[row0 + i] = lx_colorimetry_check(B->ctx, &A->res[row0 + i], row_max_abs(b, i)) != LX_OK;
-        if (!A->bad[row0 + i]) continue;
+        if (A->bad[base + i] || lx_colorimetry_check(B->ctx, &A->res[base + i], row_max_abs(b, i)) == LX_OK) continue;
         if (!A->over_cap) return LX_EUNSUPPORTED; /* the general reader reports it with its line */
         cli_error(B->cmd, "%s: spectrum '%s' (data row %zu): %s", A->path, chunk->names + chunk->name_at[i], row0 + i + 1,
                   lx_ctx_errmsg(B->ctx));
+        A->bad[base + i] = 1;
         B->rejected++;
+    }
+    if (st == LX_OK && A->over_cap) {
+        for (size_t i = 0; i < b->n_spectra; i++)
+            if (!A->bad[i]) add_row(B->table, A->path, chunk->names + chunk->name_at[i], &A->res[i]);
+        if (B->flush) B->flush(B->flush_arg);
     }
     return st;
 }
@@ -235,15 +254,16 @@ int cli_spd_batch_file(cli_spd_batch *B, const char *path)
     A.path = path;
     A.over_cap = (unsigned long long)sb.st_size > lx_ctx_input_limit(B->ctx, LX_INPUT_SPECTRUM);
     lx_status st = lx_batch_table_stream(B->ctx, path, LX_F64, 0, stream_chunk, &A);
-    int done = st == LX_OK && A.rows > 0 && (B->forced || A.rows >= CLI_SPD_BATCH_MIN);
-    /* a file the general reader would refuse for its size: the stream's own error stands */
-    if (st != LX_OK && st != LX_EUNSUPPORTED && A.over_cap) {
+    int done = st == LX_OK && A.rows > 0 && (B->forced || A.over_cap || A.rows >= CLI_SPD_BATCH_MIN);
+    /* a file the general reader would refuse for its size: the stream's own error stands (and
+     * the rows before it were printed) */
+    if (st != LX_OK && (st != LX_EUNSUPPORTED || A.rows > 0) && A.over_cap) {
         free(A.res);
         free(A.names);
         free(A.bad);
         return -cli_fail(B->cmd, B->ctx, st);
     }
-    if (done) {
+    if (done && !A.over_cap) {
         size_t off = 0;
         for (size_t i = 0; i < A.rows; i++) {
             if (!A.bad[i]) add_row(B->table, path, A.names + off, &A.res[i]);
@@ -255,7 +275,7 @@ int cli_spd_batch_file(cli_spd_batch *B, const char *path)
     free(A.res);
     free(A.names);
     free(A.bad);
-    return done;
+    return done ? 1 : 0;
 }
 
 int cli_spd_parse_grid(const char *s, double *start, double *step, size_t *n)

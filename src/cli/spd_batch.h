@@ -32,7 +32,9 @@ lx_status cli_spd_batch_set(cli_spd_batch *B, const lx_spd_set *set);
  * method, fewer than CLI_SPD_BATCH_MIN spectra without --backend, or any error: the general
  * reader then reports the file's first problem, FILE:LINE, exactly as before), and -EXIT when
  * the file failed and is larger than the general reader's size limit: the error was printed
- * (FILE:LINE) and EXIT is its exit status. */
+ * (FILE:LINE) and EXIT is its exit status. A file larger than that limit is printed chunk by
+ * chunk as it is computed (memory stays a chunk, whatever the number of rows), a spectrum that
+ * fails reported as "FILE: spectrum 'NAME' (data row N): why" and skipped (B->rejected). */
 int cli_spd_batch_file(cli_spd_batch *B, const char *path);
 /* "START:END:STEP" in nm into the grid; 0 on success. */
 int cli_spd_parse_grid(const char *s, double *start, double *step, size_t *n);
