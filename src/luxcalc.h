@@ -624,9 +624,13 @@ LX_API lx_status lx_warn_beam_from_exponent(lx_ctx *ctx, double exponent, double
 
 /** Which model an extended source is evaluated with. */
 typedef enum lx_model {
-    LX_MODEL_AUTO = 0,  /* exact when distance < 5 x the source's largest dimension, else point */
+    LX_MODEL_AUTO = 0,  /* disk, rect: the closed form (exact whenever one exists); grids and scenes:
+                         * the point model where its estimated error meets the tolerance, else the
+                         * luminous area integrated (README "Accuracy by default") */
     LX_MODEL_POINT = 1, /* point source at the centre, I(theta) = L A cos(theta) */
-    LX_MODEL_EXACT = 2  /* closed-form configuration factor, E = pi L F */
+    LX_MODEL_EXACT = 2, /* closed-form configuration factor, E = pi L F */
+    LX_MODEL_AREA = 3   /* grids: every pair integrated over the luminous opening (to nearfield_tol);
+                         * disk, rect: the same as EXACT */
 } lx_model;
 
 /** The illuminance of an extended Lambertian source on a parallel receiver. */
@@ -755,8 +759,9 @@ typedef struct lx_luminaire {
     double ballast_lamp_factor;/* LM-63 <= 1995: applied; 2002: future use, ignored; 2019: NaN */
     int file_generation_type;  /* LM-63-2019 only (the field older versions call ballast-lamp factor), else 0 */
     double input_watts;
-    double width_m, length_m, height_m; /* luminous opening: width along C0-C180, length along
-                                * C90-C270 (negative IES values: circular, see lx_luminaire_size) */
+    double width_m, length_m, height_m; /* luminous opening as LM-63 and EULUMDAT define it: width
+                                * along the C90-C270 plane, length along C0-C180; negative width and
+                                * length (IES) mean a circle of that diameter (EULUMDAT width 0 is read so) */
     int tilt_include;          /* 1 when a TILT= table was given (INCLUDE or a file) */
     int tilt_geometry;         /* lamp-to-luminaire geometry 1, 2 or 3 */
     size_t n_tilt;
@@ -822,7 +827,7 @@ typedef struct lx_lum_model {
     lx_lum_model_kind kind;
     double flux_lm;           /* > 0 */
     double exponent;          /* Warn S >= 0 */
-    double width_m, length_m; /* luminous opening (0: a point); width along C0 */
+    double width_m, length_m; /* luminous opening (0: a point); width along C90-C270, length along C0-C180 */
     double step_deg;          /* gamma step of the table (0: 1 deg for point/Lambert, finer for narrow spots) */
     const char *catalog;      /* [LUMCAT] text (NULL: a description of the model) */
 } lx_lum_model;
@@ -864,9 +869,15 @@ LX_API lx_status lx_plane_axis(lx_ctx *ctx, char axis, double level_m, double a0
 
 /** Options of lx_grid_illuminance (zero-initialise for defaults). */
 typedef struct lx_grid_opts {
-    lx_model model;           /* LX_MODEL_POINT (default 0 = AUTO: where the point is closer than
-                               * 5 x the opening's largest dimension, integrate over the luminous
-                               * area to nearfield_tol; ctx counters nearfield_pairs/_subdivisions) */
+    lx_model model;           /* default 0 = AUTO: each pair of a luminaire with a luminous opening
+                               * and a point is probed (13 point evaluations over the opening estimate
+                               * the point model's error); the point model is kept where the summed
+                               * estimates at the point stay within nearfield_tol / 2 of its
+                               * illuminance, else the opening is integrated to nearfield_tol (and
+                               * where the probes cannot vouch: a beam cut-off or the receiver's
+                               * horizon across the opening, or closer than its size). POINT: every
+                               * luminaire a point; AREA: every pair integrated. ctx counters
+                               * nearfield_probes, nearfield_pairs, nearfield_subdivisions */
     lx_interp interp;         /* default bilinear */
     double maintenance_factor;/* 0 means 1 */
     lx_backend backend;       /* OpenCL runs LX_INTERP_TABLE only; AUTO (also LX_BACKEND) picks it
@@ -874,8 +885,9 @@ typedef struct lx_grid_opts {
     int threads;              /* CPU threads; 0 = every online core */
     int table_n;              /* LX_INTERP_TABLE: rows per hemisphere, 2 to 16384 (0: 1024) */
     int fp32;                 /* OpenCL: 1 computes in float (else double where the device has it) */
-    double nearfield_tol;     /* AUTO: relative change of the Richardson-extrapolated area sum at
-                               * which refinement stops (0: 1e-4; 1e-12 to 0.1) */
+    double nearfield_tol;     /* the relative tolerance of each point's illuminance (0: 1e-4; 1e-12
+                               * to 0.1): the point model's budget (AUTO) and the convergence of the
+                               * Richardson-extrapolated area sums */
     lx_backend used;          /* OUT: the backend that did the work */
 } lx_grid_opts;
 
@@ -1136,6 +1148,9 @@ typedef struct lx_counters {
     unsigned long long environment_samples;    /* numerical sky samples (quadrature nodes, map pixels) */
     unsigned long long spectra_integrated;     /* spectrum integrations (colorimetry, alpha-opic: one each per source) */
     unsigned long long kernel_launches;        /* OpenCL batches run by scene evaluation (each >= 1 kernel launch) */
+    unsigned long long nearfield_probes;       /* pairs whose point-model error was estimated (13 point
+                                                * evaluations each: the near-field decision) */
+    unsigned long long closed_form_evaluations;/* disk and rectangle luminaires evaluated in closed form */
 } lx_counters;
 
 /** Copies the context's counters into *out (zeros for a NULL ctx). Thread-safe for distinct contexts. */
@@ -1185,7 +1200,9 @@ typedef struct lx_scene_luminaire {
     double exponent;          /* spot: Warn S */
     double luminance_cd_m2;   /* disk, rect */
     double radius_m;          /* disk */
-    double width_m, length_m; /* rect, and the luminous opening of a file luminaire (0: a point) */
+    double width_m, length_m; /* rect: width along local x (C0), length along local y; file: the
+                               * luminous opening as in lx_luminaire (width along C90-C270, length
+                               * along C0-C180; 0: a point) */
     double scale;             /* file: candela multiplier applied to the table (flux / table lumens),
                                * times the file's TILT factor at the tilt of aim from the nadir */
     char *lum_path;           /* file: the photometric file (resolved against the scene file) */
@@ -1255,6 +1272,24 @@ LX_API lx_status lx_scene_read_mem(lx_ctx *ctx, const char *name, const char *te
 /** Frees a scene. Accepts NULL. */
 LX_API void lx_scene_free(lx_scene *scene);
 
+/** Why a luminaire-receiver pair takes its path (lx_scene_plan.near_why). */
+typedef enum lx_near_why {
+    LX_NEAR_NONE = 0,    /* point model: the luminaire has no luminous area */
+    LX_NEAR_WITHIN,      /* point model: its estimated error fits the point's share of the tolerance */
+    LX_NEAR_ZERO,        /* point model: the receiver faces away from the whole opening (both give 0) */
+    LX_NEAR_OVER,        /* integrated: the point model's estimated error exceeds the tolerance */
+    LX_NEAR_UNSURE,      /* integrated: the probes cannot vouch (a beam cut-off or the receiver's horizon
+                          * across the opening, or the receiver closer than the opening's size) */
+    LX_NEAR_CLOSED,      /* a disk or rectangle in closed form (exact) */
+    LX_NEAR_NO_CLOSED,   /* integrated: a disk or rectangle without the receiver's cosine (no closed form) */
+    LX_NEAR_FORCED_ON,   /* integrated: near_field forced on in [effects] */
+    LX_NEAR_FORCED_OFF,  /* point model: near_field forced off in [effects] */
+    LX_NEAR_WHY_COUNT
+} lx_near_why;
+
+/** A short name for a decision ("point: within tolerance", ...; static storage; NULL for a bad value). */
+LX_API const char *lx_near_why_name(lx_near_why why);
+
 /** The planner's decision. */
 typedef struct lx_scene_plan {
     int on[LX_EFFECT_COUNT];          /* 1 when the effect is simulated */
@@ -1263,7 +1298,13 @@ typedef struct lx_scene_plan {
     size_t n_points;                  /* receiver points over all receivers */
     size_t n_pairs;                   /* luminaire x receiver-point pairs */
     size_t n_near;                    /* pairs that take the near-field path */
-    unsigned char *near;              /* n_lum x n_points (luminaire-major): 1 = near-field path; owned */
+    unsigned char *near;              /* n_lum x n_points (luminaire-major): 0 = point model, 1 = the
+                                       * luminous area integrated (patches), 2 = a disk or rectangle in
+                                       * closed form; owned */
+    double *near_err;                 /* n_lum x n_points: the point model's estimated error relative to
+                                       * the point's illuminance (NaN where it was not estimated); owned */
+    unsigned char *near_why;          /* n_lum x n_points: an lx_near_why; owned */
+    lx_counters planning;             /* the work the planner did itself (the near-field probes) */
     size_t n_normals;                 /* distinct receiver normals (sky evaluations) */
     lx_counters estimate;             /* the work the plan expects */
     int backend;                      /* an lx_backend: OPENCL when some grid work runs on a device */
