@@ -599,7 +599,8 @@ LX_API lx_status lx_radiometric_convert(lx_ctx *ctx, double value_si, lx_quantit
 /* ============================================================================================ */
 
 /* Sources (sources.c). Distances in m, angles in rad, luminance in cd/m2. A distance that is
- * zero, negative or not finite is LX_EINVAL (never infinity). Receivers facing away get 0. */
+ * zero, negative or not finite is LX_EINVAL (never infinity), except the height of a receiver
+ * over a disk or rectangle, where 0 is the coplanar limit. Receivers facing away get 0. */
 
 /** Illuminance from a point source of intensity I at distance d, incidence angle a from the
  * receiver normal: E = I cos(a) / d^2; 0 when cos(a) <= 0 (back-facing or grazing). */
@@ -643,14 +644,17 @@ typedef struct lx_source_result {
                                   * adaptive quadrature: its estimate) */
     double distance_m;           /* centre of the source to the receiver */
     double largest_dimension_m;  /* disk: diameter; rectangle: diagonal */
-    int near_field;              /* 1 when distance_m < 5 x largest_dimension_m */
-    lx_model model;              /* LX_MODEL_POINT or LX_MODEL_EXACT, never AUTO */
+    int near_field;              /* 1 when the point model errs by more than 1e-4 relative (the grids'
+                                  * default near-field tolerance), or is undefined */
+    lx_model model;              /* LX_MODEL_POINT or LX_MODEL_EXACT (what AUTO and AREA give), never AUTO */
 } lx_source_result;
 
 /** Lambertian disk of luminance L and radius R; receiver parallel to it at height h, offset r
  * from the axis. Exact: configuration factor of a parallel differential element to a disk,
  * F = (1/2)[1 - (h^2 + r^2 - R^2) / sqrt((h^2 + r^2 + R^2)^2 - 4 r^2 R^2)], rewritten so no
- * subtraction cancels (see sources.c). Point: E = L pi R^2 h^2 / (h^2 + r^2)^2. */
+ * subtraction cancels (see sources.c). Point: E = L pi R^2 h^2 / (h^2 + r^2)^2. AUTO reports the
+ * exact value (the point model is beside it). h = 0 is the coplanar limit h -> 0+: pi L on the
+ * disk, pi L / 2 on its rim, 0 outside (the point model is then 0, NaN at the centre). */
 LX_API lx_status lx_disk_illuminance(lx_ctx *ctx, double luminance_cd_m2, double radius_m,
                                      double height_m, double offset_m, lx_model model,
                                      lx_source_result *out);
@@ -658,7 +662,8 @@ LX_API lx_status lx_disk_illuminance(lx_ctx *ctx, double luminance_cd_m2, double
 /** Lambertian rectangle width a (along x) x length b (along y) of luminance L; receiver parallel
  * at height h, its foot at (x, y) from the rectangle's centre (a corner is (a/2, b/2)). Exact: the
  * corner configuration factor (Howell's catalogue, case B-3) superposed over four corner
- * rectangles with signs. Point: E = L a b h^2 / (h^2 + x^2 + y^2)^2. */
+ * rectangles with signs. Point: E = L a b h^2 / (h^2 + x^2 + y^2)^2. AUTO reports the exact value.
+ * h = 0 is the coplanar limit: pi L inside, pi L / 2 on an edge, pi L / 4 at a corner, 0 outside. */
 LX_API lx_status lx_rect_illuminance(lx_ctx *ctx, double luminance_cd_m2, double width_m,
                                      double length_m, double height_m, double x_m, double y_m,
                                      lx_model model, lx_source_result *out);

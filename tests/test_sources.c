@@ -163,14 +163,22 @@ static void test_disk_closed_form(void **state)
     /* point model error at h = 5 D on axis: point/exact - 1 = (R^2 + h^2)/h^2 - 1 = R^2/h^2 = 1/100 */
     lx_assert_ok(ctx, lx_disk_illuminance(ctx, 1000, 0.5, 5, 0, LX_MODEL_AUTO, &r));
     lx_assert_near(r.point_error, 0.01, 0, 1e-13);
-    assert_int_equal(r.near_field, 0); /* exactly 5 x the diameter is not under it */
-    assert_int_equal(r.model, LX_MODEL_POINT);
+    assert_int_equal(r.near_field, 1); /* the point model misses 1e-4 */
     lx_assert_near(r.largest_dimension_m, 1, 0, 0);
-    /* auto under five times: exact */
-    lx_assert_ok(ctx, lx_disk_illuminance(ctx, 1000, 0.5, 4.9, 0, LX_MODEL_AUTO, &r));
-    assert_int_equal(r.near_field, 1);
-    assert_int_equal(r.model, LX_MODEL_EXACT);
-    lx_assert_near(r.illuminance_lx, r.exact_lx, 0, 0);
+    /* auto is exact at any distance (the closed form costs what the point model costs): at 5, 10
+     * and 1000 diameters; the point model is one flag away with its error beside it */
+    static const double hs[3] = {5, 10, 1000};
+    for (int k = 0; k < 3; k++) {
+        lx_assert_ok(ctx, lx_disk_illuminance(ctx, 1000, 0.5, hs[k], 0, LX_MODEL_AUTO, &r));
+        assert_int_equal(r.model, LX_MODEL_EXACT);
+        lx_assert_near(r.illuminance_lx, 1000 * PI * 0.25 / (0.25 + hs[k] * hs[k]), 0, 1e-14);
+        assert_int_equal(r.near_field, hs[k] < 50); /* R^2 / h^2 > 1e-4 */
+        lx_source_result p;
+        lx_assert_ok(ctx, lx_disk_illuminance(ctx, 1000, 0.5, hs[k], 0, LX_MODEL_POINT, &p));
+        assert_int_equal(p.model, LX_MODEL_POINT);
+        lx_assert_near(p.illuminance_lx, 1000 * PI * 0.25 / (hs[k] * hs[k]), 0, 1e-14);
+        lx_assert_near(p.point_error, 0.25 / (hs[k] * hs[k]), 1e-15, 1e-12);
+    }
 }
 
 static void test_disk_references(void **state)
@@ -220,9 +228,23 @@ static void test_disk_limits(void **state)
         lx_assert_near(r.point_error, 1 / (hr[i] * hr[i]), 1e-15, 1e-9); /* ratio - 1: a few ulp of 1 */
         if (hr[i] >= 1e7) lx_assert_near(r.exact_lx, r.point_lx, 0, 1e-12); /* physical error 1e-14 */
     }
-    /* distance 1e-6 .. 1e6 m and invalid input */
-    assert_int_equal(lx_disk_illuminance(ctx, 1, 0.5, 0, 0, LX_MODEL_EXACT, &r), LX_EINVAL);
+    /* h = 0 is the coplanar limit of those: pi L on the disk, pi L / 2 on its rim, 0 outside */
+    lx_assert_ok(ctx, lx_disk_illuminance(ctx, 1000, 0.5, 0, 0.2, LX_MODEL_AUTO, &r));
+    lx_assert_near(r.illuminance_lx, 1000 * PI, 0, 1e-15);
+    lx_assert_near(r.point_error, -1, 0, 0); /* the point model gives 0 there */
+    lx_assert_ok(ctx, lx_disk_illuminance(ctx, 1000, 0.5, 0, 0.5, LX_MODEL_AUTO, &r));
+    lx_assert_near(r.illuminance_lx, 1000 * PI / 2, 0, 1e-15);
+    lx_assert_ok(ctx, lx_disk_illuminance(ctx, 1000, 0.5, 0, 0.7, LX_MODEL_AUTO, &r));
+    assert_true(r.illuminance_lx == 0);
+    lx_assert_ok(ctx, lx_disk_illuminance(ctx, 1000, 0.5, 0, 0, LX_MODEL_AUTO, &r));
+    assert_true(isnan(r.point_lx)); /* the point model is undefined at its own centre */
+    /* ... and the limit of small heights: at 1e-12 m, within 1e-12 */
+    lx_source_result s;
+    lx_assert_ok(ctx, lx_disk_illuminance(ctx, 1000, 0.5, 1e-12, 0.5, LX_MODEL_EXACT, &s));
+    lx_assert_near(s.exact_lx, 1000 * PI / 2, 0, 1e-9);
+    /* invalid input */
     assert_int_equal(lx_disk_illuminance(ctx, 1, 0.5, -1, 0, LX_MODEL_EXACT, &r), LX_EINVAL);
+    assert_int_equal(lx_disk_illuminance(ctx, 1, 0.5, NAN, 0, LX_MODEL_EXACT, &r), LX_EINVAL);
     assert_int_equal(lx_disk_illuminance(ctx, 1, 0, 1, 0, LX_MODEL_EXACT, &r), LX_EINVAL);
     assert_int_equal(lx_disk_illuminance(ctx, -1, 1, 1, 0, LX_MODEL_EXACT, &r), LX_EINVAL);
 }
@@ -244,10 +266,24 @@ static void test_rect_closed_form(void **state)
     lx_assert_near(r.exact_lx, 1000 * PI, 0, 1e-8);
     lx_assert_ok(ctx, lx_rect_illuminance(ctx, 1000, 1, 2, 1e-12, 0.5, 1, LX_MODEL_EXACT, &r));
     lx_assert_near(r.exact_lx, 1000 * PI / 4, 0, 1e-11);
-    /* the five-times rule uses the diagonal: sqrt(2) for the unit square */
-    lx_assert_ok(ctx, lx_rect_illuminance(ctx, 1, 1, 1, 7, 0, 0, LX_MODEL_AUTO, &r));
-    assert_int_equal(r.near_field, 1); /* 7 < 5 sqrt 2 = 7.07 */
+    /* auto is exact at any distance; near_field says the point model misses 1e-4 */
+    lx_assert_ok(ctx, lx_rect_illuminance(ctx, 1, 1, 1, 50, 0, 0, LX_MODEL_AUTO, &r));
     assert_int_equal(r.model, LX_MODEL_EXACT);
+    lx_assert_near(r.illuminance_lx, r.exact_lx, 0, 0);
+    /* the unit square's point error is about (1/3)(a/h)^2 (1.3325 % at 5 sides, above): 1.3e-4 at
+     * 50 sides, 6.8e-5 at 70 */
+    assert_int_equal(r.near_field, 1);
+    lx_assert_ok(ctx, lx_rect_illuminance(ctx, 1, 1, 1, 70, 0, 0, LX_MODEL_AUTO, &r));
+    assert_int_equal(r.near_field, 0);
+    /* h = 0: the coplanar limit, pi L inside, pi L / 2 on an edge, pi L / 4 at a corner, 0 outside */
+    lx_assert_ok(ctx, lx_rect_illuminance(ctx, 1000, 1, 2, 0, 0.1, 0.2, LX_MODEL_AUTO, &r));
+    lx_assert_near(r.illuminance_lx, 1000 * PI, 0, 1e-15);
+    lx_assert_ok(ctx, lx_rect_illuminance(ctx, 1000, 1, 2, 0, 0.5, 0.2, LX_MODEL_AUTO, &r));
+    lx_assert_near(r.illuminance_lx, 500 * PI, 0, 1e-15);
+    lx_assert_ok(ctx, lx_rect_illuminance(ctx, 1000, 1, 2, 0, 0.5, 1, LX_MODEL_AUTO, &r));
+    lx_assert_near(r.illuminance_lx, 250 * PI, 0, 1e-15);
+    lx_assert_ok(ctx, lx_rect_illuminance(ctx, 1000, 1, 2, 0, 0.6, 0, LX_MODEL_AUTO, &r));
+    assert_true(r.illuminance_lx == 0);
 }
 
 static void test_rect_references(void **state)
@@ -274,7 +310,7 @@ static void test_rect_references(void **state)
     /* h >> size: matches the point model to 1e-12 (physical error (a^2+b^2)/(6 h^2) ~ 3e-13 here) */
     lx_assert_ok(ctx, lx_rect_illuminance(ctx, 1, 1, 1, 1e6, 0, 0, LX_MODEL_EXACT, &r));
     lx_assert_near(r.exact_lx, r.point_lx, 0, 1e-12);
-    assert_int_equal(lx_rect_illuminance(ctx, 1, 1, 1, 0, 0, 0, LX_MODEL_EXACT, &r), LX_EINVAL);
+    assert_int_equal(lx_rect_illuminance(ctx, 1, 1, 1, -1e-3, 0, 0, LX_MODEL_EXACT, &r), LX_EINVAL);
     assert_int_equal(lx_rect_illuminance(ctx, 1, 1, -1, 1, 0, 0, LX_MODEL_EXACT, &r), LX_EINVAL);
 }
 

@@ -462,7 +462,7 @@ lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, c
         return lx__error(ctx, LX_EINVAL, NULL, 0, "grids use the auto, point or area model");
     if (o.table_n < 0 || o.table_n == 1 || o.table_n > 16384)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "table rows must be 2 to 16384 (got %d; 0: 1024)", o.table_n);
-    double tol = o.nearfield_tol == 0 ? 1e-4 : o.nearfield_tol;
+    double tol = o.nearfield_tol == 0 ? LX__NEARFIELD_TOL : o.nearfield_tol;
     if (!(tol >= 1e-12) || !(tol <= 0.1))
         return lx__error(ctx, LX_EINVAL, NULL, 0, "the near-field tolerance must be in [1e-12, 0.1] (got %g)", tol);
     lx_backend backend = o.backend == LX_BACKEND_AUTO ? lx_backend_from_env() : o.backend;

@@ -5,6 +5,9 @@
 
 #include "spectral/spectral_private.h"
 
+/* The default relative tolerance of the near field (grids; the near_field flag of disk and rect). */
+#define LX__NEARFIELD_TOL 1e-4
+
 /* The readers behind lx_luminaire_read_mem: LM-63 (any version) and EULUMDAT. */
 lx_status lx__ies_read(lx_ctx *ctx, const char *file, const char *text, size_t len, lx_luminaire **out);
 lx_status lx__ldt_read(lx_ctx *ctx, const char *file, const char *text, size_t len, lx_luminaire **out);
