@@ -619,6 +619,12 @@ LX_API lx_status lx_warn_intensity(lx_ctx *ctx, double flux_lm, double exponent,
 /** cos^S(a) for |a| <= pi/2, else 0 (the normalised Warn lobe). NaN for S < 0 or NaN input. */
 LX_API double lx_warn_lobe(double exponent, double angle_rad);
 
+/** The flux of a Warn spotlight (flux F, exponent S >= 0) within the cone of half-angle a about
+ * its axis (0 to pi): F (1 - cos^(S+1) a) for a < pi/2, F beyond; *fraction the same over F.
+ * Either output may be NULL (not both). Accurate for small a and large S (expm1, log1p). */
+LX_API lx_status lx_warn_cone_flux(lx_ctx *ctx, double flux_lm, double exponent, double half_angle_rad,
+                                   double *cone_flux_lm, double *fraction);
+
 /** Warn exponent whose full beam angle (where I = I_peak / 2) is beam_rad, and back. */
 LX_API lx_status lx_warn_exponent_from_beam(lx_ctx *ctx, double beam_rad, double *exponent);
 LX_API lx_status lx_warn_beam_from_exponent(lx_ctx *ctx, double exponent, double *beam_rad);

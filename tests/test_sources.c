@@ -104,6 +104,50 @@ static void test_warn_flux_recovered(void **state)
     }
 }
 
+/* The flux within a cone: 2 pi int_0^A I(t) sin t dt by 20-point Gauss-Legendre on 400 panels
+ * against the closed form F (1 - cos^(S+1) A) of lx_warn_cone_flux; and its ends. */
+static void test_warn_cone(void **state)
+{
+    lx_ctx *ctx = *state;
+    const double S[] = {0, 1, 28.8938, 1000};
+    const double A[] = {1 * DEG, 12.5 * DEG, 45 * DEG, 89.9 * DEG};
+    for (size_t k = 0; k < 4; k++)
+        for (size_t j = 0; j < 4; j++) {
+            double sum = 0, peak, I;
+            for (int p = 0; p < 400; p++) {
+                double c = A[j] * (p + 0.5) / 400, h = 0.5 * A[j] / 400;
+                for (int i = 0; i < 10; i++)
+                    for (int sgn = -1; sgn <= 1; sgn += 2) {
+                        double t = c + sgn * h * gl_x[i];
+                        lx_assert_ok(ctx, lx_warn_intensity(ctx, 800, S[k], t, &peak, &I));
+                        sum += gl_w[i] * h * I * sin(t);
+                    }
+            }
+            double cf, fr;
+            lx_assert_ok(ctx, lx_warn_cone_flux(ctx, 800, S[k], A[j], &cf, &fr));
+            lx_assert_near(cf, 2 * PI * sum, 1e-12, 1e-11);
+            lx_assert_near(fr, cf / 800, 0, 1e-15);
+        }
+    double cf, fr;
+    /* S = 1 (Lambertian) at 60 deg: 1 - cos^2 = 3/4; S = 0 (uniform hemisphere): 1 - cos A */
+    lx_assert_ok(ctx, lx_warn_cone_flux(ctx, 800, 1, 60 * DEG, &cf, &fr));
+    lx_assert_near(fr, 0.75, 0, 1e-15);
+    lx_assert_ok(ctx, lx_warn_cone_flux(ctx, 800, 0, 60 * DEG, &cf, &fr));
+    lx_assert_near(fr, 0.5, 0, 1e-15);
+    /* the whole lobe from 90 deg on; nothing in a cone of 0 */
+    lx_assert_ok(ctx, lx_warn_cone_flux(ctx, 800, 5, 120 * DEG, &cf, &fr));
+    lx_assert_near(cf, 800, 0, 0);
+    lx_assert_ok(ctx, lx_warn_cone_flux(ctx, 800, 5, 0, &cf, &fr));
+    assert_true(fr == 0);
+    /* a tiny cone of a huge exponent, S = 1e6, A = 1e-3 rad: cos A rounds away 2e-10 of ln cos A,
+     * so the closed form needs log1p(-2 sin^2(A/2)) */
+    lx_assert_ok(ctx, lx_warn_cone_flux(ctx, 1, 1e6, 1e-3, &cf, &fr));
+    double A2 = 1e-6; /* ln cos A = -A^2/2 - A^4/12 - A^6/45 - ... (the series, exact to 1e-30 here) */
+    lx_assert_near(fr, -expm1(-(1e6 + 1) * (A2 / 2 + A2 * A2 / 12 + A2 * A2 * A2 / 45)), 0, 1e-14);
+    assert_int_equal(lx_warn_cone_flux(ctx, 800, 5, -0.1, &cf, &fr), LX_EINVAL);
+    assert_int_equal(lx_warn_cone_flux(ctx, 800, -1, 0.1, &cf, &fr), LX_EINVAL);
+}
+
 static void test_warn_extremes(void **state)
 {
     lx_ctx *ctx = *state;
@@ -358,6 +402,7 @@ int main(void)
         cmocka_unit_test(test_point_closed_form),  cmocka_unit_test(test_point_distances),
         cmocka_unit_test(test_point_grazing_backfacing), cmocka_unit_test(test_warn_flux_recovered),
         cmocka_unit_test(test_warn_extremes),      cmocka_unit_test(test_warn_beam),
+        cmocka_unit_test(test_warn_cone),
         cmocka_unit_test(test_disk_closed_form),   cmocka_unit_test(test_disk_references),
         cmocka_unit_test(test_disk_limits),        cmocka_unit_test(test_rect_closed_form),
         cmocka_unit_test(test_rect_references),    cmocka_unit_test(test_lambertian_reflector),

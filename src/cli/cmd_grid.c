@@ -26,7 +26,11 @@ static const char help[] =
     "  --spacing S             points at A0, A0+S, ..., A1 (inclusive when on the grid)\n"
     "  --points NxM            N points along A and M along B, ends included\n"
     "  --normal X,Y,Z          receiver normal (default the plane's axis towards +z, +x or +y)\n"
-    "  --model point|auto      auto (default): subdivide the luminous area closer than 5 x its size\n"
+    "  --model auto|point|area auto (default): each pair with a luminous opening keeps the point\n"
+    "                          model where its estimated error (13 probes over the opening) keeps\n"
+    "                          the point within --tolerance, else the opening is integrated;\n"
+    "                          point: every luminaire a point; area: every pair integrated\n"
+    "  --tolerance T           relative tolerance of each point's illuminance (default 1e-4)\n"
     "  --interp bilinear|smooth|table  intensity interpolation (default bilinear; table: the\n"
     "                          cosine-indexed table the OpenCL kernel uses)\n"
     "  --table-rows N          rows per hemisphere of that table (default 1024; implies --interp\n"
@@ -86,10 +90,11 @@ int cmd_grid(int argc, char **argv)
         {"png", required_argument, NULL, 'P'},      {"table-rows", required_argument, NULL, 'T'},
         {"format", required_argument, NULL, 'f'},   {"output", required_argument, NULL, 'o'},
         {"scene", required_argument, NULL, 'x'},    {"help", no_argument, NULL, 'h'},
+        {"tolerance", required_argument, NULL, 'O'},
         {NULL, 0, NULL, 0},
     };
     const char *ies = NULL, *at = NULL, *aim = NULL, *rot = NULL, *plane = NULL, *area = NULL, *spacing = NULL;
-    const char *points = NULL, *normal = NULL, *outpath = NULL, *mf_t = NULL, *png = NULL;
+    const char *points = NULL, *normal = NULL, *outpath = NULL, *mf_t = NULL, *png = NULL, *tol_t = NULL;
     int summary = 0, interp_set = 0;
     cli_format fmt = CLI_FMT_CSV;
     lx_grid_opts go = {0};
@@ -108,6 +113,7 @@ int cmd_grid(int argc, char **argv)
         case 'n': points = optarg; break;
         case 'N': normal = optarg; break;
         case 'M': mf_t = optarg; break;
+        case 'O': tol_t = optarg; break;
         case 'S': summary = 1; break;
         case 'P': png = optarg; break;
         case 'T': {
@@ -126,7 +132,8 @@ int cmd_grid(int argc, char **argv)
         case 'm':
             if (!strcmp(optarg, "point")) go.model = LX_MODEL_POINT;
             else if (!strcmp(optarg, "auto")) go.model = LX_MODEL_AUTO;
-            else return cli_error("grid", "--model: expected point or auto (got '%s')", optarg), CLI_USAGE;
+            else if (!strcmp(optarg, "area")) go.model = LX_MODEL_AREA;
+            else return cli_error("grid", "--model: expected auto, point or area (got '%s')", optarg), CLI_USAGE;
             break;
         case 'I':
             interp_set = 1;
@@ -175,6 +182,12 @@ int cmd_grid(int argc, char **argv)
     if (aim && (rc = triple("--aim", aim, pl.aim))) goto done;
     if (rot && (rc = lt_quantity(ctx, "grid", "--rotate", rot, LX_Q_ANGLE, "deg", 0, &pl.rotate_rad))) goto done;
     if (mf_t && (rc = lt_quantity(ctx, "grid", "--maintenance", mf_t, LX_Q_NONE, NULL, 0, &go.maintenance_factor))) goto done;
+    if (tol_t && (rc = lt_quantity(ctx, "grid", "--tolerance", tol_t, LX_Q_NONE, NULL, 0, &go.nearfield_tol))) goto done;
+    if (tol_t && !(go.nearfield_tol >= 1e-12 && go.nearfield_tol <= 0.1)) {
+        cli_error("grid", "--tolerance must be in [1e-12, 0.1] (got %s)", tol_t);
+        rc = CLI_USAGE;
+        goto done;
+    }
     if (mf_t && !(go.maintenance_factor > 0 && go.maintenance_factor <= 1)) {
         cli_error("grid", "--maintenance must be in (0, 1] (got %s)", mf_t);
         rc = CLI_USAGE;

@@ -82,6 +82,29 @@ lx_status lx_warn_intensity(lx_ctx *ctx, double flux_lm, double exponent, double
     return LX_OK;
 }
 
+lx_status lx_warn_cone_flux(lx_ctx *ctx, double flux_lm, double exponent, double half_angle_rad, double *cone_flux_lm,
+                            double *fraction)
+{
+    lx_status st;
+    if (!cone_flux_lm && !fraction) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_warn_cone_flux: NULL output");
+    if ((st = check_finite(ctx, "flux", flux_lm, 1)) != LX_OK) return st;
+    if ((st = check_finite(ctx, "Warn exponent", exponent, 1)) != LX_OK) return st;
+    if (!(half_angle_rad >= 0 && half_angle_rad <= LX__PI))
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "the cone's half-angle must be from 0 to 180 deg (got %g deg)",
+                         half_angle_rad / LX__DEG);
+    /* flux within a: 2 pi c int_0^a cos^S t sin t dt = F (1 - cos^(S+1) a), F = 2 pi c / (S + 1);
+     * 1 - cos^(S+1) a = -expm1((S + 1) ln cos a), ln cos a = log1p(-2 sin^2(a/2)) (no cancellation
+     * for small a or large S) */
+    double f = 1.0;
+    if (half_angle_rad < LX__PI / 2) {
+        double s = sin(0.5 * half_angle_rad);
+        f = -expm1((exponent + 1) * log1p(-2 * s * s));
+    }
+    if (cone_flux_lm) *cone_flux_lm = flux_lm * f;
+    if (fraction) *fraction = f;
+    return LX_OK;
+}
+
 lx_status lx_warn_exponent_from_beam(lx_ctx *ctx, double beam_rad, double *exponent)
 {
     if (!exponent) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_warn_exponent_from_beam: NULL output");

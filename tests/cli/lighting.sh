@@ -28,6 +28,12 @@ expect_out_match '^peak_intensity_cd,intensity_cd,illuminance_lx' "spot csv head
 expect_field 1 intensity_cd 0.5 1e-12 "spot S=1 at 60 deg"
 run spot --flux 1000 --exponent 1e6 --angle 90deg --format csv
 expect_field 1 intensity_cd 0 0 "spot S=1e6 at 90 deg is 0, not NaN"
+# the flux in a cone of a Warn lobe: F (1 - cos^(S+1) A); S = 1 at 60 deg: 3/4 of 800 lm
+run spot --flux 800lm --exponent 1 --cone 60deg --format csv
+expect_field 1 cone_flux_lm 600 1e-9 "spot --cone: 600 lm of 800 within 60 deg (S = 1)"
+expect_field 1 cone_fraction 0.75 1e-12 "spot --cone: fraction 3/4"
+run spot --flux 800lm --exponent 1 --cone 200deg --format csv
+expect_rc 2 "spot --cone beyond 180 deg is refused"
 # disk L=1000, R=0.5, h=1: 200 pi = 628.3185307 lx; point = 250 pi, error 0.25
 run disk --luminance 1000cd/m2 --radius 0.5m --distance 1m --format csv
 expect_out_match '^illuminance_lx,point_illuminance_lx,point_error' "disk csv header"
