@@ -133,6 +133,18 @@ void lx__team_join(lx__team *team);
 /* 1 when the CPU has AVX-512 BITALG besides the AVX-512 set (the vector CSV line parser). */
 int lx__cpu_has_bitalg(void);
 
+/* ---- geometry (lambert.c) ---- */
+
+/* The integral of max(0, n . w) dw over the directions w of the polygon v[0..nv-1] (vertices as
+ * vectors from the viewpoint, in order, planar and convex; at most LX__POLY_MAX) seen from the
+ * origin: Lambert's formula on the polygon clipped to n . x >= 0. n: unit. Exact (closed form). */
+#define LX__POLY_MAX 8
+double lx__polygon_projected(const double (*v)[3], int nv, const double n[3]);
+/* Lambert's term of the straight edge a -> b (vectors from the viewpoint): the angle it subtends
+ * times n . (a x b) / |a x b| (0 for a degenerate edge). Half the sum over a closed polygon's
+ * edges is its projected solid angle, with the sign of its orientation. */
+double lx__lambert_edge(const double a[3], const double b[3], const double n[3]);
+
 /* ---- the backend rule (backend.c) ---- */
 
 /* The backend for `work` units of a job whose OpenCL break-even is break_even units on a cold

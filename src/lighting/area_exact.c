@@ -16,46 +16,17 @@ static void cross3(const double a[3], const double b[3], double o[3])
     o[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-/* Lambert's term of the straight edge a -> b (vectors from the receiver): n . (a x b) / |a x b|
- * times the angle the edge subtends. */
-static double edge_term(const double a[3], const double b[3], const double n[3])
-{
-    double c[3];
-    cross3(a, b, c);
-    double s = sqrt(dot3(c, c));
-    if (!(s > 0)) return 0;
-    return atan2(s, dot3(a, b)) * dot3(n, c) / s;
-}
-
 double lx__lambert_rect_E(double L, const double c[3], const double ex[3], const double ey[3], const double m[3],
                           double w, double l, const double q[3], const double n[3])
 {
     double cq[3] = {c[0] - q[0], c[1] - q[1], c[2] - q[2]};
     if (!(dot3(m, cq) < 0)) return 0; /* the receiver is behind the emitter's plane (or in it) */
-    /* the corners as vectors from the receiver, then clipped to n . v >= 0 (Sutherland-Hodgman
-     * against one plane: at most 5 vertices) */
+    /* the corners as vectors from the receiver; lx__polygon_projected clips them to its horizon */
     static const int sx[4] = {1, -1, -1, 1}, sy[4] = {1, 1, -1, -1};
-    double in[4][3], out[8][3], d[4];
-    for (int k = 0; k < 4; k++) {
-        for (int i = 0; i < 3; i++) in[k][i] = cq[i] + 0.5 * (sx[k] * w * ex[i] + sy[k] * l * ey[i]);
-        d[k] = dot3(n, in[k]);
-    }
-    int no = 0;
-    for (int k = 0; k < 4; k++) {
-        int k1 = (k + 1) & 3;
-        if (d[k] >= 0)
-            for (int i = 0; i < 3; i++) out[no][i] = in[k][i];
-        if (d[k] >= 0) no++;
-        if ((d[k] > 0 && d[k1] < 0) || (d[k] < 0 && d[k1] > 0)) {
-            double t = d[k] / (d[k] - d[k1]);
-            for (int i = 0; i < 3; i++) out[no][i] = in[k][i] + t * (in[k1][i] - in[k][i]);
-            no++;
-        }
-    }
-    if (no < 3) return 0;
-    double sum = 0;
-    for (int k = 0; k < no; k++) sum += edge_term(out[k], out[(k + 1) % no], n);
-    return 0.5 * L * fabs(sum);
+    double v[4][3];
+    for (int k = 0; k < 4; k++)
+        for (int i = 0; i < 3; i++) v[k][i] = cq[i] + 0.5 * (sx[k] * w * ex[i] + sy[k] * l * ey[i]);
+    return L * lx__polygon_projected((const double(*)[3])v, 4, n);
 }
 
 /* ---- the disk ---- */
@@ -139,7 +110,7 @@ double lx__lambert_disk_E(double L, const double c[3], const double ex[3], const
             pe[i] = A.cq[i] + cos(hi) * A.u[i] + sin(hi) * A.v[i];
             ps[i] = A.cq[i] + cos(lo) * A.u[i] + sin(lo) * A.v[i];
         }
-        chord = edge_term(pe, ps, n);
+        chord = lx__lambert_edge(pe, ps, n);
     }
     /* tolerance: 1e-14 of a first estimate, but not below the rounding of the integrand's own size
      * (for a distant receiver the contour's terms are larger than their sum by distance / size) */

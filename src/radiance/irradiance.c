@@ -57,10 +57,13 @@ static lx_status run_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n, const dou
             st = lx__irr_brute_cl(ctx, map, n, dirs, out);
             if (!st) o->used = LX_BACKEND_OPENCL;
             /* a failure under auto: the whole result again on the CPU (never a mix of devices) */
-            if (!st || !lx__backend_fallback(ctx, "irradiance", o->backend, st)) return st;
+            if (!st) return lx__irr_horizon_fix(ctx, map, n, dirs, o->threads, out);
+            if (!lx__backend_fallback(ctx, "irradiance", o->backend, st)) return st;
         }
 #endif
-        return lx__irr_brute_cpu(ctx, map, n, dirs, o->threads, out);
+        /* the clamped sum (the kernel's CPU twin), then the pixels the horizon crosses exactly */
+        st = lx__irr_brute_cpu(ctx, map, n, dirs, o->threads, out);
+        return st ? st : lx__irr_horizon_fix(ctx, map, n, dirs, o->threads, out);
     }
     }
     return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown irradiance method %d", (int)o->method);
