@@ -128,7 +128,7 @@ static void accumulate(void *arg, long o0, long o1, int t)
         if (bc->valid && n[2] == bc->nz && fabs(ray.st - bc->st) <= 1e-14) {
             double q = (ray.phin - bc->phin) / z->dphi, k = nearbyint(q);
             reuse = fabs(q - k) < 1e-9;
-            shift = (long)k;
+            shift = reuse ? (long)k : 0;
         }
         if (!reuse) {
             if (n[2] != last_nz || ray.st != last_st) { /* the lit half-widths depend on n_z and st only */

@@ -8,6 +8,10 @@
 #include <math.h>
 #include <stdlib.h>
 
+/* Crossings within this (radians) of a pixel's corner are taken as at the corner: the horizon
+ * crosses there through both edges, and rounding must not lose it from both. */
+#define LX__HZ_EPS 1e-12
+
 lx_status lx__hz_init(lx_ctx *ctx, lx__hz *z, int w, int h)
 {
     z->w = w;
@@ -42,8 +46,11 @@ double lx__hz_alpha(double nz, double st, double s, double c)
     /* on the parallel of sin s, cos c: n . w = A cos(phi - phi_n) + B */
     double A = st * s, B = nz * c;
     if (A <= 0) return B > 0 ? 4 : (B == 0 && st > 0) ? LX__PI / 2 : -1;
+    /* near |q| = 1 the horizon touches the parallel: acos would turn the rounding of q (1e-16) into
+     * a lit or dark arc of 1e-8 rad that is not there (the true one, if any, holds a sliver of area
+     * below 1e-18 sr) */
     double q = -B / A;
-    return q <= -1 ? 4 : q >= 1 ? -1 : acos(q);
+    return q <= -1 + 1e-12 ? 4 : q >= 1 - 1e-12 ? -1 : acos(q);
 }
 
 void lx__hz_ray_init(lx__hz_ray *r, const double n[3], double *alpha, double *tz, unsigned *stamp, unsigned *gen)
@@ -121,13 +128,14 @@ static double parallel(const lx__hz *z, const lx__hz_ray *r, int k, double pa, d
     double sum = 0;
     for (int kk = -1; kk <= 1; kk++) {
         double lo = r->phin + 2 * LX__PI * kk - al, hi = r->phin + 2 * LX__PI * kk + al;
-        if (hi <= pa || lo >= pb) continue;
+        /* an end within rounding of a corner still counts as a crossing (the meridian may miss it) */
+        if (hi < pa - LX__HZ_EPS || lo > pb + LX__HZ_EPS) continue;
         double x = lo, sx = sl, cx = cl, y = hi, sy = sh, cy = ch;
+        if (lo >= pa - LX__HZ_EPS && *np < 8) P[*np][0] = s * cl, P[*np][1] = s * sl, P[*np][2] = c, ++*np;
+        if (hi <= pb + LX__HZ_EPS && *np < 8) P[*np][0] = s * ch, P[*np][1] = s * sh, P[*np][2] = c, ++*np;
         if (lo < pa) x = pa, sx = spa, cx = cpa;
-        else if (*np < 8) P[*np][0] = s * cl, P[*np][1] = s * sl, P[*np][2] = c, ++*np;
         if (hi > pb) y = pb, sy = spb, cy = cpb;
-        else if (*np < 8) P[*np][0] = s * ch, P[*np][1] = s * sh, P[*np][2] = c, ++*np;
-        sum += par_term(r->n, s, c, x, sx, cx, y, sy, cy);
+        if (y > x) sum += par_term(r->n, s, c, x, sx, cx, y, sy, cy);
     }
     return sum;
 }
@@ -152,7 +160,7 @@ static double meridian(const lx__hz *z, const lx__hz_ray *r, int i, double ta, d
         double tz = tc[0];
         if (B > 0) hi = fmin(tb, tz);
         else lo = fmax(ta, tz);
-        if (tz > ta && tz < tb && *np < 8) {
+        if (tz >= ta - LX__HZ_EPS && tz <= tb + LX__HZ_EPS && *np < 8) {
             P[*np][0] = tc[1] * cp;
             P[*np][1] = tc[1] * sp;
             P[*np][2] = tc[2];
@@ -179,7 +187,7 @@ static double horizon_length(const lx__hz *z, const double n[3], double P[][3], 
     for (int k = 0; k < np; k++) {
         int dup = 0;
         for (int q = 0; q < m && !dup; q++)
-            dup = fabs(P[k][0] - P[q][0]) + fabs(P[k][1] - P[q][1]) + fabs(P[k][2] - P[q][2]) < 1e-13;
+            dup = fabs(P[k][0] - P[q][0]) + fabs(P[k][1] - P[q][1]) + fabs(P[k][2] - P[q][2]) < 4 * LX__HZ_EPS;
         if (!dup)
             for (int i = 0; i < 3; i++) P[m][i] = P[k][i];
         m += !dup;
