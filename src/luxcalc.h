@@ -1055,11 +1055,16 @@ LX_API lx_status lx_exr_write(lx_ctx *ctx, const char *path, const lx_envmap *ma
 
 /* Irradiance from radiance (irradiance*.c): E(n) = integral L(omega) max(0, n . omega) d omega. */
 
-/** Irradiance methods (see README "radiance"). */
+/** Irradiance methods (see README "radiance"). FAST and BRUTE are exact for the piecewise-constant
+ * map (every pixel's integral of max(0, n . w) in closed form, the pixels the horizon of n crosses
+ * included); SH9 is an approximation (it rings around small bright sources, and can go negative). */
 typedef enum lx_irr_method {
-    LX_IRR_SH9 = 0,   /* 9 spherical-harmonic coefficients, exact per-pixel basis integrals */
-    LX_IRR_BRUTE = 1, /* every input pixel for every output: sum L_p max(0, n . m_p) (OpenCL or CPU) */
-    LX_IRR_FAST = 2   /* the same sum as BRUTE, by per-row prefix sums: O(rows) per output */
+    LX_IRR_AUTO = 0,  /* FAST, unless its estimated cost for this job is above 10 x SH9's (large
+                       * output maps): then SH9, and opts->method_used says so */
+    LX_IRR_FAST = 1,  /* exact: per-row prefix sums for the wholly lit pixels, the crossed ones in
+                       * closed form: O(rows + crossed pixels) per output */
+    LX_IRR_SH9 = 2,   /* 9 spherical-harmonic coefficients, exact per-pixel basis integrals; approximate */
+    LX_IRR_BRUTE = 3  /* exact, every input pixel for every output (OpenCL or CPU) */
 } lx_irr_method;
 
 /** SH9 windows applied to bands l = 0, 1, 2. */
@@ -1075,7 +1080,16 @@ typedef struct lx_irr_opts {
     lx_backend backend;      /* BRUTE only: AUTO uses OpenCL when the work is large, CPU otherwise */
     int threads;             /* CPU threads; 0 = every online core */
     lx_backend used;         /* OUT: where BRUTE ran (CPU for the other methods) */
+    lx_irr_method method_used; /* OUT: the method that ran (AUTO resolved) */
+    double fast_cost_ratio;  /* OUT: the estimated cost of FAST over SH9's for this job (AUTO's rule) */
 } lx_irr_opts;
+
+/** How concentrated a map's power is: of the integral of its luminance (Y) over the sphere,
+ * *fraction is carried by the brightest pixels whose solid angles add up to at most max_sr, and
+ * *pixels is how many they are (the basis of SH9's warning: its error reaches 3/32 of a small
+ * source's power). A map without light gives 0 and 0. */
+LX_API lx_status lx_envmap_concentration(lx_ctx *ctx, const lx_envmap *map, double max_sr, double *fraction,
+                                         size_t *pixels);
 
 /** Spherical-harmonic coefficients L_lm of a map (l <= 2, index l^2 + l + m, real orthonormal
  * basis of Ramamoorthi and Hanrahan 2001), per channel. */
@@ -1093,13 +1107,13 @@ LX_API lx_status lx_sh9_project(lx_ctx *ctx, const lx_envmap *map, lx_sh9 *out);
 LX_API lx_status lx_sh9_irradiance(lx_ctx *ctx, const lx_sh9 *sh, lx_sh9_window window, const double n[3], double *out);
 
 /** Irradiance for n_dirs normals (3 doubles each) into out (n_dirs * map->channels doubles, in
- * the map's unit times sr: W/m2 for RADIANCE maps). opts may be NULL (SH9). */
+ * the map's unit times sr: W/m2 for RADIANCE maps). opts may be NULL (AUTO). */
 LX_API lx_status lx_irradiance_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const double *dirs,
                                     lx_irr_opts *opts, double *out);
 
 /** Irradiance environment map: E at the pixel centre directions of a width x height map in the
  * input's layout (the input's size when both are 0; a cube input needs height = 6 width). *out is a new map with the input's channels,
- * weights and units. opts may be NULL (SH9). */
+ * weights and units. opts may be NULL (AUTO). */
 LX_API lx_status lx_irradiance_map(lx_ctx *ctx, const lx_envmap *map, int width, int height,
                                    lx_irr_opts *opts, lx_envmap **out);
 
