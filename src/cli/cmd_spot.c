@@ -90,7 +90,7 @@ int cmd_spot(int argc, char **argv)
         static const char *const names[] = {"peak_intensity_cd", "intensity_cd", "illuminance_lx", "exponent",
                                             "beam_angle_deg", "cone_half_angle_deg", "cone_flux_lm", "cone_fraction"};
         static const char *const units[] = {"cd", "cd", "lx", "", "deg", "deg", "lm", ""};
-        const double vals[] = {peak, i, e, s, bm / LT_DEG, ca / LT_DEG, cf, cfr};
+        const double vals[] = {peak, i, e, s, beam ? lt_echo(bm / LT_DEG) : bm / LT_DEG, cone ? lt_echo(ca / LT_DEG) : NAN, cf, cfr};
         rc = lt_emit_nums(&co, cone ? 8 : 5, names, units, vals);
     }
     lx_ctx_destroy(ctx);

@@ -149,9 +149,10 @@ void cli_cct_reason(lx_ctx *ctx, const lx_colorimetry *c, lx_observer obs, char 
     else snprintf(buf, size, "the CCT solves to %.6g K, outside 1000-100000 K", T);
 }
 
-void cli_metrics_row(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const lx_spd *spd, lx_method method,
-                     const char *unit, const lx_colorimetry *c, const char *file, long line, const char *cmd)
+int cli_metrics_row(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const lx_spd *spd, lx_method method,
+                    const char *unit, const lx_colorimetry *c, const char *file, long line, const char *cmd)
 {
+    int bad = 0;
     build();
     int need = 0;
     for (int i = 0; i < ncols; i++)
@@ -179,9 +180,10 @@ void cli_metrics_row(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const lx_s
                       label);
     }
     if ((need & G_MES)) {
-        /* only luminance is meaningful here: L_p = Y, L_s with K'm = 1699 lm/W as CIE 191 uses */
+        /* only luminance is meaningful here: L_p = Y, L_s with K'm = 1699 lm/W as CIE 191 uses
+         * (the ratio first: scotopic_Y near the top of the double range times 1699 would overflow) */
         if (!strcmp(unit, "W/sr/m2/nm")) {
-            have_mes = lx_mesopic_luminance(ctx, c->Y, c->scotopic_Y * 1699.0 / 1700.06, &lmes, &mm) == LX_OK;
+            have_mes = lx_mesopic_luminance(ctx, c->Y, c->scotopic_Y * (1699.0 / 1700.06), &lmes, &mm) == LX_OK;
             if (!have_mes && say)
                 cli_error(cmd, "%s:%ld: spectrum '%s': mesopic columns empty: %s", file, line, label, lx_ctx_errmsg(ctx));
         } else if (say) {
@@ -224,7 +226,21 @@ void cli_metrics_row(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const lx_s
         case K_MES_L: if (have_mes) v = lmes; break;
         case K_MES_M: if (have_mes) v = mm; break;
         }
+        /* a metric its group computed must be a number: a NaN or infinity is reported, never a
+         * silent blank (the undefined ones were reported above, with their reason) */
+        int computed = (cols[i].group == G_CRI && have_cri) || (cols[i].group == G_TM30 && have_tm) ||
+                       (cols[i].group == G_AO && have_ao) || (cols[i].group == G_MES && have_mes);
+        /* the empties explained above: Rg and the hue bins with no sample, DER without light */
+        int k = cols[i].kind;
+        if (have_tm && (k == K_RG || k == K_RF_H || k == K_RCS_H || k == K_RHS_H) && isnan(tm->rg) && isnan(v)) computed = 0;
+        if (have_ao && (k == K_MEL_DER || k == K_AO_DER) && !(ao.illuminance != 0)) computed = 0;
+        if (computed && !isfinite(v)) {
+            cli_error(cmd, "%s:%ld: spectrum '%s': %s is not finite (%s)", file, line, label, cols[i].name,
+                      isnan(v) ? "NaN" : "infinite");
+            bad++;
+        }
         cli_table_num(t, v);
     }
     free(tm);
+    return bad;
 }

@@ -213,6 +213,7 @@ static lx_status cri_cct(lx_ctx *ctx, double ut, double vt, double Yt, double *T
 
 lx_status lx_cri_compute(lx_ctx *ctx, const lx_spd *spd, lx_cri *out)
 {
+    LX__NEED_CTX(ctx);
     if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "CRI: output is NULL");
     lx_status st = lx_spd_check(ctx, spd);
     if (st != LX_OK) return st;

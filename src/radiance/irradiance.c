@@ -37,7 +37,7 @@ static lx_status check_map(lx_ctx *ctx, const lx_envmap *map)
  * of one row step of FAST (a prefix-sum difference per channel, 35-50 ns measured): FAST per output
  * H steps plus its crossed pixels (about W + 3H, 3 steps each to integrate, a tenth of a step to add
  * when a lat-long output row reuses them), SH9 0.2 steps per input pixel to project (9 ns measured)
- * and 2 per output. The ratio is kept in opts->fast_cost_ratio. */
+ * and 2 per output. The ratio is kept on the context (lx_ctx_irradiance_method). */
 #define AUTO_RATIO 10.0
 static double fast_over_sh9(const lx_envmap *map, double n_out, double n_rows_reuse)
 {
@@ -50,17 +50,32 @@ static double fast_over_sh9(const lx_envmap *map, double n_out, double n_rows_re
     return fast / sh9;
 }
 
-static void resolve_auto(lx_irr_opts *o, const lx_envmap *map, double n_out, double n_rows_reuse)
+/* The method that runs: o->method, AUTO resolved by the cost rule (its estimate into *ratio). */
+static lx_irr_method resolve(const lx_irr_opts *o, const lx_envmap *map, double n_out, double n_rows_reuse, double *ratio)
 {
-    o->fast_cost_ratio = fast_over_sh9(map, n_out, n_rows_reuse);
-    o->method_used = o->method == LX_IRR_AUTO ? (o->fast_cost_ratio <= AUTO_RATIO ? LX_IRR_FAST : LX_IRR_SH9) : o->method;
+    *ratio = fast_over_sh9(map, n_out, n_rows_reuse);
+    return o->method == LX_IRR_AUTO ? (*ratio <= AUTO_RATIO ? LX_IRR_FAST : LX_IRR_SH9) : o->method;
 }
 
-static lx_status run_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n, const double *dirs, lx_irr_opts *o,
-                          double *out)
+lx_irr_method lx_ctx_irradiance_method(const lx_ctx *ctx, double *fast_cost_ratio)
 {
-    o->used = LX_BACKEND_CPU;
-    switch (o->method_used) {
+    if (fast_cost_ratio) *fast_cost_ratio = ctx ? ctx->irr_fast_cost_ratio : NAN;
+    return ctx ? ctx->irr_method : LX_IRR_AUTO;
+}
+
+static lx_status check_method(lx_ctx *ctx, const lx_irr_opts *o)
+{
+    if ((int)o->method < LX_IRR_SH9 || o->method > LX_IRR_AUTO)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown irradiance method %d", (int)o->method);
+    return LX_OK;
+}
+
+/* The irradiance for n unit normals by method (resolved); *used: where the work ran. */
+static lx_status run_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n, const double *dirs, const lx_irr_opts *o,
+                          lx_irr_method method, double *out, lx_backend *used)
+{
+    *used = LX_BACKEND_CPU;
+    switch (method) {
     case LX_IRR_SH9: {
         lx_sh9 sh;
         lx_status st = lx_sh9_project(ctx, map, &sh);
@@ -79,7 +94,7 @@ static lx_status run_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n, const dou
 #if LX_OPENCL
         if (b == LX_BACKEND_OPENCL) {
             st = lx__irr_brute_cl(ctx, map, n, dirs, out);
-            if (!st) o->used = LX_BACKEND_OPENCL;
+            if (!st) *used = LX_BACKEND_OPENCL;
             /* a failure under auto: the whole result again on the CPU (never a mix of devices) */
             if (!st) return lx__irr_horizon_fix(ctx, map, n, dirs, o->threads, out);
             if (!lx__backend_fallback(ctx, "irradiance", o->backend, st)) return st;
@@ -91,17 +106,22 @@ static lx_status run_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n, const dou
     }
     default: break;
     }
-    return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown irradiance method %d", (int)o->method);
+    return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown irradiance method %d", (int)method);
 }
 
-lx_status lx_irradiance_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const double *dirs, lx_irr_opts *opts,
-                             double *out)
+lx_status lx_irradiance_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const double *dirs,
+                             const lx_irr_opts *opts, double *out)
 {
+    LX__NEED_CTX(ctx);
     lx_status st = check_map(ctx, map);
     if (st) return st;
     if ((!dirs || !out) && n_dirs) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_irradiance_dirs: NULL argument");
-    lx_irr_opts local = {0};
-    lx_irr_opts *o = opts ? opts : &local;
+    const lx_irr_opts local = {0};
+    const lx_irr_opts *o = opts ? opts : &local;
+    if ((st = lx__check_reserved(ctx, "irradiance options", o->reserved, sizeof o->reserved))) return st;
+    if ((st = check_method(ctx, o))) return st;
+    double ratio;
+    lx_irr_method method = resolve(o, map, (double)n_dirs, 0, &ratio);
     double *nd = malloc((n_dirs ? n_dirs : 1) * 3 * sizeof *nd);
     double *res = malloc((n_dirs ? n_dirs : 1) * map->channels * sizeof *res);
     if (!nd || !res) {
@@ -117,38 +137,44 @@ lx_status lx_irradiance_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, c
                            d[1], d[2]);
         for (int c = 0; c < 3; c++) nd[3 * k + c] = d[c] / len;
     }
-    if ((int)o->method < LX_IRR_AUTO || o->method > LX_IRR_BRUTE)
-        st = lx__error(ctx, LX_EINVAL, NULL, 0, "unknown irradiance method %d", (int)o->method);
-    resolve_auto(o, map, (double)n_dirs, 0);
-    if (!st) st = run_dirs(ctx, map, n_dirs, nd, o, res);
-    if (!st) memcpy(out, res, n_dirs * map->channels * sizeof *out);
+    lx_backend used = LX_BACKEND_CPU;
+    if (!st) st = run_dirs(ctx, map, n_dirs, nd, o, method, res, &used);
+    if (!st) {
+        memcpy(out, res, n_dirs * map->channels * sizeof *out);
+        lx__backend_used(ctx, used);
+        ctx->irr_method = method;
+        ctx->irr_fast_cost_ratio = ratio;
+    }
     free(nd);
     free(res);
     return st;
 }
 
-lx_status lx_irradiance_map(lx_ctx *ctx, const lx_envmap *map, int width, int height, lx_irr_opts *opts,
+lx_status lx_irradiance_map(lx_ctx *ctx, const lx_envmap *map, int width, int height, const lx_irr_opts *opts,
                             lx_envmap **out)
 {
-    lx_irr_opts local = {0};
-    lx_irr_opts *o = opts ? opts : &local;
-    if ((int)o->method < LX_IRR_AUTO || o->method > LX_IRR_BRUTE)
-        return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown irradiance method %d", (int)o->method);
-    lx_status st = check_shape(ctx, map);
-    if (st) return st;
+    LX__NEED_CTX(ctx);
     if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_irradiance_map: NULL output");
     *out = NULL;
+    const lx_irr_opts local = {0};
+    const lx_irr_opts *o = opts ? opts : &local;
+    lx_backend used = LX_BACKEND_CPU;
+    lx_status st = check_shape(ctx, map);
+    if (st) return st;
+    if ((st = lx__check_reserved(ctx, "irradiance options", o->reserved, sizeof o->reserved))) return st;
+    if ((st = check_method(ctx, o))) return st;
     if (width == 0 && height == 0) {
         width = map->width;
         height = map->height;
     }
-    /* a lat-long output whose width divides the input's: FAST integrates each output row's
-     * crossed pixels once */
+    /* a lat-long output whose width divides the input's: FAST integrates each output row's crossed
+     * pixels once */
     int reuse = map->layout == LX_ENV_LATLONG && width > 0 && map->width % width == 0;
-    resolve_auto(o, map, (double)width * height, reuse ? height : 0);
+    double ratio;
+    lx_irr_method method = resolve(o, map, (double)width * height, reuse ? height : 0, &ratio);
     /* SH9 on a lat-long map checks the pixels after the projection: a non-finite pixel makes the
      * coefficients non-finite, and only then is the map scanned for it (saves a pass) */
-    int lazy = o->method_used == LX_IRR_SH9 && map->layout == LX_ENV_LATLONG;
+    int lazy = method == LX_IRR_SH9 && map->layout == LX_ENV_LATLONG;
     if (!lazy && (st = check_map(ctx, map))) return st;
     if (map->layout == LX_ENV_CUBE && (width < 1 || height != 6 * width))
         return lx__error(ctx, LX_EINVAL, NULL, 0, "a cube map's irradiance map is a cube map: size %dx%d is not N x 6N",
@@ -162,9 +188,9 @@ lx_status lx_irradiance_map(lx_ctx *ctx, const lx_envmap *map, int width, int he
     m->has_chromaticities = map->has_chromaticities;
     m->units = map->units;
     m->lum_per_unit = map->lum_per_unit;
-    if (o->method_used == LX_IRR_SH9 && map->layout == LX_ENV_LATLONG) {
+    m->irradiance = 1;
+    if (method == LX_IRR_SH9 && map->layout == LX_ENV_LATLONG) {
         lx_sh9 sh;
-        o->used = LX_BACKEND_CPU;
         st = lx_sh9_project(ctx, map, &sh);
         for (int k = 0; k < 9 && !st; k++)
             for (int c = 0; c < map->channels && !st; c++)
@@ -179,13 +205,19 @@ lx_status lx_irradiance_map(lx_ctx *ctx, const lx_envmap *map, int width, int he
         if (!dirs || !res) st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for a %dx%d map", width, height);
         for (size_t k = 0; k < n && !st; k++)
             lx_envmap_texel_direction(m, (int)(k / width), (int)(k % width), dirs + 3 * k);
-        if (!st) st = run_dirs(ctx, map, n, dirs, o, res);
+        if (!st) st = run_dirs(ctx, map, n, dirs, o, method, res, &used);
         for (size_t k = 0; k < n * map->channels && !st; k++) m->data[k] = (float)res[k];
         free(dirs);
         free(res);
     }
-    if (st) lx_envmap_free(m);
-    else *out = m;
+    if (st) {
+        lx_envmap_free(m);
+    } else {
+        *out = m;
+        lx__backend_used(ctx, used);
+        ctx->irr_method = method;
+        ctx->irr_fast_cost_ratio = ratio;
+    }
     return st;
 }
 
@@ -215,6 +247,7 @@ static conc_px pixel_at(const lx_envmap *m, size_t p)
 
 lx_status lx_envmap_concentration(lx_ctx *ctx, const lx_envmap *map, double max_sr, double *fraction, size_t *pixels)
 {
+    LX__NEED_CTX(ctx);
     if (!fraction || !pixels) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_envmap_concentration: NULL output");
     lx_status st = check_map(ctx, map);
     if (st) return st;
