@@ -354,3 +354,49 @@ lx_status lx__irr_horizon_fix(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, 
     lx__llgeom_free(&g);
     return st;
 }
+
+lx_status lx__irr_rows_exact(lx_ctx *ctx, int w, int h, const double *L, int rows, const double n[3], double *sum)
+{
+    lx__llgeom g;
+    lx__hz z;
+    lx_status st = lx__llgeom_init(ctx, &g, w, h);
+    if (st) return st;
+    if ((st = lx__hz_init(ctx, &z, w, h))) {
+        lx__llgeom_free(&g);
+        return st;
+    }
+    double *al = malloc(LX__HZ_RAY_SCRATCH(w, h) * sizeof *al);
+    unsigned char *crossed = malloc((size_t)w);
+    if (!al || !crossed) {
+        st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    } else {
+        double *tz = al + 3 * ((size_t)h + 1);
+        unsigned *stamp = (unsigned *)(tz + 3 * ((size_t)w + 1)), gen = 0;
+        for (int i = 0; i <= w; i++) stamp[i] = 0;
+        lx__hz_ray r;
+        lx__hz_ray_init(&r, n, al, tz, stamp, &gen);
+        lx__hz_ray_rows(&r, &z, 0, h);
+        double s = 0;
+        for (int j = 0; j < rows && j < h; j++) {
+            long in_lo = 0, in_hi = 0, out_lo = 0, out_hi = 0;
+            int kind = lx__hz_row(w, z.dphi, r.phin, al[j], al[j + 1], &in_lo, &in_hi, &out_lo, &out_hi);
+            if (kind == LX__HZ_DARK) continue;
+            for (int i = 0; i < w; i++) crossed[i] = 0;
+            if (kind == LX__HZ_RANGES)
+                for (int part = 0; part < 2; part++)
+                    for (long k = part ? in_hi : out_lo, k1 = part ? out_hi : in_lo; k < k1; k++) crossed[((k % w) + w) % w] = 1;
+            double a = g.row_s2[j], b = n[2] * g.row_sc[j] * g.dphi;
+            for (int i = 0; i < w; i++) {
+                double v = a * (n[0] * g.col_gx[i] + n[1] * g.col_gy[i]) + b; /* n . the pixel's first moment */
+                if (crossed[i]) v = lx__hz_pixel(&z, &g, &r, j, i, r.st == 0);
+                if (v > 0) s += L[(size_t)j * w + i] * v;
+            }
+        }
+        *sum = s;
+    }
+    free(al);
+    free(crossed);
+    lx__hz_free(&z);
+    lx__llgeom_free(&g);
+    return st;
+}

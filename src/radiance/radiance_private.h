@@ -61,6 +61,9 @@ void lx__hz_ray_rows(lx__hz_ray *r, const lx__hz *z, int k0, int k1);
  * the pixel is wholly lit or dark (for EACH rows; RANGES rows vouch for their crossed pixels). */
 double lx__hz_pixel(const lx__hz *z, const lx__llgeom *g, const lx__hz_ray *r, int j, int i, int check);
 
+/* sum over the rows 0 .. rows - 1 of a w x h lat-long map of L (one double per pixel) times the
+ * exact integral of max(0, n . w) over each pixel (n unit): the scene's EXR sky. */
+lx_status lx__irr_rows_exact(lx_ctx *ctx, int w, int h, const double *L, int rows, const double n[3], double *sum);
 /* Makes a clamped sum exact: adds to out (n_dirs x channels) the difference between the exact
  * integral of max(0, n . w) and max(0, n . m_p), times L_p, over the pixels each normal's horizon
  * crosses (brute force on the CPU and on OpenCL). */
