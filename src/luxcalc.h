@@ -750,7 +750,8 @@ LX_API lx_status lx_radiometric_convert(lx_ctx *ctx, double value_si, lx_quantit
 /* ============================================================================================ */
 
 /* Sources (sources.c). Distances in m, angles in rad, luminance in cd/m2. Errors of every function
- * here: LX_EINVAL for a distance or size that is zero, negative or not finite (never infinity), a
+ * here: LX_EINVAL for a distance or size that is zero, negative or not finite (never infinity;
+ * except the height of a receiver over a disk or rectangle, where 0 is the coplanar limit), a
  * flux, intensity or luminance that is negative or not finite, a NULL output; LX_ERANGE when the
  * result overflows. Receivers facing away get 0 (not an error). */
 
@@ -772,6 +773,13 @@ LX_API lx_status lx_warn_intensity(lx_ctx *ctx, double flux_lm, double exponent,
  * Thread-safe. */
 LX_API double lx_warn_lobe(double exponent, double angle_rad);
 
+/** The flux of a Warn spotlight (flux F, exponent S >= 0) within the cone of half-angle a about
+ * its axis (0 to pi): F (1 - cos^(S+1) a) for a < pi/2, F beyond; *fraction the same over F.
+ * Either output may be NULL (not both). Accurate for small a and large S (expm1, log1p). Errors:
+ * LX_EINVAL (a half-angle outside 0 to pi, a negative exponent or flux, both outputs NULL). */
+LX_API lx_status lx_warn_cone_flux(lx_ctx *ctx, double flux_lm, double exponent, double half_angle_rad,
+                                   double *cone_flux_lm, double *fraction);
+
 /** Warn exponent whose full beam angle (where I = I_peak / 2) is beam_rad, and back. Errors:
  * LX_EINVAL (a beam angle outside (0, pi), an exponent that is not positive). */
 LX_API lx_status lx_warn_exponent_from_beam(lx_ctx *ctx, double beam_rad, double *exponent);
@@ -779,9 +787,13 @@ LX_API lx_status lx_warn_beam_from_exponent(lx_ctx *ctx, double exponent, double
 
 /** Which model an extended source is evaluated with. */
 typedef enum lx_model {
-    LX_MODEL_AUTO = 0,  /* exact when distance < 5 x the source's largest dimension, else point */
+    LX_MODEL_AUTO = 0,  /* disk, rect: the closed form (exact whenever one exists); grids and scenes:
+                         * the point model where its estimated error meets the tolerance, else the
+                         * luminous area integrated (README "Accuracy by default") */
     LX_MODEL_POINT = 1, /* point source at the centre, I(theta) = L A cos(theta) */
-    LX_MODEL_EXACT = 2  /* closed-form configuration factor, E = pi L F */
+    LX_MODEL_EXACT = 2, /* closed-form configuration factor, E = pi L F */
+    LX_MODEL_AREA = 3   /* grids: every pair integrated over the luminous opening (to nearfield_tol);
+                         * disk, rect: the same as EXACT */
 } lx_model;
 
 /** The illuminance of an extended Lambertian source on a parallel receiver. */
@@ -794,16 +806,19 @@ typedef struct lx_source_result {
                                   * adaptive quadrature: its estimate) */
     double distance_m;           /* centre of the source to the receiver */
     double largest_dimension_m;  /* disk: diameter; rectangle: diagonal */
-    int near_field;              /* 1 when distance_m < 5 x largest_dimension_m */
-    lx_model model;              /* LX_MODEL_POINT or LX_MODEL_EXACT, never AUTO */
+    int near_field;              /* 1 when the point model errs by more than 1e-4 relative (the grids'
+                                  * default near-field tolerance), or is undefined */
+    lx_model model;              /* LX_MODEL_POINT or LX_MODEL_EXACT (what AUTO and AREA give), never AUTO */
     long long reserved[4];       /* zero: room for later results (ABI policy) */
 } lx_source_result;
 
 /** Lambertian disk of luminance L and radius R; receiver parallel to it at height h, offset r
  * from the axis. Exact: configuration factor of a parallel differential element to a disk,
  * F = (1/2)[1 - (h^2 + r^2 - R^2) / sqrt((h^2 + r^2 + R^2)^2 - 4 r^2 R^2)], rewritten so no
- * subtraction cancels (see sources.c). Point: E = L pi R^2 h^2 / (h^2 + r^2)^2. Errors: as above,
- * and LX_EINVAL for an unknown model or an offset that is not finite. */
+ * subtraction cancels (see sources.c). Point: E = L pi R^2 h^2 / (h^2 + r^2)^2. AUTO reports the
+ * exact value (the point model is beside it). h = 0 is the coplanar limit h -> 0+: pi L on the
+ * disk, pi L / 2 on its rim, 0 outside (the point model is then 0, NaN at the centre). Errors: as
+ * above, and LX_EINVAL for an unknown model or an offset that is not finite. */
 LX_API lx_status lx_disk_illuminance(lx_ctx *ctx, double luminance_cd_m2, double radius_m,
                                      double height_m, double offset_m, lx_model model,
                                      lx_source_result *out);
@@ -811,8 +826,9 @@ LX_API lx_status lx_disk_illuminance(lx_ctx *ctx, double luminance_cd_m2, double
 /** Lambertian rectangle width a (along x) x length b (along y) of luminance L; receiver parallel
  * at height h, its foot at (x, y) from the rectangle's centre (a corner is (a/2, b/2)). Exact: the
  * corner configuration factor (Howell's catalogue, case B-3) superposed over four corner
- * rectangles with signs. Point: E = L a b h^2 / (h^2 + x^2 + y^2)^2. Errors: as above, and
- * LX_EINVAL for an unknown model or x, y not finite. */
+ * rectangles with signs. Point: E = L a b h^2 / (h^2 + x^2 + y^2)^2. AUTO reports the exact value.
+ * h = 0 is the coplanar limit: pi L inside, pi L / 2 on an edge, pi L / 4 at a corner, 0 outside.
+ * Errors: as above, and LX_EINVAL for an unknown model or x, y not finite. */
 LX_API lx_status lx_rect_illuminance(lx_ctx *ctx, double luminance_cd_m2, double width_m,
                                      double length_m, double height_m, double x_m, double y_m,
                                      lx_model model, lx_source_result *out);
@@ -922,8 +938,9 @@ typedef struct lx_luminaire {
     double ballast_lamp_factor;/* LM-63 <= 1995: applied; 2002: future use, ignored; 2019: NaN */
     int file_generation_type;  /* LM-63-2019 only (the field older versions call ballast-lamp factor), else 0 */
     double input_watts;
-    double width_m, length_m, height_m; /* luminous opening: width along C0-C180, length along
-                                * C90-C270 (negative IES values: circular, see lx_luminaire_size) */
+    double width_m, length_m, height_m; /* luminous opening as LM-63 and EULUMDAT define it: width
+                                * along the C90-C270 plane, length along C0-C180; negative width and
+                                * length (IES) mean a circle of that diameter (EULUMDAT width 0 is read so) */
     int tilt_include;          /* 1 when a TILT= table was given (INCLUDE or a file) */
     int tilt_geometry;         /* lamp-to-luminaire geometry 1, 2 or 3 */
     size_t n_tilt;
@@ -997,7 +1014,7 @@ typedef struct lx_lum_model {
     lx_lum_model_kind kind;
     double flux_lm;           /* > 0 */
     double exponent;          /* Warn S >= 0 */
-    double width_m, length_m; /* luminous opening (0: a point); width along C0 */
+    double width_m, length_m; /* luminous opening (0: a point); width along C90-C270, length along C0-C180 */
     double step_deg;          /* gamma step of the table (0: 1 deg for point/Lambert, finer for narrow spots) */
     const char *catalog;      /* [LUMCAT] text (NULL: a description of the model), copied */
     long long reserved[4];    /* zero: room for later options (ABI policy) */
@@ -1055,9 +1072,15 @@ LX_API lx_status lx_plane_cells(lx_ctx *ctx, char axis, double level_m, double a
 /** Options of lx_grid_illuminance (zero-initialise for defaults; ABI policy: reserved stays zero).
  * The backend that did the work is lx_ctx_backend_used(ctx) afterwards. */
 typedef struct lx_grid_opts {
-    lx_model model;           /* LX_MODEL_POINT (default 0 = AUTO: where the point is closer than
-                               * 5 x the opening's largest dimension, integrate over the luminous
-                               * area to nearfield_tol; ctx counters nearfield_pairs/_subdivisions) */
+    lx_model model;           /* default 0 = AUTO: each pair of a luminaire with a luminous opening
+                               * and a point is probed (13 point evaluations over the opening estimate
+                               * the point model's error); the point model is kept where the summed
+                               * estimates at the point stay within nearfield_tol / 2 of its
+                               * illuminance, else the opening is integrated to nearfield_tol (and
+                               * where the probes cannot vouch: a beam cut-off or the receiver's
+                               * horizon across the opening, or closer than its size). POINT: every
+                               * luminaire a point; AREA: every pair integrated. ctx counters
+                               * nearfield_probes, nearfield_pairs, nearfield_subdivisions */
     lx_interp interp;         /* default bilinear */
     double maintenance_factor;/* 0 means 1 */
     lx_backend backend;       /* OpenCL runs LX_INTERP_TABLE only; AUTO (also LX_BACKEND) picks it
@@ -1065,8 +1088,9 @@ typedef struct lx_grid_opts {
     int threads;              /* CPU threads; 0 = every online core */
     int table_n;              /* LX_INTERP_TABLE: rows per hemisphere, 2 to 16384 (0: 1024) */
     int fp32;                 /* OpenCL: 1 computes in float (else double where the device has it) */
-    double nearfield_tol;     /* AUTO: relative change of the Richardson-extrapolated area sum at
-                               * which refinement stops (0: 1e-4; 1e-12 to 0.1) */
+    double nearfield_tol;     /* the relative tolerance of each point's illuminance (0: 1e-4; 1e-12
+                               * to 0.1): the point model's budget (AUTO) and the convergence of the
+                               * Richardson-extrapolated area sums */
     long long reserved[4];    /* zero: room for later options */
 } lx_grid_opts;
 
@@ -1296,11 +1320,18 @@ LX_API lx_status lx_envmap_write_exr(lx_ctx *ctx, const char *path, const lx_env
 
 /* Irradiance from radiance (irradiance*.c): E(n) = integral L(omega) max(0, n . omega) d omega. */
 
-/** Irradiance methods (see README "radiance"). */
+/** Irradiance methods (see README "radiance"). FAST and BRUTE are exact for the piecewise-constant
+ * map (every pixel's integral of max(0, n . w) in closed form, the pixels the horizon of n crosses
+ * included); SH9 is an approximation. Zero (the options' default, kept for the ABI) is SH9; the CLI
+ * defaults to AUTO. */
 typedef enum lx_irr_method {
-    LX_IRR_SH9 = 0,   /* 9 spherical-harmonic coefficients, exact per-pixel basis integrals */
-    LX_IRR_BRUTE = 1, /* every input pixel for every output: sum L_p max(0, n . m_p) (OpenCL or CPU) */
-    LX_IRR_FAST = 2   /* the same sum as BRUTE, by per-row prefix sums: O(rows) per output */
+    LX_IRR_SH9 = 0,   /* 9 spherical-harmonic coefficients, exact per-pixel basis integrals; approximate:
+                       * rings around small bright sources (3/32 of their power) and can go negative */
+    LX_IRR_BRUTE = 1, /* exact, every input pixel for every output (OpenCL or CPU) */
+    LX_IRR_FAST = 2,  /* exact, the same integral as BRUTE: per-row prefix sums for the wholly lit
+                       * pixels, the crossed ones in closed form: O(rows + crossed pixels) per output */
+    LX_IRR_AUTO = 3   /* FAST, unless its estimated cost for the job is above 10 x SH9's (large
+                       * output maps): then SH9 (lx_ctx_irradiance_method says which ran) */
 } lx_irr_method;
 
 /** SH9 windows applied to bands l = 0, 1, 2. */
@@ -1319,6 +1350,19 @@ typedef struct lx_irr_opts {
     int threads;             /* CPU threads; 0 = every online core */
     long long reserved[4];   /* zero: room for later options */
 } lx_irr_opts;
+
+/** The irradiance method that ran in the last successful lx_irradiance_dirs or lx_irradiance_map on
+ * this context (LX_IRR_AUTO resolved to FAST or SH9; LX_IRR_AUTO before any), and in
+ * *fast_cost_ratio (may be NULL) AUTO's estimate of FAST's cost over SH9's for that job. NULL
+ * context: LX_IRR_AUTO and NaN. */
+LX_API lx_irr_method lx_ctx_irradiance_method(const lx_ctx *ctx, double *fast_cost_ratio);
+
+/** How concentrated a map's power is: of the integral of its luminance (Y) over the sphere,
+ * *fraction is carried by the brightest pixels whose solid angles add up to at most max_sr, and
+ * *pixels is how many they are (the basis of SH9's warning: its error reaches 3/32 of a small
+ * source's power). A map without light gives 0 and 0. */
+LX_API lx_status lx_envmap_concentration(lx_ctx *ctx, const lx_envmap *map, double max_sr, double *fraction,
+                                         size_t *pixels);
 
 /** Spherical-harmonic coefficients L_lm of a map (l <= 2, index l^2 + l + m, real orthonormal
  * basis of Ramamoorthi and Hanrahan 2001), per channel, in the map's unit. A value (ABI policy:
@@ -1339,17 +1383,19 @@ LX_API lx_status lx_sh9_project(lx_ctx *ctx, const lx_envmap *map, lx_sh9 *out);
 LX_API lx_status lx_sh9_irradiance(lx_ctx *ctx, const lx_sh9 *sh, lx_sh9_window window, const double n[3], double *out);
 
 /** Irradiance for n_dirs normals (3 doubles each) into out (n_dirs * map->channels doubles, the
- * caller's, in the map's unit times sr: W/m2 for RADIANCE maps). opts may be NULL (SH9). Errors:
- * LX_EINVAL (an invalid map, a non-finite pixel, a zero or non-finite normal, an unknown method),
- * LX_EUNSUPPORTED and LX_EDEVICE as for lx_batch_integrate (BRUTE with OPENCL asked). */
+ * caller's, in the map's unit times sr: W/m2 for RADIANCE maps). opts may be NULL (SH9, the zero
+ * value; the CLI passes LX_IRR_AUTO). The method that ran is lx_ctx_irradiance_method(ctx) after
+ * the call. Errors: LX_EINVAL (an invalid map, a non-finite pixel, a zero or non-finite normal, an
+ * unknown method), LX_EUNSUPPORTED and LX_EDEVICE as for lx_batch_integrate (BRUTE with OPENCL
+ * asked). */
 LX_API lx_status lx_irradiance_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const double *dirs,
                                     const lx_irr_opts *opts, double *out);
 
 /** Irradiance environment map: E at the pixel centre directions of a width x height map in the
  * input's layout (the input's size when both are 0; a cube input needs height = 6 width). *out is a
  * new map with the input's channels, weights and units, which the caller frees with lx_envmap_free
- * (NULL on failure). opts may be NULL (SH9). Errors: as lx_irradiance_dirs, and LX_EINVAL for a
- * size that does not fit the layout. */
+ * (NULL on failure). opts may be NULL (SH9, the zero value; the CLI passes LX_IRR_AUTO). Errors: as
+ * lx_irradiance_dirs, and LX_EINVAL for a size that does not fit the layout. */
 LX_API lx_status lx_irradiance_map(lx_ctx *ctx, const lx_envmap *map, int width, int height,
                                    const lx_irr_opts *opts, lx_envmap **out);
 
@@ -1538,7 +1584,10 @@ typedef struct lx_counters {
     unsigned long long environment_samples;    /* numerical sky samples (quadrature nodes, map pixels) */
     unsigned long long spectra_integrated;     /* spectrum integrations (colorimetry, alpha-opic: one each per source) */
     unsigned long long kernel_launches;        /* OpenCL batches run by scene evaluation (each >= 1 kernel launch) */
-    unsigned long long reserved[4];            /* zero: room for later counters (ABI policy) */
+    unsigned long long nearfield_probes;       /* pairs whose point-model error was estimated (13 point
+                                                * evaluations each: the near-field decision) */
+    unsigned long long closed_form_evaluations;/* disk and rectangle luminaires evaluated in closed form */
+    unsigned long long reserved[2];            /* zero: room for later counters (ABI policy) */
 } lx_counters;
 
 /** Copies the context's counters into *out (zeros for a NULL ctx; nothing for a NULL out). */
@@ -1589,7 +1638,9 @@ typedef struct lx_scene_luminaire {
     double exponent;          /* spot: Warn S */
     double luminance_cd_m2;   /* disk, rect */
     double radius_m;          /* disk */
-    double width_m, length_m; /* rect, and the luminous opening of a file luminaire (0: a point) */
+    double width_m, length_m; /* rect: width along local x (C0), length along local y; file: the
+                               * luminous opening as in lx_luminaire (width along C90-C270, length
+                               * along C0-C180; 0: a point) */
     double scale;             /* file: candela multiplier applied to the table (flux / table lumens),
                                * times the file's TILT factor at the tilt of aim from the nadir */
     char *lum_path;           /* file: the photometric file (resolved against the scene file) */
@@ -1697,6 +1748,24 @@ LX_API lx_status lx_scene_read_mem(lx_ctx *ctx, const char *name, const char *te
 /** Frees a scene. Accepts NULL. */
 LX_API void lx_scene_free(lx_scene *scene);
 
+/** Why a luminaire-receiver pair takes its path (lx_scene_plan.near_why). */
+typedef enum lx_near_why {
+    LX_NEAR_NONE = 0,    /* point model: the luminaire has no luminous area */
+    LX_NEAR_WITHIN,      /* point model: its estimated error fits the point's share of the tolerance */
+    LX_NEAR_ZERO,        /* point model: the receiver faces away from the whole opening (both give 0) */
+    LX_NEAR_OVER,        /* integrated: the point model's estimated error exceeds the tolerance */
+    LX_NEAR_UNSURE,      /* integrated: the probes cannot vouch (a beam cut-off or the receiver's horizon
+                          * across the opening, or the receiver closer than the opening's size) */
+    LX_NEAR_CLOSED,      /* a disk or rectangle in closed form (exact) */
+    LX_NEAR_NO_CLOSED,   /* integrated: a disk or rectangle without the receiver's cosine (no closed form) */
+    LX_NEAR_FORCED_ON,   /* integrated: near_field forced on in [effects] */
+    LX_NEAR_FORCED_OFF,  /* point model: near_field forced off in [effects] */
+    LX_NEAR_WHY_COUNT
+} lx_near_why;
+
+/** A short name for a decision ("point: within tolerance", ...; static storage; NULL for a bad value). */
+LX_API const char *lx_near_why_name(lx_near_why why);
+
 /** The planner's decision; made by lx_scene_plan_make, freed with lx_scene_plan_free (a struct only
  * the library allocates). */
 typedef struct lx_scene_plan {
@@ -1706,13 +1775,20 @@ typedef struct lx_scene_plan {
     size_t n_points;                  /* receiver points over all receivers */
     size_t n_pairs;                   /* luminaire x receiver-point pairs */
     size_t n_near;                    /* pairs that take the near-field path */
-    unsigned char *near;              /* n_lum x n_points (luminaire-major): 1 = near-field path; owned */
+    unsigned char *near;              /* n_lum x n_points (luminaire-major): 0 = point model, 1 = the
+                                       * luminous area integrated (patches), 2 = a disk or rectangle in
+                                       * closed form; owned */
     size_t n_normals;                 /* distinct receiver normals (sky evaluations) */
     lx_counters estimate;             /* the work the plan expects */
     lx_backend backend;               /* OPENCL when some grid work runs on a device, else CPU */
     unsigned char *device;            /* n_lum x n_rec: 1 = this IES luminaire's work on this grid (all
                                        * far field) runs as one lx_grid_illuminance OpenCL batch; owned */
     int device_required;              /* 1 when asked for explicitly: a device failure is then an error */
+    /* appended (ABI policy: a library-allocated struct grows at its end) */
+    double *near_err;                 /* n_lum x n_points: the point model's estimated error relative to
+                                       * the point's illuminance (NaN where it was not estimated); owned */
+    unsigned char *near_why;          /* n_lum x n_points: an lx_near_why; owned */
+    lx_counters planning;             /* the work the planner did itself (the near-field probes) */
 } lx_scene_plan;
 
 /** Plans a scene: which effects, and which pairs take the near-field path. backend: AUTO lets

@@ -711,6 +711,26 @@ static void t_lx_scene_glare_eval(void)
     assert_ptr_equal(g, PSENT);
 }
 
+static void t_lx_warn_cone_flux(void)
+{
+    double f = 42, r = 42;
+    EXPECT_EINVAL(lx_warn_cone_flux(NULL, 800, 1, 0.5, &f, &r));
+    assert_true(f == 42 && r == 42);
+}
+static void t_lx_envmap_concentration(void)
+{
+    double f = 42;
+    size_t k = 42;
+    EXPECT_EINVAL(lx_envmap_concentration(NULL, NULL, 1e-3, &f, &k));
+    assert_true(f == 42 && k == 42);
+}
+static void t_lx_ctx_irradiance_method(void)
+{
+    double q = 0;
+    assert_int_equal(lx_ctx_irradiance_method(NULL, &q), LX_IRR_AUTO);
+    assert_true(isnan(q));
+}
+
 #define CASE(f) {#f, t_##f}
 static const struct api_case {
     const char *name;
@@ -718,7 +738,8 @@ static const struct api_case {
 } CASES[] = {
     CASE(lx_ctx_set_input_limit), CASE(lx_ctx_input_limit), CASE(lx_colorimetry_check), CASE(lx_ugr),
     CASE(lx_ugr_table_compute), CASE(lx_sky_cie), CASE(lx_sky_cie_params), CASE(lx_sky_perez), CASE(lx_sky_illuminance),
-    CASE(lx_sun_spa), CASE(lx_sky_map), CASE(lx_scene_glare_eval),
+    CASE(lx_sun_spa), CASE(lx_sky_map), CASE(lx_scene_glare_eval), CASE(lx_warn_cone_flux), CASE(lx_envmap_concentration),
+    CASE(lx_ctx_irradiance_method),
     CASE(lx_ctx_create), CASE(lx_ctx_destroy), CASE(lx_ctx_errmsg), CASE(lx_ctx_errfile), CASE(lx_ctx_errline),
     CASE(lx_ctx_set_log), CASE(lx_ctx_backend_used), CASE(lx_cl_ready), CASE(lx_ctx_counters),
     CASE(lx_ctx_counters_reset), CASE(lx_backend_parse), CASE(lx_simd_parse), CASE(lx_cl_select), CASE(lx_cl_borrow),
@@ -888,7 +909,8 @@ static void results_write_reserved_as_zero(void **state)
     lx_ctx *ctx = *state;
     static const long long zero[4];
 #define DIRTY(x) memset(&(x), 0xcd, sizeof(x))
-#define ZERO_RESERVED(x) assert_memory_equal((x).reserved, zero, sizeof zero)
+/* the reserved space a result has left (a later result takes some of it: lx_counters kept 2 of 4) */
+#define ZERO_RESERVED(x) assert_memory_equal((x).reserved, zero, sizeof (x).reserved)
     lx_colorimetry c;
     DIRTY(c);
     lx_assert_ok(ctx, lx_spd_colorimetry(ctx, &D65, LX_OBSERVER_2, LX_METHOD_AUTO, &c));

@@ -34,7 +34,11 @@ static const char help[] =
     "  --points-at edges|centres  edges (default, as above) or the centres of cells no larger\n"
     "                          than S (or N x M cells), S/2 inside the edges (EN 12464-1, DIALux)\n"
     "  --normal X,Y,Z          receiver normal (default the plane's axis towards +z, +x or +y)\n"
-    "  --model point|auto      auto (default): subdivide the luminous area closer than 5 x its size\n"
+    "  --model auto|point|area auto (default): each pair with a luminous opening keeps the point\n"
+    "                          model where its estimated error (13 probes over the opening) keeps\n"
+    "                          the point within --tolerance, else the opening is integrated;\n"
+    "                          point: every luminaire a point; area: every pair integrated\n"
+    "  --tolerance T           relative tolerance of each point's illuminance (default 1e-4)\n"
     "  --interp bilinear|smooth|table  intensity interpolation (default bilinear; table: the\n"
     "                          cosine-indexed table the OpenCL kernel uses)\n"
     "  --table-rows N          rows per hemisphere of that table (default 1024; implies --interp\n"
@@ -55,7 +59,7 @@ static const char help[] =
     "      --points-at centres --png office.png --summary\n";
 
 typedef struct grid_args {
-    const char *ies, *scene, *at, *aim, *rot, *plane, *area, *spacing, *points, *normal, *outpath, *mf, *png;
+    const char *ies, *scene, *at, *aim, *rot, *plane, *area, *spacing, *points, *normal, *outpath, *mf, *png, *tol;
     int summary, interp_set, centres, white;
     cli_format fmt;
     lx_grid_opts go;
@@ -76,6 +80,7 @@ static int parse(int argc, char **argv, grid_args *g)
         {"format", required_argument, NULL, 'f'},   {"output", required_argument, NULL, 'o'},
         {"scene", required_argument, NULL, 'x'},    {"points-at", required_argument, NULL, 'C'},
         {"png-style", required_argument, NULL, 'W'}, {"help", no_argument, NULL, 'h'},
+        {"tolerance", required_argument, NULL, 'O'},
         {NULL, 0, NULL, 0},
     };
     int c;
@@ -92,6 +97,7 @@ static int parse(int argc, char **argv, grid_args *g)
         case 'n': g->points = optarg; break;
         case 'N': g->normal = optarg; break;
         case 'M': g->mf = optarg; break;
+        case 'O': g->tol = optarg; break;
         case 'S': g->summary = 1; break;
         case 'P': g->png = optarg; break;
         case 'x': g->scene = optarg; break;
@@ -120,7 +126,8 @@ static int parse(int argc, char **argv, grid_args *g)
         case 'm':
             if (!strcmp(optarg, "point")) g->go.model = LX_MODEL_POINT;
             else if (!strcmp(optarg, "auto")) g->go.model = LX_MODEL_AUTO;
-            else return cli_error("grid", "--model: expected point or auto (got '%s')", optarg), CLI_USAGE;
+            else if (!strcmp(optarg, "area")) g->go.model = LX_MODEL_AREA;
+            else return cli_error("grid", "--model: expected auto, point or area (got '%s')", optarg), CLI_USAGE;
             break;
         case 'I':
             g->interp_set = 1;
@@ -390,6 +397,12 @@ int cmd_grid(int argc, char **argv)
     memset(&p, 0, sizeof p);
     rc = 0;
     if (g.mf && (rc = lt_quantity(ctx, "grid", "--maintenance", g.mf, LX_Q_NONE, NULL, 0, &g.go.maintenance_factor))) goto done;
+    if (g.tol && (rc = lt_quantity(ctx, "grid", "--tolerance", g.tol, LX_Q_NONE, NULL, 0, &g.go.nearfield_tol))) goto done;
+    if (g.tol && !(g.go.nearfield_tol >= 1e-12 && g.go.nearfield_tol <= 0.1)) {
+        cli_error("grid", "--tolerance must be in [1e-12, 0.1] (got %s)", g.tol);
+        rc = CLI_USAGE;
+        goto done;
+    }
     if (g.mf && !(g.go.maintenance_factor > 0 && g.go.maintenance_factor <= 1)) {
         cli_error("grid", "--maintenance must be in (0, 1] (got %s)", g.mf);
         rc = CLI_USAGE;

@@ -42,15 +42,23 @@ static const char help[] =
 static const char *const counter_names[] = {
     "point_evaluations",      "spot_evaluations",    "goniometric_lookups",
     "nearfield_pairs",        "nearfield_subdivisions", "environment_evaluations",
-    "environment_samples",    "spectra_integrated",  "kernel_launches"};
-#define N_COUNTERS 9
+    "environment_samples",    "spectra_integrated",  "kernel_launches",
+    "nearfield_probes",       "closed_form_evaluations"};
+#define N_COUNTERS 11
 
 static unsigned long long counter(const lx_counters *c, int i)
 {
     const unsigned long long v[N_COUNTERS] = {c->point_evaluations,     c->spot_evaluations,    c->goniometric_lookups,
                                               c->nearfield_pairs,       c->nearfield_subdivisions, c->environment_evaluations,
-                                              c->environment_samples,   c->spectra_integrated,  c->kernel_launches};
+                                              c->environment_samples,   c->spectra_integrated,  c->kernel_launches,
+                                              c->nearfield_probes,      c->closed_form_evaluations};
     return v[i];
+}
+
+/* The measured work: the evaluation's, plus the planner's own (its near-field probes). */
+static unsigned long long measured(const lx_scene_plan *p, const lx_scene_result *res, int i)
+{
+    return counter(&res->work, i) + counter(&p->planning, i);
 }
 
 static void json_string(FILE *f, const char *s)
@@ -70,8 +78,68 @@ static size_t near_points(const lx_scene *sc, const lx_scene_plan *p, size_t l, 
 {
     size_t g0 = 0, k = 0;
     for (size_t i = 0; i < r; i++) g0 += sc->rec[i].n;
-    for (size_t i = 0; i < sc->rec[r].n; i++) k += p->near[l * p->n_points + g0 + i];
+    for (size_t i = 0; i < sc->rec[r].n; i++) k += p->near[l * p->n_points + g0 + i] != 0;
     return k;
+}
+
+/* The decision of every pair of a luminaire with a luminous area: where, the point model's
+ * estimated error relative to the point's illuminance, and the path. Text: at most
+ * MAX_PAIR_LINES lines (json has them all). */
+#define MAX_PAIR_LINES 2000
+static void text_pairs(FILE *f, const lx_scene *sc, const lx_scene_plan *p)
+{
+    size_t shown = 0, total = 0;
+    int header = 0;
+    for (size_t l = 0; l < sc->n_lum; l++) {
+        size_t g = 0;
+        for (size_t r = 0; r < sc->n_rec; r++)
+            for (size_t i = 0; i < sc->rec[r].n; i++, g++) {
+                size_t at = l * p->n_points + g;
+                if (p->near_why[at] == LX_NEAR_NONE) continue;
+                total++;
+                if (shown >= MAX_PAIR_LINES) continue;
+                if (!header) {
+                    fprintf(f, "\nnear-field decisions (tolerance %g; estimate: the point model's error relative to "
+                               "the point's illuminance):\n  %-12s %-12s %6s %10s %10s %10s %12s  %s\n",
+                            sc->nearfield_tol, "luminaire", "receiver", "point", "x_m", "y_m", "z_m", "estimate", "decision");
+                    header = 1;
+                }
+                const double *q = sc->rec[r].points + 3 * i;
+                char est[32] = "-";
+                if (!isnan(p->near_err[at])) snprintf(est, sizeof est, "%.3g", p->near_err[at]);
+                fprintf(f, "  %-12s %-12s %6zu %10.4g %10.4g %10.4g %12s  %s\n", sc->lum[l].name, sc->rec[r].name, i + 1,
+                        q[0], q[1], q[2], est, lx_near_why_name((lx_near_why)p->near_why[at]));
+                shown++;
+            }
+    }
+    if (total > shown) fprintf(f, "  ... %zu more pairs (all of them: --explain --format json)\n", total - shown);
+}
+
+static void json_pairs(FILE *f, const lx_scene *sc, const lx_scene_plan *p)
+{
+    static const char *const path[3] = {"point", "area", "closed_form"};
+    fputs("  \"near_field_decisions\": [", f);
+    int first = 1;
+    for (size_t l = 0; l < sc->n_lum; l++) {
+        size_t g = 0;
+        for (size_t r = 0; r < sc->n_rec; r++)
+            for (size_t i = 0; i < sc->rec[r].n; i++, g++) {
+                size_t at = l * p->n_points + g;
+                if (p->near_why[at] == LX_NEAR_NONE) continue;
+                fputs(first ? "\n    {\"luminaire\": " : ",\n    {\"luminaire\": ", f);
+                json_string(f, sc->lum[l].name);
+                fputs(", \"receiver\": ", f);
+                json_string(f, sc->rec[r].name);
+                fprintf(f, ", \"point\": %zu, \"estimate\": ", i + 1);
+                if (isfinite(p->near_err[at])) cli_print_exact(f, p->near_err[at]);
+                else fputs("null", f);
+                fprintf(f, ", \"path\": \"%s\", \"why\": ", path[p->near[at] < 3 ? p->near[at] : 0]);
+                json_string(f, lx_near_why_name((lx_near_why)p->near_why[at]));
+                fputc('}', f);
+                first = 0;
+            }
+    }
+    fputs(first ? "],\n" : "\n  ],\n", f);
 }
 
 static void explain(FILE *f, const lx_scene *sc, const lx_scene_plan *p, const lx_scene_result *res, cli_format fmt)
@@ -105,11 +173,13 @@ static void explain(FILE *f, const lx_scene *sc, const lx_scene_plan *p, const l
             }
         fputs(first ? "]},\n" : "\n  ]},\n", f);
         for (int pass = 0; pass < 2; pass++) {
-            const lx_counters *c = pass ? &res->work : &p->estimate;
             fprintf(f, "  \"%s\": {", pass ? "measured" : "estimated");
-            for (int i = 0; i < N_COUNTERS; i++) fprintf(f, "%s\"%s\": %llu", i ? ", " : "", counter_names[i], counter(c, i));
+            for (int i = 0; i < N_COUNTERS; i++)
+                fprintf(f, "%s\"%s\": %llu", i ? ", " : "", counter_names[i],
+                        pass ? measured(p, res, i) : counter(&p->estimate, i));
             fputs("},\n", f);
         }
+        json_pairs(f, sc, p);
         fputs("  \"seconds\": ", f);
         cli_print_exact(f, res->seconds);
         fputs("\n}\n", f);
@@ -137,9 +207,10 @@ static void explain(FILE *f, const lx_scene *sc, const lx_scene_plan *p, const l
             size_t k = near_points(sc, p, l, r);
             if (k) fprintf(f, "  %s -> %s: %zu of %zu points near field\n", sc->lum[l].name, sc->rec[r].name, k, sc->rec[r].n);
         }
+    text_pairs(f, sc, p);
     fprintf(f, "\nwork:%*s %14s %14s\n", 19, "", "estimated", "measured");
     for (int i = 0; i < N_COUNTERS; i++)
-        fprintf(f, "  %-22s %14llu %14llu\n", counter_names[i], counter(&p->estimate, i), counter(&res->work, i));
+        fprintf(f, "  %-23s %14llu %14llu\n", counter_names[i], counter(&p->estimate, i), measured(p, res, i));
     fprintf(f, "  %-22s %14s %14.3g\n", "seconds", "", res->seconds);
 }
 

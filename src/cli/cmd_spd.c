@@ -6,6 +6,8 @@
 #include "spd_report.h"
 
 #include <getopt.h>
+
+#define LX__ERRMSG_MAX_CLI 1100
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -284,6 +286,12 @@ int cmd_spd(int argc, char **argv)
                 int e = cli_exit_code(st);
                 if (e > rc) rc = e;
                 continue;
+            }
+            if (!r.cct_valid && !cli_quiet) { /* every empty cell says why */
+                char why[LX__ERRMSG_MAX_CLI];
+                cli_cct_reason(ctx, &r, obs, why, sizeof why);
+                cli_error(cmd, "%s:%ld: spectrum '%s': cct_K and duv empty: %s", set->file, set->line ? set->line[k] : 0L,
+                          set->spd[k].name ? set->spd[k].name : "", why);
             }
             cli_table_str(t, set->file);
             cli_table_str(t, set->spd[k].name ? set->spd[k].name : "");

@@ -27,4 +27,7 @@ int cli_metrics_columns(const cli_metrics *m, const char *unit, const char **nam
 int cli_metrics_row(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const lx_spd *spd, lx_method method,
                      const char *unit, const lx_colorimetry *c, const char *file, long line, const char *cmd);
 
+/* Why c has no CCT (cct_valid 0): no light, no Planckian point, |Duv| > 0.05, or outside the range. */
+void cli_cct_reason(lx_ctx *ctx, const lx_colorimetry *c, lx_observer obs, char *buf, size_t size);
+
 #endif

@@ -45,6 +45,8 @@ struct lx_ctx {
     lx_counters counters;             /* work counters of the lighting and scene layers */
     size_t input_limit[LX_INPUT_KIND_COUNT]; /* bytes per lx_input_kind; 0: the default */
     lx_backend backend_used;          /* lx_ctx_backend_used: AUTO until a backend-choosing call succeeds */
+    lx_irr_method irr_method;         /* lx_ctx_irradiance_method: AUTO until an irradiance call succeeds */
+    double irr_fast_cost_ratio;       /* and AUTO's cost estimate for that call (NaN before) */
 };
 
 /* The data in slot id of ctx (NULL when empty or ctx is NULL). */
@@ -180,6 +182,18 @@ void lx__team_join(lx__team *team);
  * beyond a level's set, for the one path that uses them: */
 /* 1 when the CPU has AVX-512 BITALG besides the AVX-512 set (the vector CSV line parser). */
 int lx__cpu_has_bitalg(void);
+
+/* ---- geometry (lambert.c) ---- */
+
+/* The integral of max(0, n . w) dw over the directions w of the polygon v[0..nv-1] (vertices as
+ * vectors from the viewpoint, in order, planar and convex; at most LX__POLY_MAX) seen from the
+ * origin: Lambert's formula on the polygon clipped to n . x >= 0. n: unit. Exact (closed form). */
+#define LX__POLY_MAX 8
+double lx__polygon_projected(const double (*v)[3], int nv, const double n[3]);
+/* Lambert's term of the straight edge a -> b (vectors from the viewpoint): the angle it subtends
+ * times n . (a x b) / |a x b| (0 for a degenerate edge). Half the sum over a closed polygon's
+ * edges is its projected solid angle, with the sign of its orientation. */
+double lx__lambert_edge(const double a[3], const double b[3], const double n[3]);
 
 /* ---- the backend rule (backend.c) ---- */
 

@@ -331,6 +331,8 @@ lx_status lx__ies_read(lx_ctx *ctx, const char *file, const char *text, size_t l
         goto fail;
     }
     double unit = h[6] == 1 ? 0.3048 : 1.0;
+    /* LM-63: the width is measured along the 90-270 degree photometric plane, the length along
+     * 0-180 (negative values: round shapes) */
     lum->width_m = h[7] * unit;
     lum->length_m = h[8] * unit;
     lum->height_m = h[9] * unit;

@@ -168,6 +168,8 @@ lx_status lx_luminaire_write_ies(lx_ctx *ctx, const lx_luminaire *l, char **text
     char t[64];
     snprintf(t, sizeof t, "%zu %zu 1 2 ", l->n_v, nh);
     puts_(&b, t);
+    /* the opening as LM-63 orders it: width (along the 90-270 plane), then length (along 0-180);
+     * lx_luminaire keeps the same meaning, so the axes survive a write and a read */
     num(&b, l->width_m);
     puts_(&b, " ");
     num(&b, l->length_m);

@@ -188,8 +188,15 @@ lx_status lx__ldt_read(lx_ctx *ctx, const char *file, const char *buf, size_t le
     l->lamp_lumens = l->absolute ? NAN : flux1;
     l->stated_lumens = l->absolute ? flux1 : flux1 * lorl / 100.0;
     l->input_watts = watts1;
-    l->width_m = dim[3] / 1000.0;  /* luminous length: along C0-C180 */
-    l->length_m = dim[4] / 1000.0; /* luminous width: along C90-C270 */
+    /* the luminous area: its length (or diameter) lies along C0-C180, its width along C90-C270
+     * (EULUMDAT, as LM-63 puts length along 0-180 and width along 90-270); width 0 means a
+     * circle whose diameter is the length, stored as LM-63 does (both negative) */
+    if (dim[4] == 0 && dim[3] > 0) {
+        l->width_m = l->length_m = -dim[3] / 1000.0;
+    } else {
+        l->length_m = dim[3] / 1000.0;
+        l->width_m = dim[4] / 1000.0;
+    }
     l->height_m = dim[5] / 1000.0;
     long cdline = r.it.line + 1;
     for (long k = 0; k < count; k++) {

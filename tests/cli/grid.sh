@@ -120,8 +120,10 @@ expect_field 2 illuminance_lx 71.55417527999327 1e-9 "grid --scene: 1 m aside"
 run grid --scene tests/data/scenes/point.scene --summary
 expect_rc 1 "grid --scene without a plane needs the scene's one grid"
 expect_err_match 'the scene has 0 grid receivers' "the message says why"
+run scene samples/scenes/office.scene --format csv
+desk=$(printf '%s\n' "$out" | awk -F, '$1=="desk"{s+=$5; n++} END {printf "%.17g", s/n}')
 run grid --scene samples/scenes/office.scene --summary
 expect_rc 0 "grid --scene uses the scene's one grid"
-expect_field 1 E_avg 305.15684383060443 1e-6 "the same desk average as luxcalc scene"
+expect_field 1 E_avg "$desk" 1e-9 "the same desk average as luxcalc scene"
 run grid --ies $P --scene tests/data/scenes/point.scene --plane z=0 --area 0:1,0:0 --points 2x1
 expect_rc 1 "--ies and --scene together are a usage error"

@@ -3,21 +3,37 @@
 M=samples/envmaps
 PI=3.141592653589793
 
-# furnace (radiance 1): E = pi for any normal, every method
-for m in sh9 brute fast; do
+# furnace (radiance 1): E = pi for any normal, every method (the pixels the horizon crosses exact)
+for m in sh9 brute fast auto; do
   run irradiance $M/furnace.exr --normal 0.3,-0.2,0.9 --method $m --format csv
   expect_rc 0 "furnace $m runs"
-  expect_field 1 irradiance $PI 4e-3 "furnace $m: E = pi (O(dtheta^2) at 64x32 for brute/fast)"
+  expect_field 1 irradiance $PI 1e-12 "furnace $m: E = pi"
 done
 run irradiance $M/furnace.exr --normal 0,0,1 --format csv
 expect_out_match '^nx,ny,nz,irradiance,illuminance_lx,method' "csv header"
-expect_field 1 irradiance $PI 1e-12 "furnace sh9 exact"
+expect_out_match ',fast(,|$)' "the default for one normal is the exact fast method"
+expect_field 1 irradiance $PI 1e-12 "furnace exact by default"
 # illuminance = 179 lm/W x E for radiance maps (Radiance white efficacy), or --efficacy
 expect_field 1 illuminance_lx 562.34510 1e-4 "illuminance with 179 lm/W"
 run irradiance $M/furnace.exr --normal 0,0,1 --efficacy 683 --format csv
 expect_field 1 illuminance_lx 2145.7078 1e-3 "illuminance with --efficacy 683 (683 pi)"
+# the case: a sun, a downward normal. fast 116.418 lx (brute the same); SH9 -23.7 lx, with
+# warnings (negative; a dominant small source)
+run irradiance $M/sky_sun.exr --normal 0,0,-1 --format csv
+expect_field 1 illuminance_lx 116.41799374466669 1e-9 "sky_sun, normal down: 116.418 lx by default"
+if [ -z "$err" ]; then ok "the exact default warns of nothing"; else notok "the exact default warns of nothing" "$err"; fi
+run irradiance $M/sky_sun.exr --normal 0,0,-1 --method sh9 --format csv
+expect_field 1 illuminance_lx -23.69501220398835 1e-6 "SH9 gives -23.7 lx there"
+expect_err_match 'warning: SH9 gives a negative illuminance \(-23.695 lx\)' "SH9 warns of its negative result"
+expect_err_match 'warning: SH9 is approximate and this map has a dominant small source: 70.6 % of its power is in 57 pixels' "SH9 warns of the sun: what fraction in how few pixels"
+# a map output: auto takes SH9 when fast would cost more than 10 x as much, and says so
+run irradiance $M/sky_sun.exr -o "$T/Eauto.exr"
+expect_rc 0 "auto irradiance map written"
+expect_err_match 'note: SH9 \(approximate\) for this map: the exact method \(--method fast\) would cost about [0-9]+ times as much' "auto says when it takes SH9"
 # half-lit: E(+z) = pi, E(-z) = 0, E(+x) = pi/2 (pi (1 + n_z) / 2)
 run irradiance $M/half_lit.exr --normal 1,0,0 --format csv
+expect_field 1 irradiance 1.5707963267948966 1e-12 "half-lit E(+x) = pi/2"
+run irradiance $M/half_lit.exr --normal 1,0,0 --method sh9 --format csv
 expect_field 1 irradiance 1.5707963267948966 1e-12 "half-lit sh9 E(+x) = pi/2"
 run irradiance $M/half_lit.exr --normal 0,0,-1 --method fast --format csv
 expect_field 1 irradiance 0 1e-12 "half-lit fast E(-z) = 0"

@@ -22,10 +22,13 @@ fi
 run scene samples/scenes/office.scene --explain
 expect_rc 0 "office explain"
 expect_out_match '^  goniometric +on' "office: goniometric on"
-expect_out_match '^  near_field +on .*closer than 5x' "office: near field for close pairs"
+expect_out_match '^  near_field +on .*integrated \(point-model error estimated over 1e-05' "office: near field where the point model misses 1e-5"
 expect_out_match 'dl1 -> desk: [0-9]+ of 117 points near field' "office: costly pairs listed"
+expect_out_match '^  dl1 +desk +1 +0.5 +0.5 +0.75 +[0-9.e-]+ +area: estimated error over tolerance' "office: each pair's estimate and decision"
 run scene samples/scenes/street.scene --explain --format json
-expect_out_match '"near_field": false' "street: all pairs far"
+expect_out_match '"near_field": true' "street: some pairs near"
+expect_out_match '"path": "point", "why": "point: estimated error within tolerance"' "street: far pairs keep the point model"
+expect_out_match '"path": "area", "why": "area: ' "street: near pairs integrated"
 # errors: file and line, exit 2; usage errors exit 1
 run scene tests/data/scenes/bad_key.scene
 expect_rc 2 "unknown key is an input error"
