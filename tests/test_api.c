@@ -16,7 +16,6 @@
 static lx_ctx *C;           /* the real context the fixtures were made with */
 static lx_spd D65;          /* a view of the embedded D65 table */
 static lx_luminaire *LUM;   /* a 1000 lm isotropic model */
-static lx_luminaire *PANEL; /* a 1000 lm Lambertian 0.6 m x 0.6 m panel (a luminous area: UGR) */
 static lx_envmap *MAP;      /* 8 x 4, one channel, 1.0 everywhere */
 static lx_scene *SCENE;     /* tests/data/scenes/point.scene from memory */
 static lx_scene_plan *PLAN;
@@ -36,9 +35,7 @@ static int setup(void **state)
     (void)state;
     if (lx_ctx_create(&C)) return -1;
     lx_lum_model m = {.kind = LX_LUM_MODEL_POINT, .flux_lm = 1000};
-    lx_lum_model pm = {.kind = LX_LUM_MODEL_LAMBERT, .flux_lm = 1000, .width_m = 0.6, .length_m = 0.6};
     if (lx_illuminant_get(C, "D65", &D65) || lx_luminaire_from_model(C, &m, &LUM) ||
-        lx_luminaire_from_model(C, &pm, &PANEL) ||
         lx_envmap_create(C, 8, 4, 1, &MAP) ||
         lx_scene_read_mem(C, "tests/data/scenes/api.scene", SCENE_TEXT, strlen(SCENE_TEXT), &SCENE) ||
         lx_scene_plan_make(C, SCENE, LX_BACKEND_CPU, &PLAN)) {
@@ -57,7 +54,6 @@ static int teardown(void **state)
     lx_scene_free(SCENE);
     lx_envmap_free(MAP);
     lx_luminaire_free(LUM);
-    lx_luminaire_free(PANEL);
     lx_ctx_destroy(C);
     rmdir(DIR_);
     return 0;
@@ -425,6 +421,12 @@ static void t_lx_plane_axis(void)
     EXPECT_EINVAL(lx_plane_axis(NULL, 'z', 0, 0, 1, 0, 1, 0.5, 0, 0, &p));
     assert_int_equal(p.na, 77);
 }
+static void t_lx_plane_cells(void)
+{
+    lx_plane p = {.na = 77};
+    EXPECT_EINVAL(lx_plane_cells(NULL, 'z', 0, 0, 1, 0, 1, 0.5, 0, 0, &p));
+    assert_int_equal(p.na, 77);
+}
 static const lx_plane PLANE = {.u = {1, 0, 0}, .v = {0, 1, 0}, .a1 = 1, .b1 = 1, .na = 2, .nb = 2, .normal = {0, 0, 1}};
 static void t_lx_grid_illuminance(void)
 {
@@ -570,77 +572,92 @@ static void t_lx_scene_eval(void)
 }
 
 /* plots: nothing may appear at the path */
-static void t_lx_png_falsecolor(void)
+static void t_lx_falsecolor_write_png(void)
 {
     const char *p = out_path("f.png");
     const double v[4] = {1, 2, 3, 4};
-    EXPECT_EINVAL(lx_png_falsecolor(NULL, p, 2, 2, v, NAN, NAN, 0, "lx"));
+    EXPECT_EINVAL(lx_falsecolor_write_png(NULL, p, 2, 2, v, NULL));
     assert_absent(p);
 }
-static void t_lx_png_preview(void)
+static void t_lx_envmap_preview_write_png(void)
 {
     const char *p = out_path("p.png");
     const lx_envmap *maps[1] = {MAP};
-    EXPECT_EINVAL(lx_png_preview(NULL, p, 1, maps, NULL));
+    EXPECT_EINVAL(lx_envmap_preview_write_png(NULL, p, 1, maps, NULL));
     assert_absent(p);
 }
-static void t_lx_spd_report_png(void)
+static void t_lx_irradiance_write_png(void)
+{
+    const char *p = out_path("i.png");
+    EXPECT_EINVAL(lx_irradiance_write_png(NULL, p, MAP, MAP, "sh9", LX_PLOT_SCALE_LOG));
+    assert_absent(p);
+}
+static void t_lx_spd_report_write_png(void)
 {
     const char *p = out_path("r.png");
-    EXPECT_EINVAL(lx_spd_report_png(NULL, &D65, LX_OBSERVER_2, "D65", p));
+    EXPECT_EINVAL(lx_spd_report_write_png(NULL, &D65, NULL, p));
     assert_absent(p);
 }
-static void t_lx_xyz_png_write(void)
+static void t_lx_xyz_image_write_png(void)
 {
     const char *p = out_path("x.png");
-    EXPECT_EINVAL(lx_xyz_png_write(NULL, p, &IMG));
+    EXPECT_EINVAL(lx_xyz_image_write_png(NULL, p, &IMG));
     assert_absent(p);
 }
 static void t_lx_grid_write_png(void)
 {
     const char *p = out_path("g.png");
     const double E[4] = {1, 2, 3, 4};
-    EXPECT_EINVAL(lx_grid_write_png(NULL, p, &PLANE, E, NULL, 0, "grid"));
+    EXPECT_EINVAL(lx_grid_write_png(NULL, p, &PLANE, E, NULL));
     assert_absent(p);
 }
-static void t_lx_png_error_time(void)
+static void t_lx_error_time_write_png(void)
 {
     const char *p = out_path("e.png");
     const lx_plot_point pts[2] = {{1e-3, 1e-6, "A", 0}, {1e-2, 1e-9, "B", 0}};
     const char *names[1] = {"s"};
-    EXPECT_EINVAL(lx_png_error_time(NULL, p, "t", "x", "y", 2, pts, 1, names));
+    EXPECT_EINVAL(lx_error_time_write_png(NULL, p, "t", "x", "y", 2, pts, 1, names));
     assert_absent(p);
 }
 
-static void t_lx_ctx_set_input_limit(void) { EXPECT_EINVAL(lx_ctx_set_input_limit(NULL, LX_INPUT_SPECTRUM, 1024)); }
-static void t_lx_ctx_input_limit(void) /* NULL: the default limit, the same as a fresh context's */
+/* input limits, checks of results */
+static void t_lx_ctx_set_input_limit(void) { EXPECT_EINVAL(lx_ctx_set_input_limit(NULL, LX_INPUT_SPECTRUM, 1 << 20)); }
+static void t_lx_ctx_input_limit(void) /* accepts NULL: the default */
 {
-    assert_true(lx_ctx_input_limit(NULL, LX_INPUT_SCENE) > 0);
-    lx_ctx *c = NULL;
-    lx_assert_ok(c, lx_ctx_create(&c));
-    assert_int_equal(lx_ctx_input_limit(NULL, LX_INPUT_SCENE), lx_ctx_input_limit(c, LX_INPUT_SCENE));
-    lx_ctx_destroy(c);
+    assert_int_equal(lx_ctx_input_limit(NULL, LX_INPUT_SPECTRUM), (size_t)256 << 20);
 }
+static void t_lx_colorimetry_check(void)
+{
+    lx_colorimetry r;
+    memset(&r, 0, sizeof r);
+    EXPECT_EINVAL(lx_colorimetry_check(NULL, &r, 0));
+}
+
+/* glare, skies and the sun: outputs keep their sentinels */
 static void t_lx_ugr(void)
 {
-    const double L[1] = {1e4}, w[1] = {1e-3}, p[1] = {1.5};
-    double t[1] = {SENT}, u = SENT;
-    EXPECT_EINVAL(lx_ugr(NULL, 40, 1, L, w, p, t, &u));
-    assert_true(t[0] == SENT && u == SENT);
+    const double L[1] = {1e4}, w[1] = {1e-3}, p[1] = {1};
+    double terms[1] = {SENT}, u = SENT;
+    EXPECT_EINVAL(lx_ugr(NULL, 10, 1, L, w, p, terms, &u));
+    assert_true(u == SENT && terms[0] == SENT);
 }
 static void t_lx_ugr_table_compute(void)
 {
-    static lx_ugr_table t;
-    t.lamp_flux_lm = SENT;
-    EXPECT_EINVAL(lx_ugr_table_compute(NULL, LUM, &t));
-    assert_true(t.lamp_flux_lm == SENT);
+    lx_ugr_table *t = malloc(sizeof *t);
+    memset(t, 0xab, sizeof *t);
+    lx_ugr_table ref = *t;
+    EXPECT_EINVAL(lx_ugr_table_compute(NULL, LUM, t));
+    assert_memory_equal(t, &ref, sizeof ref);
+    free(t);
 }
-static const double SUN_DIR[3] = {0, -0.5, 0.8660254037844386};
 static void t_lx_sky_cie(void)
 {
-    lx_sky s = {.zenith_cd_m2 = SENT};
-    EXPECT_EINVAL(lx_sky_cie(NULL, 12, SUN_DIR, LX_SKY_BY_ZENITH, 5000, &s));
-    assert_true(s.zenith_cd_m2 == SENT);
+    const double sun[3] = {0, 0.5, 0.8};
+    lx_sky s, ref;
+    memset(&s, 0xab, sizeof s);
+    ref = s;
+    EXPECT_EINVAL(lx_sky_cie(NULL, 12, sun, LX_SKY_BY_ZENITH, 5000, &s));
+    assert_memory_equal(&s, &ref, sizeof s);
 }
 static void t_lx_sky_cie_params(void)
 {
@@ -650,37 +667,41 @@ static void t_lx_sky_cie_params(void)
 }
 static void t_lx_sky_perez(void)
 {
-    lx_perez_input in = {.sun_dir = {0, -0.5, 0.8660254037844386}, .direct_normal_W_m2 = 600,
-                         .diffuse_horizontal_W_m2 = 120, .day_of_year = 172};
-    lx_sky s = {.zenith_cd_m2 = SENT};
+    lx_perez_input in = {.sun_dir = {0, 0.5, 0.8}, .direct_normal_W_m2 = 500, .diffuse_horizontal_W_m2 = 100,
+                         .day_of_year = 172};
+    lx_sky s, ref;
+    memset(&s, 0xab, sizeof s);
+    ref = s;
     EXPECT_EINVAL(lx_sky_perez(NULL, &in, &s));
-    assert_true(s.zenith_cd_m2 == SENT);
+    assert_memory_equal(&s, &ref, sizeof s);
 }
 static void t_lx_sky_illuminance(void)
 {
     lx_sky s;
-    lx_assert_ok(C, lx_sky_cie(C, 12, SUN_DIR, LX_SKY_BY_ZENITH, 5000, &s));
-    const double up[3] = {0, 0, 1};
+    const double sun[3] = {0, 0.5, 0.8}, up[3] = {0, 0, 1};
+    lx_assert_ok(C, lx_sky_cie(C, 5, sun, LX_SKY_BY_ZENITH, 1000, &s));
     double E = SENT;
     EXPECT_EINVAL(lx_sky_illuminance(NULL, &s, up, 0, &E));
     assert_true(E == SENT);
 }
 static void t_lx_sun_spa(void)
 {
-    lx_sun_input in = {.year = 2003, .month = 10, .day = 17, .hour = 12, .minute = 30, .second = 30, .timezone_h = -7,
-                       .delta_t_s = 67, .latitude_deg = 39.742476, .longitude_deg = -105.1786, .elevation_m = 1830.14,
-                       .pressure_mbar = 820, .temperature_C = 11, .refraction_deg = 0.5667};
-    lx_sun_position p = {.julian_day = SENT};
-    EXPECT_EINVAL(lx_sun_spa(NULL, &in, &p));
-    assert_true(p.julian_day == SENT);
+    lx_sun_input in = {.year = 2003, .month = 10, .day = 17, .hour = 12, .minute = 30, .second = 30,
+                       .timezone_h = -7, .delta_t_s = 67, .latitude_deg = 39.742476, .longitude_deg = -105.1786,
+                       .elevation_m = 1830.14, .pressure_mbar = 820, .temperature_C = 11, .refraction_deg = 0.5667};
+    lx_sun_position pos, ref;
+    memset(&pos, 0xab, sizeof pos);
+    ref = pos;
+    EXPECT_EINVAL(lx_sun_spa(NULL, &in, &pos));
+    assert_memory_equal(&pos, &ref, sizeof pos);
 }
 static void t_lx_sky_map(void)
 {
     lx_sky s;
-    lx_assert_ok(C, lx_sky_cie(C, 12, SUN_DIR, LX_SKY_BY_ZENITH, 5000, &s));
-    lx_sky_map_opts o = {.width = 16, .height = 8};
+    const double sun[3] = {0, 0.5, 0.8};
+    lx_assert_ok(C, lx_sky_cie(C, 5, sun, LX_SKY_BY_ZENITH, 1000, &s));
     lx_envmap *m = PSENT;
-    EXPECT_EINVAL(lx_sky_map(NULL, &s, &o, &m));
+    EXPECT_EINVAL(lx_sky_map(NULL, &s, NULL, &m));
     assert_ptr_equal(m, PSENT);
 }
 static void t_lx_scene_glare_eval(void)
@@ -690,11 +711,35 @@ static void t_lx_scene_glare_eval(void)
     assert_ptr_equal(g, PSENT);
 }
 
+static void t_lx_warn_cone_flux(void)
+{
+    double f = 42, r = 42;
+    EXPECT_EINVAL(lx_warn_cone_flux(NULL, 800, 1, 0.5, &f, &r));
+    assert_true(f == 42 && r == 42);
+}
+static void t_lx_envmap_concentration(void)
+{
+    double f = 42;
+    size_t k = 42;
+    EXPECT_EINVAL(lx_envmap_concentration(NULL, NULL, 1e-3, &f, &k));
+    assert_true(f == 42 && k == 42);
+}
+static void t_lx_ctx_irradiance_method(void)
+{
+    double q = 0;
+    assert_int_equal(lx_ctx_irradiance_method(NULL, &q), LX_IRR_AUTO);
+    assert_true(isnan(q));
+}
+
 #define CASE(f) {#f, t_##f}
 static const struct api_case {
     const char *name;
     void (*run)(void);
 } CASES[] = {
+    CASE(lx_ctx_set_input_limit), CASE(lx_ctx_input_limit), CASE(lx_colorimetry_check), CASE(lx_ugr),
+    CASE(lx_ugr_table_compute), CASE(lx_sky_cie), CASE(lx_sky_cie_params), CASE(lx_sky_perez), CASE(lx_sky_illuminance),
+    CASE(lx_sun_spa), CASE(lx_sky_map), CASE(lx_scene_glare_eval), CASE(lx_warn_cone_flux), CASE(lx_envmap_concentration),
+    CASE(lx_ctx_irradiance_method),
     CASE(lx_ctx_create), CASE(lx_ctx_destroy), CASE(lx_ctx_errmsg), CASE(lx_ctx_errfile), CASE(lx_ctx_errline),
     CASE(lx_ctx_set_log), CASE(lx_ctx_backend_used), CASE(lx_cl_ready), CASE(lx_ctx_counters),
     CASE(lx_ctx_counters_reset), CASE(lx_backend_parse), CASE(lx_simd_parse), CASE(lx_cl_select), CASE(lx_cl_borrow),
@@ -718,10 +763,9 @@ static const struct api_case {
     CASE(lx_exr_read_any), CASE(lx_envmap_write_exr), CASE(lx_sh9_project), CASE(lx_sh9_irradiance),
     CASE(lx_irradiance_dirs), CASE(lx_irradiance_map), CASE(lx_spectral_exr_read_xyz), CASE(lx_xyz_image_write_exr),
     CASE(lx_scene_read_file), CASE(lx_scene_read_mem), CASE(lx_scene_plan_make), CASE(lx_scene_eval),
-    CASE(lx_png_falsecolor), CASE(lx_png_preview), CASE(lx_spd_report_png), CASE(lx_xyz_png_write),
-    CASE(lx_grid_write_png), CASE(lx_png_error_time), CASE(lx_ctx_set_input_limit), CASE(lx_ctx_input_limit),
-    CASE(lx_ugr), CASE(lx_ugr_table_compute), CASE(lx_sky_cie), CASE(lx_sky_cie_params), CASE(lx_sky_perez),
-    CASE(lx_sky_illuminance), CASE(lx_sun_spa), CASE(lx_sky_map), CASE(lx_scene_glare_eval),
+    CASE(lx_falsecolor_write_png), CASE(lx_envmap_preview_write_png), CASE(lx_irradiance_write_png),
+    CASE(lx_spd_report_write_png), CASE(lx_xyz_image_write_png), CASE(lx_grid_write_png), CASE(lx_error_time_write_png),
+    CASE(lx_plane_cells),
 };
 #define NCASES (sizeof CASES / sizeof CASES[0])
 
@@ -840,15 +884,35 @@ static void nonzero_reserved_options_refused(void **state)
     EXPECT_EINVAL(lx_luminaire_from_model(ctx, &lm, &l));
     assert_null(l);
 
+    /* the plots' options: nothing appears at the path */
+    const double E[4] = {1, 2, 3, 4};
+    lx_falsecolor_opts fo = {0};
+    fo.reserved[3] = 1;
+    p = out_path("reserved_f.png");
+    EXPECT_EINVAL(lx_falsecolor_write_png(ctx, p, 2, 2, E, &fo));
+    assert_absent(p);
+    lx_isolux_opts iso = {0};
+    iso.reserved[0] = 2;
+    p = out_path("reserved_g.png");
+    EXPECT_EINVAL(lx_grid_write_png(ctx, p, &PLANE, E, &iso));
+    assert_absent(p);
+    lx_report_opts ro = {0};
+    ro.reserved[1] = 1;
+    p = out_path("reserved_r.png");
+    EXPECT_EINVAL(lx_spd_report_write_png(ctx, &D65, &ro, p));
+    assert_absent(p);
+
+    /* daylight: the sky map's options and the Perez and SPA inputs */
+    const double sun[3] = {0, 0.5, 0.8};
     lx_sky sky;
-    lx_assert_ok(ctx, lx_sky_cie(ctx, 12, SUN_DIR, LX_SKY_BY_ZENITH, 5000, &sky));
+    lx_assert_ok(ctx, lx_sky_cie(ctx, 12, sun, LX_SKY_BY_ZENITH, 5000, &sky));
     lx_sky_map_opts mo = {.width = 16, .height = 8};
     mo.reserved[3] = 1;
     m = PSENT;
     EXPECT_EINVAL(lx_sky_map(ctx, &sky, &mo, &m));
     assert_null(m);
-    lx_perez_input pi = {.sun_dir = {0, -0.5, 0.8660254037844386}, .direct_normal_W_m2 = 600,
-                         .diffuse_horizontal_W_m2 = 120, .day_of_year = 172};
+    lx_perez_input pi = {.sun_dir = {0, 0.5, 0.8}, .direct_normal_W_m2 = 500, .diffuse_horizontal_W_m2 = 100,
+                         .day_of_year = 172};
     pi.reserved[0] = 1;
     lx_sky ps;
     EXPECT_EINVAL(lx_sky_perez(ctx, &pi, &ps));
@@ -866,7 +930,8 @@ static void results_write_reserved_as_zero(void **state)
     lx_ctx *ctx = *state;
     static const long long zero[4];
 #define DIRTY(x) memset(&(x), 0xcd, sizeof(x))
-#define ZERO_RESERVED(x) assert_memory_equal((x).reserved, zero, sizeof zero)
+/* the reserved space a result has left (a later result takes some of it: lx_counters kept 2 of 4) */
+#define ZERO_RESERVED(x) assert_memory_equal((x).reserved, zero, sizeof (x).reserved)
     lx_colorimetry c;
     DIRTY(c);
     lx_assert_ok(ctx, lx_spd_colorimetry(ctx, &D65, LX_OBSERVER_2, LX_METHOD_AUTO, &c));
@@ -915,12 +980,14 @@ static void results_write_reserved_as_zero(void **state)
     lx_assert_ok(ctx, lx_cl_devices(ctx, &d, &n));
     for (size_t i = 0; i < n; i++) ZERO_RESERVED(d[i]);
     lx_cl_devices_free(d);
+    /* daylight and glare */
+    const double sun[3] = {0, 0.5, 0.8};
     lx_sky sky;
     DIRTY(sky);
-    lx_assert_ok(ctx, lx_sky_cie(ctx, 12, SUN_DIR, LX_SKY_BY_ZENITH, 5000, &sky));
+    lx_assert_ok(ctx, lx_sky_cie(ctx, 12, sun, LX_SKY_BY_ZENITH, 5000, &sky));
     ZERO_RESERVED(sky);
-    lx_perez_input pi = {.sun_dir = {0, -0.5, 0.8660254037844386}, .direct_normal_W_m2 = 600,
-                         .diffuse_horizontal_W_m2 = 120, .day_of_year = 172};
+    lx_perez_input pi = {.sun_dir = {0, 0.5, 0.8}, .direct_normal_W_m2 = 500, .diffuse_horizontal_W_m2 = 100,
+                         .day_of_year = 172};
     DIRTY(sky);
     lx_assert_ok(ctx, lx_sky_perez(ctx, &pi, &sky));
     ZERO_RESERVED(sky);
@@ -931,10 +998,15 @@ static void results_write_reserved_as_zero(void **state)
     DIRTY(sp);
     lx_assert_ok(ctx, lx_sun_spa(ctx, &si, &sp));
     ZERO_RESERVED(sp);
-    static lx_ugr_table ut;
-    DIRTY(ut);
-    lx_assert_ok(ctx, lx_ugr_table_compute(ctx, PANEL, &ut));
-    ZERO_RESERVED(ut);
+    lx_lum_model pm = {.kind = LX_LUM_MODEL_LAMBERT, .flux_lm = 1000, .width_m = 0.6, .length_m = 0.6};
+    lx_luminaire *panel = NULL;
+    lx_assert_ok(ctx, lx_luminaire_from_model(ctx, &pm, &panel));
+    lx_ugr_table *ut = malloc(sizeof *ut);
+    DIRTY(*ut);
+    lx_assert_ok(ctx, lx_ugr_table_compute(ctx, panel, ut));
+    ZERO_RESERVED(*ut);
+    free(ut);
+    lx_luminaire_free(panel);
 }
 
 /* Creating functions set *out to NULL when they fail (here: on an argument they refuse). */

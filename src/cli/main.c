@@ -49,16 +49,22 @@ const cli_cmd cli_commands[] = {
 
 static void usage(FILE *out)
 {
-    fprintf(out, "usage: luxcalc [--version] [-v|-q] COMMAND [OPTIONS] [ARGS]\n\n"
+    fprintf(out, "usage: luxcalc [--version] [-v|-q] [--max-input-mb N] COMMAND [OPTIONS] [ARGS]\n\n"
                  "Photometry and radiometry: spectra, lighting calculations, luminaires, radiance maps.\n\n"
                  "commands:\n");
     for (const cli_cmd *c = cli_commands; c->name; c++) fprintf(out, "  %-14s %s\n", c->name, c->summary);
-    fprintf(out, "\nRun 'luxcalc COMMAND --help' for a command's options and an example.\n"
-                 "Exit status: 0 success, 1 usage error, 2 input error, 3 runtime error.\n");
+    fprintf(out, "\nOptions of every command that prints results: --format table|csv|tsv|json, -o FILE,\n"
+                 "--precision N (significant digits in the table format), --units metric|imperial (fc, ft,\n"
+                 "fL; or unit names, e.g. --units imperial,cd/ft2).\n"
+                 "\nRun 'luxcalc COMMAND --help' for a command's options and an example.\n"
+                 "Exit status: 0 success, 1 usage error, 2 input error, 3 runtime error.\n"
+                 "--max-input-mb N (or LX_MAX_INPUT_MB=N): the size limit of every text input file in MB\n"
+                 "(default 256 for spectra, 16 for photometric and scene files; README \"Robustness\").\n");
 }
 
 int main(int argc, char **argv)
 {
+    cli_stdout_guard();
     int i = 1;
     for (; i < argc && argv[i][0] == '-'; i++) {
         const char *a = argv[i];
@@ -74,6 +80,13 @@ int main(int argc, char **argv)
             cli_verbose += 2;
         } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
             cli_quiet = 1;
+        } else if (!strcmp(a, "--max-input-mb") || !strncmp(a, "--max-input-mb=", 15)) {
+            const char *v = a[14] == '=' ? a + 15 : i + 1 < argc ? argv[++i] : NULL;
+            if (cli_parse_input_mb(v, &cli_max_input_mb) != 0) {
+                fprintf(stderr, "luxcalc: --max-input-mb: expected a whole number of MB from 1 to %d, not '%s'\n",
+                        CLI_MAX_INPUT_MB, v ? v : "");
+                return CLI_USAGE;
+            }
         } else {
             fprintf(stderr, "luxcalc: unknown option '%s'\n", a);
             usage(stderr);
@@ -106,8 +119,21 @@ int main(int argc, char **argv)
             return CLI_USAGE;
         }
     }
+    const char *maxin = getenv("LX_MAX_INPUT_MB");
+    size_t mb;
+    if (maxin && *maxin && cli_parse_input_mb(maxin, &mb) != 0) {
+        fprintf(stderr, "luxcalc: LX_MAX_INPUT_MB='%s' is not a whole number of MB from 1 to %d\n", maxin, CLI_MAX_INPUT_MB);
+        return CLI_USAGE;
+    }
     for (const cli_cmd *c = cli_commands; c->name; c++)
-        if (!strcmp(c->name, argv[i])) return c->run(argc - i, argv + i);
+        if (!strcmp(c->name, argv[i])) {
+            int n = argc - i;
+            if (cli_output_options(c->name, &n, argv + i)) return CLI_USAGE;
+            cli_join_units(&n, argv + i);
+            int rc = c->run(n, argv + i);
+            int w = cli_stdout_check(c->name); /* what a command printed itself, and a closed stdout */
+            return w ? w : rc;
+        }
     if (!strcmp(argv[i], "help")) {
         if (i + 1 < argc)
             for (const cli_cmd *c = cli_commands; c->name; c++)

@@ -118,6 +118,7 @@ size_t lx_ctx_input_limit(const lx_ctx *ctx, lx_input_kind kind)
 
 static lx_status too_large(lx_ctx *ctx, const char *path, lx_input_kind kind, size_t limit)
 {
+    if (limit > SIZE_MAX / 4) limit = SIZE_MAX / 4;
     if (limit % MB == 0)
         return lx__error(ctx, LX_EIO, path, 0, "larger than %zu MB, the limit for %s (raise with LX_MAX_INPUT_MB)",
                          limit / MB, kinds[kind].what);
@@ -158,6 +159,9 @@ static lx_status probe_first_block(lx_ctx *ctx, const char *path, const unsigned
  * NUL) or binary data. */
 static lx_status nul_byte(lx_ctx *ctx, const char *path, const char *buf, size_t n, size_t off)
 {
+    const unsigned char *u = (const unsigned char *)buf;
+    if (n >= 2 && ((u[0] == 0xFF && u[1] == 0xFE) || (u[0] == 0xFE && u[1] == 0xFF)))
+        return probe_first_block(ctx, path, u, 2); /* its byte-order mark says what it is */
     size_t m = n < 512 ? n : 512, zero[2] = {0, 0};
     for (size_t i = 0; i < m; i++) zero[i & 1] += buf[i] == 0;
     int odd = m >= 8 && zero[1] * 10 >= (m / 2) * 9 && zero[0] * 10 <= m / 2;
@@ -166,6 +170,22 @@ static lx_status nul_byte(lx_ctx *ctx, const char *path, const char *buf, size_t
         return lx__error(ctx, LX_EPARSE, path, 1, "UTF-16 text (%s, no byte-order mark) is not supported; save the file as UTF-8",
                          odd ? "little-endian" : "big-endian");
     return lx__error(ctx, LX_EPARSE, path, line_at(buf, off), "binary data (NUL byte at offset %zu); not a text file", off);
+}
+
+lx_status lx__input_size_check(lx_ctx *ctx, const char *path, lx_input_kind kind, unsigned long long size)
+{
+    if ((unsigned)kind >= LX_INPUT_KIND_COUNT)
+        return lx__error(ctx, LX_EINVAL, path, 0, "unknown input kind %d", (int)kind);
+    size_t limit = lx_ctx_input_limit(ctx, kind);
+    return size > limit ? too_large(ctx, path, kind, limit) : LX_OK;
+}
+
+lx_status lx__text_check(lx_ctx *ctx, const char *path, const char *buf, size_t n)
+{
+    if (n > LX__TEXT_PROBE_BYTES) n = LX__TEXT_PROBE_BYTES;
+    const char *nul = n ? memchr(buf, 0, n) : NULL;
+    if (nul) return nul_byte(ctx, path, buf, n, (size_t)(nul - buf));
+    return probe_first_block(ctx, path, (const unsigned char *)buf, n);
 }
 
 /* ---- the whole-file reader ---- */
@@ -185,7 +205,7 @@ lx_status lx__read_all(lx_ctx *ctx, const char *path, lx_input_kind kind, char *
     struct stat sb;
     size_t cap = 1 << 16;
     if (fstat(fileno(fp), &sb) == 0 && S_ISREG(sb.st_mode) && sb.st_size > 0) {
-        if ((uintmax_t)sb.st_size > limit) {
+        if ((unsigned long long)sb.st_size > limit) {
             if (fp != stdin) fclose(fp);
             return too_large(ctx, path, kind, limit);
         }
