@@ -101,7 +101,7 @@ void cli_print_exact(FILE *out, double v)
 
 /* ---- the result table ---- */
 typedef struct cell {
-    int kind; /* 0 number, 1 string, 2 integer */
+    int kind; /* 0 number, 1 string, 2 integer, 3 JSON text */
     double num;
     long long integer;
     char *str;
@@ -116,6 +116,7 @@ struct cli_table {
     size_t emitted;   /* rows already written by cli_table_flush */
     int header_done;  /* csv header / json '[' written */
     int json_array;   /* json: an array was opened */
+    unsigned char json_only[256]; /* columns csv and table leave out */
 };
 
 cli_table *cli_table_new(int ncols, const char *const *names, const char *const *units)
@@ -163,6 +164,25 @@ void cli_table_int(cli_table *t, long long v)
 
 int cli_table_rows(const cli_table *t) { return (int)(t->emitted + t->ncells / (size_t)t->ncols); }
 
+void cli_table_json(cli_table *t, const char *json)
+{
+    cell *c = push(t);
+    c->kind = 3;
+    c->str = strdup(json ? json : "null");
+}
+
+void cli_table_json_only(cli_table *t, int col)
+{
+    if (col >= 0 && col < (int)sizeof t->json_only) t->json_only[col] = 1;
+}
+
+void cli_table_set_units(cli_table *t, const char *const *units) { t->units = units; }
+
+static int shown(const cli_table *t, int c, cli_format fmt)
+{
+    return fmt == CLI_FMT_JSON || c >= (int)sizeof t->json_only || !t->json_only[c];
+}
+
 void cli_table_free(cli_table *t)
 {
     if (!t) return;
@@ -185,7 +205,10 @@ static void csv_str(FILE *out, const char *s)
     }
 }
 
-static void json_str(FILE *out, const char *s)
+void cli_json_string(FILE *out, const char *s);
+static void json_str(FILE *out, const char *s) { cli_json_string(out, s); }
+
+void cli_json_string(FILE *out, const char *s)
 {
     fputc('"', out);
     for (; *s; s++) {
@@ -201,7 +224,7 @@ static void json_str(FILE *out, const char *s)
 
 static void cell_text(const cell *c, char *buf, size_t cap)
 {
-    if (c->kind == 1) snprintf(buf, cap, "%s", c->str);
+    if (c->kind == 1 || c->kind == 3) snprintf(buf, cap, "%s", c->str);
     else if (c->kind == 2) snprintf(buf, cap, "%lld", c->integer);
     else if (!isfinite(c->num)) snprintf(buf, cap, "-");
     else if (c->num != 0 && (fabs(c->num) >= 1e7 || fabs(c->num) < 1e-4)) snprintf(buf, cap, "%.6g", c->num);
@@ -211,10 +234,11 @@ static void cell_text(const cell *c, char *buf, size_t cap)
 static void write_row(const cli_table *t, const cell *row, cli_format fmt, FILE *out, size_t index)
 {
     if (fmt == CLI_FMT_CSV) {
-        for (int c = 0; c < t->ncols; c++) {
+        for (int c = 0, k = 0; c < t->ncols; c++) {
             const cell *x = &row[c];
-            if (c) fputc(',', out);
-            if (x->kind == 1) csv_str(out, x->str);
+            if (!shown(t, c, fmt)) continue;
+            if (k++) fputc(',', out);
+            if (x->kind == 1 || x->kind == 3) csv_str(out, x->str);
             else if (x->kind == 2) fprintf(out, "%lld", x->integer);
             else if (isfinite(x->num)) cli_print_exact(out, x->num);
         }
@@ -224,7 +248,8 @@ static void write_row(const cli_table *t, const cell *row, cli_format fmt, FILE 
         for (int c = 0; c < t->ncols; c++) {
             const cell *x = &row[c];
             fprintf(out, "%s\"%s\": ", c ? ", " : "", t->names[c]);
-            if (x->kind == 1) json_str(out, x->str);
+            if (x->kind == 3) fputs(x->str, out);
+            else if (x->kind == 1) json_str(out, x->str);
             else if (x->kind == 2) fprintf(out, "%lld", x->integer);
             else if (isfinite(x->num)) cli_print_exact(out, x->num);
             else fputs("null", out);
@@ -235,11 +260,12 @@ static void write_row(const cli_table *t, const cell *row, cli_format fmt, FILE 
         int w = 0;
         for (int c = 0; c < t->ncols; c++) {
             int l = (int)strlen(t->names[c]);
-            if (l > w) w = l;
+            if (l > w && shown(t, c, fmt)) w = l;
         }
         if (index) fputc('\n', out);
         for (int c = 0; c < t->ncols; c++) {
             char buf[512];
+            if (!shown(t, c, fmt)) continue;
             cell_text(&row[c], buf, sizeof buf);
             const char *u = t->units && t->units[c] ? t->units[c] : "";
             fprintf(out, "%-*s  %s%s%s\n", w, t->names[c], buf, *u && strcmp(buf, "-") ? " " : "",
@@ -255,7 +281,8 @@ int cli_table_flush(cli_table *t, cli_format fmt, FILE *out, int json_array, int
     if (fmt == CLI_FMT_JSON && !t->header_done && !final && !json_array && t->emitted + rows < 2) return 0;
     if (!t->header_done) {
         if (fmt == CLI_FMT_CSV) {
-            for (int c = 0; c < t->ncols; c++) fprintf(out, "%s%s", c ? "," : "", t->names[c]);
+            for (int c = 0, k = 0; c < t->ncols; c++)
+                if (shown(t, c, fmt)) fprintf(out, "%s%s", k++ ? "," : "", t->names[c]);
             fputc('\n', out);
         } else if (fmt == CLI_FMT_JSON) {
             t->json_array = json_array || t->emitted + rows != 1;

@@ -12,14 +12,49 @@
 
 #define CHUNK 65536 /* spectra per batch call: bounds memory, lets output stream */
 
-static void add_row(cli_table *t, const char *file, const char *name, const lx_colorimetry *r)
+static void add_row(cli_spd_batch *B, const char *file, const char *name, const lx_colorimetry *r, const lx_par *par,
+                    const lx_hazard *hz, const lx_binning *bin)
 {
+    cli_table *t = B->table;
     cli_table_str(t, file);
     cli_table_str(t, name);
     double v[] = {r->X, r->Y, r->Z, r->x, r->y, r->u_prime, r->v_prime, r->cct_K, r->duv, r->ler_lm_per_W,
                   r->scotopic_Y, r->sp_ratio, r->radiant};
     for (size_t j = 0; j < sizeof v / sizeof *v; j++) cli_table_num(t, v[j]);
     cli_table_str(t, "cie15");
+    if (B->metrics && B->metrics->any)
+        cli_metrics_row_batch(t, B->metrics, B->unit ? B->unit : "relative", par, hz, bin, B->vendor);
+    cli_table_json(t, B->instrument);
+}
+
+/* The metric integrals of a batch for rows [0, n) (each array NULL when not needed). */
+typedef struct lab {
+    lx_par *par;
+    lx_hazard *hz;
+    lx_binning *bin;
+} lab;
+
+static void lab_free(lab *L) { free(L->par), free(L->hz), free(L->bin); }
+
+static lx_status lab_compute(cli_spd_batch *B, const lx_batch *b, const lx_colorimetry *res, lx_batch_opts *opts,
+                             lab *L)
+{
+    memset(L, 0, sizeof *L);
+    const cli_metrics *m = B->metrics;
+    if (!m || !m->any) return LX_OK;
+    size_t n = b->n_spectra ? b->n_spectra : 1;
+    lx_status st = LX_OK;
+    if (cli_metrics_need_par(m) && (!(L->par = malloc(n * sizeof *L->par)) || (st = lx_par_batch(B->ctx, b, opts, L->par))))
+        return st ? st : LX_ENOMEM;
+    if (cli_metrics_need_hazard(m) && (!(L->hz = malloc(n * sizeof *L->hz)) || (st = lx_hazard_batch(B->ctx, b, opts, L->hz))))
+        return st ? st : LX_ENOMEM;
+    if (cli_metrics_need_binning(m)) {
+        if (!(L->bin = malloc(n * sizeof *L->bin))) return LX_ENOMEM;
+        if (B->observer != LX_OBSERVER_2) return lx_binning_batch(B->ctx, b, opts, L->bin); /* needs 2 deg */
+        for (size_t i = 0; i < b->n_spectra && st == LX_OK; i++)
+            st = lx_binning_compute(B->ctx, res[i].x, res[i].y, res[i].cct_K, res[i].duv, &L->bin[i]);
+    }
+    return st;
 }
 
 /* Colorimetry of spectra [i0, i0+n) of b, one row each; names[i] or the 1-based index. */
@@ -30,15 +65,18 @@ static lx_status run_chunk(cli_spd_batch *B, const lx_batch *b, const char *file
     lx_batch_opts opts;
     memset(&opts, 0, sizeof opts);
     opts.backend = B->backend;
+    lab L = {0};
     lx_status st = lx_batch_colorimetry(B->ctx, b, B->observer, &opts, res);
+    if (st == LX_OK) st = lab_compute(B, b, res, &opts, &L);
     if (st == LX_OK) {
         char idx[32];
         for (size_t i = 0; i < b->n_spectra; i++) {
             const char *name = names ? names[i] : (snprintf(idx, sizeof idx, "%zu", i0 + i + 1), idx);
-            add_row(B->table, file, name, &res[i]);
+            add_row(B, file, name, &res[i], L.par ? &L.par[i] : NULL, L.hz ? &L.hz[i] : NULL, L.bin ? &L.bin[i] : NULL);
         }
         if (B->flush) B->flush(B->flush_arg);
     }
+    lab_free(&L);
     free(res);
     return st;
 }
@@ -94,6 +132,9 @@ lx_status cli_spd_batch_set(cli_spd_batch *B, const lx_spd_set *set)
 typedef struct stream_acc {
     cli_spd_batch *B;
     lx_colorimetry *res;
+    lx_par *par;
+    lx_hazard *hz;
+    lx_binning *bin;
     char *names;       /* NUL-separated, in row order */
     size_t rows, cap, names_len, names_cap;
     int checked;       /* the grid was checked on the first chunk */
@@ -155,6 +196,15 @@ static lx_status stream_chunk(void *user, const lx_batch_table *chunk, size_t ro
         lx_colorimetry *r = realloc(A->res, cap * sizeof *r);
         if (!r) return LX_ENOMEM;
         A->res = r;
+        lx_par *p = realloc(A->par, cap * sizeof *p);
+        if (!p) return LX_ENOMEM;
+        A->par = p;
+        lx_hazard *h = realloc(A->hz, cap * sizeof *h);
+        if (!h) return LX_ENOMEM;
+        A->hz = h;
+        lx_binning *g = realloc(A->bin, cap * sizeof *g);
+        if (!g) return LX_ENOMEM;
+        A->bin = g;
         A->cap = cap;
     }
     for (size_t i = 0; i < b->n_spectra; i++) { /* names as the general reader keeps them */
@@ -180,6 +230,14 @@ static lx_status stream_chunk(void *user, const lx_batch_table *chunk, size_t ro
     opts.backend = B->backend;
     opts.threads = 1; /* the other cores parse the next chunk meanwhile */
     lx_status st = lx_batch_colorimetry(B->ctx, b, B->observer, &opts, A->res + row0);
+    lab L = {0};
+    if (st == LX_OK) st = lab_compute(B, b, A->res + row0, &opts, &L);
+    if (st == LX_OK) {
+        if (L.par) memcpy(A->par + row0, L.par, b->n_spectra * sizeof *L.par);
+        if (L.hz) memcpy(A->hz + row0, L.hz, b->n_spectra * sizeof *L.hz);
+        if (L.bin) memcpy(A->bin + row0, L.bin, b->n_spectra * sizeof *L.bin);
+    }
+    lab_free(&L);
     A->rows = row0 + b->n_spectra;
     return st;
 }
@@ -196,13 +254,18 @@ int cli_spd_batch_file(cli_spd_batch *B, const char *path)
     int done = st == LX_OK && A.rows > 0 && (B->forced || A.rows >= CLI_SPD_BATCH_MIN);
     if (done) {
         size_t off = 0;
+        const cli_metrics *m = B->metrics;
+        int par = m && cli_metrics_need_par(m), hz = m && cli_metrics_need_hazard(m), bin = m && cli_metrics_need_binning(m);
         for (size_t i = 0; i < A.rows; i++) {
-            add_row(B->table, path, A.names + off, &A.res[i]);
+            add_row(B, path, A.names + off, &A.res[i], par ? &A.par[i] : NULL, hz ? &A.hz[i] : NULL, bin ? &A.bin[i] : NULL);
             off += strlen(A.names + off) + 1;
         }
         if (B->flush) B->flush(B->flush_arg);
     }
     free(A.res);
+    free(A.par);
+    free(A.hz);
+    free(A.bin);
     free(A.names);
     return done;
 }

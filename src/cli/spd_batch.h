@@ -3,6 +3,7 @@
 #define LX_SPD_BATCH_H
 
 #include "cli.h"
+#include "spd_metrics.h"
 
 /* A file with at least this many spectra on one uniform grid takes the batch path even without
  * --backend (results agree with the per-spectrum path to 1e-9 relative, not bit for bit). */
@@ -18,6 +19,10 @@ typedef struct cli_spd_batch {
     int forced;                 /* --backend or LX_BACKEND given: batch even small sets */
     void (*flush)(void *arg);   /* called after each chunk's rows were added */
     void *flush_arg;
+    const cli_metrics *metrics; /* the --metrics selection (batchable groups only), NULL for none */
+    const char *unit;           /* the current file's unit name (the metrics' units) */
+    const lx_vendor_results *vendor; /* the current file's instrument results, NULL for none */
+    const char *instrument;     /* the current file's instrument JSON cell, NULL for null */
 } cli_spd_batch;
 
 /* 1 when every spectrum of set shares one uniform grid that the method integrates with cie15. */

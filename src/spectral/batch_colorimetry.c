@@ -12,7 +12,7 @@ typedef struct job {
     lx_status st[64];   /* per thread */
 } job;
 
-static double radiant_of(const lx_batch *b, size_t i)
+double lx__batch_radiant(const lx_batch *b, size_t i)
 {
     size_t stride = b->row_stride ? b->row_stride : b->n_lambda;
     double sum = 0.0;
@@ -35,7 +35,7 @@ static void work(void *arg, long i0, long i1, int t)
     if ((j->st[t] = lx_ctx_create(&ctx)) != LX_OK) return;
     for (long i = i0; i < i1 && j->st[t] == LX_OK; i++) {
         j->out[i].method = LX_METHOD_CIE15;
-        j->st[t] = lx_colorimetry_from_integrals(ctx, j->obs, j->ints + 4 * i, j->ints[4 * i + 3], radiant_of(j->b, i),
+        j->st[t] = lx_colorimetry_from_integrals(ctx, j->obs, j->ints + 4 * i, j->ints[4 * i + 3], lx__batch_radiant(j->b, i),
                                               &j->out[i]);
     }
     lx_ctx_destroy(ctx);

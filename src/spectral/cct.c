@@ -254,3 +254,46 @@ lx_status lx_cct_from_xy(lx_ctx *ctx, lx_observer obs, double x, double y, doubl
     }
     return lx_cct_from_uv(ctx, obs, 4 * x / d, 6 * y / d, cct_K, duv);
 }
+
+/* The point of the Hermite interpolant at s = ln T and its derivative in s. */
+static void hermite_at(const lx__locus *L, double s, double *pu, double *pv, double *qu, double *qv)
+{
+    const double *du = L->u + 2 * L->n, *dv = L->u + 3 * L->n, h = L->dlogt;
+    double f = (s - L->logt0) / h;
+    int i = (int)floor(f);
+    if (i < 0) i = 0;
+    if (i > L->n - 2) i = L->n - 2;
+    double t = f - i, t2 = t * t, t3 = t2 * t;
+    double h00 = 2 * t3 - 3 * t2 + 1, h10 = t3 - 2 * t2 + t, h01 = -2 * t3 + 3 * t2, h11 = t3 - t2;
+    double d00 = 6 * t2 - 6 * t, d10 = 3 * t2 - 4 * t + 1, d01 = -6 * t2 + 6 * t, d11 = 3 * t2 - 2 * t;
+    *pu = h00 * L->u[i] + h10 * h * du[i] + h01 * L->u[i + 1] + h11 * h * du[i + 1];
+    *pv = h00 * L->v[i] + h10 * h * dv[i] + h01 * L->v[i + 1] + h11 * h * dv[i + 1];
+    *qu = (d00 * L->u[i] + d10 * h * du[i] + d01 * L->u[i + 1] + d11 * h * du[i + 1]) / h;
+    *qv = (d00 * L->v[i] + d10 * h * dv[i] + d01 * L->v[i + 1] + d11 * h * dv[i + 1]) / h;
+}
+
+lx_status lx__cct_from_uv_table(lx_ctx *ctx, lx_observer obs, double u, double v, double *cct_K, double *duv)
+{
+    *cct_K = *duv = NAN;
+    if (!isfinite(u) || !isfinite(v)) return LX_ERANGE;
+    cmf3 c;
+    lx__locus *L = NULL;
+    lx_status st = locus(ctx, obs, &L, &c);
+    if (st != LX_OK) return st;
+    int best = 0;
+    double bd = INFINITY;
+    for (int k = 0; k < L->n; k++) {
+        double d = (L->u[k] - u) * (L->u[k] - u) + (L->v[k] - v) * (L->v[k] - v);
+        if (d < bd) bd = d, best = k;
+    }
+    if (best == 0 || best == L->n - 1) return LX_ERANGE;
+    double s = hermite_guess(L, best, u, v), T = exp(s);
+    if (!(T >= LOCUS_T_MIN && T <= LOCUS_T_MAX)) return LX_ERANGE;
+    double pu, pv, qu, qv;
+    hermite_at(L, s, &pu, &pv, &qu, &qv);
+    double cross = qu * (v - pv) - qv * (u - pu), sgn = cross < 0 ? 1.0 : -1.0;
+    if (qu > 0) sgn = -sgn; /* as lx_cct_from_uv: + above the locus */
+    *cct_K = T;
+    *duv = sgn * hypot(u - pu, v - pv);
+    return LX_OK;
+}

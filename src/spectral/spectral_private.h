@@ -78,6 +78,10 @@ lx_status lx__text_read(lx__rd *rd, const char *text, size_t len, int layout, lx
  * solve, for binning many spectra (LX_ERANGE outside 1000-20000 K). */
 lx_status lx__cct_from_uv_table(lx_ctx *ctx, lx_observer obs, double u, double v, double *cct_K, double *duv);
 
+/* The radiant integral of spectrum i of a batch: the trapezoid rule, as lx_spd_integrate_radiant
+ * (batch_colorimetry.c). */
+double lx__batch_radiant(const lx_batch *b, size_t i);
+
 /* The batch weight matrix: w[f * n_lambda + j] = w_f(start + j step) * step (cie15 rule). */
 lx_status lx__batch_weights(lx_ctx *ctx, const lx_function *fns, size_t k, double start_nm, double step_nm,
                             size_t n_lambda, double *w);
