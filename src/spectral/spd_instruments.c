@@ -86,7 +86,8 @@ static lx_status pair_row(lx__rd *rd, samples *S, const char *s, const char *e, 
 {
     const char *ts[3], *te[3];
     size_t n = tokens(s, e, ts, te, 2);
-    if (n != 2) return lx__rd_bad_row(rd, line, "row has %s fields, expected 2 (wavelength, value)", n > 2 ? "more" : "1");
+    if (n != 2)
+        return lx__rd_bad_row(rd, line, "row has %s, expected 2 (wavelength, value)", n > 2 ? "more than 2 fields" : "1 field");
     double l, v;
     lx_status st = lx__parse_field(rd->ctx, rd->file, line, ts[0], te[0], ',', "wavelength", &l);
     if (!st) st = lx__parse_field(rd->ctx, rd->file, line, ts[1], te[1], ',', "value", &v);
@@ -405,7 +406,7 @@ lx_status lx__spectrawiz_read(lx__rd *rd, const char *text, size_t len, lx_spd_s
             int kv = *t == '"' && c > v && c < e && *c == ':';
             const char *k = kv ? v : *t == '"' ? header_key : trailer_key;
             const char *ke = kv ? c : k + strlen(k);
-            if (lx__rd_field(rd, it.line, k, ke, kv ? c + 1 : *t == '"' ? v : t, e)) st = lx__rd_nomem(rd);
+            if (lx__rd_field(rd, it.line, k, ke, kv ? c + 1 : v, e)) st = lx__rd_nomem(rd);
             if (*t == ':') trailer = it.line;
             continue;
         }

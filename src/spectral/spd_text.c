@@ -325,7 +325,8 @@ static lx_status columns_row(lx__rd *rd, table *t, cells *cs, char sep, const si
                              size_t ncols, size_t nmin, long line, long first_line, int selected)
 {
     if (!selected && (cs->n < nmin || cs->n > ncols))
-        return lx__rd_bad_row(rd, line, "row has %zu fields, expected %zu (as on line %ld)", cs->n, ncols, first_line);
+        return lx__rd_bad_row(rd, line, "row has %zu field%s, expected %zu (as on line %ld)", cs->n,
+                              cs->n == 1 ? "" : "s", ncols, first_line);
     size_t need = 0;
     for (size_t k = 0; k < ncol; k++)
         if (col[k] + 1 > need) need = col[k] + 1;
@@ -353,7 +354,8 @@ static lx_status columns_row(lx__rd *rd, table *t, cells *cs, char sep, const si
 static lx_status rows_row(lx__rd *rd, table *t, cells *cs, char sep, size_t ncols, long line, long first_line)
 {
     if (cs->n != ncols)
-        return lx__rd_bad_row(rd, line, "row has %zu fields, expected %zu (as on line %ld)", cs->n, ncols, first_line);
+        return lx__rd_bad_row(rd, line, "row has %zu field%s, expected %zu (as on line %ld)", cs->n,
+                              cs->n == 1 ? "" : "s", ncols, first_line);
     double *row;
     if (table_row(t, line, &row)) return lx__rd_nomem(rd);
     for (size_t c = 1; c < ncols; c++) {
