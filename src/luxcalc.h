@@ -526,8 +526,8 @@ LX_API lx_status lx_batch_colorimetry(lx_ctx *ctx, const lx_batch *batch, lx_obs
 
 /** Bins every spectrum of a batch (lx_binning_compute, section 5): X, Y, Z by lx_batch_integrate
  * (cie15 rule), CCT and Duv from the cubic Hermite interpolant of the Planckian locus table that
- * lx_cct_from_uv starts from, without its exact solve (within 0.01 K and 1e-7 in Duv of it over
- * 1500-10000 K; tests/test_binning.c). A spectrum whose CCT cannot be found gets ansi_K = flex_K = 0
+ * lx_cct_from_uv starts from, without its exact solve (within 0.02 K and 1e-8 in Duv of it over
+ * 1500-10000 K and Duv -0.02..0.02; tests/test_binning.c). A spectrum whose CCT cannot be found gets ansi_K = flex_K = 0
  * and NaN sdcm. opts may be NULL. */
 LX_API lx_status lx_binning_batch(lx_ctx *ctx, const lx_batch *batch, lx_batch_opts *opts, lx_binning *out);
 
