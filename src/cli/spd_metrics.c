@@ -40,7 +40,7 @@ static const char *const ao_names[5] = {"sc", "mc", "lc", "rh", "mel"};
 static void build(void)
 {
     if (ncols) return;
-    char nm[24];
+    char nm[40];
     /* the contract columns (CLI.md), in this order */
     add("cri_ra", G_CRI, K_RA, 0);
     for (int i = 0; i < 14; i++) snprintf(nm, sizeof nm, "cri_r%d", i + 1), add(nm, G_CRI, K_R, i);
