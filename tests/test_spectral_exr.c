@@ -126,7 +126,7 @@ static void uniform_scanline(void **state)
     /* the XYZ EXR: channels X, Y, Z; Y read back through lx_exr_read (a Y-only luminance map) */
     char out[128];
     snprintf(out, sizeof out, "%s/xyz.exr", dir);
-    lx_assert_ok(ctx, lx_xyz_exr_write(ctx, out, img));
+    lx_assert_ok(ctx, lx_xyz_image_write_exr(ctx, out, img));
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     init.error_handler_fn = quiet;
     exr_context_t e = NULL;
@@ -155,7 +155,7 @@ static void uniform_scanline(void **state)
     png_image_free(&pi);
     /* an unwritable place: LX_EIO and nothing left */
     snprintf(out, sizeof out, "%s/none/xyz.exr", dir);
-    assert_int_equal(lx_xyz_exr_write(ctx, out, img), LX_EIO);
+    assert_int_equal(lx_xyz_image_write_exr(ctx, out, img), LX_EIO);
     assert_int_equal(access(out, F_OK), -1);
     lx_xyz_image_free(img);
 

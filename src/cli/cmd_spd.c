@@ -337,6 +337,7 @@ static void do_set(spd_run *R, lx_spd_set *set)
         lx_colorimetry r;
         long line = set->line ? set->line[k] : 0L;
         lx_status st = lx_spd_colorimetry(R->ctx, &set->spd[k], a->obs, a->method, &r);
+        if (st == LX_OK) st = lx_colorimetry_check(R->ctx, &r, NAN); /* before printing: no blank columns */
         if (st != LX_OK) {
             cli_error(a->cmd, "%s:%ld: spectrum '%s': %s", set->file, line, set->spd[k].name ? set->spd[k].name : "",
                       lx_ctx_errmsg(R->ctx));
@@ -349,9 +350,10 @@ static void do_set(spd_run *R, lx_spd_set *set)
                       r.scotopic_Y, r.sp_ratio, r.radiant};
         for (size_t j = 0; j < sizeof v / sizeof *v; j++) cli_table_num(t, v[j]);
         cli_table_str(t, method_name(r.method));
-        if (a->msel.any)
+        if (a->msel.any &&
             cli_metrics_row(t, R->ctx, &a->msel, &set->spd[k], a->method, units[u].name, &r,
-                            have_vendor ? &vendor : NULL, set->file, line, a->cmd);
+                            have_vendor ? &vendor : NULL, set->file, line, a->cmd) > 0 && R->rc < CLI_INPUT)
+            R->rc = CLI_INPUT;
         cli_table_json(t, inst);
         if (a->report_dir) {
             int re = cli_spd_report(R->ctx, a->cmd, a->report_dir, set->file, k, &set->spd[k], a->obs);
@@ -376,8 +378,10 @@ static void do_file(spd_run *R, const char *arg, double g_start, double g_step, 
     /* rows-layout files: streamed, integrated chunk by chunk (spd_batch.c); else the general reader */
     set_unit(R, a->unit);
     R->B.unit = units[a->unit].name;
-    if ((!a->msel.any || cli_metrics_batchable(&a->msel)) && !a->report_dir && !a->reader_opts &&
-        cli_spd_batch_file(&R->B, arg)) {
+    int streamed = (!a->msel.any || cli_metrics_batchable(&a->msel)) && !a->report_dir && !a->reader_opts
+                       ? cli_spd_batch_file(&R->B, arg) : 0;
+    if (streamed < 0 && -streamed > R->rc) R->rc = -streamed;
+    if (streamed) {
         spd_flush(&R->so);
         return;
     }
@@ -449,13 +453,14 @@ int cmd_spd(int argc, char **argv)
     cli_table_json_only(R->t, R->C.n - 1);
     R->table_unit = a.unit;
     R->so.t = R->t, R->so.fmt = (cli_format)a.fmt, R->so.cmd = cmd, R->so.path = a.outpath;
-    cli_spd_batch B = {ctx, cmd, R->t, a.obs, a.method, backend, a.backend_given, spd_flush, &R->so,
+    cli_spd_batch B = {ctx, cmd, R->t, a.obs, a.method, backend, a.backend_given, spd_flush, &R->so, 0,
                        a.msel.any ? &a.msel : NULL, units[a.unit].name, NULL, NULL};
     R->B = B;
     int nfiles = 0;
     char **files = cli_expand_files(argc - optind, argv + optind, &nfiles);
     for (int fi = 0; files && fi < nfiles; fi++) do_file(R, files[fi], g_start, g_step, g_n);
     int rc = R->rc;
+    if (R->B.rejected && rc < CLI_INPUT) rc = CLI_INPUT; /* batch spectra reported instead of printed */
     /* nothing computed and something failed: leave any existing output file as it was */
     if (!(rc != CLI_OK && cli_table_rows(R->t) == 0)) {
         if (!R->so.opened && spd_open(&R->so) != 0) rc = CLI_INPUT;

@@ -23,7 +23,7 @@ static void add_row(cli_spd_batch *B, const char *file, const char *name, const 
     for (size_t j = 0; j < sizeof v / sizeof *v; j++) cli_table_num(t, v[j]);
     cli_table_str(t, "cie15");
     if (B->metrics && B->metrics->any)
-        cli_metrics_row_batch(t, B->metrics, B->unit ? B->unit : "relative", par, hz, bin, B->vendor);
+        cli_metrics_row_batch(t, B->ctx, B->metrics, B->unit ? B->unit : "relative", par, hz, bin, B->vendor);
     cli_table_json(t, B->instrument);
 }
 
@@ -57,8 +57,25 @@ static lx_status lab_compute(cli_spd_batch *B, const lx_batch *b, const lx_color
     return st;
 }
 
-/* Colorimetry of spectra [i0, i0+n) of b, one row each; names[i] or the 1-based index. */
-static lx_status run_chunk(cli_spd_batch *B, const lx_batch *b, const char *file, const char *const *names, size_t i0)
+/* The largest |value| of spectrum i of b (for the overflow message). */
+static double row_max_abs(const lx_batch *b, size_t i)
+{
+    size_t stride = b->row_stride ? b->row_stride : b->n_lambda;
+    double m = 0;
+    for (size_t j = 0; j < b->n_lambda; j++) {
+        double v = b->dtype == LX_F32 ? (double)((const float *)b->values)[i * stride + j]
+                                      : ((const double *)b->values)[i * stride + j];
+        if (fabs(v) > m) m = fabs(v);
+    }
+    return m;
+}
+
+/* Colorimetry of spectra [i0, i0+n) of b, one row each; names[i] or the 1-based index, lines[i]
+ * (or none). A result lx_colorimetry_check refuses (an overflow, a NaN) is reported on stderr as
+ * "FILE:LINE: spectrum 'NAME': why" instead of a row and counted in B->rejected; with stop_at_bad
+ * the chunk ends there (LX_ERANGE, the rows before it added). */
+static lx_status run_chunk(cli_spd_batch *B, const lx_batch *b, const char *file, const char *const *names,
+                           const long *lines, size_t i0, int stop_at_bad)
 {
     lx_colorimetry *res = malloc(sizeof *res * (b->n_spectra ? b->n_spectra : 1));
     if (!res) return LX_ENOMEM;
@@ -72,6 +89,16 @@ static lx_status run_chunk(cli_spd_batch *B, const lx_batch *b, const char *file
         char idx[32];
         for (size_t i = 0; i < b->n_spectra; i++) {
             const char *name = names ? names[i] : (snprintf(idx, sizeof idx, "%zu", i0 + i + 1), idx);
+            if (lx_colorimetry_check(B->ctx, &res[i], row_max_abs(b, i)) != LX_OK) {
+                if (lines) cli_error(B->cmd, "%s:%ld: spectrum '%s': %s", file, lines[i], name, lx_ctx_errmsg(B->ctx));
+                else cli_error(B->cmd, "%s: spectrum %s: %s", file, name, lx_ctx_errmsg(B->ctx));
+                B->rejected++;
+                if (stop_at_bad) {
+                    st = LX_ERANGE;
+                    break;
+                }
+                continue;
+            }
             add_row(B, file, name, &res[i], L.par ? &L.par[i] : NULL, L.hz ? &L.hz[i] : NULL, L.bin ? &L.bin[i] : NULL);
         }
         if (B->flush) B->flush(B->flush_arg);
@@ -118,7 +145,7 @@ lx_status cli_spd_batch_set(cli_spd_batch *B, const lx_spd_set *set)
             names[i] = set->spd[i0 + i].name ? set->spd[i0 + i].name : "";
         }
         lx_batch b = {m, n, 0, s0->lambda_nm[0], step, LX_F64, v};
-        st = run_chunk(B, &b, set->file, names, i0);
+        st = run_chunk(B, &b, set->file, names, set->line ? set->line + i0 : NULL, i0, 0);
         free(v);
         free(names);
         cli_progress_update(i0 + m);
@@ -131,6 +158,9 @@ lx_status cli_spd_batch_set(cli_spd_batch *B, const lx_spd_set *set)
 
 typedef struct stream_acc {
     cli_spd_batch *B;
+    const char *path;
+    int over_cap;      /* the file is larger than the general reader takes */
+    unsigned char *bad; /* per row: refused by lx_colorimetry_check (reported, no row) */
     lx_colorimetry *res;
     lx_par *par;
     lx_hazard *hz;
@@ -194,8 +224,10 @@ static lx_status stream_chunk(void *user, const lx_batch_table *chunk, size_t ro
     if (row0 + b->n_spectra > A->cap) {
         size_t cap = 2 * (row0 + b->n_spectra);
         lx_colorimetry *r = realloc(A->res, cap * sizeof *r);
-        if (!r) return LX_ENOMEM;
-        A->res = r;
+        if (r) A->res = r;
+        unsigned char *f = r ? realloc(A->bad, cap) : NULL;
+        if (!f) return LX_ENOMEM;
+        A->bad = f;
         lx_par *p = realloc(A->par, cap * sizeof *p);
         if (!p) return LX_ENOMEM;
         A->par = p;
@@ -239,6 +271,14 @@ static lx_status stream_chunk(void *user, const lx_batch_table *chunk, size_t ro
     }
     lab_free(&L);
     A->rows = row0 + b->n_spectra;
+    for (size_t i = 0; st == LX_OK && i < b->n_spectra; i++) {
+        A->bad[row0 + i] = lx_colorimetry_check(B->ctx, &A->res[row0 + i], row_max_abs(b, i)) != LX_OK;
+        if (!A->bad[row0 + i]) continue;
+        if (!A->over_cap) return LX_EUNSUPPORTED; /* the general reader reports it with its line */
+        cli_error(B->cmd, "%s: spectrum '%s' (data row %zu): %s", A->path, chunk->names + chunk->name_at[i], row0 + i + 1,
+                  lx_ctx_errmsg(B->ctx));
+        B->rejected++;
+    }
     return st;
 }
 
@@ -250,15 +290,25 @@ int cli_spd_batch_file(cli_spd_batch *B, const char *path)
     stream_acc A;
     memset(&A, 0, sizeof A);
     A.B = B;
+    A.path = path;
+    A.over_cap = (unsigned long long)sb.st_size > lx_ctx_input_limit(B->ctx, LX_INPUT_SPECTRUM);
     lx_status st = lx_batch_table_stream(B->ctx, path, LX_F64, 0, stream_chunk, &A);
     int done = st == LX_OK && A.rows > 0 && (B->forced || A.rows >= CLI_SPD_BATCH_MIN);
+    /* a file the general reader would refuse for its size: the stream's own error stands */
+    if (st != LX_OK && st != LX_EUNSUPPORTED && A.over_cap) {
+        free(A.res);
+        free(A.names);
+        free(A.bad);
+        return -cli_fail(B->cmd, B->ctx, st);
+    }
     if (done) {
         size_t off = 0;
         const cli_metrics *m = B->metrics;
         int par = m && cli_metrics_need_par(m), hz = m && cli_metrics_need_hazard(m), bin = m && cli_metrics_need_binning(m);
         for (size_t i = 0; i < A.rows; i++) {
-            add_row(B, path, A.names + off, &A.res[i], par ? &A.par[i] : NULL, hz ? &A.hz[i] : NULL, bin ? &A.bin[i] : NULL);
+            if (!A.bad[i]) add_row(B, path, A.names + off, &A.res[i], par ? &A.par[i] : NULL, hz ? &A.hz[i] : NULL, bin ? &A.bin[i] : NULL);
             off += strlen(A.names + off) + 1;
+            if (B->flush && (i + 1) % CHUNK == 0) B->flush(B->flush_arg); /* the table holds a chunk at most */
         }
         if (B->flush) B->flush(B->flush_arg);
     }
@@ -267,6 +317,7 @@ int cli_spd_batch_file(cli_spd_batch *B, const char *path)
     free(A.hz);
     free(A.bin);
     free(A.names);
+    free(A.bad);
     return done;
 }
 
@@ -329,9 +380,9 @@ lx_status cli_spd_f32_file(cli_spd_batch *B, const char *path, double start, dou
                 }
             if (st != LX_OK) break;
             lx_batch b = {m, n, 0, start, step, LX_F32, buf};
-            st = run_chunk(B, &b, path, NULL, total / per);
+            st = run_chunk(B, &b, path, NULL, NULL, total / per, 1); /* the first bad spectrum ends the file */
             if (st != LX_OK) {
-                cli_error(B->cmd, "%s: %s", path, lx_ctx_errmsg(B->ctx));
+                if (st != LX_ERANGE) cli_error(B->cmd, "%s: %s", path, lx_ctx_errmsg(B->ctx));
                 break;
             }
             total += got;

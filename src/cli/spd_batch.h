@@ -19,6 +19,7 @@ typedef struct cli_spd_batch {
     int forced;                 /* --backend or LX_BACKEND given: batch even small sets */
     void (*flush)(void *arg);   /* called after each chunk's rows were added */
     void *flush_arg;
+    size_t rejected;            /* spectra reported on stderr instead of a row (exit status 2) */
     const cli_metrics *metrics; /* the --metrics selection (batchable groups only), NULL for none */
     const char *unit;           /* the current file's unit name (the metrics' units) */
     const lx_vendor_results *vendor; /* the current file's instrument results, NULL for none */
@@ -34,7 +35,9 @@ lx_status cli_spd_batch_set(cli_spd_batch *B, const lx_spd_set *set);
  * once the whole file parsed and every spectrum is batchable. Returns 1 when it did the file,
  * 0 when the caller must use the general reader instead (not a plain rows layout, another
  * method, fewer than CLI_SPD_BATCH_MIN spectra without --backend, or any error: the general
- * reader then reports the file's first problem, FILE:LINE, exactly as before). */
+ * reader then reports the file's first problem, FILE:LINE, exactly as before), and -EXIT when
+ * the file failed and is larger than the general reader's size limit: the error was printed
+ * (FILE:LINE) and EXIT is its exit status. */
 int cli_spd_batch_file(cli_spd_batch *B, const char *path);
 /* "START:END:STEP" in nm into the grid; 0 on success. */
 int cli_spd_parse_grid(const char *s, double *start, double *step, size_t *n);

@@ -32,7 +32,7 @@ int cli_metrics_need_binning(const cli_metrics *m);
 
 /* One batch row's metric cells from integrals computed for the whole batch (par, hz may be NULL
  * when not needed; bin: the spectrum's binning, NULL when not needed; vendor may be NULL). */
-void cli_metrics_row_batch(cli_table *t, const cli_metrics *m, const char *unit, const lx_par *par,
+void cli_metrics_row_batch(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const char *unit, const lx_par *par,
                            const lx_hazard *hz, const lx_binning *bin, const lx_vendor_results *vendor);
 
 /* Appends the selected column names and their units (for unit, the --unit name) after the n
@@ -40,9 +40,11 @@ void cli_metrics_row_batch(cli_table *t, const cli_metrics *m, const char *unit,
 int cli_metrics_columns(const cli_metrics *m, const char *unit, const char **names, const char **units, int n);
 
 /* Computes the selected metrics of one spectrum and appends one cell per selected column (empty
- * where a metric is refused; the reason goes to stderr unless -q). c: its colorimetry. */
-void cli_metrics_row(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const lx_spd *spd, lx_method method,
-                     const char *unit, const lx_colorimetry *c, const lx_vendor_results *vendor, const char *file,
-                     long line, const char *cmd);
+ * where a metric is refused; the reason goes to stderr unless -q). c: its colorimetry; vendor: the
+ * file's instrument results (NULL: none). Returns the number of metrics that were computed but are
+ * not finite (each reported on stderr with its column name: the caller's exit status is then 2). */
+int cli_metrics_row(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const lx_spd *spd, lx_method method,
+                    const char *unit, const lx_colorimetry *c, const lx_vendor_results *vendor, const char *file,
+                    long line, const char *cmd);
 
 #endif

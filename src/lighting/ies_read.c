@@ -104,32 +104,16 @@ static lx_status tilt_file(lx_ctx *ctx, const char *file, long line, const char 
         snprintf(path, sizeof path, "%.*s/%s", (int)(slash - file), file, name);
     else
         snprintf(path, sizeof path, "%s", name);
-    FILE *fp = NULL;
     struct stat sb; /* a TILT table is a file: not stdin, a device or a FIFO */
     if (stat(path, &sb) == 0 && !S_ISREG(sb.st_mode) && !S_ISDIR(sb.st_mode))
         return lx__error(ctx, LX_EIO, file, line, "TILT file '%s': not a regular file", path);
-    if (!strcmp(path, "-") || lx__open_read(ctx, path, &fp))
-        return lx__error(ctx, LX_EIO, file, line, "TILT file '%s': %s", path, strcmp(path, "-") ? lx_ctx_errmsg(ctx) : "not a file");
+    if (!strcmp(path, "-")) return lx__error(ctx, LX_EIO, file, line, "TILT file '%s': not a file", path);
     char *buf = NULL;
-    size_t len = 0, cap = 0;
-    for (;;) {
-        if (len == cap) {
-            cap = cap ? 2 * cap : 4096;
-            char *nb = realloc(buf, cap);
-            if (!nb) {
-                free(buf);
-                fclose(fp);
-                return lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
-            }
-            buf = nb;
-        }
-        size_t got = fread(buf + len, 1, cap - len, fp);
-        if (!got) break;
-        len += got;
-    }
-    fclose(fp);
+    size_t len = 0;
+    lx_status st = lx__read_all(ctx, path, LX_INPUT_LUMINAIRE, &buf, &len);
+    if (st) return lx__error(ctx, st, file, line, "TILT file '%s': %s", path, lx_ctx_errmsg(ctx));
     lx__lines it = {buf, buf + len, 0};
-    lx_status st = tokenize(ctx, path, &it, t);
+    st = tokenize(ctx, path, &it, t);
     free(buf);
     return st;
 }

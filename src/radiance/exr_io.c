@@ -154,15 +154,20 @@ done:
     return st;
 }
 
-lx_status lx_exr_read(lx_ctx *ctx, const char *path, lx_envmap **out) { return exr_read(ctx, path, 0, out); }
+lx_status lx_exr_read(lx_ctx *ctx, const char *path, lx_envmap **out) {
+    LX__NEED_CTX(ctx); return exr_read(ctx, path, 0, out); }
 
-lx_status lx_exr_read_any(lx_ctx *ctx, const char *path, lx_envmap **out) { return exr_read(ctx, path, 1, out); }
+lx_status lx_exr_read_any(lx_ctx *ctx, const char *path, lx_envmap **out) {
+    LX__NEED_CTX(ctx); return exr_read(ctx, path, 1, out); }
 
-lx_status lx_exr_write(lx_ctx *ctx, const char *path, const lx_envmap *map, const lx_exr_write_opts *opts)
+lx_status lx_envmap_write_exr(lx_ctx *ctx, const char *path, const lx_envmap *map, const lx_exr_write_opts *opts)
 {
-    if (!path || !map || !map->data) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_exr_write: NULL argument");
+    LX__NEED_CTX(ctx);
+    if (!path || !map || !map->data) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_envmap_write_exr: NULL argument");
     lx_exr_write_opts o = {0};
     if (opts) o = *opts;
+    lx_status st0 = lx__check_reserved(ctx, "EXR options", o.reserved, sizeof o.reserved);
+    if (st0) return st0;
     exr_compression_t comp = o.use_compression ? (exr_compression_t)o.compression : EXR_COMPRESSION_ZIP;
     if ((int)comp < 0 || comp >= EXR_COMPRESSION_LAST_TYPE)
         return lx__error(ctx, LX_EINVAL, path, 0, "unknown EXR compression %d", (int)comp);

@@ -216,7 +216,7 @@ void lx_xyz_image_free(lx_xyz_image *img)
  * most, where the colour-matching functions are defined (0 outside, so nothing is lost), and is never
  * sized by untrusted channel names. */
 static lx_status nonuniform_weights(lx_ctx *ctx, const char *path, const double *lam, int nl, const lx_function *fns,
-                                    lx_batch_opts *opts, double **out)
+                                    const lx_batch_opts *opts, double **out)
 {
     double g0 = fmax(floor(lam[0]), 360.0), g1 = fmin(ceil(lam[nl - 1]), 830.0);
     if (g1 < g0) g0 = g1 = 360.0; /* no overlap: one sample, where every spectrum is 0 */
@@ -250,9 +250,10 @@ done:
     return st;
 }
 
-lx_status lx_spectral_exr_read_xyz(lx_ctx *ctx, const char *path, lx_observer observer, lx_batch_opts *opts,
+lx_status lx_spectral_exr_read_xyz(lx_ctx *ctx, const char *path, lx_observer observer, const lx_batch_opts *opts,
                                    lx_xyz_image **out)
 {
+    LX__NEED_CTX(ctx);
     if (!path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_spectral_exr_read_xyz: NULL argument");
     *out = NULL;
     if (observer != LX_OBSERVER_2 && observer != LX_OBSERVER_10)
@@ -321,9 +322,10 @@ done:
     return st;
 }
 
-lx_status lx_xyz_exr_write(lx_ctx *ctx, const char *path, const lx_xyz_image *img)
+lx_status lx_xyz_image_write_exr(lx_ctx *ctx, const char *path, const lx_xyz_image *img)
 {
-    if (!path || !img || !img->xyz) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_xyz_exr_write: NULL argument");
+    LX__NEED_CTX(ctx);
+    if (!path || !img || !img->xyz) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_xyz_image_write_exr: NULL argument");
     lx__exr_stream s = {.fd = -1};
     char *tmp = NULL;
     lx_status st = lx__exr_write_begin(ctx, path, &s, &tmp);

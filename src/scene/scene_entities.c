@@ -66,6 +66,8 @@ void lx_scene_free(lx_scene *sc)
     free(sc->rec);
     free(sc->sky_path);
     lx_envmap_free(sc->sky_map);
+    for (size_t i = 0; i < sc->n_obs; i++) free(sc->obs[i].name);
+    free(sc->obs);
     free(sc->title);
     free(sc->file);
     free(sc);
@@ -580,7 +582,9 @@ lx_status lx__scene_sky_key(lx_ctx *ctx, lx_scene *sc, const char *file, long li
         if (!strcmp(value, "uniform")) sc->sky = LX_SKY_UNIFORM;
         else if (!strcmp(value, "overcast")) sc->sky = LX_SKY_OVERCAST;
         else if (!strcmp(value, "map")) sc->sky = LX_SKY_MAP;
-        else return lx__error(ctx, LX_EPARSE, file, line, "type: unknown sky '%s' (uniform, overcast, map)", value);
+        else if (!strcmp(value, "cie")) sc->sky = LX_SKY_CIE;
+        else if (!strcmp(value, "perez")) sc->sky = LX_SKY_PEREZ;
+        else return lx__error(ctx, LX_EPARSE, file, line, "type: unknown sky '%s' (uniform, overcast, map, cie, perez)", value);
         return LX_OK;
     }
     if (!strcmp(key, "luminance")) {
@@ -623,8 +627,13 @@ lx_status lx__scene_sky_key(lx_ctx *ctx, lx_scene *sc, const char *file, long li
         if (st == LX_OK) sc->sky_samples = (int)v;
         return st;
     }
+    int known = 0;
+    lx_status st = lx__scene_sky_daylight_key(ctx, sc, file, line, key, value, &known);
+    if (known) return st;
     return lx__error(ctx, LX_EPARSE, file, line,
-                     "unknown key '%s' in [sky] (keys: type, luminance, file, scale, ground_reflectance, cct, samples)",
+                     "unknown key '%s' in [sky] (keys: type, luminance, file, scale, ground_reflectance, cct, samples; "
+                     "cie: number, luminance or illuminance; perez: direct_normal, diffuse_horizontal, day_of_year, "
+                     "precipitable_water)",
                      key);
 }
 
@@ -645,13 +654,13 @@ lx_status lx__scene_finish(lx_ctx *ctx, lx_scene *sc)
                 return lx__error(ctx, st, f, sc->sky_file_line, "file: %s", inner);
             }
         }
-        if (sc->sky != LX_SKY_MAP && !(sc->sky_luminance_cd_m2 > 0))
+        if ((sc->sky == LX_SKY_UNIFORM || sc->sky == LX_SKY_OVERCAST) && !(sc->sky_luminance_cd_m2 > 0))
             return lx__error(ctx, LX_EPARSE, f, sc->sky_line, "[sky]: missing 'luminance' (a %s sky needs one)",
                              sc->sky == LX_SKY_UNIFORM ? "uniform" : "overcast (zenith)");
     }
     if (sc->n_rec == 0) return lx__error(ctx, LX_EPARSE, sc->file, 0, "the scene has no [receiver NAME] section");
-    if (sc->n_lum == 0 && sc->sky == LX_SKY_NONE)
-        return lx__error(ctx, LX_EPARSE, sc->file, 0, "the scene has neither a luminaire nor a sky");
+    if (sc->n_lum == 0 && sc->sky == LX_SKY_NONE && !(sc->has_sun && sc->sun_normal_lx > 0))
+        return lx__error(ctx, LX_EPARSE, sc->file, 0, "the scene has neither a luminaire nor a sky (nor a sun)");
     if (sc->want_luminance) {
         size_t k = 0;
         while (k < sc->n_rec && !(sc->rec[k].reflectance >= 0)) k++;

@@ -16,7 +16,7 @@ static double flex_tol(double T) { return ((1.1900e-8 * T - 1.5434e-4) * T + 0.7
 
 typedef struct tables {
     const lx__table *ansi, *sdcm;
-    int a_nom, a_t, a_tol, a_duv, a_dtol;   /* columns */
+    int a_t, a_tol, a_duv, a_dtol;   /* columns */
     int s_x, s_y, s_g11, s_g12, s_g22;
 } tables;
 
@@ -39,6 +39,7 @@ static double cellv(const lx__table *t, int col, int row) { return t->data[(size
 
 static void bin_one(const tables *T, double x, double y, double cct, double duv, lx_binning *b)
 {
+    memset(b, 0, sizeof *b);
     b->ansi_K = 0, b->ansi_duv_offset = NAN, b->flex_K = 0, b->flex_duv_offset = NAN;
     b->sdcm = NAN, b->sdcm_centre_K = 0;
     if (isfinite(cct) && isfinite(duv)) {
@@ -76,6 +77,7 @@ static void bin_one(const tables *T, double x, double y, double cct, double duv,
 
 lx_status lx_binning_compute(lx_ctx *ctx, double x, double y, double cct_K, double duv, lx_binning *out)
 {
+    LX__NEED_CTX(ctx);
     if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_binning_compute: NULL argument");
     tables T;
     lx_status st = get_tables(ctx, &T);
@@ -112,8 +114,9 @@ static void bin_range(void *arg, long i0, long i1, int t)
     lx_ctx_destroy(ctx);
 }
 
-lx_status lx_binning_batch(lx_ctx *ctx, const lx_batch *b, lx_batch_opts *opts, lx_binning *out)
+lx_status lx_binning_batch(lx_ctx *ctx, const lx_batch *b, const lx_batch_opts *opts, lx_binning *out)
 {
+    LX__NEED_CTX(ctx);
     if (!b || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_binning_batch: NULL argument");
     if (b->n_spectra == 0) return LX_OK;
     tables T;

@@ -68,18 +68,20 @@ static const lx_function par_fns[3] = {LX_FN_PHOTON_PAR, LX_FN_PHOTON_EPAR, LX_F
 
 lx_status lx_par_compute(lx_ctx *ctx, const lx_spd *spd, lx_method method, lx_par *out)
 {
+    LX__NEED_CTX(ctx);
     if (!spd || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_par_compute: NULL argument");
     double v[3], cov[3], radiant;
     lx_status st = integrate_fns(ctx, spd, method, par_fns, 3, v, cov);
     if (st == LX_OK) st = lx_spd_integrate_radiant(ctx, spd, method, &radiant);
     if (st != LX_OK) return st;
-    out->ppfd = v[0], out->epar = v[1], out->ypf = v[2];
-    out->photon_efficacy_umol_J = radiant > 0 ? v[0] / radiant : NAN;
+    lx_par p = {v[0], v[1], v[2], radiant > 0 ? v[0] / radiant : NAN, {0}};
+    *out = p;
     return LX_OK;
 }
 
-lx_status lx_par_batch(lx_ctx *ctx, const lx_batch *b, lx_batch_opts *opts, lx_par *out)
+lx_status lx_par_batch(lx_ctx *ctx, const lx_batch *b, const lx_batch_opts *opts, lx_par *out)
 {
+    LX__NEED_CTX(ctx);
     if (!b || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_par_batch: NULL argument");
     if (b->n_spectra == 0) return LX_OK;
     double cov[3];
@@ -94,6 +96,7 @@ lx_status lx_par_batch(lx_ctx *ctx, const lx_batch *b, lx_batch_opts *opts, lx_p
         out[i].epar = cov[1] >= LX_COVERAGE_MIN ? r[1] : NAN;
         out[i].ypf = cov[2] >= LX_COVERAGE_MIN ? r[2] : NAN;
         out[i].photon_efficacy_umol_J = radiant > 0 ? out[i].ppfd / radiant : NAN;
+        memset(out[i].reserved, 0, sizeof out[i].reserved);
     }
     free(v);
     return st;
@@ -112,15 +115,18 @@ static const lx_function hz_fns[LX_HZ_COUNT] = {LX_FN_HAZARD_BLUE, LX_FN_HAZARD_
 
 lx_status lx_hazard_compute(lx_ctx *ctx, const lx_spd *spd, lx_method method, lx_hazard *out)
 {
+    LX__NEED_CTX(ctx);
     if (!spd || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_hazard_compute: NULL argument");
     lx_hazard h;
+    memset(&h, 0, sizeof h);
     lx_status st = integrate_fns(ctx, spd, method, hz_fns, LX_HZ_COUNT, h.value, h.coverage);
     if (st == LX_OK) *out = h;
     return st;
 }
 
-lx_status lx_hazard_batch(lx_ctx *ctx, const lx_batch *b, lx_batch_opts *opts, lx_hazard *out)
+lx_status lx_hazard_batch(lx_ctx *ctx, const lx_batch *b, const lx_batch_opts *opts, lx_hazard *out)
 {
+    LX__NEED_CTX(ctx);
     if (!b || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_hazard_batch: NULL argument");
     if (b->n_spectra == 0) return LX_OK;
     double cov[LX_HZ_COUNT];
@@ -129,11 +135,13 @@ lx_status lx_hazard_batch(lx_ctx *ctx, const lx_batch *b, lx_batch_opts *opts, l
     double *v = malloc(sizeof(double) * LX_HZ_COUNT * b->n_spectra);
     if (!v) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for %zu spectra", b->n_spectra);
     st = lx_batch_integrate(ctx, b, hz_fns, LX_HZ_COUNT, opts, v);
-    for (size_t i = 0; st == LX_OK && i < b->n_spectra; i++)
+    for (size_t i = 0; st == LX_OK && i < b->n_spectra; i++) {
+        memset(out[i].reserved, 0, sizeof out[i].reserved);
         for (int k = 0; k < LX_HZ_COUNT; k++) {
             out[i].coverage[k] = cov[k];
             out[i].value[k] = cov[k] >= LX_COVERAGE_MIN ? v[LX_HZ_COUNT * i + k] : NAN;
         }
+    }
     free(v);
     return st;
 }
@@ -170,8 +178,10 @@ static lx_risk_group group_of(double x, const double lim[3])
 
 lx_status lx_hazard_risk_group(lx_ctx *ctx, const lx_hazard *h, int radiance, double alpha_rad, lx_hazard_risk *out)
 {
+    LX__NEED_CTX(ctx);
     if (!h || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_hazard_risk_group: NULL argument");
     lx_hazard_risk r;
+    memset(&r, 0, sizeof r);
     for (int k = 0; k < LX_HZ_COUNT; k++) r.criterion[k] = LX_RISK_NONE;
     /* (criterion, limits row) per geometry */
     static const int rad_rows[LX_HZ_COUNT] = {2, 4, -1, -1}, irr_rows[LX_HZ_COUNT] = {3, -1, 0, 1};

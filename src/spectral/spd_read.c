@@ -173,6 +173,7 @@ int lx__rd_field(lx__rd *rd, long line, const char *ks, const char *ke, const ch
     trim(&ks, &ke);
     if (vs) trim(&vs, &ve);
     lx_spd_field *f = &rd->fields[rd->nfields];
+    memset(f, 0, sizeof *f);
     f->key = lx__strndup(ks, ke);
     f->value = vs ? lx__strndup(vs, ve) : lx__strndup("", "");
     f->line = line;
@@ -196,6 +197,7 @@ static lx_status skip_row(lx__rd *rd, long line, const char *what)
     }
     char *why = lx__strndup(what, what + strlen(what));
     if (!why) return lx__rd_nomem(rd);
+    memset(&rd->skipped[rd->nskipped], 0, sizeof rd->skipped[rd->nskipped]);
     rd->skipped[rd->nskipped].line = line;
     rd->skipped[rd->nskipped].why = why;
     rd->nskipped++;
@@ -412,8 +414,9 @@ static void rd_free(lx__rd *rd)
 lx_status lx_spd_read_mem_opts(lx_ctx *ctx, const char *name, const char *text, size_t len,
                                const lx_spd_read_opts *opts, lx_spd_set **out)
 {
+    LX__NEED_CTX(ctx);
     if (out) *out = NULL;
-    if (!ctx || !out || (!text && len)) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_spd_read_mem: NULL argument");
+    if (!out || (!text && len)) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_spd_read_mem: NULL argument");
     const char *file = name ? name : "(memory)";
     if (len >= 2 && ((unsigned char)text[0] == 0xFF && (unsigned char)text[1] == 0xFE))
         return lx__error(ctx, LX_EPARSE, file, 1, "UTF-16 text is not supported; save the file as UTF-8");
@@ -436,6 +439,8 @@ lx_status lx_spd_read_mem_opts(lx_ctx *ctx, const char *name, const char *text, 
     rd.ctx = ctx;
     rd.file = file;
     if (opts) rd.opts = *opts;
+    for (size_t k = 0; k < sizeof rd.opts.reserved / sizeof *rd.opts.reserved; k++)
+        if (rd.opts.reserved[k]) return lx__error(ctx, LX_EINVAL, file, 0, "lx_spd_read_opts: reserved must be zero");
     if (rd.opts.skip_lines < 0)
         return lx__error(ctx, LX_EINVAL, file, 0, "skip_lines must not be negative (%ld)", rd.opts.skip_lines);
     for (long k = 0; k < rd.opts.skip_lines && len; k++) { /* whole lines, counted */
@@ -465,11 +470,12 @@ lx_status lx_spd_read_mem(lx_ctx *ctx, const char *name, const char *text, size_
 
 lx_status lx_spd_read_file_opts(lx_ctx *ctx, const char *path, const lx_spd_read_opts *opts, lx_spd_set **out)
 {
+    LX__NEED_CTX(ctx);
     if (out) *out = NULL;
-    if (!ctx || !path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_spd_read_file: NULL argument");
+    if (!path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_spd_read_file: NULL argument");
     char *buf;
     size_t len;
-    lx_status st = lx__read_all(ctx, path, &buf, &len);
+    lx_status st = lx__read_all(ctx, path, LX_INPUT_SPECTRUM, &buf, &len);
     if (st != LX_OK) return st;
     st = lx_spd_read_mem_opts(ctx, path, buf, len, opts, out);
     free(buf);

@@ -85,8 +85,10 @@ static void put(lx_vendor_results *r, int field, const char *value)
 
 lx_status lx_spd_set_vendor(lx_ctx *ctx, const lx_spd_set *set, lx_vendor_results *out)
 {
+    LX__NEED_CTX(ctx);
     if (!set || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_spd_set_vendor: NULL argument");
     lx_vendor_results r;
+    memset(&r, 0, sizeof r);
     double *all = (double *)&r;
     for (size_t i = 0; i < offsetof(lx_vendor_results, count) / sizeof(double); i++) all[i] = NAN;
     r.count = 0;

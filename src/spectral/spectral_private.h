@@ -15,6 +15,9 @@ lx_status lx__spd_set_build(lx_ctx *ctx, const char *file, size_t nlam, const do
                             const double *val, size_t ss, size_t ks, char *const *names,
                             const long *lines, lx_spd_set **out);
 
+/* The largest |value| of spd. */
+double lx__spd_max_abs(const lx_spd *spd);
+
 /* Adds b's spectra to a (both read from the same file; b is freed, also on failure). */
 lx_status lx__spd_set_merge(lx_ctx *ctx, lx_spd_set *a, lx_spd_set *b);
 
