@@ -434,6 +434,7 @@ static lx_status read_lines(lx__rd *rd, const char *text, size_t len, tline **ou
 static lx_status columns_set(lx__rd *rd, table *t, const cells *hdr, size_t hn, long hline, const size_t *col,
                              size_t ncol, lx_spd_set **out)
 {
+    if (!hdr || hline <= 0) hline = t->n ? t->line[0] : 1; /* no header: errors name the first data row */
     size_t keep = ncol;
     while (keep > 2) { /* Excel pads rows to the widest: unnamed, empty last columns */
         size_t k = keep - 1;
