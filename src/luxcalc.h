@@ -826,6 +826,13 @@ LX_API lx_status lx_hazard_risk_group(lx_ctx *ctx, const lx_hazard *h, int radia
 /** "exempt", "RG1", "RG2", "RG3", or "" for LX_RISK_NONE (static storage). Thread-safe. */
 LX_API const char *lx_risk_group_name(lx_risk_group g);
 
+/** PAR (par), IEC 62471 quantities (hz) and LED binning (bin, as lx_binning_batch) of every spectrum
+ * of a batch in one pass over its values: one lx_batch_integrate of all the weighting functions
+ * asked for, then the derived values on opts->threads threads. Each output (n_spectra entries)
+ * may be NULL, not all three. opts may be NULL. Errors: as lx_par_batch. */
+LX_API lx_status lx_lab_batch(lx_ctx *ctx, const lx_batch *batch, const lx_batch_opts *opts, lx_par *par,
+                              lx_hazard *hz, lx_binning *bin);
+
 /** The luminous efficacy of radiation (lm/W, 2 deg observer, auto method) of the single
  * spectrum in a file read with lx_spd_read_file (efficacy.c). Errors: those of lx_spd_read_file;
  * LX_EINVAL (the file holds more than one spectrum, or its radiant integral is zero). */

@@ -773,6 +773,14 @@ static void t_lx_hazard_risk_group(void)
     assert_int_equal(r.group, 7);
 }
 
+static void t_lx_lab_batch(void)
+{
+    lx_par p[2];
+    p[0].ppfd = SENT;
+    EXPECT_EINVAL(lx_lab_batch(NULL, &BATCH, NULL, p, NULL, NULL));
+    assert_true(p[0].ppfd == SENT);
+}
+
 #define CASE(f) {#f, t_##f}
 static const struct api_case {
     const char *name;
@@ -783,7 +791,7 @@ static const struct api_case {
     CASE(lx_sun_spa), CASE(lx_sky_map), CASE(lx_scene_glare_eval),
     CASE(lx_spd_read_file_opts), CASE(lx_spd_read_mem_opts), CASE(lx_spd_set_vendor), CASE(lx_binning_compute),
     CASE(lx_binning_batch), CASE(lx_par_compute), CASE(lx_par_batch), CASE(lx_hazard_compute), CASE(lx_hazard_batch),
-    CASE(lx_hazard_risk_group),
+    CASE(lx_hazard_risk_group), CASE(lx_lab_batch),
     CASE(lx_ctx_create), CASE(lx_ctx_destroy), CASE(lx_ctx_errmsg), CASE(lx_ctx_errfile), CASE(lx_ctx_errline),
     CASE(lx_ctx_set_log), CASE(lx_ctx_backend_used), CASE(lx_cl_ready), CASE(lx_ctx_counters),
     CASE(lx_ctx_counters_reset), CASE(lx_backend_parse), CASE(lx_simd_parse), CASE(lx_cl_select), CASE(lx_cl_borrow),

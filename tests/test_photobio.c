@@ -141,7 +141,7 @@ static void test_hazard_closed_forms(void **state)
 static void test_risk_groups(void **state)
 {
     lx_ctx *ctx = *state;
-    lx_hazard h = {{0}, {1, 1, 1, 1}};
+    lx_hazard h = {{0}, {1, 1, 1, 1}, {0}};
     lx_hazard_risk r;
     /* radiance: L_B limits 100, 1e4, 4e6 W m-2 sr-1 */
     static const double lb[][2] = {{100, 0}, {100.01, 1}, {1e4, 1}, {4e6, 2}, {4.1e6, 3}};
@@ -165,7 +165,7 @@ static void test_risk_groups(void **state)
     lx_assert_ok(ctx, lx_hazard_risk_group(ctx, &h, 1, 0.5, &r)); /* alpha 0.5 -> 0.1: limits 280000, 710000 */
     assert_int_equal(r.criterion[LX_HZ_THERMAL], LX_RISK_3);
     /* irradiance: E_S 0.001/0.003/0.03, E_UVA 10/33/100, E_B 1/1/400 W m-2 */
-    lx_hazard e = {{0.5, NAN, 0.002, 50}, {1, 0.5, 1, 1}};
+    lx_hazard e = {{0.5, NAN, 0.002, 50}, {1, 0.5, 1, 1}, {0}};
     lx_assert_ok(ctx, lx_hazard_risk_group(ctx, &e, 0, 0, &r));
     assert_int_equal(r.criterion[LX_HZ_BLUE], LX_RISK_EXEMPT);
     assert_int_equal(r.criterion[LX_HZ_ACTINIC], LX_RISK_1);

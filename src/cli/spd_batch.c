@@ -43,17 +43,17 @@ static lx_status lab_compute(cli_spd_batch *B, const lx_batch *b, const lx_color
     const cli_metrics *m = B->metrics;
     if (!m || !m->any) return LX_OK;
     size_t n = b->n_spectra ? b->n_spectra : 1;
+    int need_par = cli_metrics_need_par(m), need_hz = cli_metrics_need_hazard(m), need_bin = cli_metrics_need_binning(m);
+    /* binning from the exact CCT of the colorimetry (2 deg); with --observer 10 the batch's own */
+    int table_bin = need_bin && B->observer != LX_OBSERVER_2;
+    if ((need_par && !(L->par = malloc(n * sizeof *L->par))) || (need_hz && !(L->hz = malloc(n * sizeof *L->hz))) ||
+        (need_bin && !(L->bin = malloc(n * sizeof *L->bin))))
+        return LX_ENOMEM;
     lx_status st = LX_OK;
-    if (cli_metrics_need_par(m) && (!(L->par = malloc(n * sizeof *L->par)) || (st = lx_par_batch(B->ctx, b, opts, L->par))))
-        return st ? st : LX_ENOMEM;
-    if (cli_metrics_need_hazard(m) && (!(L->hz = malloc(n * sizeof *L->hz)) || (st = lx_hazard_batch(B->ctx, b, opts, L->hz))))
-        return st ? st : LX_ENOMEM;
-    if (cli_metrics_need_binning(m)) {
-        if (!(L->bin = malloc(n * sizeof *L->bin))) return LX_ENOMEM;
-        if (B->observer != LX_OBSERVER_2) return lx_binning_batch(B->ctx, b, opts, L->bin); /* needs 2 deg */
-        for (size_t i = 0; i < b->n_spectra && st == LX_OK; i++)
-            st = lx_binning_compute(B->ctx, res[i].x, res[i].y, res[i].cct_K, res[i].duv, &L->bin[i]);
-    }
+    if (need_par || need_hz || table_bin)
+        st = lx_lab_batch(B->ctx, b, opts, L->par, L->hz, table_bin ? L->bin : NULL);
+    for (size_t i = 0; need_bin && !table_bin && i < b->n_spectra && st == LX_OK; i++)
+        st = lx_binning_compute(B->ctx, res[i].x, res[i].y, res[i].cct_K, res[i].duv, &L->bin[i]);
     return st;
 }
 

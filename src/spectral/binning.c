@@ -1,9 +1,10 @@
 /* binning.c - LED binning of white light: the ANSI C78.377-2017 nominal CCT categories and its
  * flexible-CCT rule (CCT and Duv tolerances), and MacAdam steps (SDCM) to the nearest IEC 60081
- * colour centre; for one chromaticity or a whole batch. */
+ * colour centre, for one chromaticity (batches: lab_batch.c). */
 #include "spectral/spectral_private.h"
 
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -20,7 +21,20 @@ typedef struct tables {
     int s_x, s_y, s_g11, s_g12, s_g22;
 } tables;
 
+static tables tabs;
+static int tabs_ok;
+static pthread_once_t tabs_once = PTHREAD_ONCE_INIT;
+static void find_tables(void);
+
 static lx_status get_tables(lx_ctx *ctx, tables *T)
+{
+    pthread_once(&tabs_once, find_tables);
+    if (!tabs_ok) return lx__error(ctx, LX_EINVAL, NULL, 0, "the embedded binning tables are missing or lack a column");
+    *T = tabs;
+    return LX_OK;
+}
+
+static lx_status lookup_tables(lx_ctx *ctx, tables *T)
 {
     T->ansi = lx__table_find("ansi_c78377_categories");
     T->sdcm = lx__table_find("iec60081_sdcm_centres");
@@ -34,6 +48,8 @@ static lx_status get_tables(lx_ctx *ctx, tables *T)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "the embedded binning tables lack a column");
     return LX_OK;
 }
+
+static void find_tables(void) { tabs_ok = lookup_tables(NULL, &tabs) == LX_OK; }
 
 static double cellv(const lx__table *t, int col, int row) { return t->data[(size_t)col * t->nrows + row]; }
 
@@ -52,7 +68,10 @@ static void bin_one(const tables *T, double x, double y, double cct, double duv,
             }
         }
         double best = INFINITY;
-        for (int Tn = FLEX_MIN; Tn <= FLEX_MAX; Tn += 100) {
+        int lo = (int)floor((cct - 700) / 100) * 100, hi = (int)ceil((cct + 700) / 100) * 100; /* tolerances < 600 K */
+        if (lo < FLEX_MIN) lo = FLEX_MIN;
+        if (hi > FLEX_MAX) hi = FLEX_MAX;
+        for (int Tn = lo; Tn <= hi; Tn += 100) {
             double d = fabs(cct - Tn);
             if (d <= flex_tol(Tn) && fabs(duv - flex_duv(Tn)) <= FLEX_DUV_TOL + 1e-12 && d < best) {
                 best = d;
@@ -85,54 +104,10 @@ lx_status lx_binning_compute(lx_ctx *ctx, double x, double y, double cct_K, doub
     return st;
 }
 
-typedef struct bjob {
-    const tables *T;
-    const double *xyz;
-    lx_binning *out;
-    lx_status st[64];
-} bjob;
-
-static void bin_range(void *arg, long i0, long i1, int t)
+int lx__bin_xy(double x, double y, double cct_K, double duv, lx_binning *out)
 {
-    bjob *j = arg;
-    lx_ctx *ctx = NULL;
-    if ((j->st[t] = lx_ctx_create(&ctx)) != LX_OK) return; /* the locus cache is one context's */
-    for (long i = i0; i < i1; i++) {
-        const double *p = j->xyz + 3 * i;
-        double sum = p[0] + p[1] + p[2], d = p[0] + 15 * p[1] + 3 * p[2];
-        double x = sum != 0 ? p[0] / sum : NAN, y = sum != 0 ? p[1] / sum : NAN;
-        double cct = NAN, duv = NAN;
-        if (d > 0 && sum > 0) {
-            lx_status st = lx__cct_from_uv_table(ctx, LX_OBSERVER_2, 4 * p[0] / d, 6 * p[1] / d, &cct, &duv);
-            if (st != LX_OK && st != LX_ERANGE) {
-                j->st[t] = st;
-                break;
-            }
-        }
-        bin_one(j->T, x, y, cct, duv, &j->out[i]);
-    }
-    lx_ctx_destroy(ctx);
-}
-
-lx_status lx_binning_batch(lx_ctx *ctx, const lx_batch *b, const lx_batch_opts *opts, lx_binning *out)
-{
-    LX__NEED_CTX(ctx);
-    if (!b || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_binning_batch: NULL argument");
-    if (b->n_spectra == 0) return LX_OK;
-    tables T;
-    lx_status st = get_tables(ctx, &T);
-    if (st != LX_OK) return st;
-    static const lx_function fns[3] = {LX_FN_XBAR_2, LX_FN_YBAR_2, LX_FN_ZBAR_2};
-    double *xyz = malloc(sizeof(double) * 3 * b->n_spectra);
-    if (!xyz) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for %zu spectra", b->n_spectra);
-    st = lx_batch_integrate(ctx, b, fns, 3, opts, xyz);
-    if (st == LX_OK) {
-        int nt = b->n_spectra < 4096 ? 1 : lx__threads(opts ? opts->threads : 0, (long)b->n_spectra);
-        bjob J = {.T = &T, .xyz = xyz, .out = out};
-        lx__parallel_for(ctx, nt, (long)b->n_spectra, bin_range, &J);
-        for (int t = 0; t < nt && st == LX_OK; t++)
-            if (J.st[t] != LX_OK) st = lx__error(ctx, J.st[t], NULL, 0, "batch binning failed: %s", lx_strerror(J.st[t]));
-    }
-    free(xyz);
-    return st;
+    pthread_once(&tabs_once, find_tables);
+    if (!tabs_ok) return -1;
+    bin_one(&tabs, x, y, cct_K, duv, out);
+    return 0;
 }

@@ -279,20 +279,59 @@ lx_status lx__cct_from_uv_table(lx_ctx *ctx, lx_observer obs, double u, double v
 {
     *cct_K = *duv = NAN;
     if (!isfinite(u) || !isfinite(v)) return LX_ERANGE;
-    cmf3 c;
-    lx__locus *L = NULL;
-    lx_status st = locus(ctx, obs, &L, &c);
-    if (st != LX_OK) return st;
-    int best = 0;
+    lx__locus *L = lx__slot_get(ctx, LX__SLOT_LOCUS);
+    if (L && (obs == LX_OBSERVER_2 || obs == LX_OBSERVER_10)) L += obs == LX_OBSERVER_2 ? 0 : 1;
+    if (!L || !L->ready) { /* the first call on this context builds the table */
+        cmf3 c;
+        lx_status st = locus(ctx, obs, &L, &c);
+        if (st != LX_OK) return st;
+    }
+    /* u falls monotonically along the locus: bisect on u, then the nearest node by distance among
+     * its neighbours (a point within Duv 0.05 is nearest to a node a few steps away at most) */
+    int lo = 0, hi = L->n - 1;
+    while (hi - lo > 1) {
+        int mid = (lo + hi) / 2;
+        if (L->u[mid] > u) lo = mid;
+        else hi = mid;
+    }
+    int best = lo, k0 = lo - 12 < 0 ? 0 : lo - 12, k1 = lo + 12 > L->n - 1 ? L->n - 1 : lo + 12;
     double bd = INFINITY;
-    for (int k = 0; k < L->n; k++) {
-        double d = (L->u[k] - u) * (L->u[k] - u) + (L->v[k] - v) * (L->v[k] - v);
+    for (int k = k0; k <= k1; k++) {
+        double du = L->u[k] - u, dv = L->v[k] - v, d = du * du + dv * dv;
         if (d < bd) bd = d, best = k;
     }
+    if (best == k0 || best == k1) { /* not a local minimum inside the window: search them all */
+        for (int k = 0; k < L->n; k++) {
+            double du = L->u[k] - u, dv = L->v[k] - v, d = du * du + dv * dv;
+            if (d < bd) bd = d, best = k;
+        }
+    }
     if (best == 0 || best == L->n - 1) return LX_ERANGE;
-    double s = hermite_guess(L, best, u, v), T = exp(s);
+    /* the foot of the perpendicular lies in the interval on the side the tangent at the nearest
+     * node points to: Newton steps on (P(s) - p) . P'(s) = 0 there, from that node */
+    const double *dU = L->u + 2 * L->n, *dV = L->u + 3 * L->n;
+    double dot = (u - L->u[best]) * dU[best] + (v - L->v[best]) * dV[best];
+    int i = dot > 0 ? best : best - 1;
+    double h = L->dlogt, t = dot > 0 ? 0.0 : 1.0, pu, pv, qu, qv;
+    for (int it = 0; it < 10; it++) {
+        double s = L->logt0 + (i + t) * h;
+        hermite_at(L, s, &pu, &pv, &qu, &qv);
+        double ru, rv; /* second derivative in s, by the same cubic */
+        {
+            double e00 = 12 * t - 6, e10 = 6 * t - 4, e01 = -12 * t + 6, e11 = 6 * t - 2;
+            ru = (e00 * L->u[i] + e10 * h * dU[i] + e01 * L->u[i + 1] + e11 * h * dU[i + 1]) / (h * h);
+            rv = (e00 * L->v[i] + e10 * h * dV[i] + e01 * L->v[i + 1] + e11 * h * dV[i + 1]) / (h * h);
+        }
+        double g = (pu - u) * qu + (pv - v) * qv, gp = qu * qu + qv * qv + (pu - u) * ru + (pv - v) * rv;
+        if (!(gp > 0)) break;
+        double tn = t - g / (gp * h);
+        tn = tn < 0 ? 0 : tn > 1 ? 1 : tn;
+        double step = fabs(tn - t);
+        t = tn;
+        if (step < 1e-12) break;
+    }
+    double s = L->logt0 + (i + t) * h, T = exp(s);
     if (!(T >= LOCUS_T_MIN && T <= LOCUS_T_MAX)) return LX_ERANGE;
-    double pu, pv, qu, qv;
     hermite_at(L, s, &pu, &pv, &qu, &qv);
     double cross = qu * (v - pv) - qv * (u - pu), sgn = cross < 0 ? 1.0 : -1.0;
     if (qu > 0) sgn = -sgn; /* as lx_cct_from_uv: + above the locus */

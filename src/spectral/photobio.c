@@ -1,6 +1,6 @@
-/* photobio.c - weighted quantities of plant lighting and photobiological safety: PAR, ePAR and YPF
- * photon fluxes (ANSI/ASABE S640, McCree 1972), the IEC 62471 / CIE S 009 hazard integrals and risk
- * groups; each for one spectrum or a batch, with the coverage of each weighting function. */
+/* photobio.c - weighted quantities of plant lighting and photobiological safety of one spectrum:
+ * PAR, ePAR and YPF photon fluxes (ANSI/ASABE S640, McCree 1972), the IEC 62471 / CIE S 009 hazard
+ * integrals with the coverage of each weighting function, and the risk groups (batches: lab_batch.c). */
 #include "spectral/spectral_private.h"
 
 #include <math.h>
@@ -23,7 +23,7 @@ static double w_integral(const lx_spd *w, double a, double b)
 }
 
 /* The fraction of w's integral that lies inside [a, b]. */
-static double coverage(const lx_spd *w, double a, double b)
+double lx__coverage(const lx_spd *w, double a, double b)
 {
     double all = w_integral(w, w->lambda_nm[0], w->lambda_nm[w->n - 1]);
     return all > 0 ? w_integral(w, a, b) / all : 0.0;
@@ -37,7 +37,7 @@ static lx_status integrate_fns(lx_ctx *ctx, const lx_spd *spd, lx_method method,
     for (size_t f = 0; f < k; f++) {
         lx_spd w;
         if ((st = lx_function_get(ctx, fns[f], &w)) != LX_OK) return st;
-        cov[f] = coverage(&w, spd->lambda_nm[0], spd->lambda_nm[spd->n - 1]);
+        cov[f] = lx__coverage(&w, spd->lambda_nm[0], spd->lambda_nm[spd->n - 1]);
         if (cov[f] < LX_COVERAGE_MIN) {
             val[f] = NAN;
             continue;
@@ -47,59 +47,21 @@ static lx_status integrate_fns(lx_ctx *ctx, const lx_spd *spd, lx_method method,
     return LX_OK;
 }
 
-/* Coverage of each function over a batch's grid, the same for every spectrum. */
-static lx_status batch_coverage(lx_ctx *ctx, const lx_batch *b, const lx_function *fns, size_t k, double *cov)
-{
-    if (!b || b->n_lambda < 2 || !(b->step_nm > 0))
-        return lx__error(ctx, LX_EINVAL, NULL, 0, "a batch needs at least 2 samples and a positive step");
-    double a = b->start_nm, e = b->start_nm + (double)(b->n_lambda - 1) * b->step_nm;
-    for (size_t f = 0; f < k; f++) {
-        lx_spd w;
-        lx_status st = lx_function_get(ctx, fns[f], &w);
-        if (st != LX_OK) return st;
-        cov[f] = coverage(&w, a, e);
-    }
-    return LX_OK;
-}
-
 /* ---- PAR ---- */
 
-static const lx_function par_fns[3] = {LX_FN_PHOTON_PAR, LX_FN_PHOTON_EPAR, LX_FN_YPF_MCCREE};
+const lx_function lx__par_fns[3] = {LX_FN_PHOTON_PAR, LX_FN_PHOTON_EPAR, LX_FN_YPF_MCCREE};
 
 lx_status lx_par_compute(lx_ctx *ctx, const lx_spd *spd, lx_method method, lx_par *out)
 {
     LX__NEED_CTX(ctx);
     if (!spd || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_par_compute: NULL argument");
     double v[3], cov[3], radiant;
-    lx_status st = integrate_fns(ctx, spd, method, par_fns, 3, v, cov);
+    lx_status st = integrate_fns(ctx, spd, method, lx__par_fns, 3, v, cov);
     if (st == LX_OK) st = lx_spd_integrate_radiant(ctx, spd, method, &radiant);
     if (st != LX_OK) return st;
     lx_par p = {v[0], v[1], v[2], radiant > 0 ? v[0] / radiant : NAN, {0}};
     *out = p;
     return LX_OK;
-}
-
-lx_status lx_par_batch(lx_ctx *ctx, const lx_batch *b, const lx_batch_opts *opts, lx_par *out)
-{
-    LX__NEED_CTX(ctx);
-    if (!b || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_par_batch: NULL argument");
-    if (b->n_spectra == 0) return LX_OK;
-    double cov[3];
-    lx_status st = batch_coverage(ctx, b, par_fns, 3, cov);
-    if (st != LX_OK) return st;
-    double *v = malloc(sizeof(double) * 3 * b->n_spectra);
-    if (!v) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for %zu spectra", b->n_spectra);
-    st = lx_batch_integrate(ctx, b, par_fns, 3, opts, v);
-    for (size_t i = 0; st == LX_OK && i < b->n_spectra; i++) {
-        double *r = v + 3 * i, radiant = lx__batch_radiant(b, i);
-        out[i].ppfd = cov[0] >= LX_COVERAGE_MIN ? r[0] : NAN;
-        out[i].epar = cov[1] >= LX_COVERAGE_MIN ? r[1] : NAN;
-        out[i].ypf = cov[2] >= LX_COVERAGE_MIN ? r[2] : NAN;
-        out[i].photon_efficacy_umol_J = radiant > 0 ? out[i].ppfd / radiant : NAN;
-        memset(out[i].reserved, 0, sizeof out[i].reserved);
-    }
-    free(v);
-    return st;
 }
 
 double lx_par_dli(double ppfd_umol_m2_s, double photoperiod_h)
@@ -110,8 +72,8 @@ double lx_par_dli(double ppfd_umol_m2_s, double photoperiod_h)
 
 /* ---- IEC 62471 ---- */
 
-static const lx_function hz_fns[LX_HZ_COUNT] = {LX_FN_HAZARD_BLUE, LX_FN_HAZARD_THERMAL, LX_FN_HAZARD_ACTINIC,
-                                                LX_FN_UVA};
+const lx_function lx__hazard_fns[LX_HZ_COUNT] = {LX_FN_HAZARD_BLUE, LX_FN_HAZARD_THERMAL, LX_FN_HAZARD_ACTINIC,
+                                                 LX_FN_UVA};
 
 lx_status lx_hazard_compute(lx_ctx *ctx, const lx_spd *spd, lx_method method, lx_hazard *out)
 {
@@ -119,30 +81,8 @@ lx_status lx_hazard_compute(lx_ctx *ctx, const lx_spd *spd, lx_method method, lx
     if (!spd || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_hazard_compute: NULL argument");
     lx_hazard h;
     memset(&h, 0, sizeof h);
-    lx_status st = integrate_fns(ctx, spd, method, hz_fns, LX_HZ_COUNT, h.value, h.coverage);
+    lx_status st = integrate_fns(ctx, spd, method, lx__hazard_fns, LX_HZ_COUNT, h.value, h.coverage);
     if (st == LX_OK) *out = h;
-    return st;
-}
-
-lx_status lx_hazard_batch(lx_ctx *ctx, const lx_batch *b, const lx_batch_opts *opts, lx_hazard *out)
-{
-    LX__NEED_CTX(ctx);
-    if (!b || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_hazard_batch: NULL argument");
-    if (b->n_spectra == 0) return LX_OK;
-    double cov[LX_HZ_COUNT];
-    lx_status st = batch_coverage(ctx, b, hz_fns, LX_HZ_COUNT, cov);
-    if (st != LX_OK) return st;
-    double *v = malloc(sizeof(double) * LX_HZ_COUNT * b->n_spectra);
-    if (!v) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for %zu spectra", b->n_spectra);
-    st = lx_batch_integrate(ctx, b, hz_fns, LX_HZ_COUNT, opts, v);
-    for (size_t i = 0; st == LX_OK && i < b->n_spectra; i++) {
-        memset(out[i].reserved, 0, sizeof out[i].reserved);
-        for (int k = 0; k < LX_HZ_COUNT; k++) {
-            out[i].coverage[k] = cov[k];
-            out[i].value[k] = cov[k] >= LX_COVERAGE_MIN ? v[LX_HZ_COUNT * i + k] : NAN;
-        }
-    }
-    free(v);
     return st;
 }
 

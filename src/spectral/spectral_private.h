@@ -77,6 +77,14 @@ lx_status lx__tm27_read(lx__rd *rd, const char *text, size_t len, lx_spd_set **o
  * above the header, AvaSoft exports. layout: 0 either, 1 columns only, 2 rows only. */
 lx_status lx__text_read(lx__rd *rd, const char *text, size_t len, int layout, lx_spd_set **out);
 
+/* PAR and hazards (photobio.c): their weighting functions, in the order of lx_par and lx_hazard, and
+ * the fraction of w's integral inside [a, b]. */
+extern const lx_function lx__par_fns[3];
+extern const lx_function lx__hazard_fns[LX_HZ_COUNT];
+double lx__coverage(const lx_spd *w, double a, double b);
+/* One chromaticity binned with the embedded tables (binning.c); -1 when they are missing. */
+int lx__bin_xy(double x, double y, double cct_K, double duv, lx_binning *out);
+
 /* The Planckian locus table's cubic Hermite interpolant (cct.c): CCT and Duv without the exact
  * solve, for binning many spectra (LX_ERANGE outside 1000-20000 K). */
 lx_status lx__cct_from_uv_table(lx_ctx *ctx, lx_observer obs, double u, double v, double *cct_K, double *duv);
