@@ -308,11 +308,15 @@ lx_status lx__cct_from_uv_table(lx_ctx *ctx, lx_observer obs, double u, double v
     }
     if (best == 0 || best == L->n - 1) return LX_ERANGE;
     /* the foot of the perpendicular lies in the interval on the side the tangent at the nearest
-     * node points to: Newton steps on (P(s) - p) . P'(s) = 0 there, from that node */
+     * node points to: Newton steps on (P(s) - p) . P'(s) = 0 there */
     const double *dU = L->u + 2 * L->n, *dV = L->u + 3 * L->n;
     double dot = (u - L->u[best]) * dU[best] + (v - L->v[best]) * dV[best];
     int i = dot > 0 ? best : best - 1;
-    double h = L->dlogt, t = dot > 0 ? 0.0 : 1.0, pu, pv, qu, qv;
+    double h = L->dlogt, pu, pv, qu, qv;
+    /* start from the projection onto the chord of the interval: Newton then needs two or three steps */
+    double cu = L->u[i + 1] - L->u[i], cv = L->v[i + 1] - L->v[i], cc = cu * cu + cv * cv;
+    double t = cc > 0 ? ((u - L->u[i]) * cu + (v - L->v[i]) * cv) / cc : 0.5;
+    t = t < 0 ? 0 : t > 1 ? 1 : t;
     for (int it = 0; it < 10; it++) {
         double s = L->logt0 + (i + t) * h;
         hermite_at(L, s, &pu, &pv, &qu, &qv);
@@ -328,7 +332,7 @@ lx_status lx__cct_from_uv_table(lx_ctx *ctx, lx_observer obs, double u, double v
         tn = tn < 0 ? 0 : tn > 1 ? 1 : tn;
         double step = fabs(tn - t);
         t = tn;
-        if (step < 1e-12) break;
+        if (step < 1e-10) break; /* 1e-10 of a node interval: 5e-12 relative in T */
     }
     double s = L->logt0 + (i + t) * h, T = exp(s);
     if (!(T >= LOCUS_T_MIN && T <= LOCUS_T_MAX)) return LX_ERANGE;
