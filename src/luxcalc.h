@@ -99,7 +99,7 @@ LX_API const char *lx_version(void);
  *  12. radiance  Environment maps, OpenEXR and irradiance; daylight skies and the sun
  *  13. radiance  Spectral OpenEXR images
  *  14. scene     Scenes: files, the planner, evaluation and work counters
- *  15. plot      Plots (PNG, written atomically)
+ *  15. plot      Plots (PNG with cairo, written atomically)
  */
 
 /* ============================================================================================ */
@@ -114,7 +114,10 @@ typedef enum lx_status {
     LX_ENOMEM = 4,       /* out of memory */
     LX_ERANGE = 5,       /* the quantity is undefined for this input (e.g. CCT far off the locus) */
     LX_EUNSUPPORTED = 6, /* not supported by this build or for this input */
-    LX_EDEVICE = 7       /* an OpenCL runtime or device error; the message names the call and code */
+    LX_EDEVICE = 7,      /* an OpenCL runtime or device error; the message names the call and code */
+    LX_EWRITE = 8        /* writing an output failed part-way (disk full, I/O error, a closed stream):
+                          * the message names the file and the system's reason; nothing is left
+                          * half-written (a path that cannot be created at all is LX_EIO) */
 } lx_status;
 
 /** Static text for a status code ("invalid argument", ...; "unknown status" for another value).
@@ -1147,6 +1150,8 @@ typedef struct lx_luminaire {
     size_t n_tilt;
     double *tilt_deg, *tilt_factor;
     char *manufacturer, *catalog, *description; /* [MANUFAC], [LUMCAT], [LUMINAIRE] (or LDT lines); may be "" */
+    char *test, *testlab, *issuedate, *lamp; /* [TEST], [TESTLAB], [ISSUEDATE], [LAMP]; EULUMDAT: the
+                                * measurement report number and the date/user line; NULL when absent */
 } lx_luminaire;
 
 /** Reads an IES LM-63 file (1986, 1991, 1995, 2002, 2019) or EULUMDAT file ("-" is stdin),
@@ -1260,6 +1265,13 @@ typedef struct lx_plane {
  * not finite or out of order, no spacing and no counts, too many points). */
 LX_API lx_status lx_plane_axis(lx_ctx *ctx, char axis, double level_m, double a0, double a1, double b0,
                                double b1, double spacing_m, size_t na, size_t nb, lx_plane *out);
+
+/** The same area as calculation cells, as EN 12464-1 and DIALux lay out a grid: with a spacing,
+ * ceil((A1 - A0) / S) cells along A (at least one; each (A1 - A0) / n <= S) and likewise along B,
+ * or na x nb cells; one point at the centre of each cell, so the outer points lie half a cell
+ * inside the area's edges. The plane's a0 .. b1 are the outer points' coordinates. */
+LX_API lx_status lx_plane_cells(lx_ctx *ctx, char axis, double level_m, double a0, double a1, double b0,
+                                double b1, double spacing_m, size_t na, size_t nb, lx_plane *out);
 
 /** Options of lx_grid_illuminance (zero-initialise for defaults; ABI policy: reserved stays zero).
  * The backend that did the work is lx_ctx_backend_used(ctx) afterwards. */
@@ -1385,6 +1397,10 @@ typedef struct lx_envmap {
     lx_envmap_units units;  /* RADIANCE or LUMINANCE (never AUTO once read) */
     double lum_per_unit;    /* cd/m2 per unit of Y: efficacy (RADIANCE) or whiteLuminance / 1 (LUMINANCE) */
     int layout;             /* lx_envmap_layout: LATLONG (0, what lx_envmap_create makes) or CUBE */
+    int irradiance;         /* 1: the values are irradiance E(n) per normal (W/m2 for RADIANCE
+                             * units; lum_per_unit x Y is then an illuminance in lx): the maps
+                             * lx_irradiance_map makes, kept through lx_exr_write / lx_exr_read
+                             * (string attribute luxcalcQuantity = "irradiance"); 0: radiance */
 } lx_envmap;
 
 /** Map layouts. A CUBE map is the OpenEXR cube layout: width N, height 6 N, six N x N faces stacked
@@ -1987,62 +2003,143 @@ LX_API lx_status lx_scene_glare_eval(lx_ctx *ctx, const lx_scene *scene, lx_scen
 LX_API void lx_scene_glare_free(lx_scene_glare *glare);
 
 /* ============================================================================================ */
-/* 15. Plots (PNG, written atomically) (src/plot) */
+/* 15. Plots (PNG with cairo, written atomically) (src/plot) */
 /* ============================================================================================ */
 
-/* PNG pictures of maps (png_plot.c). Both write atomically (temporary file + rename). */
+/* Every writer below draws with cairo (text in DejaVu Sans, through fontconfig) and writes an
+ * 8-bit RGB PNG atomically: a temporary file beside path, renamed into place only on success, so
+ * nothing is left at path on failure (a path that exists and is not a regular file, such as
+ * /dev/null, is written directly). Errors: LX_EINVAL (bad arguments), LX_EIO (path cannot be
+ * created: a missing directory), LX_EWRITE (writing failed part-way: a full disk; the message
+ * has the system's reason), LX_ENOMEM. Labels are placed where they overlap no other label.
+ * Thread-safe for distinct contexts. */
 
-/** A false-colour PNG of w x h values (row-major; NaN drawn grey) with a colour legend titled
- * legend_title, on a linear or log10 scale between vmin and vmax (NaN: the data's range). Small
- * maps are enlarged to at least 512 pixels wide. The palette runs dark violet - blue - cyan -
- * green - yellow - orange - red, the look of Radiance falsecolor. */
-LX_API lx_status lx_png_falsecolor(lx_ctx *ctx, const char *path, int w, int h, const double *values, double vmin,
-                                   double vmax, int log_scale, const char *legend_title);
+/** Colour scales of the false-colour plots. */
+typedef enum lx_plot_scale {
+    LX_PLOT_SCALE_AUTO = 0,  /* the plot's own choice (log for maps, by dynamic range for grids) */
+    LX_PLOT_SCALE_LOG = 1,   /* log10, ticks at decades */
+    LX_PLOT_SCALE_LINEAR = 2 /* linear, ticks at round 1-2-5 values */
+} lx_plot_scale;
+
+/** Options of lx_falsecolor_write_png (zero-initialise for defaults). */
+typedef struct lx_falsecolor_opts {
+    lx_plot_scale scale;   /* AUTO: log */
+    double lo, hi;         /* the colour range when hi > lo (log: lo <= 0 leaves the bottom
+                            * automatic); otherwise automatic: log from the decade at or below
+                            * the 1st percentile of the positive values (at most 6 decades below
+                            * the top, at least 2) to the decade at or above the largest; linear
+                            * from 0 (or a round value below a minimum under -5 % of the largest)
+                            * to the round value above the largest. Values below the range take
+                            * its lowest colour. */
+    const char *quantity;  /* the legend's quantity ("luminance"; NULL: none) */
+    const char *unit;      /* its unit ("cd/m²"; NULL: none) */
+    const char *title;     /* the heading (NULL: none); a line of min / median / max follows it */
+    long long reserved[4]; /* zero: room for later options (ABI policy) */
+} lx_falsecolor_opts;
+
+/** A false-colour PNG of w x h values (row-major, row 0 at the top; NaN drawn grey) in the look of
+ * Radiance falsecolor: the palette dark violet - blue - cyan - green - yellow - orange - red, a
+ * colour bar with decade (log) or round (linear) ticks and the unit. Maps narrower than 512
+ * pixels are enlarged by a whole factor (each value a block). */
+LX_API lx_status lx_falsecolor_write_png(lx_ctx *ctx, const char *path, int w, int h, const double *values,
+                                         const lx_falsecolor_opts *opts);
 
 /** Tone-mapped previews of n maps side by side (each panel 512 pixels wide, its own exposure:
  * median luminance to 0.18, Reinhard x/(1+x), sRGB), each labelled with labels[k] (may be NULL). */
-LX_API lx_status lx_png_preview(lx_ctx *ctx, const char *path, int n, const lx_envmap *const *maps,
-                                const char *const *labels);
+LX_API lx_status lx_envmap_preview_write_png(lx_ctx *ctx, const char *path, int n, const lx_envmap *const *maps,
+                                             const char *const *labels);
 
-/** One-page PNG report of one spectrum (report_png.c), written atomically (temporary file +
- * rename; nothing is left at path on failure): the SPD with the area under it in the colour of
- * each wavelength (approximate sRGB), the colour of the light as a normalised sRGB swatch, the
- * CIE xy diagram of the observer (spectral locus, Planckian locus with isotemperature ticks at
- * Duv +-0.02, the point), CIE 13.3 Ra and R1-R14 bars with values, the TM-30 colour vector
- * graphic, and x, y, CCT, Duv, Ra, R9, Rf, Rg and melanopic DER. A metric that is undefined for
- * the spectrum (lx_cri_compute or lx_tm30_compute refuse) is shown with its reason instead.
- * title: the heading (NULL: spd->name). 1100 x 800 pixels. Errors: those of lx_spd_check and
- * lx_spd_colorimetry, LX_EIO (path not writable), LX_ENOMEM. Thread-safe for distinct contexts. */
-LX_API lx_status lx_spd_report_png(lx_ctx *ctx, const lx_spd *spd, lx_observer observer, const char *title,
-                                   const char *path);
+/** The preview of an irradiance computation: the radiance map tone-mapped on the left, the
+ * irradiance map as illuminance (lum_per_unit x Y, lx) in false colour on the right (scale LOG or
+ * AUTO: decade ticks; LINEAR: round ticks), with its legend and its minimum, median and maximum;
+ * label (may be NULL) names the method. Both maps in the same layout (lat-long or cube). */
+LX_API lx_status lx_irradiance_write_png(lx_ctx *ctx, const char *path, const lx_envmap *radiance,
+                                         const lx_envmap *irradiance, const char *label, lx_plot_scale scale);
 
-/** Writes an sRGB preview PNG (XYZ -> linear sRGB, exposure from the median luminance, Reinhard
- * tone curve), enlarged to at least 256 pixels wide, atomically. */
-LX_API lx_status lx_xyz_png_write(lx_ctx *ctx, const char *path, const lx_xyz_image *img);
+/** Chromaticity diagrams of the spectrum report. */
+typedef enum lx_diagram { LX_DIAGRAM_XY = 0 /* CIE 1931 x, y */, LX_DIAGRAM_UV = 1 /* CIE 1976 u', v' */ } lx_diagram;
 
-/** Writes a false-colour PNG of the illuminance E (na x nb values of the plane, A fastest, as
- * lx_plane_points orders them): a colour legend in lux, iso-lux contour lines at round levels,
- * the positions of the m luminaires (projected on the plane, those inside its area) and axis
- * ticks in metres; title (may be NULL) on top. Written atomically (temporary file + rename). */
-LX_API lx_status lx_grid_write_png(lx_ctx *ctx, const char *path, const lx_plane *plane, const double *E,
-                                   const lx_placement *lums, size_t m, const char *title);
+/** Options of lx_spd_report_write_png (zero-initialise for defaults). */
+typedef struct lx_report_opts {
+    lx_observer observer;  /* of the colorimetry and the diagram (0: LX_OBSERVER_2) */
+    const char *unit;      /* what the values are, as `luxcalc spd --unit` takes them: "W/nm" (Y in
+                            * lm), "W/m2/nm" (lx), "W/sr/m2/nm" (cd/m²), "W/sr/nm" (cd), NULL or
+                            * "relative" (Y without a unit); LX_EINVAL for others */
+    lx_diagram diagram;    /* the chromaticity diagram */
+    const char *title;     /* the heading (NULL: spd->name) */
+    long long reserved[4]; /* zero: room for later options (ABI policy) */
+} lx_report_opts;
+
+/** One-page PNG report of one spectrum (1200 x 860 pixels): the SPD with its unit and the area
+ * under it in the colour of each wavelength (approximate sRGB); the headline numbers (absolute Y
+ * in lm, lx, cd/m² or cd per the unit, radiant power, x, y, u', v', CCT, Duv, Ra, R9, Rf, Rg,
+ * melanopic DER, efficacy); the colour of the light as a normalised sRGB swatch; the CIE 1931 xy
+ * or 1976 u'v' diagram (spectral locus, Planckian locus, isotemperature lines labelled where the
+ * labels collide with nothing, the point); CIE 13.3 Ra and R1-R14 bars with their values; the
+ * TM-30 colour vector graphic with its 16 hue bins. A metric that is undefined for the spectrum
+ * (lx_cri_compute or lx_tm30_compute refuse) is shown with its reason instead. Errors: those of
+ * lx_spd_check and lx_spd_colorimetry, and the writers' above. */
+LX_API lx_status lx_spd_report_write_png(lx_ctx *ctx, const lx_spd *spd, const lx_report_opts *opts,
+                                         const char *path);
+
+/** Writes an sRGB preview PNG of an XYZ image (XYZ -> linear sRGB, exposure from the median
+ * luminance, Reinhard tone curve), enlarged to at least 256 pixels wide. */
+LX_API lx_status lx_xyz_image_write_png(lx_ctx *ctx, const char *path, const lx_xyz_image *img);
+
+/** A luminaire marked on an isolux plot: where it is, where its nadir points, its name. */
+typedef struct lx_plot_mark {
+    double pos_m[3];
+    double aim[3];          /* any length > 0; (0, 0, 0): not drawn */
+    const char *name;       /* drawn beside the mark where it fits (NULL: none) */
+} lx_plot_mark;
+
+/** Backgrounds of isolux plots. */
+typedef enum lx_isolux_background {
+    LX_ISOLUX_FALSECOLOR = 0, /* false colour under dark contour lines */
+    LX_ISOLUX_WHITE = 1       /* white, contour lines in the colours of their levels */
+} lx_isolux_background;
+
+/** Options of lx_grid_write_png (zero-initialise for defaults). */
+typedef struct lx_isolux_opts {
+    lx_isolux_background background;
+    lx_plot_scale scale;          /* AUTO: log where E_max / E_min > 20, else linear */
+    const lx_plot_mark *marks;    /* the luminaires (marks outside the area are left out) */
+    size_t n_marks;
+    const char *source;           /* the file the light comes from; its base name goes in the title */
+    const char *surface;          /* the calculation surface's name ("desk"; NULL: none) */
+    const char *caption;          /* a line under the title (a scene's title; NULL: none) */
+    double area_m[4];             /* A0, A1, B0, B1 of the area drawn when A1 > A0 or B1 > B0 (the
+                                   * calculation area around cell-centre points); else the points' extent */
+    int imperial;                 /* 1: fc and ft instead of lx and m */
+    long long reserved[4];        /* zero: room for later options (ABI policy) */
+} lx_isolux_opts;
+
+/** An isolux plot of the illuminance E on a plane (na x nb values, A fastest, as lx_plane_points
+ * orders them), the way DIALux and AGi32 print a calculation surface: the plane in false colour
+ * (or white) under contour lines at round levels of a 1-2-5 series, each labelled in lx on its
+ * line; the luminaires' positions (projected along the plane's normal) with their aim; axes in
+ * metres with round ticks; a legend with round (or decade) ticks and the unit; the plane and the
+ * source file's base name in the title; and a statistics box: E_avg, E_min, E_max, U0 = E_min /
+ * E_avg and E_min / E_max (4 significant digits, U0 3 decimals). opts may be NULL. */
+LX_API lx_status lx_grid_write_png(lx_ctx *ctx, const char *path, const lx_plane *plane, const double *E_lx,
+                                   const lx_isolux_opts *opts);
 
 /** One point of an error-against-time plot: a method's time (s) and error (any unit > 0; 0 or
- * less is drawn on the bottom edge, marked "=0"), its label and series (marker shape and colour). */
+ * less is drawn on the bottom edge, marked "= 0"), its label and series (marker shape and colour). */
 typedef struct lx_plot_point {
     double time_s;
     double error;
-    const char *label;   /* drawn beside the marker (upper case; may be NULL) */
+    const char *label;   /* drawn beside the marker where it collides with nothing, else joined
+                          * to it by a leader line (may be NULL) */
     int series;          /* 0 .. n_series - 1 */
 } lx_plot_point;
 
 /** A log-log scatter plot as PNG: error (vertical, log10) against time (horizontal, log10), one
  * marker and label per point, a legend of the series names, axis titles and a title (all may be
- * NULL). Written atomically (temporary file + rename). LX_EINVAL for n = 0 or a point whose time
- * is not positive and finite. Thread-safe for distinct contexts. */
-LX_API lx_status lx_png_error_time(lx_ctx *ctx, const char *path, const char *title, const char *x_title,
-                                   const char *y_title, size_t n, const lx_plot_point *pts, int n_series,
-                                   const char *const *series_names);
+ * NULL). LX_EINVAL for n = 0 or a point whose time is not positive and finite. */
+LX_API lx_status lx_error_time_write_png(lx_ctx *ctx, const char *path, const char *title, const char *x_title,
+                                         const char *y_title, size_t n, const lx_plot_point *pts, int n_series,
+                                         const char *const *series_names);
 
 #ifdef __cplusplus
 }

@@ -421,6 +421,12 @@ static void t_lx_plane_axis(void)
     EXPECT_EINVAL(lx_plane_axis(NULL, 'z', 0, 0, 1, 0, 1, 0.5, 0, 0, &p));
     assert_int_equal(p.na, 77);
 }
+static void t_lx_plane_cells(void)
+{
+    lx_plane p = {.na = 77};
+    EXPECT_EINVAL(lx_plane_cells(NULL, 'z', 0, 0, 1, 0, 1, 0.5, 0, 0, &p));
+    assert_int_equal(p.na, 77);
+}
 static const lx_plane PLANE = {.u = {1, 0, 0}, .v = {0, 1, 0}, .a1 = 1, .b1 = 1, .na = 2, .nb = 2, .normal = {0, 0, 1}};
 static void t_lx_grid_illuminance(void)
 {
@@ -566,45 +572,51 @@ static void t_lx_scene_eval(void)
 }
 
 /* plots: nothing may appear at the path */
-static void t_lx_png_falsecolor(void)
+static void t_lx_falsecolor_write_png(void)
 {
     const char *p = out_path("f.png");
     const double v[4] = {1, 2, 3, 4};
-    EXPECT_EINVAL(lx_png_falsecolor(NULL, p, 2, 2, v, NAN, NAN, 0, "lx"));
+    EXPECT_EINVAL(lx_falsecolor_write_png(NULL, p, 2, 2, v, NULL));
     assert_absent(p);
 }
-static void t_lx_png_preview(void)
+static void t_lx_envmap_preview_write_png(void)
 {
     const char *p = out_path("p.png");
     const lx_envmap *maps[1] = {MAP};
-    EXPECT_EINVAL(lx_png_preview(NULL, p, 1, maps, NULL));
+    EXPECT_EINVAL(lx_envmap_preview_write_png(NULL, p, 1, maps, NULL));
     assert_absent(p);
 }
-static void t_lx_spd_report_png(void)
+static void t_lx_irradiance_write_png(void)
+{
+    const char *p = out_path("i.png");
+    EXPECT_EINVAL(lx_irradiance_write_png(NULL, p, MAP, MAP, "sh9", LX_PLOT_SCALE_LOG));
+    assert_absent(p);
+}
+static void t_lx_spd_report_write_png(void)
 {
     const char *p = out_path("r.png");
-    EXPECT_EINVAL(lx_spd_report_png(NULL, &D65, LX_OBSERVER_2, "D65", p));
+    EXPECT_EINVAL(lx_spd_report_write_png(NULL, &D65, NULL, p));
     assert_absent(p);
 }
-static void t_lx_xyz_png_write(void)
+static void t_lx_xyz_image_write_png(void)
 {
     const char *p = out_path("x.png");
-    EXPECT_EINVAL(lx_xyz_png_write(NULL, p, &IMG));
+    EXPECT_EINVAL(lx_xyz_image_write_png(NULL, p, &IMG));
     assert_absent(p);
 }
 static void t_lx_grid_write_png(void)
 {
     const char *p = out_path("g.png");
     const double E[4] = {1, 2, 3, 4};
-    EXPECT_EINVAL(lx_grid_write_png(NULL, p, &PLANE, E, NULL, 0, "grid"));
+    EXPECT_EINVAL(lx_grid_write_png(NULL, p, &PLANE, E, NULL));
     assert_absent(p);
 }
-static void t_lx_png_error_time(void)
+static void t_lx_error_time_write_png(void)
 {
     const char *p = out_path("e.png");
     const lx_plot_point pts[2] = {{1e-3, 1e-6, "A", 0}, {1e-2, 1e-9, "B", 0}};
     const char *names[1] = {"s"};
-    EXPECT_EINVAL(lx_png_error_time(NULL, p, "t", "x", "y", 2, pts, 1, names));
+    EXPECT_EINVAL(lx_error_time_write_png(NULL, p, "t", "x", "y", 2, pts, 1, names));
     assert_absent(p);
 }
 
@@ -815,8 +827,9 @@ static const struct api_case {
     CASE(lx_exr_read_any), CASE(lx_envmap_write_exr), CASE(lx_sh9_project), CASE(lx_sh9_irradiance),
     CASE(lx_irradiance_dirs), CASE(lx_irradiance_map), CASE(lx_spectral_exr_read_xyz), CASE(lx_xyz_image_write_exr),
     CASE(lx_scene_read_file), CASE(lx_scene_read_mem), CASE(lx_scene_plan_make), CASE(lx_scene_eval),
-    CASE(lx_png_falsecolor), CASE(lx_png_preview), CASE(lx_spd_report_png), CASE(lx_xyz_png_write),
-    CASE(lx_grid_write_png), CASE(lx_png_error_time),
+    CASE(lx_falsecolor_write_png), CASE(lx_envmap_preview_write_png), CASE(lx_irradiance_write_png),
+    CASE(lx_spd_report_write_png), CASE(lx_xyz_image_write_png), CASE(lx_grid_write_png), CASE(lx_error_time_write_png),
+    CASE(lx_plane_cells),
 };
 #define NCASES (sizeof CASES / sizeof CASES[0])
 
@@ -903,10 +916,10 @@ static void nonzero_reserved_options_refused(void **state)
     EXPECT_EINVAL(lx_par_batch(ctx, &BATCH, &bo, pb));
     EXPECT_EINVAL(lx_hazard_batch(ctx, &BATCH, &bo, hb));
     EXPECT_EINVAL(lx_binning_batch(ctx, &BATCH, &bo, bb));
-    lx_spd_read_opts ro = {.skip_bad_rows = 1};
-    ro.reserved[2] = 1;
+    lx_spd_read_opts rdo = {.skip_bad_rows = 1};
+    rdo.reserved[2] = 1;
     lx_spd_set *set = PSENT;
-    EXPECT_EINVAL(lx_spd_read_mem_opts(ctx, "a.csv", SPD_TEXT, strlen(SPD_TEXT), &ro, &set));
+    EXPECT_EINVAL(lx_spd_read_mem_opts(ctx, "a.csv", SPD_TEXT, strlen(SPD_TEXT), &rdo, &set));
     assert_null(set);
     assert_non_null(strstr(lx_ctx_errmsg(ctx), "reserved"));
     const double lam[3] = {500, 510, 520}, val[3] = {1, 2, 3};
@@ -946,6 +959,24 @@ static void nonzero_reserved_options_refused(void **state)
     lx_luminaire *l = PSENT;
     EXPECT_EINVAL(lx_luminaire_from_model(ctx, &lm, &l));
     assert_null(l);
+
+    /* the plots' options: nothing appears at the path */
+    const double E[4] = {1, 2, 3, 4};
+    lx_falsecolor_opts fo = {0};
+    fo.reserved[3] = 1;
+    p = out_path("reserved_f.png");
+    EXPECT_EINVAL(lx_falsecolor_write_png(ctx, p, 2, 2, E, &fo));
+    assert_absent(p);
+    lx_isolux_opts iso = {0};
+    iso.reserved[0] = 2;
+    p = out_path("reserved_g.png");
+    EXPECT_EINVAL(lx_grid_write_png(ctx, p, &PLANE, E, &iso));
+    assert_absent(p);
+    lx_report_opts ro = {0};
+    ro.reserved[1] = 1;
+    p = out_path("reserved_r.png");
+    EXPECT_EINVAL(lx_spd_report_write_png(ctx, &D65, &ro, p));
+    assert_absent(p);
 }
 
 /* ABI policy: results are written whole, their reserved space as zero (whatever the caller left there). */

@@ -181,6 +181,28 @@ static void write_windowed(const char *path)
     assert_int_equal(exr_finish(&e), 0);
 }
 
+/* Headers that declare windows the file cannot hold are refused before anything is allocated
+ * (README "Robustness": 1e9 pixels at most, and 16 Mpixel + 64 per byte of file): 100000 x 100000
+ * pixels (1e10, 40 GB of RGB float), then 10000 x 10000 in a file of a few hundred bytes. */
+static void windows_that_lie(void **state)
+{
+    lx_ctx *ctx = *state;
+    char path[256];
+    snprintf(path, sizeof path, "%s/lie.exr", dir);
+    write_windowed(path);
+    assert_int_equal(lx_test_exr_set_window(path, "dataWindow", 99999, 99999), 0);
+    assert_int_equal(lx_test_exr_set_window(path, "displayWindow", 99999, 99999), 0);
+    lx_envmap *m = NULL;
+    assert_int_equal(lx_exr_read(ctx, path, &m), LX_EPARSE);
+    assert_null(m);
+    assert_non_null(strstr(lx_ctx_errmsg(ctx), "windows (display 100000x100000, data 100000x100000) over the limit of 1e9 pixels"));
+    write_windowed(path);
+    assert_int_equal(lx_test_exr_set_window(path, "dataWindow", 9999, 9999), 0);
+    assert_int_equal(lx_test_exr_set_window(path, "displayWindow", 9999, 9999), 0);
+    assert_int_equal(lx_exr_read(ctx, path, &m), LX_EPARSE);
+    assert_non_null(strstr(lx_ctx_errmsg(ctx), "too large for a file of"));
+}
+
 static void windows_and_alpha(void **state)
 {
     lx_ctx *ctx = *state;
@@ -236,6 +258,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(roundtrip, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(attributes, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(windows_and_alpha, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(windows_that_lie, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(errors, lx_test_ctx_setup, lx_test_ctx_teardown),
     };
     return cmocka_run_group_tests(tests, group_setup, group_teardown);

@@ -93,8 +93,8 @@ static int run(int argc, char **argv, int is_rect)
     const char *cmd = co.cmd;
     const char *lum = NULL, *rad = NULL, *wid = NULL, *len = NULL, *dist = NULL, *off = "0", *at = "centre";
     lx_model model = LX_MODEL_AUTO;
-    int c, rc;
-    while ((c = getopt_long(argc, argv, LT_SHORTOPTS, opts, NULL)) != -1) {
+    int c, rc, li = -1;
+    while ((c = getopt_long(argc, argv, LT_SHORTOPTS, opts, &li)) != -1) {
         int wrong = 0;
         switch (c) {
         case 'L': lum = optarg; break;
@@ -110,7 +110,12 @@ static int run(int argc, char **argv, int is_rect)
         default:
             if ((rc = lt_common_opt(&co, c, argv)) != LT_NEXT) return rc;
         }
-        if (wrong) return lt_bad_option(&co, argv);
+        if (wrong) {
+            fprintf(stderr, "luxcalc %s: option '--%s' applies to %s only (see luxcalc %s --help)\n", cmd,
+                    li >= 0 ? opts[li].name : "?", is_rect ? "disk" : "rect", cmd);
+            return CLI_USAGE;
+        }
+        li = -1;
     }
     if (lt_no_operands(&co, argc, argv)) return CLI_USAGE;
     if (!lum || !dist || (is_rect ? (!wid || !len) : !rad)) {

@@ -557,7 +557,7 @@ int cmd_bench(int argc, char **argv)
     const char *outpath = NULL;
     int c;
     optind = 1;
-    while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":o:h", opts, NULL)) != -1) {
         switch (c) {
         case 's': {
             b.nsizes = 0;
@@ -578,7 +578,7 @@ int cmd_bench(int argc, char **argv)
             printf("\ntopics:\n");
             for (int i = 0; topics[i].name; i++) printf("  %-12s %s\n", topics[i].name, topics[i].summary);
             return CLI_OK;
-        default: return CLI_USAGE;
+        default: return cli_bad_option("bench", argv, c);
         }
     }
     for (int i = optind; i < argc; i++) {

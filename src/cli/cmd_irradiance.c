@@ -29,7 +29,9 @@ static const char help[] =
     "  --backend B      brute only: auto, cpu or opencl (also LX_BACKEND)\n"
     "  --threads N      CPU threads (default: all cores)\n"
     "  --half           write OUT with half channels (default float; ZIP compression)\n"
-    "  --png FILE       tone-mapped preview of input and output side by side\n"
+    "  --png FILE       a preview: the input tone-mapped beside the output as illuminance (lx) in\n"
+    "                   false colour with its legend\n"
+    "  --scale S        the preview's scale: log (default, decade ticks) or linear (round ticks)\n"
     "  --normal X,Y,Z   print one row for this normal instead of writing a map\n"
     "  --units U        auto (default: luminance when the file has whiteLuminance), radiance\n"
     "                   (W/sr/m2 per channel) or luminance (cd/m2)\n"
@@ -97,15 +99,17 @@ int cmd_irradiance(int argc, char **argv)
         {"window", required_argument, 0, 'W'}, {"backend", required_argument, 0, 'b'},
         {"threads", required_argument, 0, 't'}, {"half", no_argument, 0, 'H'},
         {"png", required_argument, 0, 'p'},   {"normal", required_argument, 0, 'n'},
+        {"scale", required_argument, 0, 'S'},
         {"units", required_argument, 0, 'u'}, {"efficacy", required_argument, 0, 'K'},
         {"format", required_argument, 0, 'f'}, {"output", required_argument, 0, 'o'},
         {"help", no_argument, 0, 'h'},        {0, 0, 0, 0}};
     const char *cmd = "irradiance", *out = NULL, *png = NULL, *normal = NULL, *units = NULL, *eff = NULL;
     lx_irr_opts io = {0};
     int W = 0, H = 0, half = 0, c, fmt = CLI_FMT_TABLE;
+    lx_plot_scale scale = LX_PLOT_SCALE_LOG;
     optind = 1;
     opterr = 0;
-    while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":o:h", opts, NULL)) != -1) {
         switch (c) {
         case 'm':
             if (!strcmp(optarg, "sh9")) io.method = LX_IRR_SH9;
@@ -138,6 +142,11 @@ int cmd_irradiance(int argc, char **argv)
         }
         case 'H': half = 1; break;
         case 'p': png = optarg; break;
+        case 'S':
+            if (!strcmp(optarg, "log")) scale = LX_PLOT_SCALE_LOG;
+            else if (!strcmp(optarg, "linear")) scale = LX_PLOT_SCALE_LINEAR;
+            else return cli_error(cmd, "--scale: '%s' is not log or linear", optarg), CLI_USAGE;
+            break;
         case 'n': normal = optarg; break;
         case 'u': units = optarg; break;
         case 'K': eff = optarg; break;
@@ -147,7 +156,7 @@ int cmd_irradiance(int argc, char **argv)
             break;
         case 'o': out = optarg; break;
         case 'h': cli_print_help(help); return CLI_OK;
-        default: return cli_error(cmd, "bad option '%s' (see luxcalc irradiance --help)", argv[optind - 1]), CLI_USAGE;
+        default: return cli_bad_option(cmd, argv, c);
         }
     }
     if (optind + 1 != argc) return cli_error(cmd, "give exactly one input map (see --help)"), CLI_USAGE;
@@ -162,6 +171,12 @@ int cmd_irradiance(int argc, char **argv)
             return cli_error(cmd, "--normal: '%s' is not a non-zero vector X,Y,Z", normal), CLI_USAGE;
     } else if (!out) {
         return cli_error(cmd, "-o OUT.exr is required (or --normal X,Y,Z)"), CLI_USAGE;
+    } else {
+        size_t ol = strlen(out); /* OUT is OpenEXR: never EXR bytes under a picture's name */
+        static const char *const pics[] = {".png", ".PNG", ".jpg", ".jpeg", ".JPG", ".tif", ".tiff", ".hdr"};
+        for (size_t k = 0; k < sizeof pics / sizeof *pics; k++)
+            if (ol >= strlen(pics[k]) && !strcmp(out + ol - strlen(pics[k]), pics[k]))
+                return cli_error(cmd, "-o %s: OUT is written as OpenEXR; name it .exr (a picture: --png FILE)", out), CLI_USAGE;
     }
     lx_ctx *ctx = cli_ctx(cmd);
     if (!ctx) return CLI_RUNTIME;
@@ -189,7 +204,7 @@ int cmd_irradiance(int argc, char **argv)
             if (cli_output_open(&o, out, cmd)) rc = CLI_INPUT;
             else {
                 int bad = cli_table_write(t, (cli_format)fmt, o.fp, 0);
-                if (cli_output_close(&o, !bad, cmd) || bad) rc = CLI_INPUT;
+                if (cli_output_close(&o, !bad, cmd) || bad) rc = CLI_RUNTIME;
             }
             cli_table_free(t);
         }
@@ -208,11 +223,7 @@ int cmd_irradiance(int argc, char **argv)
         lx_exr_write_opts wo = {.half = half};
         if (!st) st = lx_envmap_write_exr(ctx, out, e, &wo);
         if (!st && png) {
-            const lx_envmap *maps[2] = {m, e};
-            char lab[64];
-            snprintf(lab, sizeof lab, "IRRADIANCE (%s)", mname[io.method]);
-            const char *labels[2] = {"RADIANCE (INPUT)", lab};
-            st = lx_png_preview(ctx, png, 2, maps, labels);
+            st = lx_irradiance_write_png(ctx, png, m, e, mname[io.method], scale);
         }
         if (st) rc = cli_fail(cmd, ctx, st);
         else if (cli_verbose)

@@ -1,7 +1,8 @@
 /* cmd_scene.c - `luxcalc scene FILE [--explain]`: reads a scene, plans which effects it needs,
  * evaluates it and prints the receivers' results, or (--explain) the plan with its reasons and
  * the estimated and measured work. */
-#include "cli.h"
+#include "grid.h"
+#include "spd_report.h"
 
 #include <getopt.h>
 #include <math.h>
@@ -19,13 +20,15 @@ static const char help[] =
     "  --explain         print the plan: each effect on or off with its reason, the pairs that take\n"
     "                    the near-field path, the estimated and the measured work (json: an object\n"
     "                    with \"effects\", \"reasons\", \"forced\", \"pairs\", \"estimated\", \"measured\")\n"
-    "  --contributions   csv/json: one more column per luminaire (E_NAME_lx) and the sky (E_sky_lx)\n"
+    "  --contributions   one more column per luminaire (E_NAME_lx; table: E_NAME_avg_lx, the mean over\n"
+    "                    the receiver) and, with a sky, the sky (E_sky_lx)\n"
     "  --glare           UGR (CIE 117) at each [observer]: one row per luminaire that counts with its\n"
     "                    luminance, solid angle, position index and term L^2 w / p^2, and the UGR\n"
     "  --format F        table (default: a summary per receiver), csv or json (one row per point)\n"
     "  -o FILE           write to FILE (atomically)\n"
-    "  --png DIR         also draw every grid receiver's illuminance as a false-colour PNG:\n"
-    "                    DIR/SCENE_RECEIVER.png (SCENE: the file name without its extension)\n"
+    "  --png DIR         also draw every grid receiver as an isolux plot (contours, luminaires,\n"
+    "                    legend, statistics): DIR/SCENE_RECEIVER.png (SCENE: the file name without\n"
+    "                    its extension; DIR is created when missing)\n"
     "  --backend B       auto (default, also LX_BACKEND), cpu or opencl: where the far-field work of\n"
     "                    IES luminaires on grids runs (auto: OpenCL from 1e7 evaluations)\n"
     "\n"
@@ -149,7 +152,7 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
     if (!names) return NULL;
     char **units = names + cap;
 #define COL(n, u) (names[nn] = strdup(n), units[nn] = strdup(u), nn++)
-    int table = fmt == CLI_FMT_TABLE;
+    int table = fmt == CLI_FMT_TABLE, sky = sc->sky != LX_SKY_NONE;
     COL("receiver", "");
     if (table) {
         COL("points", "");
@@ -157,9 +160,18 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
         COL("illuminance_min_lx", "lx");
         COL("illuminance_max_lx", "lx");
         COL("uniformity_u0", "");
+        COL("uniformity_min_max", "");
         if (sc->want_luminance) COL("luminance_avg_cd_m2", "cd/m2");
         if (sc->want_cct) COL("cct_avg_K", "K");
         if (sc->want_melanopic) COL("melanopic_edi_avg_lx", "lx");
+        if (contrib) {
+            for (size_t l = 0; l < sc->n_lum; l++) {
+                char b[300];
+                snprintf(b, sizeof b, "E_%s_avg_lx", sc->lum[l].name);
+                COL(b, "lx");
+            }
+            if (sky) COL("E_sky_avg_lx", "lx");
+        }
     } else {
         COL("x", "m");
         COL("y", "m");
@@ -174,7 +186,7 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
                 snprintf(b, sizeof b, "E_%s_lx", sc->lum[l].name);
                 COL(b, "lx");
             }
-            COL("E_sky_lx", "lx");
+            if (sky) COL("E_sky_lx", "lx");
         }
     }
     cli_table *t = cli_table_new((int)nn, (const char *const *)names, (const char *const *)units);
@@ -208,9 +220,15 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
             cli_table_num(t, mn);
             cli_table_num(t, mx);
             cli_table_num(t, avg > 0 ? mn / avg : NAN);
+            cli_table_num(t, mx > 0 ? mn / mx : NAN);
             if (sc->want_luminance) cli_table_num(t, ls / n);
             if (sc->want_cct) cli_table_num(t, cn == b - a ? cs / (double)cn : NAN);
             if (sc->want_melanopic) cli_table_num(t, ms / n);
+            for (size_t l = 0; contrib && l < sc->n_lum + (size_t)sky; l++) {
+                double c = 0;
+                for (size_t g = a; g < b; g++) c += res->contrib_lx[g * (sc->n_lum + 1) + l];
+                cli_table_num(t, c / n);
+            }
             continue;
         }
         for (size_t g = a; g < b; g++) {
@@ -222,7 +240,7 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
             if (sc->want_cct) cli_table_num(t, res->cct_K[g]), cli_table_num(t, res->duv[g]);
             if (sc->want_melanopic) cli_table_num(t, res->melanopic_edi_lx[g]);
             if (contrib)
-                for (size_t l = 0; l <= sc->n_lum; l++) cli_table_num(t, res->contrib_lx[g * (sc->n_lum + 1) + l]);
+                for (size_t l = 0; l < sc->n_lum + (size_t)sky; l++) cli_table_num(t, res->contrib_lx[g * (sc->n_lum + 1) + l]);
         }
     }
     *names_out = names;
@@ -230,32 +248,58 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
     return t;
 }
 
-/* Each grid receiver's illuminance as a false-colour PNG, drawn as seen from the side its
- * normal points to: the first free axis to the right, the second upwards. */
+/* The plane of a grid receiver (its first free axis as A, the second as B) for the isolux plot. */
+void cli_scene_plane(const lx_scene_receiver *rc, lx_plane *p)
+{
+    memset(p, 0, sizeof *p);
+    int k = rc->axis - 'x', ia = k == 0 ? 1 : 0, ib = k == 2 ? 1 : 2;
+    p->u[ia] = 1, p->v[ib] = 1;
+    p->origin_m[k] = rc->points[k];
+    const double *first = rc->points, *last_a = rc->points + 3 * (rc->na - 1), *last_b = rc->points + 3 * (rc->nb - 1) * rc->na;
+    p->a0 = first[ia], p->a1 = last_a[ia], p->b0 = first[ib], p->b1 = last_b[ib];
+    p->na = rc->na, p->nb = rc->nb;
+    memcpy(p->normal, rc->normal, sizeof p->normal);
+}
+
+/* The scene's luminaires as plot marks (free with free()); NULL when there are none or no memory. */
+lx_plot_mark *cli_scene_marks(const lx_scene *sc)
+{
+    lx_plot_mark *mk = sc->n_lum ? calloc(sc->n_lum, sizeof *mk) : NULL;
+    for (size_t l = 0; mk && l < sc->n_lum; l++) {
+        memcpy(mk[l].pos_m, sc->lum[l].pos_m, sizeof mk[l].pos_m);
+        memcpy(mk[l].aim, sc->lum[l].aim, sizeof mk[l].aim);
+        mk[l].name = sc->lum[l].name;
+    }
+    return mk;
+}
+
+/* Each grid receiver's illuminance as an isolux plot DIR/SCENE_RECEIVER.png (DIR created when
+ * missing), seen from the side its normal points to: the first free axis to the right, the
+ * second upwards. */
 static lx_status write_pngs(lx_ctx *ctx, const lx_scene *sc, const lx_scene_result *res, const char *scene_path,
-                            const char *dir)
+                            const char *dir, int imperial)
 {
     const char *base = strrchr(scene_path, '/');
     base = base ? base + 1 : scene_path;
     size_t bl = strlen(base);
     const char *dot = strrchr(base, '.');
     if (dot && dot != base) bl = (size_t)(dot - base);
-    for (size_t r = 0; r < sc->n_rec; r++) {
+    lx_plot_mark *mk = cli_scene_marks(sc);
+    lx_status st = LX_OK;
+    for (size_t r = 0; r < sc->n_rec && !st; r++) {
         const lx_scene_receiver *rc = &sc->rec[r];
         if (rc->kind != LX_SREC_GRID) continue;
-        double *v = malloc(rc->n * sizeof *v);
-        char path[4096], title[512];
-        if (!v) return LX_ENOMEM;
-        for (size_t j = 0; j < rc->nb; j++)
-            for (size_t i = 0; i < rc->na; i++) v[j * rc->na + i] = res->E_lx[res->first[r] + (rc->nb - 1 - j) * rc->na + i];
+        char path[4096];
+        lx_plane p;
+        cli_scene_plane(rc, &p);
         snprintf(path, sizeof path, "%s/%.*s_%s.png", dir, (int)bl, base, rc->name);
-        snprintf(title, sizeof title, "E (lx) %s", rc->name);
-        lx_status st = lx_png_falsecolor(ctx, path, (int)rc->na, (int)rc->nb, v, NAN, NAN, 0, title);
-        free(v);
-        if (st != LX_OK) return st;
-        if (!cli_quiet) fprintf(stderr, "luxcalc: scene: wrote %s\n", path);
+        lx_isolux_opts io = {.marks = mk, .n_marks = mk ? sc->n_lum : 0, .source = scene_path, .surface = rc->name,
+                             .caption = sc->title, .imperial = imperial};
+        st = lx_grid_write_png(ctx, path, &p, res->E_lx + res->first[r], &io);
+        if (!st && !cli_quiet) fprintf(stderr, "luxcalc: scene: wrote %s\n", path);
     }
-    return LX_OK;
+    free(mk);
+    return st;
 }
 
 /* --glare: one row per observer and luminaire that counts, with the observer's UGR */
@@ -316,7 +360,7 @@ int cmd_scene(int argc, char **argv)
     cli_format fmt = CLI_FMT_TABLE;
     optind = 1;
     opterr = 0;
-    while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":o:h", opts, NULL)) != -1) {
         switch (c) {
         case 'e': do_explain = 1; break;
         case 'c': contrib = 1; break;
@@ -334,7 +378,7 @@ int cmd_scene(int argc, char **argv)
             break;
         }
         case 'h': cli_print_help(help); return CLI_OK;
-        default: cli_error(cmd, "bad option '%s' (see luxcalc scene --help)", argv[optind - 1]); return CLI_USAGE;
+        default: return cli_bad_option(cmd, argv, c);
         }
     }
     if (optind + 1 != argc) {
@@ -362,21 +406,28 @@ int cmd_scene(int argc, char **argv)
     if (st == LX_OK) st = lx_scene_plan_make(ctx, sc, backend, &plan);
     if (st == LX_OK) st = lx_scene_eval(ctx, sc, plan, NULL, &res);
     int rc = CLI_OK;
-    if (st == LX_OK && png_dir) st = write_pngs(ctx, sc, res, argv[optind], png_dir);
+    if (st == LX_OK && png_dir && cli_make_dir(cmd, "--png", png_dir) != 0) {
+        lx_scene_result_free(res);
+        lx_scene_plan_free(plan);
+        lx_scene_free(sc);
+        lx_ctx_destroy(ctx);
+        return CLI_INPUT;
+    }
+    if (st == LX_OK && png_dir) st = write_pngs(ctx, sc, res, argv[optind], png_dir, cli_imperial());
     if (st != LX_OK) rc = cli_fail(cmd, ctx, st);
     else {
         cli_output o;
         if (cli_output_open(&o, out, cmd) != 0) rc = CLI_INPUT;
         else if (do_explain) {
             explain(o.fp, sc, plan, res, fmt);
-            if (cli_output_close(&o, !ferror(o.fp), cmd) != 0) rc = CLI_INPUT;
+            if (cli_output_close(&o, !ferror(o.fp), cmd) != 0) rc = CLI_RUNTIME;
         } else {
             char **names = NULL;
             size_t nn = 0;
             cli_table *t = results(sc, res, fmt, contrib, &names, &nn);
             int ok = t && cli_table_write(t, fmt, o.fp, 1) == 0;
             if (!t) cli_error(cmd, "out of memory");
-            if (cli_output_close(&o, ok, cmd) != 0 || !ok) rc = t ? CLI_INPUT : CLI_RUNTIME;
+            if (cli_output_close(&o, ok, cmd) != 0 || !ok) rc = CLI_RUNTIME;
             cli_table_free(t);
             for (size_t i = 0; i < nn; i++) free(names[i]);
             free(names);

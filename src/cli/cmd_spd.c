@@ -20,7 +20,9 @@ static const char help[] =
     "'#' comments, optional header (a title or Key: value lines above it are kept as fields);\n"
     "Excel CSV; CGATS/Argyll spectral files; the exports of OceanView and SpectraSuite, Sekonic,\n"
     "UPRtek and LI-COR, IES TM-27 (.spdx), AvaSoft, SpectraWiz, recognised by their content;\n"
-    "'-' reads standard input.\n"
+    "'-' reads standard input. Text files are read up to 256 MB (luxcalc --max-input-mb N, or\n"
+    "LX_MAX_INPUT_MB, raises it); rows-layout files on a 1 or 5 nm grid are streamed at any size\n"
+    "(lines up to 4 MB).\n"
     "\n"
     "options:\n"
     "  --observer 2|10        CIE 1931 2 deg (default) or CIE 1964 10 deg observer\n"
@@ -73,6 +75,8 @@ static const char help2[] =
     "                         exit status is then 2\n"
     "  --report DIR           one PNG report per spectrum: DIR/<file-stem>_<spectrum>.png (SPD,\n"
     "                         swatch, CIE xy, R1-R14, TM-30 vector graphic, headline numbers)\n"
+    "  --diagram xy|uv        the report's chromaticity diagram: CIE 1931 xy (default) or\n"
+    "                         CIE 1976 u'v'\n"
     "  IMAGE.exr -o X.exr --png P.png  spectral EXR (S0.<nm>nm channels): per-pixel XYZ in cd/m2\n"
     "  -v, -q                 more messages / errors only (-q: no progress bar)\n"
     "  -h, --help             this help\n"
@@ -142,6 +146,7 @@ typedef struct spd_args {
     lx_observer obs;
     lx_method method;
     int fmt, unit, unit_given, f32, backend_given;
+    lx_diagram diagram;
     cli_metrics msel;
     lx_spd_read_opts ropts;
     int reader_opts; /* any option of the text readers given (the rows-layout stream path then steps aside) */
@@ -161,13 +166,14 @@ static int parse_args(int argc, char **argv, spd_args *a)
         {"skip-lines", required_argument, NULL, 'L'}, {"columns", required_argument, NULL, 'C'},
         {"wavelength-unit", required_argument, NULL, 'W'}, {"skip-bad-rows", no_argument, NULL, 'S'},
         {"photoperiod", required_argument, NULL, 'H'}, {"subtense", required_argument, NULL, 'A'},
+        {"diagram", required_argument, NULL, 'D'},
         {NULL, 0, NULL, 0},
     };
     const char *cmd = a->cmd;
     int c;
     char *end;
     optind = 1;
-    while ((c = getopt_long(argc, argv, "o:vqh", opts, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":o:vqh", opts, NULL)) != -1) {
         switch (c) {
         case 'b':
             if (!strcmp(optarg, "2")) a->obs = LX_OBSERVER_2;
@@ -237,12 +243,17 @@ static int parse_args(int argc, char **argv, spd_args *a)
         }
         case 'G': a->grid = optarg; break;
         case 'R': a->report_dir = optarg; break;
+        case 'D':
+            if (!strcmp(optarg, "xy")) a->diagram = LX_DIAGRAM_XY;
+            else if (!strcmp(optarg, "uv")) a->diagram = LX_DIAGRAM_UV;
+            else return cli_error(cmd, "--diagram: expected xy or uv, not '%s'", optarg), CLI_USAGE;
+            break;
         case 'P': a->png = optarg; break;
         case 'o': a->outpath = optarg; break;
         case 'v': cli_verbose++; break;
         case 'q': cli_quiet = 1; break;
         case 'h': cli_print_help(help), cli_print_help(help2); return -1;
-        default: fprintf(stderr, "%s%s", help, help2); return CLI_USAGE;
+        default: return cli_bad_option(cmd, argv, c);
         }
     }
     a->msel.observer = a->obs;
@@ -283,6 +294,7 @@ typedef struct spd_run {
     spd_cols C;
     int table_unit;
     cli_spd_batch B;
+    cli_reports reports;
     int rc;
 } spd_run;
 
@@ -357,7 +369,8 @@ static void do_set(spd_run *R, lx_spd_set *set)
             R->rc = CLI_INPUT;
         cli_table_json(t, inst);
         if (a->report_dir) {
-            int re = cli_spd_report(R->ctx, a->cmd, a->report_dir, set->file, k, &set->spd[k], a->obs);
+            R->reports.opts.unit = units[u].name;
+            int re = cli_spd_report(&R->reports, R->ctx, set->file, k, &set->spd[k]);
             if (re > R->rc) R->rc = re;
         }
     }
@@ -404,6 +417,7 @@ int cmd_spd(int argc, char **argv)
     a.cmd = "spd", a.obs = LX_OBSERVER_2, a.method = LX_METHOD_AUTO, a.fmt = CLI_FMT_TABLE;
     a.backend_given = getenv("LX_BACKEND") != NULL, a.backend_text = getenv("LX_BACKEND");
     a.msel.photoperiod_h = NAN;
+    a.diagram = LX_DIAGRAM_XY;
     int pe = parse_args(argc, argv, &a);
     if (pe < 0) return CLI_OK; /* --help */
     if (pe != CLI_OK) return pe;
@@ -439,7 +453,7 @@ int cmd_spd(int argc, char **argv)
         lx_ctx_destroy(ctx);
         return e;
     }
-    if (a.report_dir && cli_report_dir(cmd, a.report_dir) != 0) {
+    if (a.report_dir && cli_make_dir(cmd, "--report", a.report_dir) != 0) {
         lx_ctx_destroy(ctx);
         return CLI_INPUT;
     }
@@ -457,6 +471,8 @@ int cmd_spd(int argc, char **argv)
     cli_spd_batch B = {ctx, cmd, R->t, a.obs, a.method, backend, a.backend_given, spd_flush, &R->so, 0,
                        a.msel.any ? &a.msel : NULL, units[a.unit].name, NULL, NULL};
     R->B = B;
+    R->reports.cmd = cmd, R->reports.dir = a.report_dir;
+    R->reports.opts.observer = a.obs, R->reports.opts.unit = units[a.unit].name, R->reports.opts.diagram = a.diagram;
     int nfiles = 0;
     char **files = cli_expand_files(argc - optind, argv + optind, &nfiles);
     for (int fi = 0; files && fi < nfiles; fi++) do_file(R, files[fi], g_start, g_step, g_n);
@@ -467,10 +483,12 @@ int cmd_spd(int argc, char **argv)
         if (!R->so.opened && spd_open(&R->so) != 0) rc = CLI_INPUT;
         if (R->so.opened) {
             int ok = !R->so.failed && cli_table_flush(R->t, R->so.fmt, R->so.o.fp, 0, 1) == 0;
-            if (cli_output_close(&R->so.o, ok, cmd) != 0 || !ok) rc = rc ? rc : CLI_INPUT;
+            int e = cli_output_close(&R->so.o, ok, cmd);
+            if (e || !ok) rc = e ? e : rc ? rc : CLI_RUNTIME;
         }
     }
     cli_free_files(files, nfiles);
+    cli_reports_free(&R->reports);
     cli_table_free(R->t);
     free(R);
     lx_ctx_destroy(ctx);

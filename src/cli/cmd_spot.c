@@ -83,7 +83,7 @@ int cmd_spot(int argc, char **argv)
         static const char *const names[] = {"peak_intensity_cd", "intensity_cd", "illuminance_lx", "exponent",
                                             "beam_angle_deg"};
         static const char *const units[] = {"cd", "cd", "lx", "", "deg"};
-        const double vals[] = {peak, i, e, s, bm / LT_DEG};
+        const double vals[] = {peak, i, e, s, beam ? lt_echo(bm / LT_DEG) : bm / LT_DEG};
         rc = lt_emit_nums(&co, 5, names, units, vals);
     }
     lx_ctx_destroy(ctx);

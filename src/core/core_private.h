@@ -100,6 +100,27 @@ lx_status lx__read_all(lx_ctx *ctx, const char *path, lx_input_kind kind, char *
 lx_status lx__input_size_check(lx_ctx *ctx, const char *path, lx_input_kind kind, unsigned long long size);
 lx_status lx__text_check(lx_ctx *ctx, const char *path, const char *buf, size_t n);
 
+/* ---- output files (file_write.c) ---- */
+
+/* An output file written atomically: lx__wfile_open creates a temporary file beside path
+ * (LX_EIO naming path when it cannot), lx__wfile_write writes all of buf (LX_EWRITE with the
+ * system's reason: "No space left on device"), lx__wfile_close(ctx, w, st) with st == LX_OK
+ * fsyncs, closes and renames into place, otherwise (or when anything failed) removes the
+ * temporary file and returns the first error. A path that exists and is not a regular file (a
+ * device, a FIFO) is opened and written directly (it is never replaced). */
+typedef struct lx__wfile {
+    int fd;
+    int err;          /* errno of the first failed write (0: none) */
+    const char *path; /* not owned */
+    char *tmp;        /* the temporary file, NULL when writing path directly */
+} lx__wfile;
+lx_status lx__wfile_open(lx_ctx *ctx, const char *path, lx__wfile *w);
+lx_status lx__wfile_write(lx_ctx *ctx, lx__wfile *w, const void *buf, size_t n);
+lx_status lx__wfile_close(lx_ctx *ctx, lx__wfile *w, lx_status st);
+/* Today's date as "YYYY-MM-DD" (UTC; SOURCE_DATE_EPOCH's when it is set, for reproducible
+ * output), malloc'ed; NULL without memory. For the dates files carry (the IES [ISSUEDATE]). */
+char *lx__date_today(void);
+
 /* A cursor over the lines of a buffer: LF or CRLF; line counts from 1 after the first call. */
 typedef struct lx__lines {
     const char *p, *end;

@@ -18,6 +18,7 @@ const char *lx_strerror(lx_status status)
     case LX_ERANGE: return "undefined for this input";
     case LX_EUNSUPPORTED: return "not supported";
     case LX_EDEVICE: return "OpenCL device error";
+    case LX_EWRITE: return "write error";
     }
     return "unknown status";
 }

@@ -159,6 +159,9 @@ static lx_status probe_first_block(lx_ctx *ctx, const char *path, const unsigned
  * NUL) or binary data. */
 static lx_status nul_byte(lx_ctx *ctx, const char *path, const char *buf, size_t n, size_t off)
 {
+    const unsigned char *u = (const unsigned char *)buf;
+    if (n >= 2 && ((u[0] == 0xFF && u[1] == 0xFE) || (u[0] == 0xFE && u[1] == 0xFF)))
+        return probe_first_block(ctx, path, u, 2); /* its byte-order mark says what it is */
     size_t m = n < 512 ? n : 512, zero[2] = {0, 0};
     for (size_t i = 0; i < m; i++) zero[i & 1] += buf[i] == 0;
     int odd = m >= 8 && zero[1] * 10 >= (m / 2) * 9 && zero[0] * 10 <= m / 2;

@@ -27,4 +27,37 @@
  * or lx_batch_table_stream, in bytes: 4 MB holds a row of 200000 values of 20 characters. */
 #define LX__BATCH_LINE_MAX ((size_t)4 << 20)
 
+/* ---- luminaires (lighting/ies_read.c, lighting/ldt_read.c) ---- */
+#define LX__IES_MAX_ANGLES 100000      /* vertical or horizontal angles of an IES table */
+#define LX__IES_MAX_TILT_ANGLES 100000 /* angles of an IES TILT table */
+#define LX__IES_MAX_LAMPS 1e6          /* the IES number of lamps */
+#define LX__LDT_MAX_C_PLANES 3600      /* EULUMDAT Mc (0.1 deg steps) */
+#define LX__LDT_MAX_GAMMA 18001        /* EULUMDAT Ng (0.01 deg steps over 0-180) */
+#define LX__LDT_MAX_LAMP_SETS 20       /* EULUMDAT lamp sets */
+#define LX__LDT_MAX_LAMPS 1e6          /* EULUMDAT lamps of one lamp set */
+
+/* ---- scenes (scene/scene_read.c, scene/scene_entities.c) ---- */
+#define LX__SCENE_MAX_DEPTH 16            /* nested includes */
+#define LX__SCENE_MAX_LINE 1023           /* bytes of a scene line, comment excluded */
+#define LX__SCENE_MAX_VALUE 511           /* bytes of a list value (position = x, y, z) */
+#define LX__SCENE_MAX_POINTS_AXIS 100000  /* receiver points along one axis */
+#define LX__SCENE_MAX_POINTS 10000000     /* points of one receiver */
+#define LX__SCENE_MAX_SKY_SAMPLES 100000  /* [sky] samples */
+
+/* ---- computations sized by input (lighting/grid.c, scene/scene_eval.c) ---- */
+#define LX__NEAR_MAX_CELLS 512        /* near-field cells per side of a luminous area */
+#define LX__GRID_MAX_TABLE_ROWS 16384 /* rows of a grid intensity table (--table-rows) */
+
+/* ---- OpenEXR images (radiance/exr_io.c, radiance/spectral_exr.c) ---- */
+/* A radiance map's display and data windows: at most LX__EXR_MAX_PIXELS pixels each, and at most
+ * LX__EXR_PIXELS_FREE + LX__EXR_PIXELS_PER_BYTE x the file's size (beyond what real compression
+ * reaches on real maps), checked before anything is sized by them. */
+#define LX__EXR_MAX_PIXELS 1e9
+#define LX__EXR_PIXELS_FREE 16777216.0
+#define LX__EXR_PIXELS_PER_BYTE 64.0
+/* A spectral image: values (pixels x spectral channels), the same way. */
+#define LX__SPEXR_MAX_VALUES 4e9
+#define LX__SPEXR_VALUES_FREE 1048576.0
+#define LX__SPEXR_VALUES_PER_BYTE 64.0
+
 #endif /* LX_LIMITS_H */

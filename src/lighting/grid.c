@@ -276,7 +276,7 @@ static double near_mean(void *arg, int n)
 
 /* Near field: the luminous area subdivided (2, 4, 8, ... cells per side, up to LX__NEAR_MAX) until
  * the Richardson-extrapolated illuminance changes by less than tol relative. */
-#define LX__NEAR_MAX 512
+#define LX__NEAR_MAX LX__NEAR_MAX_CELLS
 static double pair_near(const plum *p, lx_interp interp, const double *pt, const double *n, double tol,
                         unsigned long long *cells, unsigned long long *unconverged)
 {
@@ -422,8 +422,8 @@ lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, c
         return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown interpolation %d", (int)o.interp);
     if (o.model != LX_MODEL_AUTO && o.model != LX_MODEL_POINT)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "grids use the point or auto model");
-    if (o.table_n < 0 || o.table_n == 1 || o.table_n > 16384)
-        return lx__error(ctx, LX_EINVAL, NULL, 0, "table rows must be 2 to 16384 (got %d; 0: 1024)", o.table_n);
+    if (o.table_n < 0 || o.table_n == 1 || o.table_n > LX__GRID_MAX_TABLE_ROWS)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "table rows must be 2 to %d (got %d; 0: 1024)", LX__GRID_MAX_TABLE_ROWS, o.table_n);
     double tol = o.nearfield_tol == 0 ? 1e-4 : o.nearfield_tol;
     if (!(tol >= 1e-12) || !(tol <= 0.1))
         return lx__error(ctx, LX_EINVAL, NULL, 0, "the near-field tolerance must be in [1e-12, 0.1] (got %g)", tol);

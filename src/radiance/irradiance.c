@@ -134,6 +134,7 @@ lx_status lx_irradiance_map(lx_ctx *ctx, const lx_envmap *map, int width, int he
     m->has_chromaticities = map->has_chromaticities;
     m->units = map->units;
     m->lum_per_unit = map->lum_per_unit;
+    m->irradiance = 1;
     if (o->method == LX_IRR_SH9 && map->layout == LX_ENV_LATLONG) {
         lx_sh9 sh;
         st = lx_sh9_project(ctx, map, &sh);

@@ -435,8 +435,8 @@ lx_status lx__scene_rec_key(lx_ctx *ctx, scene__rec_raw *r, const char *file, lo
         lx_status st = lx__scene_parse_vec(ctx, file, line, key, value, 2, 2, LX_Q_NONE, NULL, p, NULL);
         if (st != LX_OK) return st;
         for (int i = 0; i < 2; i++) {
-            if (!(p[i] >= 1 && p[i] <= 100000) || p[i] != floor(p[i]))
-                return lx__error(ctx, LX_EPARSE, file, line, "points: whole numbers from 1 to 100000");
+            if (!(p[i] >= 1 && p[i] <= LX__SCENE_MAX_POINTS_AXIS) || p[i] != floor(p[i]))
+                return lx__error(ctx, LX_EPARSE, file, line, "points: whole numbers from 1 to %d", LX__SCENE_MAX_POINTS_AXIS);
             r->points[i] = (long)p[i];
         }
         return LX_OK;
@@ -519,8 +519,9 @@ lx_status lx__scene_rec_finish(lx_ctx *ctx, lx_scene *sc, scene__rec_raw *r)
             if (r->has_points) cnt[k] = (size_t)r->points[k];
             else {
                 double c = floor((q[1] - q[0]) / r->spacing + 1e-9) + 1;
-                if (c > 100000) {
-                    st = lx__error(ctx, LX_EPARSE, f, ln, "receiver '%s': more than 100000 points along an axis", r->name);
+                if (c > LX__SCENE_MAX_POINTS_AXIS) {
+                    st = lx__error(ctx, LX_EPARSE, f, ln, "receiver '%s': more than %d points along an axis", r->name,
+                                   LX__SCENE_MAX_POINTS_AXIS);
                     goto out;
                 }
                 cnt[k] = (size_t)c;
@@ -529,8 +530,8 @@ lx_status lx__scene_rec_finish(lx_ctx *ctx, lx_scene *sc, scene__rec_raw *r)
         rc.na = cnt[0];
         rc.nb = cnt[1];
         rc.n = rc.na * rc.nb;
-        if (rc.n > 10000000) {
-            st = lx__error(ctx, LX_EPARSE, f, ln, "receiver '%s': more than 1e7 points", r->name);
+        if (rc.n > LX__SCENE_MAX_POINTS) {
+            st = lx__error(ctx, LX_EPARSE, f, ln, "receiver '%s': more than %d points", r->name, LX__SCENE_MAX_POINTS);
             goto out;
         }
         rc.points = malloc(3 * rc.n * sizeof *rc.points);
@@ -622,8 +623,8 @@ lx_status lx__scene_sky_key(lx_ctx *ctx, lx_scene *sc, const char *file, long li
     if (!strcmp(key, "samples")) {
         double v;
         lx_status st = lx__scene_parse_vec(ctx, file, line, key, value, 1, 1, LX_Q_NONE, NULL, &v, NULL);
-        if (st == LX_OK && !(v >= 4 && v <= 100000 && v == floor(v)))
-            return lx__error(ctx, LX_EPARSE, file, line, "samples: a whole number from 4 to 100000");
+        if (st == LX_OK && !(v >= 4 && v <= LX__SCENE_MAX_SKY_SAMPLES && v == floor(v)))
+            return lx__error(ctx, LX_EPARSE, file, line, "samples: a whole number from 4 to %d", LX__SCENE_MAX_SKY_SAMPLES);
         if (st == LX_OK) sc->sky_samples = (int)v;
         return st;
     }

@@ -115,7 +115,7 @@ static double near_E(lx_ctx *ctx, const lum_eval *le, const double q[3], const d
 {
     unsigned long long patches = 0;
     near_arg A = {ctx, le, q, n};
-    double x = lx__area_refine(near_mean, &A, le->l->radius_m > 0, tol, 512, &patches, NULL);
+    double x = lx__area_refine(near_mean, &A, le->l->radius_m > 0, tol, LX__NEAR_MAX_CELLS, &patches, NULL);
     ctx->counters.nearfield_pairs++;
     ctx->counters.nearfield_subdivisions += patches;
     return x > 0 ? x : 0;

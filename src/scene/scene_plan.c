@@ -74,7 +74,7 @@ void lx_scene_plan_free(lx_scene_plan *plan)
 static unsigned long long near_patches(double size, double d, double tol, int disk)
 {
     unsigned long long total = 0;
-    for (int n = 4; n <= 512; n *= 2) {
+    for (int n = 4; n <= LX__NEAR_MAX_CELLS; n *= 2) {
         total += (unsigned long long)n * (unsigned long long)n * (disk ? 2u : 1u);
         double h = size / (n * (d > 1e-9 ? d : 1e-9));
         if (n >= 16 && h * h * h * h < tol) break;

@@ -13,7 +13,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#define MAX_DEPTH 16
+#define MAX_DEPTH LX__SCENE_MAX_DEPTH
 
 enum { SEC_NONE = 0, SEC_SCENE, SEC_LUM, SEC_REC, SEC_SKY, SEC_OUTPUT, SEC_EFFECTS, SEC_SUN, SEC_OBS };
 
@@ -80,8 +80,9 @@ static const char *unit_part(const char *s)
 lx_status lx__scene_parse_vec(lx_ctx *ctx, const char *file, long line, const char *key, const char *value,
                               int nmin, int nmax, lx_quantity q, const char *bare_unit, double *out, int *count)
 {
-    char buf[512];
-    if (strlen(value) >= sizeof buf) return lx__error(ctx, LX_EPARSE, file, line, "%s: value too long", key);
+    char buf[LX__SCENE_MAX_VALUE + 1];
+    if (strlen(value) >= sizeof buf)
+        return lx__error(ctx, LX_EPARSE, file, line, "%s: value too long (more than %d bytes)", key, LX__SCENE_MAX_VALUE);
     strcpy(buf, value);
     char *comp[8];
     int n = 0;
@@ -336,11 +337,11 @@ static lx_status read_file(reader *r, const char *path, const char *text, size_t
     if (len >= 3 && !memcmp(text, "\xEF\xBB\xBF", 3)) it.p += 3;
     while (st == LX_OK && lx__next_line(&it, &s, &e)) {
         long line = it.line;
-        char buf[1024];
+        char buf[LX__SCENE_MAX_LINE + 1];
         const char *hash = memchr(s, '#', (size_t)(e - s));
         if (hash) e = hash;
         if ((size_t)(e - s) >= sizeof buf) {
-            st = lx__error(ctx, LX_EPARSE, keep, line, "line too long");
+            st = lx__error(ctx, LX_EPARSE, keep, line, "line too long (more than %d bytes before any comment)", LX__SCENE_MAX_LINE);
             break;
         }
         memcpy(buf, s, (size_t)(e - s));

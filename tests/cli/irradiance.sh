@@ -68,3 +68,20 @@ run luminance-map "$T/Ecube.exr" --format csv
 expect_field 1 height 48 0 "output is a cube map of the same layout (8 x 48)"
 run irradiance $M/cube_px.exr -o "$T/Ecube.exr" --size 16x8
 expect_rc 1 "cube input with a non N x 6N --size: exit 1"
+
+# -o names OpenEXR output: a picture's name is refused (no EXR bytes in a .png); the preview has a
+# legend (lx) and takes --scale; luminance-map on the irradiance map it wrote speaks of illuminance
+run irradiance samples/envmaps/furnace.exr -o "$T/out.png"
+expect_rc 1 "-o out.png is refused"
+expect_err_match 'OUT is written as OpenEXR; name it .exr' "the refusal says why"
+[ -e "$T/out.png" ] && notok "nothing written at out.png" "found" || ok "nothing written at out.png"
+run irradiance samples/envmaps/furnace.exr -o "$T/E.exr" --png "$T/E.png" --scale linear
+expect_rc 0 "irradiance --png --scale linear"
+run irradiance samples/envmaps/furnace.exr -o "$T/E.exr" --png "$T/E.png" --scale cubic
+expect_rc 1 "--scale takes log or linear"
+run luminance-map "$T/E.exr" --format csv
+expect_rc 0 "luminance-map of an irradiance map"
+run luminance-map "$T/E.exr"
+expect_out_match '^min +[0-9.e+-]+ lx$' "an irradiance map's statistics are illuminances (lx)"
+run luminance-map samples/envmaps/furnace.exr
+expect_out_match '^min +[0-9.e+-]+ cd/m2$' "a radiance map's are luminances (cd/m2)"

@@ -41,3 +41,15 @@ run scene samples/scenes/office.scene --format csv -o "$T/office.csv" --png "$T"
 expect_rc 0 "-o and --png"
 if [ "$(wc -l < "$T/office.csv")" -eq 119 ]; then ok "-o: header + 118 points"; else notok "-o: header + 118 points" "$(wc -l < "$T/office.csv") lines"; fi
 if head -c 8 "$T/office_desk.png" | od -An -c | grep -q 'P   N   G'; then ok "--png wrote a PNG"; else notok "--png wrote a PNG" "no $T/office_desk.png"; fi
+
+# --contributions in the table format: each luminaire's mean over the receiver; no sky column
+# without a sky, one with it
+run scene tests/data/scenes/point.scene --contributions
+expect_rc 0 "--contributions in the table format"
+expect_out_match '^E_lamp_avg_lx +100\.0 lx$' "the lamp's part: 400 cd / (2 m)^2 = 100 lx"
+expect_out_match '^uniformity_min_max +1\.000$' "E_min / E_max in the scene summary"
+if printf '%s\n' "$out" | grep -q 'E_sky'; then notok "no sky column without a sky" "$out"; else ok "no sky column without a sky"; fi
+run scene tests/data/scenes/point.scene --contributions --format csv
+expect_out_match '^receiver,x,y,z,illuminance_lx,luminance_cd_m2,E_lamp_lx$' "csv contributions without a sky column"
+run scene samples/scenes/facade.scene --contributions --format csv
+expect_out_match ',E_sky_lx$' "a scene with a sky has the sky column"
