@@ -495,141 +495,159 @@ static lx_status columns_set(lx__rd *rd, table *t, const cells *hdr, size_t hn, 
     return st;
 }
 
-lx_status lx__text_read(lx__rd *rd, const char *text, size_t len, int want, lx_spd_set **out)
-{
-    tline *L = NULL;
-    size_t nl = 0;
-    long last = 0;
-    lx_status st = read_lines(rd, text, len, &L, &nl, &last);
-    if (st) return st;
-    cells cs = {0}, hdr = {0};
-    table t = {0};
-    size_t *col = NULL, ncol = 0;
-    double *wl = NULL;
+/* What the reader knows once the layout is found; the working buffers of both layouts. */
+typedef struct parse {
+    lx__rd *rd;
+    const tline *L;
+    size_t nl;
     layout ly;
-    if (nl == 0) {
-        st = lx__error(rd->ctx, LX_EPARSE, rd->file, last ? last : 1,
-                       len ? "no data: only blank or comment lines" : "empty file");
-        goto done;
+    cells cs, hdr;
+    size_t hn;         /* header cells (0 without a header) */
+    long hline;        /* the header's line (0 without one) */
+    long first_line;   /* the header's line, else the first data line's */
+    table t;
+    size_t *col, ncol; /* the columns read (columns layout) */
+    double *wl;        /* the header's wavelengths (rows layout) */
+} parse;
+
+/* The rows layout: the header's wavelengths, one spectrum per data line. */
+static lx_status rows_layout(parse *P, lx_spd_set **out)
+{
+    lx__rd *rd = P->rd;
+    if (rd->opts.columns)
+        return lx__error(rd->ctx, LX_EINVAL, rd->file, P->hline, "--columns applies to the columns layout (one "
+                         "wavelength column), not to this rows layout");
+    size_t ncols = trimmed_count(&P->hdr);
+    if (!(P->wl = malloc((ncols > 1 ? ncols - 1 : 1) * sizeof *P->wl))) return lx__rd_nomem(rd);
+    for (size_t i = 1; i < ncols; i++) {
+        const cell *h = &P->hdr.c[i];
+        double *w = &P->wl[i - 1];
+        lx_status st = lx__parse_field(rd->ctx, rd->file, P->hline, h->s, h->e, point_of(h, P->ly.sep), "wavelength", w);
+        if (st) return st;
+        if (!(*w > 0))
+            return lx__error(rd->ctx, LX_EPARSE, rd->file, P->hline, "wavelength must be positive: %.17g nm", *w);
+        if (i > 1 && !(*w > w[-1]))
+            return lx__error(rd->ctx, LX_EPARSE, rd->file, P->hline,
+                             "header wavelengths must increase: %.17g nm after %.17g nm (column %zu)", *w, w[-1], i + 1);
     }
-    int found = find_layout(L, nl, want, &cs, &ly);
-    if (found == -2) goto nomem;
-    if (found < 0) {
-        st = lx__error(rd->ctx, LX_EPARSE, rd->file, L[nl - 1].line, want == 2 ? "no rows-layout header "
-                       "(a name cell, then the wavelengths)" : "header but no data rows");
-        goto done;
+    double k = lx__wl_unit_word(P->hdr.c[0].s, P->hdr.c[0].e);
+    if (k > 0) rd->wl_scale = k, rd->wl_source = "the header's first cell";
+    P->t.nv = ncols - 1;
+    for (size_t i = P->ly.data; i < P->nl; i++) {
+        cells *cs = &P->cs;
+        if (split(P->L[i].s, P->L[i].e, P->ly.sep, cs)) return lx__rd_nomem(rd);
+        cut_comment(cs, 1);
+        while (cs->n > ncols && cs->c[cs->n - 1].s == cs->c[cs->n - 1].e) cs->n--;
+        if (trimmed_count(cs) == 0) continue;
+        lx_status st = rows_row(rd, &P->t, cs, P->ly.sep, ncols, P->L[i].line, P->first_line);
+        if (st) return st;
     }
-    /* the preamble: header fields of the instrument's software, or a title */
-    int avasoft = 0;
-    size_t top = ly.header < nl ? ly.header : ly.data;
-    for (size_t i = 0; i < top; i++)
-        if (preamble_field(rd, L[i].s, L[i].e, L[i].line, &avasoft)) goto nomem;
-    static const char units_key[] = "units";
-    if (ly.units < nl && lx__rd_field(rd, L[ly.units].line, units_key, units_key + 5, L[ly.units].s, L[ly.units].e))
-        goto nomem;
-    long hline = ly.header < nl ? L[ly.header].line : 0;
-    size_t hn = 0;
-    if (ly.header < nl) {
-        if (split(L[ly.header].s, L[ly.header].e, ly.sep, &hdr)) goto nomem;
-        hn = hdr.n;
-    }
-    if (!rd->format)
-        rd->format = ly.rows ? "rows" : avasoft || (ly.units < nl && lx__starts_ci(hdr.c[0].s, hdr.c[0].e, "wave"))
-                                          ? "avantes" : "columns";
-    if (avasoft) avasoft_unit(rd);
-    long first_line = ly.header < nl ? hline : L[ly.data].line;
-    if (ly.rows) {
-        if (rd->opts.columns) {
-            st = lx__error(rd->ctx, LX_EINVAL, rd->file, hline, "--columns applies to the columns layout (one "
-                           "wavelength column), not to this rows layout");
-            goto done;
-        }
-        size_t ncols = trimmed_count(&hdr);
-        if (!(wl = malloc((ncols > 1 ? ncols - 1 : 1) * sizeof *wl))) goto nomem;
-        for (size_t i = 1; i < ncols; i++) {
-            st = lx__parse_field(rd->ctx, rd->file, hline, hdr.c[i].s, hdr.c[i].e, point_of(&hdr.c[i], ly.sep),
-                                 "wavelength", &wl[i - 1]);
-            if (st) goto done;
-            if (!(wl[i - 1] > 0)) {
-                st = lx__error(rd->ctx, LX_EPARSE, rd->file, hline, "wavelength must be positive: %.17g nm", wl[i - 1]);
-                goto done;
-            }
-            if (i > 1 && !(wl[i - 1] > wl[i - 2])) {
-                st = lx__error(rd->ctx, LX_EPARSE, rd->file, hline,
-                               "header wavelengths must increase: %.17g nm after %.17g nm (column %zu)", wl[i - 1],
-                               wl[i - 2], i + 1);
-                goto done;
-            }
-        }
-        double k = lx__wl_unit_word(hdr.c[0].s, hdr.c[0].e);
-        if (k > 0) rd->wl_scale = k, rd->wl_source = "the header's first cell";
-        t.nv = ncols - 1;
-        for (size_t i = ly.data; i < nl; i++) {
-            if (split(L[i].s, L[i].e, ly.sep, &cs)) goto nomem;
-            cut_comment(&cs, 1);
-            while (cs.n > ncols && cs.c[cs.n - 1].s == cs.c[cs.n - 1].e) cs.n--;
-            if (trimmed_count(&cs) == 0) continue;
-            if ((st = rows_row(rd, &t, &cs, ly.sep, ncols, L[i].line, first_line))) goto done;
-        }
-        if (t.n == 0) {
-            st = lx__error(rd->ctx, LX_EPARSE, rd->file, hline, rd->nskipped ? "no good data rows" : "header but no data rows");
-            goto done;
-        }
-        st = lx__spd_set_build(rd->ctx, rd->file, ncols - 1, wl, 1, NULL, hline, t.n, t.v, t.nv, 1, t.name, t.line, out);
-        goto done;
-    }
-    /* columns layout */
-    if (split(L[ly.data].s, L[ly.data].e, ly.sep, &cs)) goto nomem;
-    cut_comment(&cs, 0);
-    size_t ncols = ly.header < nl ? hn : cs.n, nmin = ly.header < nl ? trimmed_count(&hdr) : trimmed_count(&cs);
-    if (ly.header >= nl && nmin < 2) {
-        st = lx__error(rd->ctx, LX_EPARSE, rd->file, L[ly.data].line,
-                       "row has 1 field; need a wavelength and at least one value");
-        goto done;
-    }
+    if (P->t.n == 0)
+        return lx__error(rd->ctx, LX_EPARSE, rd->file, P->hline, rd->nskipped ? "no good data rows" : "header but no data rows");
+    return lx__spd_set_build(rd->ctx, rd->file, ncols - 1, P->wl, 1, NULL, P->hline, P->t.n, P->t.v, P->t.nv, 1,
+                             P->t.name, P->t.line, out);
+}
+
+/* The columns layout: a wavelength column and value columns (all of them, or --columns). */
+static lx_status columns_layout(parse *P, lx_spd_set **out)
+{
+    lx__rd *rd = P->rd;
+    const layout *ly = &P->ly;
+    int has_hdr = ly->header < P->nl;
+    if (split(P->L[ly->data].s, P->L[ly->data].e, ly->sep, &P->cs)) return lx__rd_nomem(rd);
+    cut_comment(&P->cs, 0);
+    size_t ncols = has_hdr ? P->hn : P->cs.n, nmin = has_hdr ? trimmed_count(&P->hdr) : trimmed_count(&P->cs);
+    if (!has_hdr && nmin < 2)
+        return lx__error(rd->ctx, LX_EPARSE, rd->file, P->L[ly->data].line,
+                         "row has 1 field; need a wavelength and at least one value");
     if (nmin < 2) nmin = 2;
     if (rd->opts.columns) {
-        if ((st = select_columns(rd, ly.header < nl ? &hdr : NULL, hn, ncols, hline, &col, &ncol))) goto done;
+        lx_status st = select_columns(rd, has_hdr ? &P->hdr : NULL, P->hn, ncols, P->hline, &P->col, &P->ncol);
+        if (st) return st;
     } else {
-        if (!(col = malloc(ncols * sizeof *col))) goto nomem;
-        for (size_t k = 0; k < ncols; k++) col[k] = k;
-        ncol = ncols;
+        if (!(P->col = malloc(ncols * sizeof *P->col))) return lx__rd_nomem(rd);
+        for (size_t k = 0; k < ncols; k++) P->col[k] = k;
+        P->ncol = ncols;
     }
-    {
-        const cell *wh = ly.units < nl ? NULL : ly.header < nl && col[0] < hn ? &hdr.c[col[0]] : NULL;
-        double k = wh ? lx__wl_unit_word(wh->s, wh->e) : 0;
-        if (ly.units < nl) { /* the units line's cell of the wavelength column */
-            if (split(L[ly.units].s, L[ly.units].e, ly.sep, &cs)) goto nomem;
-            if (col[0] < cs.n) k = lx__wl_unit_word(cs.c[col[0]].s, cs.c[col[0]].e);
-        }
-        if (k > 0) rd->wl_scale = k, rd->wl_source = "the wavelength column's header";
+    /* the wavelength unit: the units line's cell of the wavelength column, else its header cell */
+    double k = 0;
+    if (ly->units < P->nl) {
+        if (split(P->L[ly->units].s, P->L[ly->units].e, ly->sep, &P->cs)) return lx__rd_nomem(rd);
+        if (P->col[0] < P->cs.n) k = lx__wl_unit_word(P->cs.c[P->col[0]].s, P->cs.c[P->col[0]].e);
+    } else if (has_hdr && P->col[0] < P->hn) {
+        k = lx__wl_unit_word(P->hdr.c[P->col[0]].s, P->hdr.c[P->col[0]].e);
     }
-    t.nv = ncol;
-    for (size_t i = ly.data; i < nl; i++) {
-        if (split(L[i].s, L[i].e, ly.sep, &cs)) goto nomem;
-        cut_comment(&cs, 0);
-        while (cs.n > ncols && cs.c[cs.n - 1].s == cs.c[cs.n - 1].e) cs.n--;
-        if (trimmed_count(&cs) == 0) continue;
-        st = columns_row(rd, &t, &cs, ly.sep, col, ncol, ncols, nmin, L[i].line, first_line, rd->opts.columns != NULL);
-        if (st) goto done;
+    if (k > 0) rd->wl_scale = k, rd->wl_source = "the wavelength column's header";
+    P->t.nv = P->ncol;
+    for (size_t i = ly->data; i < P->nl; i++) {
+        cells *cs = &P->cs;
+        if (split(P->L[i].s, P->L[i].e, ly->sep, cs)) return lx__rd_nomem(rd);
+        cut_comment(cs, 0);
+        while (cs->n > ncols && cs->c[cs->n - 1].s == cs->c[cs->n - 1].e) cs->n--;
+        if (trimmed_count(cs) == 0) continue;
+        lx_status st = columns_row(rd, &P->t, cs, ly->sep, P->col, P->ncol, ncols, nmin, P->L[i].line, P->first_line,
+                                   rd->opts.columns != NULL);
+        if (st) return st;
     }
-    if (t.n == 0) {
-        st = lx__error(rd->ctx, LX_EPARSE, rd->file, first_line, rd->nskipped ? "no good data rows" : "header but no data rows");
-        goto done;
+    if (P->t.n == 0)
+        return lx__error(rd->ctx, LX_EPARSE, rd->file, P->first_line, rd->nskipped ? "no good data rows" : "header but no data rows");
+    return columns_set(rd, &P->t, has_hdr ? &P->hdr : NULL, P->hn, P->hline, P->col, P->ncol, out);
+}
+
+/* The preamble above the header (header fields, a title) and what it says about the layout. */
+static lx_status preamble(parse *P)
+{
+    lx__rd *rd = P->rd;
+    const layout *ly = &P->ly;
+    int avasoft = 0;
+    size_t top = ly->header < P->nl ? ly->header : ly->data;
+    for (size_t i = 0; i < top; i++)
+        if (preamble_field(rd, P->L[i].s, P->L[i].e, P->L[i].line, &avasoft)) return lx__rd_nomem(rd);
+    static const char units_key[] = "units";
+    if (ly->units < P->nl &&
+        lx__rd_field(rd, P->L[ly->units].line, units_key, units_key + 5, P->L[ly->units].s, P->L[ly->units].e))
+        return lx__rd_nomem(rd);
+    if (ly->header < P->nl) {
+        P->hline = P->L[ly->header].line;
+        if (split(P->L[ly->header].s, P->L[ly->header].e, ly->sep, &P->hdr)) return lx__rd_nomem(rd);
+        P->hn = P->hdr.n;
     }
-    st = columns_set(rd, &t, ly.header < nl ? &hdr : NULL, hn, hline, col, ncol, out);
-    goto done;
-nomem:
-    st = lx__rd_nomem(rd);
-done:
-    for (size_t r = 0; t.name && r < t.n; r++) free(t.name[r]);
-    free(t.name);
-    free(t.v);
-    free(t.line);
-    free(cs.c);
-    free(hdr.c);
-    free(col);
-    free(wl);
+    P->first_line = ly->header < P->nl ? P->hline : P->L[ly->data].line;
+    if (!rd->format)
+        rd->format = ly->rows ? "rows" : avasoft || (ly->units < P->nl && lx__starts_ci(P->hdr.c[0].s, P->hdr.c[0].e, "wave"))
+                                           ? "avantes" : "columns";
+    if (avasoft) avasoft_unit(rd);
+    return LX_OK;
+}
+
+lx_status lx__text_read(lx__rd *rd, const char *text, size_t len, int want, lx_spd_set **out)
+{
+    parse P;
+    memset(&P, 0, sizeof P);
+    P.rd = rd;
+    tline *L = NULL;
+    long last = 0;
+    lx_status st = read_lines(rd, text, len, &L, &P.nl, &last);
+    if (st) return st;
+    P.L = L;
+    int found = P.nl ? find_layout(L, P.nl, want, &P.cs, &P.ly) : -1;
+    if (P.nl == 0)
+        st = lx__error(rd->ctx, LX_EPARSE, rd->file, last ? last : 1, len ? "no data: only blank or comment lines" : "empty file");
+    else if (found == -2)
+        st = lx__rd_nomem(rd);
+    else if (found < 0)
+        st = lx__error(rd->ctx, LX_EPARSE, rd->file, L[P.nl - 1].line, want == 2 ? "no rows-layout header "
+                       "(a name cell, then the wavelengths)" : "header but no data rows");
+    if (st == LX_OK) st = preamble(&P);
+    if (st == LX_OK) st = P.ly.rows ? rows_layout(&P, out) : columns_layout(&P, out);
+    for (size_t r = 0; P.t.name && r < P.t.n; r++) free(P.t.name[r]);
+    free(P.t.name);
+    free(P.t.v);
+    free(P.t.line);
+    free(P.cs.c);
+    free(P.hdr.c);
+    free(P.col);
+    free(P.wl);
     free(L);
     return st;
 }

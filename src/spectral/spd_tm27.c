@@ -131,42 +131,140 @@ static int attribute(const char *s, const char *e, const char *name, const char 
 
 #define XML_DEPTH 32
 
+/* The reader's state: the open elements, where we are, and the spectrum being collected. */
+typedef struct tm27 {
+    lx__rd *rd;
+    struct {
+        const char *s, *e;   /* the element's name */
+        const char *content; /* after its start tag */
+        long line;
+    } stack[XML_DEPTH];
+    int depth, in_header, in_dist, ndist;
+    double *l, *v;
+    long *ln;
+    size_t n, cap;
+    long dist_line;
+    char *desc, *quantity;
+    lx_spd_set **out;
+} tm27;
+
+/* </SpectralDistribution>: its samples become one spectrum, merged into *out. */
+static lx_status end_distribution(tm27 *S)
+{
+    lx__rd *rd = S->rd;
+    S->in_dist = 0;
+    S->ndist++;
+    if (S->n < 2)
+        return lx__error(rd->ctx, LX_EPARSE, rd->file, S->dist_line,
+                         "SpectralDistribution with %zu SpectralData element%s; a spectrum needs at least 2", S->n,
+                         S->n == 1 ? "" : "s");
+    char *nm = S->desc;
+    lx_spd_set *set = NULL;
+    lx_status st = lx__spd_set_build(rd->ctx, rd->file, S->n, S->l, 1, S->ln, 0, 1, S->v, 1, 1, S->desc ? &nm : NULL,
+                                     &S->dist_line, &set);
+    S->n = 0;
+    if (st != LX_OK) return st;
+    if (!*S->out) return *S->out = set, LX_OK;
+    return lx__spd_set_merge(rd->ctx, *S->out, set);
+}
+
+/* </SpectralData>: one sample from the wavelength attribute of its start tag [as, ae) and its text. */
+static lx_status end_data(tm27 *S, const char *as, const char *ae, const char *cs, const char *ce, long dl)
+{
+    lx__rd *rd = S->rd;
+    const char *ws, *we;
+    if (!attribute(as, ae, "wavelength", &ws, &we)) return lx__rd_bad_row(rd, dl, "SpectralData without a wavelength attribute");
+    int bad = 0;
+    char *txt = decode(cs, ce, &bad);
+    if (!txt) return lx__rd_nomem(rd);
+    double wl, val;
+    while (ws < we && is_space(*ws)) ws++;
+    while (we > ws && is_space(we[-1])) we--;
+    lx_status fs = lx__parse_field(rd->ctx, rd->file, dl, ws, we, 0, "wavelength", &wl);
+    if (!fs) fs = lx__parse_field(rd->ctx, rd->file, dl, txt, txt + strlen(txt), 0, "value", &val);
+    free(txt);
+    if (fs) return lx__rd_bad_field(rd, dl, fs);
+    if (!(wl > 0)) return lx__rd_bad_row(rd, dl, "wavelength must be positive: %.17g nm", wl);
+    if (S->n == S->cap) {
+        size_t cap = S->cap ? 2 * S->cap : 256;
+        double *l2 = realloc(S->l, cap * sizeof *l2);
+        if (l2) S->l = l2;
+        double *v2 = realloc(S->v, cap * sizeof *v2);
+        if (v2) S->v = v2;
+        long *n2 = realloc(S->ln, cap * sizeof *n2);
+        if (n2) S->ln = n2;
+        if (!l2 || !v2 || !n2) return lx__rd_nomem(rd);
+        S->cap = cap;
+    }
+    S->l[S->n] = wl, S->v[S->n] = val, S->ln[S->n] = dl, S->n++;
+    return LX_OK;
+}
+
+/* An end tag </ns..ne> at lt, line `line`: checks it closes the open element, then handles it. */
+static lx_status end_tag(tm27 *S, const char *ns, const char *ne, const char *lt, long line)
+{
+    lx__rd *rd = S->rd;
+    int d = S->depth;
+    if (d == 0 || (size_t)(ne - ns) != (size_t)(S->stack[d - 1].e - S->stack[d - 1].s) ||
+        memcmp(ns, S->stack[d - 1].s, (size_t)(ne - ns)))
+        return lx__error(rd->ctx, LX_EPARSE, rd->file, line, "XML end tag </%.*s> does not close %s%.*s%s",
+                         (int)(ne - ns), ns, d ? "<" : "any element", d ? (int)(S->stack[d - 1].e - S->stack[d - 1].s) : 0,
+                         d ? S->stack[d - 1].s : "", d ? ">" : "");
+    d = --S->depth;
+    const char *cs = S->stack[d].content, *ce = lt;
+    if (name_is(ns, ne, "Header")) {
+        S->in_header = 0;
+        return LX_OK;
+    }
+    if (name_is(ns, ne, "SpectralDistribution")) return end_distribution(S);
+    if (S->in_dist && name_is(ns, ne, "SpectralData"))
+        return end_data(S, S->stack[d].s, S->stack[d].content - 1, cs, ce, S->stack[d].line);
+    if (!((S->in_header || S->in_dist) && d == 2)) return LX_OK;
+    /* a field of Header or SpectralDistribution */
+    int bad = 0;
+    char *txt = decode(cs, ce, &bad);
+    if (!txt) return lx__rd_nomem(rd);
+    const char *k = local(ns, ne);
+    lx_status st = lx__rd_field(rd, S->stack[d].line, k, ne, txt, txt + strlen(txt)) ? lx__rd_nomem(rd) : LX_OK;
+    if (S->in_header && name_is(ns, ne, "Description") && !S->desc) S->desc = txt, txt = NULL;
+    else if (S->in_dist && name_is(ns, ne, "SpectralQuantity") && !S->quantity) S->quantity = txt, txt = NULL;
+    free(txt);
+    return st;
+}
+
+/* Skips a comment or CDATA section at lt (open, its closing marker); returns 0 when lt is neither. */
+static int skip_section(xml *x, const char *lt, const char *e, const char **p, lx_status *st)
+{
+    static const struct {
+        const char *open, *close, *what;
+    } sec[2] = {{"<!--", "-->", "comment"}, {"<![CDATA[", "]]>", "CDATA"}};
+    for (int i = 0; i < 2; i++) {
+        size_t no = strlen(sec[i].open);
+        if ((size_t)(e - lt) < no || memcmp(lt, sec[i].open, no)) continue;
+        const char *c = lt + no;
+        while (c + 3 <= e && memcmp(c, sec[i].close, 3)) c++;
+        if (c + 3 > e)
+            *st = lx__error(x->rd->ctx, LX_EPARSE, x->rd->file, line_at(x, lt), "truncated XML: %s not closed", sec[i].what);
+        *p = c + 3;
+        return 1;
+    }
+    return 0;
+}
+
 lx_status lx__tm27_read(lx__rd *rd, const char *text, size_t len, lx_spd_set **out)
 {
     rd->format = "tm27";
     xml x = {rd, text, text + len, text, rd->line0 + 1};
-    struct {
-        const char *s, *e; /* name */
-        const char *content; /* after the start tag */
-        long line;
-    } stack[XML_DEPTH];
-    int depth = 0;
+    tm27 *S = calloc(1, sizeof *S);
+    if (!S) return lx__rd_nomem(rd);
+    S->rd = rd, S->out = out;
     lx_status st = LX_OK;
-    double *l = NULL, *v = NULL;
-    long *ln = NULL;
-    size_t n = 0, cap = 0;
-    int in_header = 0, in_dist = 0, ndist = 0;
-    char *desc = NULL, *quantity = NULL;
-    long dist_line = 0;
     const char *p = text, *e = text + len;
     while (st == LX_OK && p < e) {
         const char *lt = memchr(p, '<', (size_t)(e - p));
         if (!lt) break;
+        if (skip_section(&x, lt, e, &p, &st)) continue;
         long line = line_at(&x, lt);
-        if (e - lt >= 4 && !memcmp(lt, "<!--", 4)) {
-            const char *c = lt + 4;
-            while (c + 3 <= e && memcmp(c, "-->", 3)) c++;
-            if (c + 3 > e) st = lx__error(rd->ctx, LX_EPARSE, rd->file, line, "truncated XML: comment not closed");
-            p = c + 3;
-            continue;
-        }
-        if (e - lt >= 9 && !memcmp(lt, "<![CDATA[", 9)) {
-            const char *c = lt + 9;
-            while (c + 3 <= e && memcmp(c, "]]>", 3)) c++;
-            if (c + 3 > e) st = lx__error(rd->ctx, LX_EPARSE, rd->file, line, "truncated XML: CDATA not closed");
-            p = c + 3;
-            continue;
-        }
         const char *gt = memchr(lt, '>', (size_t)(e - lt));
         if (!gt) {
             st = lx__error(rd->ctx, LX_EPARSE, rd->file, line, "truncated XML: a tag is not closed");
@@ -174,126 +272,41 @@ lx_status lx__tm27_read(lx__rd *rd, const char *text, size_t len, lx_spd_set **o
         }
         p = gt + 1;
         if (lt[1] == '?' || lt[1] == '!') continue; /* declaration, processing instruction, DOCTYPE */
-        if (lt[1] == '/') { /* end tag */
+        if (lt[1] == '/') {
             const char *ns = lt + 2, *ne = ns;
             while (ne < gt && !is_space(*ne)) ne++;
-            if (depth == 0 || (size_t)(ne - ns) != (size_t)(stack[depth - 1].e - stack[depth - 1].s) ||
-                memcmp(ns, stack[depth - 1].s, (size_t)(ne - ns))) {
-                st = lx__error(rd->ctx, LX_EPARSE, rd->file, line, "XML end tag </%.*s> does not close %s%.*s%s",
-                               (int)(ne - ns), ns, depth ? "<" : "any element", depth ? (int)(stack[depth - 1].e - stack[depth - 1].s) : 0,
-                               depth ? stack[depth - 1].s : "", depth ? ">" : "");
-                break;
-            }
-            depth--;
-            const char *cs = stack[depth].content, *ce = lt;
-            int bad = 0;
-            if (name_is(ns, ne, "Header")) in_header = 0;
-            else if (name_is(ns, ne, "SpectralDistribution")) {
-                in_dist = 0;
-                ndist++;
-                lx_spd_set *set = NULL;
-                if (n < 2) {
-                    st = lx__error(rd->ctx, LX_EPARSE, rd->file, dist_line,
-                                   "SpectralDistribution with %zu SpectralData element%s; a spectrum needs at least 2", n,
-                                   n == 1 ? "" : "s");
-                    break;
-                }
-                char *nm = desc;
-                st = lx__spd_set_build(rd->ctx, rd->file, n, l, 1, ln, 0, 1, v, 1, 1, desc ? &nm : NULL, &dist_line, &set);
-                if (st == LX_OK) st = *out ? lx__spd_set_merge(rd->ctx, *out, set) : (*out = set, LX_OK);
-                n = 0;
-            } else if (in_dist && name_is(ns, ne, "SpectralData")) {
-                const char *as = stack[depth].s, *ae = stack[depth].content - 1, *ws, *we;
-                long dl = stack[depth].line;
-                if (!attribute(as, ae, "wavelength", &ws, &we)) {
-                    st = lx__rd_bad_row(rd, dl, "SpectralData without a wavelength attribute");
-                    continue;
-                }
-                char *txt = decode(cs, ce, &bad);
-                if (!txt) {
-                    st = lx__rd_nomem(rd);
-                    break;
-                }
-                double wl, val;
-                while (ws < we && is_space(*ws)) ws++;
-                while (we > ws && is_space(we[-1])) we--;
-                lx_status fs = lx__parse_field(rd->ctx, rd->file, dl, ws, we, 0, "wavelength", &wl);
-                if (!fs) fs = lx__parse_field(rd->ctx, rd->file, dl, txt, txt + strlen(txt), 0, "value", &val);
-                free(txt);
-                if (fs) {
-                    st = lx__rd_bad_field(rd, dl, fs);
-                    continue;
-                }
-                if (!(wl > 0)) {
-                    st = lx__rd_bad_row(rd, dl, "wavelength must be positive: %.17g nm", wl);
-                    continue;
-                }
-                if (n == cap) {
-                    cap = cap ? 2 * cap : 256;
-                    double *l2 = realloc(l, cap * sizeof *l2);
-                    if (l2) l = l2;
-                    double *v2 = realloc(v, cap * sizeof *v2);
-                    if (v2) v = v2;
-                    long *n2 = realloc(ln, cap * sizeof *n2);
-                    if (n2) ln = n2;
-                    if (!l2 || !v2 || !n2) {
-                        st = lx__rd_nomem(rd);
-                        break;
-                    }
-                }
-                l[n] = wl, v[n] = val, ln[n] = dl, n++;
-            } else if ((in_header && depth == 2) || (in_dist && depth == 2)) { /* a field of Header or SpectralDistribution */
-                char *txt = decode(cs, ce, &bad);
-                if (!txt) {
-                    st = lx__rd_nomem(rd);
-                    break;
-                }
-                const char *k = local(ns, ne);
-                if (lx__rd_field(rd, stack[depth].line, k, ne, txt, txt + strlen(txt))) st = lx__rd_nomem(rd);
-                if (in_header && name_is(ns, ne, "Description") && !desc) desc = txt, txt = NULL;
-                else if (in_dist && name_is(ns, ne, "SpectralQuantity") && !quantity) quantity = txt, txt = NULL;
-                free(txt);
-            }
+            st = end_tag(S, ns, ne, lt, line);
             continue;
         }
-        /* a start tag (or an empty element <x/>) */
+        /* a start tag (an empty element <x/> holds nothing) */
         const char *ns = lt + 1, *ne = ns;
         while (ne < gt && !is_space(*ne) && *ne != '/') ne++;
-        int empty = gt > lt && gt[-1] == '/';
-        if (empty) continue;
-        if (depth == XML_DEPTH) {
+        if (gt[-1] == '/') continue;
+        if (S->depth == XML_DEPTH) {
             st = lx__error(rd->ctx, LX_EPARSE, rd->file, line, "XML nested deeper than %d elements", XML_DEPTH);
             break;
         }
-        stack[depth].s = ns, stack[depth].e = ne, stack[depth].content = gt + 1, stack[depth].line = line;
-        depth++;
-        if (depth == 2 && name_is(ns, ne, "Header")) in_header = 1;
-        if (depth == 2 && name_is(ns, ne, "SpectralDistribution")) in_dist = 1, dist_line = line, n = 0;
+        int d = S->depth++;
+        S->stack[d].s = ns, S->stack[d].e = ne, S->stack[d].content = gt + 1, S->stack[d].line = line;
+        if (d == 1 && name_is(ns, ne, "Header")) S->in_header = 1;
+        if (d == 1 && name_is(ns, ne, "SpectralDistribution")) S->in_dist = 1, S->dist_line = line, S->n = 0;
     }
-    if (st == LX_OK && depth > 0)
-        st = lx__error(rd->ctx, LX_EPARSE, rd->file, stack[depth - 1].line, "truncated XML: <%.*s> is not closed",
-                       (int)(stack[depth - 1].e - stack[depth - 1].s), stack[depth - 1].s);
-    if (st == LX_OK && !ndist)
+    if (st == LX_OK && S->depth > 0)
+        st = lx__error(rd->ctx, LX_EPARSE, rd->file, S->stack[S->depth - 1].line, "truncated XML: <%.*s> is not closed",
+                       (int)(S->stack[S->depth - 1].e - S->stack[S->depth - 1].s), S->stack[S->depth - 1].s);
+    if (st == LX_OK && !S->ndist)
         st = lx__error(rd->ctx, LX_EPARSE, rd->file, line_at(&x, e), "no <SpectralDistribution> element: not a TM-27 document");
-    if (st == LX_OK && quantity) {
+    if (st == LX_OK && S->quantity) {
         static const struct {
             const char *q, *unit;
         } qu[] = {{"flux", "W/nm"}, {"irradiance", "W/m2/nm"}, {"radiance", "W/sr/m2/nm"}, {"intensity", "W/sr/nm"}};
         for (size_t i = 0; i < sizeof qu / sizeof *qu; i++)
-            if (!strcmp(quantity, qu[i].q)) {
-                rd->unit = qu[i].unit;
-                rd->unit_scale = 1.0;
-                rd->unit_source = "TM-27 SpectralQuantity";
-            }
+            if (!strcmp(S->quantity, qu[i].q)) rd->unit = qu[i].unit, rd->unit_scale = 1.0, rd->unit_source = "TM-27 SpectralQuantity";
     }
     if (st != LX_OK && *out) {
         lx_spd_set_free(*out);
         *out = NULL;
     }
-    free(l);
-    free(v);
-    free(ln);
-    free(desc);
-    free(quantity);
+    free(S->l), free(S->v), free(S->ln), free(S->desc), free(S->quantity), free(S);
     return st;
 }

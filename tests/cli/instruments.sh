@@ -53,8 +53,12 @@ d=json.load(sys.stdin); d=d if isinstance(d,list) else [d]; print(d[0]["instrume
   expect_field 2 Y 30.1 0.05 "sekonic: Y (W/m2/nm as exported) is the meter's 30.1 lx"
   expect_field 2 vendor_cri_r9 31.2 0 "sekonic: vendor_cri_r9"
   run spd --metrics vendor --format csv "$I/Fluorescent.spdx"
-  v=$(col vendor_cct_K)
-  [ -z "$v" ] && [ "$have_py" = 1 ] && ok "tm27: no vendor results, empty columns" || notok "tm27: no vendor results, empty columns" "'$v'"
+  if [ $have_py = 1 ]; then
+    v=$(col vendor_cct_K)
+    [ -z "$v" ] && ok "tm27: no vendor results, empty columns" || notok "tm27: no vendor results, empty columns" "'$v'"
+  else
+    skip "tm27: no vendor results" "python3 is not installed"
+  fi
 else
   skip "real instrument exports" "$I is absent"
 fi
@@ -67,7 +71,7 @@ for f in excel.csv excel_semicolon.csv preamble.csv micrometres.csv micrometres_
   expect_out_match "^$(re_escape "$D/good/$f"),Sample #1( \(5 nm\)|\.txt)?," "good/$f: the spectrum 'Sample #1'"
 done
 # the same spectrum (A) in every layout: X and Y identical to the last digit where units agree
-a=$(build_ref=1; "$LUXCALC" spd --format csv "$D/good/excel.csv" | sed -n 2p | cut -d, -f3-12)
+a=$("$LUXCALC" spd --format csv "$D/good/excel.csv" | sed -n 2p | cut -d, -f3-12)
 for f in excel_semicolon.csv preamble.csv micrometres.csv micrometres_header.csv angstrom.csv rows_hash.csv oceanview.txt \
          spectrasuite.SSIrrad tm27.spdx spectrawiz.IRR avasoft8.txt cgats_hash.cgats; do
   b=$("$LUXCALC" spd --format csv "$D/good/$f" 2>/dev/null | sed -n 2p | cut -d, -f3-12)
@@ -184,9 +188,13 @@ r=$(printf '%s\n%s\n' "$small" "$big" | awk -F, -v h="$hdr" 'BEGIN { n = split(h
   notok "batch and per-spectrum rows agree (1e-9) in every --metrics $M column" "$r"
 expect_out_match "not covered" "380-780 nm data: thermal and UV hazards are 'not covered'"
 run spd --metrics par --photoperiod 16 --unit W/m2/nm --format csv "$T/few.csv"
-p=$(printf '%s\n' "$out" | python3 -c 'import csv,sys
+if [ $have_py = 1 ]; then
+  p=$(printf '%s\n' "$out" | python3 -c 'import csv,sys
 r=list(csv.DictReader(sys.stdin))[0]; print("%.12g" % (float(r["par_dli_mol_m2_d"]) / float(r["par_ppfd"])))' 2>/dev/null)
-[ "$p" = "0.0576" ] && ok "DLI = PPFD * 3600 * 16 / 1e6" || notok "DLI = PPFD * 3600 * 16 / 1e6" "$p"
+  [ "$p" = "0.0576" ] && ok "DLI = PPFD * 3600 * 16 / 1e6" || notok "DLI = PPFD * 3600 * 16 / 1e6" "$p"
+else
+  skip "DLI = PPFD * 3600 * 16 / 1e6" "python3 is not installed"
+fi
 run spd --metrics hazard --subtense 0.011 --unit W/sr/m2/nm --format csv "$T/few.csv"
 expect_out_match ",exempt,L_B," "radiance: the risk group from L_B (L_R not covered by 380-780 nm data)"
 run spd --metrics hazard --unit W/sr/m2/nm --format csv "$D/good/excel.csv"
