@@ -8,7 +8,8 @@
  * Errors: every call that can fail returns an lx_status; the library never prints and never exits.
  * - A NULL context is LX_EINVAL, and nothing is read or written (there is nowhere to put a message).
  *   The functions that accept a NULL context say so: lx_ctx_destroy, the lx_ctx_* getters (they
- *   return "", NULL, 0 or LX_BACKEND_AUTO), lx_ctx_set_log and lx_ctx_counters_reset (no-ops).
+ *   return "", NULL, 0, LX_BACKEND_AUTO or the default input limit), lx_ctx_set_log and
+ *   lx_ctx_counters_reset (no-ops).
  * - LX_EINVAL for a NULL pointer the call needs or an argument outside its documented range;
  *   LX_ENOMEM when memory runs out. Codes beyond these are listed at each function ("Errors:").
  * - After a failure lx_ctx_errmsg(ctx) holds the detail (file and line where they apply); outputs
@@ -42,18 +43,19 @@
  *   exported is removed, renamed, or given another signature or meaning;
  * - structs the caller allocates are of three kinds.
  *   Options (lx_batch_opts, lx_grid_opts, lx_irr_opts, lx_exr_write_opts, lx_scene_eval_opts,
- *   lx_lum_model) are only read: zero-initialise them (zero is every field's default) and leave
+ *   lx_lum_model, lx_sky_map_opts, lx_perez_input, lx_sun_input) are only read: zero-initialise them (zero is every field's default) and leave
  *   `reserved` zero, which the library checks (LX_EINVAL otherwise); a later option takes reserved
  *   space, its zero meaning the earlier behaviour.
  *   Results (lx_colorimetry, lx_cri, lx_tm30, lx_alphaopic, lx_source_result, lx_lum_summary,
- *   lx_grid_stats, lx_cl_device_info, lx_counters) are written whole by the library, `reserved`
- *   set to zero; a later result takes reserved space.
+ *   lx_grid_stats, lx_cl_device_info, lx_counters, lx_sky, lx_sun_position, lx_ugr_table) are
+ *   written whole by the library, `reserved` set to zero; a later result takes reserved space.
  *   Views and values (lx_spd, lx_batch, lx_placement, lx_plane, lx_plot_point, lx_unit, lx_sh9)
  *   never change within a soname: a new need gets a new type.
  * - structs only the library allocates (lx_spd_set, lx_batch_table, lx_luminaire, lx_envmap,
- *   lx_xyz_image, lx_scene, lx_scene_plan, lx_scene_result) grow by fields appended at their end:
- *   read their fields, but never allocate, copy or take the size of one. The structs of their arrays
- *   (lx_scene_luminaire, lx_scene_receiver) carry reserved space, as results do.
+ *   lx_xyz_image, lx_scene, lx_scene_plan, lx_scene_result, lx_scene_glare) grow by fields appended
+ *   at their end: read their fields, but never allocate, copy or take the size of one. The structs
+ *   of their arrays (lx_scene_luminaire, lx_scene_receiver, lx_scene_observer, lx_glare_term) carry
+ *   reserved space, as results do.
  * - LX_EFFECT_COUNT sizes arrays inside lx_scene and lx_scene_plan: a new effect changes their
  *   layout and so needs a new soname; LX_FN_COUNT and LX_Q_COUNT size nothing public and may grow.
  * An incompatible change needs a new MAJOR version, whose soname follows it (1.0: libluxcalc.so.1).
@@ -1380,6 +1382,7 @@ typedef struct lx_ugr_table {
     double lamp_flux_lm;           /* the flux the table is for */
     double spacing_h;              /* 0.25 */
     double lb_cd_m2[19][5];        /* the background luminance per room and reflectance combination */
+    long long reserved[4];         /* zero: room for later results (ABI policy) */
 } lx_ugr_table;
 LX_API lx_status lx_ugr_table_compute(lx_ctx *ctx, const lx_luminaire *lum, lx_ugr_table *out);
 
@@ -1634,7 +1637,8 @@ typedef enum lx_sky_model {
 /** A sky luminance distribution L(dir) = zenith_cd_m2 * rel(dir) / rel(zenith), zero below the
  * horizon. rel = (1 + a exp(b / cos Z)) * indicatrix(chi): CIE 1 + c (exp(d chi) - exp(d pi/2))
  * + e cos^2 chi; Perez 1 + c exp(d chi) + e cos^2 chi (Z zenith angle of the element, chi its
- * angle from the sun). Plain data: copy freely; evaluating it is thread-safe. */
+ * angle from the sun). Plain data: copy freely; evaluating it is thread-safe. A result (ABI policy:
+ * reserved is written as zero; lx_scene embeds one). */
 typedef struct lx_sky {
     lx_sky_model model;
     int cie_type;               /* 1..15 (CIE), 0 for Perez */
@@ -1647,6 +1651,7 @@ typedef struct lx_sky {
     int perez_bin;              /* Perez: clearness bin 1..8 (0 for CIE) */
     double sun_normal_lx;       /* Perez: the direct normal illuminance Evn from the efficacy model (lx);
                                  * CIE: NaN (the sun's illuminance is given separately) */
+    long long reserved[4];      /* zero: room for later fields */
 } lx_sky;
 
 /** How a CIE sky is scaled: by its zenith luminance (cd/m2) or by its diffuse horizontal
@@ -1663,13 +1668,15 @@ LX_API lx_status lx_sky_cie(lx_ctx *ctx, int type, const double sun_dir[3], lx_s
 /** The parameters (a, b, c, d, e) of CIE type 1..15 from the embedded table (src/data). */
 LX_API lx_status lx_sky_cie_params(lx_ctx *ctx, int type, double params[5]);
 
-/** Inputs of the Perez sky: the sun and the measured irradiance, as gendaylit -W takes them. */
+/** Inputs of the Perez sky: the sun and the measured irradiance, as gendaylit -W takes them (options:
+ * zero-initialise, reserved stays zero). */
 typedef struct lx_perez_input {
     double sun_dir[3];           /* towards the sun, above the horizon */
     double direct_normal_W_m2;   /* DNI, >= 0 */
     double diffuse_horizontal_W_m2; /* DHI, > 0 */
     int day_of_year;             /* 1..366 (the extraterrestrial irradiance's eccentricity factor) */
     double precipitable_water_cm;/* atmospheric precipitable water for the efficacy models (0: 2 cm, gendaylit's default) */
+    long long reserved[4];       /* zero: room for later inputs */
 } lx_perez_input;
 
 /** The Perez all-weather sky for the given irradiance: sky clearness epsilon and brightness Delta
@@ -1691,7 +1698,8 @@ LX_API double lx_sky_luminance(const lx_sky *sky, const double dir[3]);
  * 48: 1e-8 relative or better on the CIE skies). Thread-safe. */
 LX_API lx_status lx_sky_illuminance(lx_ctx *ctx, const lx_sky *sky, const double n[3], int nodes, double *E_lx);
 
-/** Inputs of the solar position algorithm (NREL SPA, Reda & Andreas 2004). */
+/** Inputs of the solar position algorithm (NREL SPA, Reda & Andreas 2004; options: zero-initialise,
+ * reserved stays zero). */
 typedef struct lx_sun_input {
     int year, month, day, hour, minute; /* local standard time; year -2000..6000 */
     double second;
@@ -1704,9 +1712,11 @@ typedef struct lx_sun_input {
     double pressure_mbar;     /* annual mean local pressure (for refraction; 1013.25 at sea level) */
     double temperature_C;     /* annual mean local temperature */
     double refraction_deg;    /* atmospheric refraction at sunrise and sunset (0.5667 usually) */
+    long long reserved[4];    /* zero: room for later inputs */
 } lx_sun_input;
 
-/** The sun's position and the intermediate SPA values the algorithm's published test prints. */
+/** The sun's position and the intermediate SPA values the algorithm's published test prints. A result
+ * (reserved written as zero; lx_scene embeds one). */
 typedef struct lx_sun_position {
     double julian_day;
     double L_deg, B_deg, R_au;     /* Earth heliocentric longitude, latitude, radius vector */
@@ -1716,6 +1726,7 @@ typedef struct lx_sun_position {
     double zenith_deg;             /* topocentric zenith angle, refraction applied */
     double azimuth_deg;            /* from north towards east, 0..360 */
     double dir[3];                 /* unit vector towards the sun (x east, y north, z up) */
+    long long reserved[4];         /* zero: room for later results */
 } lx_sun_position;
 
 /** NREL SPA (Reda & Andreas 2004, NREL/TP-560-34302): the sun's topocentric zenith and azimuth,
@@ -1730,12 +1741,13 @@ LX_API void lx_sun_direction(double altitude_rad, double azimuth_rad, double dir
 /** Half the angle the solar disc subtends: 0.2665 deg (Radiance gendaylit), in radians. */
 #define LX_SUN_HALF_ANGLE_RAD (0.2665 * 3.14159265358979323846 / 180.0)
 
-/** Options of lx_sky_map (zero-initialise for defaults). */
+/** Options of lx_sky_map (zero-initialise for defaults; reserved stays zero). */
 typedef struct lx_sky_map_opts {
     int width, height;           /* lat-long size (0: 1024 x 512) */
     double sun_normal_lx;        /* direct normal illuminance of the sun disc (0: no sun) */
     double ground_reflectance;   /* below the horizon: uniform rho (Dv + Evn sin(altitude)) / pi (0: black) */
     int supersample;             /* sky samples per pixel and axis, Gauss-Legendre in cos(theta) and phi (0: 4) */
+    long long reserved[4];       /* zero: room for later options */
 } lx_sky_map_opts;
 
 /** Renders a sky (and the sun disc) as a one-channel (Y) lat-long map in the convention of
@@ -1908,6 +1920,7 @@ typedef struct lx_scene_observer {
     double view[3];           /* unit line of sight */
     double up[3];             /* unit, orthogonal to view: the vertical of the visual field (from +z) */
     double background_cd_m2;  /* Lb given in the scene (NaN: none) */
+    long long reserved[4];    /* zero: room for later fields (an element of lx_scene.obs) */
 } lx_scene_observer;
 
 /** Forced state of an effect in [effects]. */
@@ -2060,9 +2073,11 @@ typedef struct lx_glare_term {
     double position_index;      /* Guth p (lx_guth_position_index) */
     double sigma_deg, tau_deg;  /* the source's angle from the line of sight, and about it from the vertical */
     double term;                /* L^2 omega / p^2 */
+    long long reserved[4];      /* zero: room for later fields (an element of lx_scene_glare.terms) */
 } lx_glare_term;
 
-/** The glare of a scene at its observers. */
+/** The glare of a scene at its observers; made by lx_scene_glare_eval, freed with lx_scene_glare_free
+ * (a struct only the library allocates). */
 typedef struct lx_scene_glare {
     size_t n_obs, n_lum;
     double *ugr;                /* n_obs: UGR (NaN when no luminaire counts) */
