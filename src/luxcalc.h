@@ -1136,6 +1136,12 @@ typedef struct lx_counters {
     unsigned long long environment_samples;    /* numerical sky samples (quadrature nodes, map pixels) */
     unsigned long long spectra_integrated;     /* spectrum integrations (colorimetry, alpha-opic: one each per source) */
     unsigned long long kernel_launches;        /* OpenCL batches run by scene evaluation (each >= 1 kernel launch) */
+    /* rooms: occlusion and interreflection (README "Rooms") */
+    unsigned long long visibility_tests;       /* segments tested against surfaces and obstructions (ray casts) */
+    unsigned long long form_factors;           /* point-to-polygon form factors (patch matrix and gathers) */
+    unsigned long long radiosity_patches;      /* patches of the interreflection solves */
+    unsigned long long radiosity_shots;        /* patch shots of the progressive refinement */
+    unsigned long long gather_points;          /* receiver points and patch centres gathered */
 } lx_counters;
 
 /** Copies the context's counters into *out (zeros for a NULL ctx). Thread-safe for distinct contexts. */
@@ -1153,11 +1159,13 @@ typedef enum lx_effect {
     LX_EFFECT_SPECTRAL,           /* spectral sums: CCT and melanopic EDI at receivers */
     LX_EFFECT_ENVIRONMENT,        /* sky and ground irradiance */
     LX_EFFECT_OPENCL,             /* grid work on an OpenCL device */
+    LX_EFFECT_OCCLUSION,          /* surfaces and obstructions that cut luminaire-receiver segments */
+    LX_EFFECT_INTERREFLECTION,    /* diffuse interreflection between the faces of rooms, surfaces, obstructions */
     LX_EFFECT_COUNT
 } lx_effect;
 
 /** "inverse_square", "cosine", "spot_falloff", "goniometric", "near_field", "spectral",
- * "environment", "opencl" (static storage; NULL for a bad value). */
+ * "environment", "opencl", "occlusion", "interreflection" (static storage; NULL for a bad value). */
 LX_API const char *lx_effect_name(lx_effect e);
 
 /** Luminaire kinds of a scene. */
@@ -1219,6 +1227,40 @@ typedef enum lx_scene_sky_kind { LX_SKY_NONE = 0, LX_SKY_UNIFORM, LX_SKY_OVERCAS
 /** Forced state of an effect in [effects]. */
 typedef enum lx_effect_force { LX_FORCE_AUTO = 0, LX_FORCE_ON = 1, LX_FORCE_OFF = 2 } lx_effect_force;
 
+/** The faces of a room, in this order (the index of lx_scene_room.reflectance; `--surfaces` rows). */
+typedef enum lx_room_face {
+    LX_ROOM_FLOOR = 0, LX_ROOM_CEILING, LX_ROOM_WALL_XMIN, LX_ROOM_WALL_XMAX, LX_ROOM_WALL_YMIN, LX_ROOM_WALL_YMAX
+} lx_room_face;
+
+/** A room: an axis-aligned box whose six faces reflect diffusely on their inside. The luminaires
+ * and receivers inside it see its inside only (no light passes its walls). */
+typedef struct lx_scene_room {
+    char *name;
+    const char *file;         /* the scene file and line of its section header */
+    long line;
+    double min_m[3], max_m[3];
+    double reflectance[6];    /* per lx_room_face, 0 <= rho < 1 */
+} lx_scene_room;
+
+/** A surface: the planar parallelogram corner + s edge1 + t edge2 (0 <= s, t <= 1), Lambertian on
+ * both sides with one reflectance; it blocks light. Its front is the side edge1 x edge2 points to. */
+typedef struct lx_scene_surface {
+    char *name;
+    const char *file;
+    long line;
+    double corner_m[3], edge1_m[3], edge2_m[3];
+    double reflectance;       /* 0 <= rho < 1 */
+} lx_scene_surface;
+
+/** An obstruction: an axis-aligned box that blocks light; its six faces reflect diffusely. */
+typedef struct lx_scene_obstruction {
+    char *name;
+    const char *file;
+    long line;
+    double min_m[3], max_m[3];
+    double reflectance;       /* 0 <= rho < 1 */
+} lx_scene_obstruction;
+
 /** A scene read from a file. Owns everything it points to. Read-only after reading. */
 typedef struct lx_scene {
     char *file;
@@ -1243,6 +1285,17 @@ typedef struct lx_scene {
     long spectral_line;                   /* the [output] line that first asked for cct or melanopic_edi */
     char **names;                         /* the file names the entities point to (owned) */
     size_t n_names;
+    /* rooms, surfaces and obstructions (README "Rooms") */
+    size_t n_room, n_surf, n_obst;
+    lx_scene_room *room;
+    lx_scene_surface *surf;
+    lx_scene_obstruction *obst;
+    double interreflection_tol;           /* [scene] interreflection_tolerance: relative, on every receiver's
+                                           * total illuminance (default 1e-3) */
+    double patch_size_m;                  /* [scene] patch_size: the radiosity patch size (0: the planner chooses) */
+    int patch_refinement;                 /* [scene] patch_refinement: 1 (default) splits patches near luminaires,
+                                           * shadow edges and receivers; 0 keeps them uniform */
+    long interreflection_tol_line, patch_size_line; /* their lines (0 when not given) */
 } lx_scene;
 
 /** Reads a scene file ('-' is standard input); includes are resolved relative to the including
@@ -1254,6 +1307,28 @@ LX_API lx_status lx_scene_read_file(lx_ctx *ctx, const char *path, lx_scene **ou
 LX_API lx_status lx_scene_read_mem(lx_ctx *ctx, const char *name, const char *text, size_t len, lx_scene **out);
 /** Frees a scene. Accepts NULL. */
 LX_API void lx_scene_free(lx_scene *scene);
+
+/** The planner's interreflection choices (all zero when interreflection is off). */
+typedef struct lx_scene_room_plan {
+    double flux_lm;            /* luminaire flux the reflecting faces can receive (in rooms, or in the open
+                                * with reflecting surfaces) */
+    double area_m2;            /* S: the exposed reflecting area */
+    double mean_reflectance;   /* the area-weighted reflectance rho */
+    double indirect_est_lx;    /* the integrating-sphere estimate rho Phi / (S (1 - rho)) */
+    double share_est;          /* the largest estimated indirect share of a receiver point's total */
+    double tolerance;          /* interreflection_tolerance */
+    double patch_size_m;       /* chosen (or given by patch_size) */
+    size_t n_patches;          /* the solve's patches */
+    size_t n_elements;         /* the gather's elements: the patches, split where the light varies fast or a
+                                * receiver is close (the final gather resolves them) */
+    size_t n_refined;          /* splits the refinement made (near luminaires, shadow edges, receivers) */
+    size_t n_nodes;            /* direct-light quadrature nodes over all elements */
+    double stop_unshot_lm;     /* the solve iterates until the unshot flux is below this */
+    double memory_bytes;       /* what the solve allocates (the form-factor matrix dominates) */
+    double memory_limit_bytes; /* the bound (1 GiB; LX_ROOM_MEMORY_MB overrides) */
+    int backend;               /* lx_backend for the form factors and gathers (AUTO: the size decides) */
+    void *mesh;                /* the patches, faces and occluders (internal; owned) */
+} lx_scene_room_plan;
 
 /** The planner's decision. */
 typedef struct lx_scene_plan {
@@ -1270,6 +1345,12 @@ typedef struct lx_scene_plan {
     unsigned char *device;            /* n_lum x n_rec: 1 = this IES luminaire's work on this grid (all
                                        * far field) runs as one lx_grid_illuminance OpenCL batch; owned */
     int device_required;              /* 1 when asked for explicitly: a device failure is then an error */
+    /* occlusion and interreflection (README "Rooms") */
+    unsigned char *occ;               /* n_lum x n_points (luminaire-major): 0 no surface or obstruction can cut
+                                       * the pair (bounding-volume test), 1 visibility-tested, 2 blocked (the pair
+                                       * is in different rooms); owned; NULL when occlusion is off */
+    size_t n_occ_tested, n_occ_blocked;
+    lx_scene_room_plan room;
 } lx_scene_plan;
 
 /** Plans a scene: which effects, and which pairs take the near-field path. backend: AUTO lets
@@ -1280,17 +1361,51 @@ typedef struct lx_scene_plan {
 LX_API lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *scene, int backend, lx_scene_plan **out);
 LX_API void lx_scene_plan_free(lx_scene_plan *plan);
 
+/** One face's results (`luxcalc scene --surfaces`): area-weighted averages over its exposed area
+ * (the flux it receives divided by its area). */
+typedef struct lx_scene_surface_result {
+    char *name;                 /* ROOM.floor, ROOM.ceiling, ROOM.wall_xmin ... ROOM.wall_ymax,
+                                 * SURFACE.front, SURFACE.back, OBSTRUCTION.bottom, .top, .xmin ... .ymax */
+    double area_m2;             /* exposed area (less what an obstruction standing on it covers) */
+    double direct_lx, indirect_lx, E_lx;
+    double L_cd_m2;             /* rho E / pi */
+    double reflectance;
+} lx_scene_surface_result;
+
+/** What the interreflection solve did. */
+typedef struct lx_scene_room_stats {
+    size_t n_patches;
+    unsigned long long sweeps;  /* progressive-refinement sweeps over the patches */
+    unsigned long long shots;   /* patch shots */
+    double direct_lm;           /* flux the faces received directly from the sources */
+    double indirect_lm;         /* flux they received after one or more reflections */
+    double absorbed_lm;         /* (1 - rho) x received, over every face */
+    double escaped_lm;          /* reflected flux that reached no face (open scenes) */
+    double unshot_lm;           /* reflected flux not yet distributed when the solve stopped */
+    double indirect_share;      /* measured: sum of indirect / sum of total over the receiver points */
+    double gather_check;        /* rms relative difference between each patch's indirect illuminance in the
+                                 * solve and the exact-form-factor gather at its centre (discretisation) */
+    int backend;                /* lx_backend the form factors and gathers ran on */
+    double seconds_ff, seconds_solve, seconds_gather;
+} lx_scene_room_stats;
+
 /** Results at every receiver point (receiver order, then point order). */
 typedef struct lx_scene_result {
     size_t n_points, n_lum;
     size_t *first;              /* n_rec + 1: receiver r has points first[r] .. first[r+1]-1 */
     double *E_lx;               /* n_points: total illuminance */
-    double *contrib_lx;         /* n_points x (n_lum + 1): each luminaire's part, last the sky's */
+    double *contrib_lx;         /* n_points x (n_lum + 1): each luminaire's part, last the sky's (direct
+                                 * light: with interreflection on, the reflected part is indirect_lx) */
     double *L_cd_m2;            /* n_points: rho E / pi (NaN without a reflectance or not asked) */
     double *cct_K, *duv;        /* n_points (NaN when spectral is off or CCT undefined) */
     double *melanopic_edi_lx;   /* n_points (NaN when spectral is off) */
     lx_counters work;           /* the work this evaluation did */
     double seconds;             /* wall-clock time of the evaluation */
+    /* interreflection (NULL and zero when it is off): E_lx = direct_lx + indirect_lx */
+    double *direct_lx, *indirect_lx;   /* n_points */
+    size_t n_surfaces;                 /* room faces, surface sides, obstruction faces */
+    lx_scene_surface_result *surfaces;
+    lx_scene_room_stats room;
 } lx_scene_result;
 
 /** Options of lx_scene_eval (zero-initialise for defaults: everything). */

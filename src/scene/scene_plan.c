@@ -1,6 +1,6 @@
 /* scene_plan.c - the scene planner: which effects a scene needs (and why), which luminaire-
  * receiver pairs take the near-field path (the five-times rule), and the work it expects. */
-#include "scene_private.h"
+#include "scene/scene_private.h"
 
 #include <math.h>
 #include <stdarg.h>
@@ -9,7 +9,8 @@
 #include <string.h>
 
 static const char *const effect_names[LX_EFFECT_COUNT] = {
-    "inverse_square", "cosine", "spot_falloff", "goniometric", "near_field", "spectral", "environment", "opencl"};
+    "inverse_square", "cosine", "spot_falloff", "goniometric", "near_field", "spectral", "environment", "opencl",
+    "occlusion", "interreflection"};
 
 const char *lx_effect_name(lx_effect e)
 {
@@ -51,6 +52,17 @@ double lx__scene_lum_size(const lx_scene_luminaire *l)
     return 0;
 }
 
+int lx__scene_near(const lx_scene *sc, const lx_scene_luminaire *L, const double q[3])
+{
+    double size = lx__scene_lum_size(L);
+    if (!(size > 0)) return 0;
+    lx_effect_force f = sc->force[LX_EFFECT_NEAR_FIELD];
+    if (f != LX_FORCE_AUTO) return f == LX_FORCE_ON;
+    const double *s = L->pos_m;
+    double d = sqrt((q[0] - s[0]) * (q[0] - s[0]) + (q[1] - s[1]) * (q[1] - s[1]) + (q[2] - s[2]) * (q[2] - s[2]));
+    return d < 5 * size;
+}
+
 static void why(lx_scene_plan *p, lx_effect e, int on, const char *fmt, ...)
 {
     va_list ap;
@@ -65,6 +77,7 @@ void lx_scene_plan_free(lx_scene_plan *plan)
     if (!plan) return;
     free(plan->near);
     free(plan->device);
+    lx__room_plan_free(plan);
     free(plan);
 }
 
@@ -160,9 +173,7 @@ lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, int backend, lx_sc
                     const double *q = sc->rec[r].points + 3 * i;
                     double d = sqrt((q[0] - L->pos_m[0]) * (q[0] - L->pos_m[0]) + (q[1] - L->pos_m[1]) * (q[1] - L->pos_m[1]) +
                                     (q[2] - L->pos_m[2]) * (q[2] - L->pos_m[2]));
-                    int near = F[LX_EFFECT_NEAR_FIELD] == LX_FORCE_ON ? 1
-                               : F[LX_EFFECT_NEAR_FIELD] == LX_FORCE_OFF ? 0
-                                                                         : d < 5 * size;
+                    int near = lx__scene_near(sc, L, q);
                     if (d / size < worst) worst = d / size, wl = L->name, wr = sc->rec[r].name;
                     if (near) {
                         p->near[l * p->n_points + g] = 1;
@@ -263,6 +274,8 @@ lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, int backend, lx_sc
                         p->estimate.goniometric_lookups += near_patches(size, d, sc->nearfield_tol, sc->lum[l].radius_m > 0);
                     }
         }
+    /* occlusion and interreflection (room_plan.c) */
+    if ((st = lx__room_plan(ctx, sc, backend, p)) != LX_OK) goto fail;
     /* OpenCL: the far-field work of IES luminaires on grids can run as lx_grid_illuminance
      * batches on a device (its table kernel); only worth it when large enough to repay the
      * start-up (the grid engine's threshold: 1e7 point-luminaire evaluations), unless asked for.
@@ -278,7 +291,8 @@ lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, int backend, lx_sc
                     !p->on[LX_EFFECT_COSINE])
                     continue;
                 size_t k = 0;
-                for (size_t i = 0; i < rc->n; i++) k += p->near[l * p->n_points + g0 + i];
+                for (size_t i = 0; i < rc->n; i++)
+                    k += p->near[l * p->n_points + g0 + i] || (p->occ && p->occ[l * p->n_points + g0 + i]);
                 if (k == 0) p->device[l * sc->n_rec + r] = 1, eligible += (double)rc->n;
             }
             g0 += rc->n;
