@@ -21,68 +21,59 @@ static void r_cross(const double *a, const double *b, double *c)
     c[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-static double r_contour(const double *x, const double *n, const double *q, int m, int *deg)
+/* lx__lambert_edge and lx__polygon_projected (src/core/lambert.c) */
+static double r_edge(const double *a, const double *b, const double *n)
 {
-    double r[24], s = 0;
-    for (int k = 0; k < m; k++)
-        for (int c = 0; c < 3; c++) r[3 * k + c] = q[3 * k + c] - x[c];
-    for (int k = 0; k < m; k++) {
-        const double *a = r + 3 * k, *b = r + 3 * ((k + 1) % m);
-        double c[3];
-        r_cross(a, b, c);
-        double cc = r_dot(c, c), d = r_dot(a, b);
-        if (!(cc > 1e-28 * (r_dot(a, a) * r_dot(b, b)))) {
-            if (d < 0) *deg = 1;
-            continue;
-        }
-        double cn = sqrt(cc);
-        s += atan2(cn, d) * (r_dot(n, c) / cn);
-    }
-    return s;
+    double c[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    double s = sqrt(r_dot(c, c));
+    if (!(s > 0)) return 0;
+    return atan2(s, r_dot(a, b)) * r_dot(n, c) / s;
 }
 
-static int r_clip(const double *x, const double *n, const double *p, int nv, double *q)
+static double r_projected(const double *v, int nv, const double *n)
 {
-    int m = 0;
+    double out[27], d[8];
+    for (int k = 0; k < nv; k++) d[k] = r_dot(n, v + 3 * k);
+    int no = 0;
     for (int k = 0; k < nv; k++) {
-        const double *a = p + 3 * k, *b = p + 3 * ((k + 1) % nv);
-        double da = n[0] * (a[0] - x[0]) + n[1] * (a[1] - x[1]) + n[2] * (a[2] - x[2]);
-        double db = n[0] * (b[0] - x[0]) + n[1] * (b[1] - x[1]) + n[2] * (b[2] - x[2]);
-        if (da >= 0) {
-            q[3 * m] = a[0], q[3 * m + 1] = a[1], q[3 * m + 2] = a[2];
-            m++;
+        int k1 = k + 1 < nv ? k + 1 : 0;
+        if (d[k] >= 0) {
+            for (int i = 0; i < 3; i++) out[3 * no + i] = v[3 * k + i];
+            no++;
         }
-        if ((da >= 0) != (db >= 0)) {
-            double t = da / (da - db);
-            for (int c = 0; c < 3; c++) q[3 * m + c] = a[c] + t * (b[c] - a[c]);
-            m++;
+        if ((d[k] > 0 && d[k1] < 0) || (d[k] < 0 && d[k1] > 0)) {
+            double t = d[k] / (d[k] - d[k1]);
+            for (int i = 0; i < 3; i++) out[3 * no + i] = v[3 * k + i] + t * (v[3 * k1 + i] - v[3 * k + i]);
+            no++;
         }
     }
-    return m;
+    if (no < 3) return 0;
+    double sum = 0;
+    for (int k = 0; k < no; k++) sum += r_edge(out + 3 * k, out + 3 * (k + 1 < no ? k + 1 : 0), n);
+    return 0.5 * fabs(sum);
 }
 
+/* lx__room_ff_point */
 static double r_ff_point(const double *x, const double *n, const double *p, int nv)
 {
-    double q[24];
-    int front = 0;
-    for (int k = 0; k < nv; k++)
-        front += n[0] * (p[3 * k] - x[0]) + n[1] * (p[3 * k + 1] - x[1]) + n[2] * (p[3 * k + 2] - x[2]) >= 0;
-    if (front == 0) return 0;
-    int m = front == nv ? nv : r_clip(x, n, p, nv, q);
-    if (m < 3) return 0;
-    int deg = 0;
-    double s = r_contour(x, n, front == nv ? p : q, m, &deg);
-    if (deg) {
-        double size = 0, y[3];
+    double v[24], y[3] = {x[0], x[1], x[2]};
+    for (int pass = 0; pass < 2; pass++) {
+        int deg = 0;
+        for (int k = 0; k < nv; k++)
+            for (int c = 0; c < 3; c++) v[3 * k + c] = p[3 * k + c] - y[c];
+        for (int k = 0; k < nv && !pass; k++) {
+            const double *a = v + 3 * k, *b = v + 3 * ((k + 1) % nv);
+            double c[3];
+            r_cross(a, b, c);
+            if (!(r_dot(c, c) > 1e-28 * (r_dot(a, a) * r_dot(b, b))) && r_dot(a, b) < 0) deg = 1;
+        }
+        if (!deg) break;
+        double size = 0;
         for (int k = 1; k < nv; k++)
             for (int c = 0; c < 3; c++) size = fmax(size, fabs(p[3 * k + c] - p[c]));
         for (int c = 0; c < 3; c++) y[c] = x[c] + 1e-9 * size * n[c];
-        m = r_clip(y, n, p, nv, q);
-        if (m < 3) return 0;
-        deg = 0;
-        s = r_contour(y, n, q, m, &deg);
     }
-    return fabs(s) / (2 * 3.14159265358979323846);
+    return r_projected(v, nv, n) / 3.14159265358979323846;
 }
 
 /* pr: a patch record (o, u, v, n_poly at 0, 3, 6, 9) */

@@ -299,7 +299,10 @@ static void test_linearity(void **state)
     size_t np = all.res->n_points;
     double *sum = calloc(np, sizeof *sum);
     for (size_t l = 0; l < all.sc->n_lum; l++) {
-        lx_scene_eval_opts o = {1, l};
+        lx_scene_eval_opts o;
+        memset(&o, 0, sizeof o);
+        o.single = 1;
+        o.index = l;
         lx_scene_result *res = NULL;
         lx_assert_ok(ctx, lx_scene_eval(ctx, all.sc, all.plan, &o, &res));
         for (size_t g = 0; g < np; g++) sum[g] += res->E_lx[g];

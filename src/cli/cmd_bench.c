@@ -436,11 +436,11 @@ static int bench_spd(bench_ctx *b)
             size_t got = 0;
             if (lx_batch_table_integrate_file(ctx, path, FNS, 4, 0, &res, &got) != LX_OK || got != n) {
                 cli_fail("bench", ctx, LX_EPARSE);
-                free(res);
+                lx_batch_results_free(res);
                 break;
             }
             tl[r] = now_s() - t0;
-            free(res);
+            lx_batch_results_free(res);
             ts[r] = strtod_e2e(path, w, &rows);
         }
         double ml = median(tl, 3), ms = median(ts, 3);
@@ -554,7 +554,7 @@ int cmd_bench(int argc, char **argv)
     const char *outpath = NULL;
     int c;
     optind = 1;
-    while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":o:h", opts, NULL)) != -1) {
         switch (c) {
         case 's': {
             b.nsizes = 0;
@@ -575,7 +575,7 @@ int cmd_bench(int argc, char **argv)
             printf("\ntopics:\n");
             for (int i = 0; topics[i].name; i++) printf("  %-12s %s\n", topics[i].name, topics[i].summary);
             return CLI_OK;
-        default: return CLI_USAGE;
+        default: return cli_bad_option("bench", argv, c);
         }
     }
     for (int i = optind; i < argc; i++) {

@@ -6,6 +6,8 @@
 #include "spd_report.h"
 
 #include <getopt.h>
+
+#define LX__ERRMSG_MAX_CLI 1100
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,6 +19,8 @@ static const char help[] =
     "CCT and Duv, luminous efficacy of radiation, scotopic Y and the S/P ratio.\n"
     "FILE: columns (wavelength_nm, value...) or rows (id,380,381,...), separators , ; tab space,\n"
     "'#' comments, optional header; CGATS/Argyll spectral files; '-' reads standard input.\n"
+    "Text files are read up to 256 MB (luxcalc --max-input-mb N, or LX_MAX_INPUT_MB, raises it);\n"
+    "rows-layout files on a 1 or 5 nm grid are streamed at any size (lines up to 4 MB).\n"
     "\n"
     "options:\n"
     "  --observer 2|10        CIE 1931 2 deg (default) or CIE 1964 10 deg observer\n"
@@ -49,6 +53,8 @@ static const char help[] =
     "  --grid START:END:STEP  another, on the grid given by --grid (nm); spectra named 1, 2, ...\n"
     "  --report DIR           one PNG report per spectrum: DIR/<file-stem>_<spectrum>.png (SPD,\n"
     "                         swatch, CIE xy, R1-R14, TM-30 vector graphic, headline numbers)\n"
+    "  --diagram xy|uv        the report's chromaticity diagram: CIE 1931 xy (default) or\n"
+    "                         CIE 1976 u'v'\n"
     "  IMAGE.exr -o X.exr --png P.png  spectral EXR (S0.<nm>nm channels): per-pixel XYZ in cd/m2\n"
     "  -v, -q                 more messages / errors only (-q: no progress bar)\n"
     "  -h, --help             this help\n"
@@ -120,6 +126,7 @@ int cmd_spd(int argc, char **argv)
         {"backend", required_argument, NULL, 'B'},  {"input-format", required_argument, NULL, 'I'},
         {"grid", required_argument, NULL, 'G'},
         {"report", required_argument, NULL, 'R'}, {"png", required_argument, NULL, 'P'},
+        {"diagram", required_argument, NULL, 'D'},
         {NULL, 0, NULL, 0},
     };
     const char *cmd = "spd", *outpath = NULL;
@@ -130,8 +137,9 @@ int cmd_spd(int argc, char **argv)
     int f32 = 0, backend_given = getenv("LX_BACKEND") != NULL;
     const char *grid = NULL, *backend_text = getenv("LX_BACKEND");
     const char *report_dir = NULL, *png = NULL;
+    lx_diagram diagram = LX_DIAGRAM_XY;
     optind = 1;
-    while ((c = getopt_long(argc, argv, "o:vqh", opts, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":o:vqh", opts, NULL)) != -1) {
         switch (c) {
         case 'b':
             if (!strcmp(optarg, "2")) obs = LX_OBSERVER_2;
@@ -168,12 +176,17 @@ int cmd_spd(int argc, char **argv)
             break;
         case 'G': grid = optarg; break;
         case 'R': report_dir = optarg; break;
+        case 'D':
+            if (!strcmp(optarg, "xy")) diagram = LX_DIAGRAM_XY;
+            else if (!strcmp(optarg, "uv")) diagram = LX_DIAGRAM_UV;
+            else return cli_error(cmd, "--diagram: expected xy or uv, not '%s'", optarg), CLI_USAGE;
+            break;
         case 'P': png = optarg; break;
         case 'o': outpath = optarg; break;
         case 'v': cli_verbose++; break;
         case 'q': cli_quiet = 1; break;
         case 'h': cli_print_help(help); return CLI_OK;
-        default: fprintf(stderr, "%s", help); return CLI_USAGE;
+        default: return cli_bad_option(cmd, argv, c);
         }
     }
     if (optind >= argc) {
@@ -205,7 +218,7 @@ int cmd_spd(int argc, char **argv)
         lx_ctx_destroy(ctx);
         return e;
     }
-    if (report_dir && cli_report_dir(cmd, report_dir) != 0) {
+    if (report_dir && cli_make_dir(cmd, "--report", report_dir) != 0) {
         lx_ctx_destroy(ctx);
         return CLI_INPUT;
     }
@@ -226,8 +239,9 @@ int cmd_spd(int argc, char **argv)
     spd_out so;
     memset(&so, 0, sizeof so);
     so.t = t, so.fmt = (cli_format)fmt, so.cmd = cmd;
-    cli_spd_batch B = {ctx, cmd, t, obs, method, backend, backend_given, spd_flush, &so};
+    cli_spd_batch B = {ctx, cmd, t, obs, method, backend, backend_given, spd_flush, &so, 0};
     so.path = outpath;
+    cli_reports reports = {.cmd = cmd, .dir = report_dir, .opts = {.observer = obs, .unit = units[unit].name, .diagram = diagram}};
     int nfiles = 0;
     char **files = cli_expand_files(argc - optind, argv + optind, &nfiles);
     for (int fi = 0; files && fi < nfiles; fi++) {
@@ -239,7 +253,9 @@ int cmd_spd(int argc, char **argv)
             continue;
         }
         /* rows-layout files: streamed, integrated chunk by chunk (spd_batch.c); else the general reader */
-        if (!msel.any && !report_dir && cli_spd_batch_file(&B, arg)) {
+        int streamed = !msel.any && !report_dir ? cli_spd_batch_file(&B, arg) : 0;
+        if (streamed < 0 && -streamed > rc) rc = -streamed;
+        if (streamed) {
             spd_flush(&so);
             continue;
         }
@@ -263,6 +279,7 @@ int cmd_spd(int argc, char **argv)
             cli_progress_update(k);
             lx_colorimetry r;
             st = lx_spd_colorimetry(ctx, &set->spd[k], obs, method, &r);
+            if (st == LX_OK) st = lx_colorimetry_check(ctx, &r, NAN); /* before printing: no blank columns */
             if (st != LX_OK) {
                 cli_error(cmd, "%s:%ld: spectrum '%s': %s", set->file, set->line ? set->line[k] : 0L,
                           set->spd[k].name ? set->spd[k].name : "", lx_ctx_errmsg(ctx));
@@ -270,17 +287,23 @@ int cmd_spd(int argc, char **argv)
                 if (e > rc) rc = e;
                 continue;
             }
+            if (!r.cct_valid && !cli_quiet) { /* every empty cell says why */
+                char why[LX__ERRMSG_MAX_CLI];
+                cli_cct_reason(ctx, &r, obs, why, sizeof why);
+                cli_error(cmd, "%s:%ld: spectrum '%s': cct_K and duv empty: %s", set->file, set->line ? set->line[k] : 0L,
+                          set->spd[k].name ? set->spd[k].name : "", why);
+            }
             cli_table_str(t, set->file);
             cli_table_str(t, set->spd[k].name ? set->spd[k].name : "");
             double v[] = {r.X, r.Y, r.Z, r.x, r.y, r.u_prime, r.v_prime, r.cct_K, r.duv, r.ler_lm_per_W,
                           r.scotopic_Y, r.sp_ratio, r.radiant};
             for (size_t j = 0; j < sizeof v / sizeof *v; j++) cli_table_num(t, v[j]);
             cli_table_str(t, method_name(r.method));
-            if (msel.any)
-                cli_metrics_row(t, ctx, &msel, &set->spd[k], method, units[unit].name, &r, set->file,
-                                set->line ? set->line[k] : 0L, cmd);
+            if (msel.any && cli_metrics_row(t, ctx, &msel, &set->spd[k], method, units[unit].name, &r, set->file,
+                                            set->line ? set->line[k] : 0L, cmd) > 0 && rc < CLI_INPUT)
+                rc = CLI_INPUT;
             if (report_dir) {
-                int e = cli_spd_report(ctx, cmd, report_dir, set->file, k, &set->spd[k], obs);
+                int e = cli_spd_report(&reports, ctx, set->file, k, &set->spd[k]);
                 if (e > rc) rc = e;
             }
         }
@@ -288,15 +311,18 @@ int cmd_spd(int argc, char **argv)
         lx_spd_set_free(set);
         spd_flush(&so);
     }
+    if (B.rejected && rc < CLI_INPUT) rc = CLI_INPUT; /* batch spectra reported instead of printed */
     /* nothing computed and something failed: leave any existing output file as it was */
     if (!(rc != CLI_OK && cli_table_rows(t) == 0)) {
         if (!so.opened && spd_open(&so) != 0) rc = CLI_INPUT;
         if (so.opened) {
             int ok = !so.failed && cli_table_flush(t, so.fmt, so.o.fp, 0, 1) == 0;
-            if (cli_output_close(&so.o, ok, cmd) != 0 || !ok) rc = rc ? rc : CLI_INPUT;
+            int e = cli_output_close(&so.o, ok, cmd);
+            if (e || !ok) rc = e ? e : rc ? rc : CLI_RUNTIME;
         }
     }
     cli_free_files(files, nfiles);
+    cli_reports_free(&reports);
     cli_table_free(t);
     lx_ctx_destroy(ctx);
     return rc;

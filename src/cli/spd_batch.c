@@ -22,8 +22,25 @@ static void add_row(cli_table *t, const char *file, const char *name, const lx_c
     cli_table_str(t, "cie15");
 }
 
-/* Colorimetry of spectra [i0, i0+n) of b, one row each; names[i] or the 1-based index. */
-static lx_status run_chunk(cli_spd_batch *B, const lx_batch *b, const char *file, const char *const *names, size_t i0)
+/* The largest |value| of spectrum i of b (for the overflow message). */
+static double row_max_abs(const lx_batch *b, size_t i)
+{
+    size_t stride = b->row_stride ? b->row_stride : b->n_lambda;
+    double m = 0;
+    for (size_t j = 0; j < b->n_lambda; j++) {
+        double v = b->dtype == LX_F32 ? (double)((const float *)b->values)[i * stride + j]
+                                      : ((const double *)b->values)[i * stride + j];
+        if (fabs(v) > m) m = fabs(v);
+    }
+    return m;
+}
+
+/* Colorimetry of spectra [i0, i0+n) of b, one row each; names[i] or the 1-based index, lines[i]
+ * (or none). A result lx_colorimetry_check refuses (an overflow, a NaN) is reported on stderr as
+ * "FILE:LINE: spectrum 'NAME': why" instead of a row and counted in B->rejected; with stop_at_bad
+ * the chunk ends there (LX_ERANGE, the rows before it added). */
+static lx_status run_chunk(cli_spd_batch *B, const lx_batch *b, const char *file, const char *const *names,
+                           const long *lines, size_t i0, int stop_at_bad)
 {
     lx_colorimetry *res = malloc(sizeof *res * (b->n_spectra ? b->n_spectra : 1));
     if (!res) return LX_ENOMEM;
@@ -35,6 +52,16 @@ static lx_status run_chunk(cli_spd_batch *B, const lx_batch *b, const char *file
         char idx[32];
         for (size_t i = 0; i < b->n_spectra; i++) {
             const char *name = names ? names[i] : (snprintf(idx, sizeof idx, "%zu", i0 + i + 1), idx);
+            if (lx_colorimetry_check(B->ctx, &res[i], row_max_abs(b, i)) != LX_OK) {
+                if (lines) cli_error(B->cmd, "%s:%ld: spectrum '%s': %s", file, lines[i], name, lx_ctx_errmsg(B->ctx));
+                else cli_error(B->cmd, "%s: spectrum %s: %s", file, name, lx_ctx_errmsg(B->ctx));
+                B->rejected++;
+                if (stop_at_bad) {
+                    st = LX_ERANGE;
+                    break;
+                }
+                continue;
+            }
             add_row(B->table, file, name, &res[i]);
         }
         if (B->flush) B->flush(B->flush_arg);
@@ -80,7 +107,7 @@ lx_status cli_spd_batch_set(cli_spd_batch *B, const lx_spd_set *set)
             names[i] = set->spd[i0 + i].name ? set->spd[i0 + i].name : "";
         }
         lx_batch b = {m, n, 0, s0->lambda_nm[0], step, LX_F64, v};
-        st = run_chunk(B, &b, set->file, names, i0);
+        st = run_chunk(B, &b, set->file, names, set->line ? set->line + i0 : NULL, i0, 0);
         free(v);
         free(names);
         cli_progress_update(i0 + m);
@@ -93,6 +120,9 @@ lx_status cli_spd_batch_set(cli_spd_batch *B, const lx_spd_set *set)
 
 typedef struct stream_acc {
     cli_spd_batch *B;
+    const char *path;
+    int over_cap;      /* the file is larger than the general reader takes */
+    unsigned char *bad; /* per row: refused by lx_colorimetry_check (reported, no row) */
     lx_colorimetry *res;
     char *names;       /* NUL-separated, in row order */
     size_t rows, cap, names_len, names_cap;
@@ -134,12 +164,16 @@ static int plain_rows_header(const char *path)
     return c2 != NULL;
 }
 
+/* A file within the spectrum-file limit: every result is kept until the whole file parsed (so a
+ * problem falls back to the general reader, which names lines). A larger file, which the general
+ * reader cannot take: each chunk's rows are printed as it completes (memory stays a chunk), and a
+ * spectrum that fails is reported and skipped. */
 static lx_status stream_chunk(void *user, const lx_batch_table *chunk, size_t row0)
 {
     stream_acc *A = user;
     cli_spd_batch *B = A->B;
     const lx_batch *b = &chunk->batch;
-    size_t n = b->n_lambda;
+    size_t n = b->n_lambda, base = A->over_cap ? 0 : row0; /* where this chunk's results go */
     if (!A->checked) {
         double *lam = malloc(n * sizeof *lam);
         if (!lam) return LX_ENOMEM;
@@ -150,17 +184,33 @@ static lx_status stream_chunk(void *user, const lx_batch_table *chunk, size_t ro
         if (!ok) return LX_EUNSUPPORTED;
         A->checked = 1;
     }
-    if (row0 + b->n_spectra > A->cap) {
-        size_t cap = 2 * (row0 + b->n_spectra);
+    if (base + b->n_spectra > A->cap) {
+        size_t cap = 2 * (base + b->n_spectra);
         lx_colorimetry *r = realloc(A->res, cap * sizeof *r);
-        if (!r) return LX_ENOMEM;
-        A->res = r;
+        if (r) A->res = r;
+        unsigned char *f = r ? realloc(A->bad, cap) : NULL;
+        if (!f) return LX_ENOMEM;
+        A->bad = f;
         A->cap = cap;
     }
+    memset(A->bad + base, 0, b->n_spectra);
     for (size_t i = 0; i < b->n_spectra; i++) { /* names as the general reader keeps them */
         const char *nm = chunk->names + chunk->name_at[i];
         size_t l = strlen(nm);
-        if (l && (nm[0] == ' ' || nm[l - 1] == ' ' || nm[l - 1] == '\t' || nm[0] == '\t')) return LX_EUNSUPPORTED;
+        /* the checks of the general path (cli_spd_batchable): each spectrum as lx_spd_check sees it */
+        const double *v = (const double *)b->values + i * n;
+        size_t j = 0;
+        while (j < n && isfinite(v[j])) j++;
+        if (A->over_cap) {
+            if (j < n) {
+                cli_error(B->cmd, "%s: spectrum '%s' (data row %zu): value %zu (%g nm) is not finite", A->path, nm, row0 + i + 1,
+                          j + 1, b->start_nm + (double)j * b->step_nm);
+                A->bad[i] = 1;
+                B->rejected++;
+            }
+            continue;
+        }
+        if (j < n || (l && (nm[0] == ' ' || nm[l - 1] == ' ' || nm[l - 1] == '\t' || nm[0] == '\t'))) return LX_EUNSUPPORTED;
         if (A->names_len + l + 1 > A->names_cap) {
             size_t cap = 2 * (A->names_len + l + 1) + 4096;
             char *q = realloc(A->names, cap);
@@ -170,17 +220,26 @@ static lx_status stream_chunk(void *user, const lx_batch_table *chunk, size_t ro
         }
         memcpy(A->names + A->names_len, nm, l + 1);
         A->names_len += l + 1;
-        /* the checks of the general path (cli_spd_batchable): each spectrum as lx_spd_check sees it */
-        const double *v = (const double *)b->values + i * n;
-        for (size_t j = 0; j < n; j++)
-            if (!isfinite(v[j])) return LX_EUNSUPPORTED;
     }
     lx_batch_opts opts;
     memset(&opts, 0, sizeof opts);
     opts.backend = B->backend;
     opts.threads = 1; /* the other cores parse the next chunk meanwhile */
-    lx_status st = lx_batch_colorimetry(B->ctx, b, B->observer, &opts, A->res + row0);
+    lx_status st = lx_batch_colorimetry(B->ctx, b, B->observer, &opts, A->res + base);
     A->rows = row0 + b->n_spectra;
+    for (size_t i = 0; st == LX_OK && i < b->n_spectra; i++) {
+        if (A->bad[base + i] || lx_colorimetry_check(B->ctx, &A->res[base + i], row_max_abs(b, i)) == LX_OK) continue;
+        if (!A->over_cap) return LX_EUNSUPPORTED; /* the general reader reports it with its line */
+        cli_error(B->cmd, "%s: spectrum '%s' (data row %zu): %s", A->path, chunk->names + chunk->name_at[i], row0 + i + 1,
+                  lx_ctx_errmsg(B->ctx));
+        A->bad[base + i] = 1;
+        B->rejected++;
+    }
+    if (st == LX_OK && A->over_cap) {
+        for (size_t i = 0; i < b->n_spectra; i++)
+            if (!A->bad[i]) add_row(B->table, A->path, chunk->names + chunk->name_at[i], &A->res[i]);
+        if (B->flush) B->flush(B->flush_arg);
+    }
     return st;
 }
 
@@ -192,19 +251,31 @@ int cli_spd_batch_file(cli_spd_batch *B, const char *path)
     stream_acc A;
     memset(&A, 0, sizeof A);
     A.B = B;
+    A.path = path;
+    A.over_cap = (unsigned long long)sb.st_size > lx_ctx_input_limit(B->ctx, LX_INPUT_SPECTRUM);
     lx_status st = lx_batch_table_stream(B->ctx, path, LX_F64, 0, stream_chunk, &A);
-    int done = st == LX_OK && A.rows > 0 && (B->forced || A.rows >= CLI_SPD_BATCH_MIN);
-    if (done) {
+    int done = st == LX_OK && A.rows > 0 && (B->forced || A.over_cap || A.rows >= CLI_SPD_BATCH_MIN);
+    /* a file the general reader would refuse for its size: the stream's own error stands (and
+     * the rows before it were printed) */
+    if (st != LX_OK && (st != LX_EUNSUPPORTED || A.rows > 0) && A.over_cap) {
+        free(A.res);
+        free(A.names);
+        free(A.bad);
+        return -cli_fail(B->cmd, B->ctx, st);
+    }
+    if (done && !A.over_cap) {
         size_t off = 0;
         for (size_t i = 0; i < A.rows; i++) {
-            add_row(B->table, path, A.names + off, &A.res[i]);
+            if (!A.bad[i]) add_row(B->table, path, A.names + off, &A.res[i]);
             off += strlen(A.names + off) + 1;
+            if (B->flush && (i + 1) % CHUNK == 0) B->flush(B->flush_arg); /* the table holds a chunk at most */
         }
         if (B->flush) B->flush(B->flush_arg);
     }
     free(A.res);
     free(A.names);
-    return done;
+    free(A.bad);
+    return done ? 1 : 0;
 }
 
 int cli_spd_parse_grid(const char *s, double *start, double *step, size_t *n)
@@ -266,9 +337,9 @@ lx_status cli_spd_f32_file(cli_spd_batch *B, const char *path, double start, dou
                 }
             if (st != LX_OK) break;
             lx_batch b = {m, n, 0, start, step, LX_F32, buf};
-            st = run_chunk(B, &b, path, NULL, total / per);
+            st = run_chunk(B, &b, path, NULL, NULL, total / per, 1); /* the first bad spectrum ends the file */
             if (st != LX_OK) {
-                cli_error(B->cmd, "%s: %s", path, lx_ctx_errmsg(B->ctx));
+                if (st != LX_ERANGE) cli_error(B->cmd, "%s: %s", path, lx_ctx_errmsg(B->ctx));
                 break;
             }
             total += got;

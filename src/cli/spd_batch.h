@@ -18,6 +18,7 @@ typedef struct cli_spd_batch {
     int forced;                 /* --backend or LX_BACKEND given: batch even small sets */
     void (*flush)(void *arg);   /* called after each chunk's rows were added */
     void *flush_arg;
+    size_t rejected;            /* spectra reported on stderr instead of a row (exit status 2) */
 } cli_spd_batch;
 
 /* 1 when every spectrum of set shares one uniform grid that the method integrates with cie15. */
@@ -29,7 +30,11 @@ lx_status cli_spd_batch_set(cli_spd_batch *B, const lx_spd_set *set);
  * once the whole file parsed and every spectrum is batchable. Returns 1 when it did the file,
  * 0 when the caller must use the general reader instead (not a plain rows layout, another
  * method, fewer than CLI_SPD_BATCH_MIN spectra without --backend, or any error: the general
- * reader then reports the file's first problem, FILE:LINE, exactly as before). */
+ * reader then reports the file's first problem, FILE:LINE, exactly as before), and -EXIT when
+ * the file failed and is larger than the general reader's size limit: the error was printed
+ * (FILE:LINE) and EXIT is its exit status. A file larger than that limit is printed chunk by
+ * chunk as it is computed (memory stays a chunk, whatever the number of rows), a spectrum that
+ * fails reported as "FILE: spectrum 'NAME' (data row N): why" and skipped (B->rejected). */
 int cli_spd_batch_file(cli_spd_batch *B, const char *path);
 /* "START:END:STEP" in nm into the grid; 0 on success. */
 int cli_spd_parse_grid(const char *s, double *start, double *step, size_t *n);

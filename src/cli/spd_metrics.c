@@ -53,6 +53,42 @@ static void build(void)
     add("mesopic_m", G_MES, K_MES_M, 0);
 }
 
+/* The equivalent-daylight columns are named by what they hold (CIE S 026: equivalent daylight
+ * illuminance, luminance, flux, intensity): suffixes per --unit (relative keeps the EDI names). */
+static const struct {
+    const char *unit, *mel, *other;
+} ed_names[] = {
+    {"W/sr/m2/nm", "melanopic_edl_cd_m2", "_edl"},
+    {"W/nm", "melanopic_ed_flux_lm", "_ed_flux"},
+    {"W/sr/nm", "melanopic_ed_intensity_cd", "_ed_intensity"},
+};
+
+/* The name column i has for unit (a static buffer for the renamed ones). */
+static const char *col_name(int i, const char *unit)
+{
+    static char buf[CLI_METRICS_MAX][40];
+    int k = cols[i].kind;
+    if (k != K_MEL_EDI && k != K_AO_EDI) return cols[i].name;
+    for (size_t u = 0; u < sizeof ed_names / sizeof *ed_names; u++) {
+        if (!unit || strcmp(unit, ed_names[u].unit)) continue;
+        if (k == K_MEL_EDI) return ed_names[u].mel;
+        /* "cyanopic_edi" -> "cyanopic_edl" etc. */
+        size_t len = strlen(cols[i].name) - 4;
+        snprintf(buf[i], sizeof buf[i], "%.*s%s", (int)len, cols[i].name, ed_names[u].other);
+        return buf[i];
+    }
+    return cols[i].name;
+}
+
+/* 1 when tok names column i for some unit (the EDI names, or the names they have for another unit). */
+static int names_col(const char *tok, int i)
+{
+    if (!strcmp(cols[i].name, tok)) return 1;
+    for (size_t u = 0; u < sizeof ed_names / sizeof *ed_names; u++)
+        if (!strcmp(col_name(i, ed_names[u].unit), tok)) return 1;
+    return 0;
+}
+
 int cli_metrics_parse(cli_metrics *m, const char *list, const char *cmd)
 {
     build();
@@ -65,7 +101,7 @@ int cli_metrics_parse(cli_metrics *m, const char *list, const char *cmd)
               : !strcmp(tok, "alphaopic") ? G_AO : !strcmp(tok, "mesopic") ? G_MES : 0;
         int found = 0;
         for (int i = 0; i < ncols; i++)
-            if ((cols[i].group & g) || !strcmp(cols[i].name, tok)) m->sel[i] = 1, found = 1;
+            if ((cols[i].group & g) || names_col(tok, i)) m->sel[i] = 1, found = 1;
         if (!found) {
             cli_error(cmd, "--metrics: unknown group or column '%s' (groups: all, cri, tm30, alphaopic, mesopic)", tok);
             rc = -1;
@@ -88,16 +124,35 @@ int cli_metrics_columns(const cli_metrics *m, const char *unit, const char **nam
     for (int i = 0; i < ncols; i++) {
         if (!m->sel[i]) continue;
         int k = cols[i].kind;
-        names[n] = cols[i].name;
+        names[n] = col_name(i, unit);
         units[n] = k == K_MEL_EDI || k == K_AO_EDI ? edi_unit : k == K_AO_E ? ao_unit : k == K_MES_L ? "cd/m2" : "";
         n++;
     }
     return n;
 }
 
-void cli_metrics_row(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const lx_spd *spd, lx_method method,
-                     const char *unit, const lx_colorimetry *c, const char *file, long line, const char *cmd)
+/* 1 when a column of kind k is selected. */
+static int sel_kind(const cli_metrics *m, int k)
 {
+    for (int i = 0; i < ncols; i++)
+        if (m->sel[i] && cols[i].kind == k) return 1;
+    return 0;
+}
+
+void cli_cct_reason(lx_ctx *ctx, const lx_colorimetry *c, lx_observer obs, char *buf, size_t size)
+{
+    double d = c->X + 15 * c->Y + 3 * c->Z, T, duv;
+    if (!(c->Y > 0) || !(d > 0)) snprintf(buf, size, "the spectrum has no luminous content");
+    else if (lx_cct_from_uv(ctx, obs, c->u_prime, c->v_prime * 2.0 / 3.0, &T, &duv) != LX_OK)
+        snprintf(buf, size, "no correlated colour temperature: %s", lx_ctx_errmsg(ctx));
+    else if (fabs(duv) > 0.05) snprintf(buf, size, "Duv %.4f is beyond 0.05 (too far from the Planckian locus for a CCT)", duv);
+    else snprintf(buf, size, "the CCT solves to %.6g K, outside 1000-100000 K", T);
+}
+
+int cli_metrics_row(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const lx_spd *spd, lx_method method,
+                    const char *unit, const lx_colorimetry *c, const char *file, long line, const char *cmd)
+{
+    int bad = 0;
     build();
     int need = 0;
     for (int i = 0; i < ncols; i++)
@@ -116,11 +171,35 @@ void cli_metrics_row(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const lx_s
         have_tm = lx_tm30_compute(ctx, spd, tm) == LX_OK;
         if (!have_tm && !cli_quiet) cli_error(cmd, "%s:%ld: spectrum '%s': %s", file, line, label, lx_ctx_errmsg(ctx));
     }
-    if ((need & G_AO)) have_ao = lx_alphaopic_compute(ctx, spd, method, &ao) == LX_OK;
+    int say = !cli_quiet;
+    if ((need & G_AO)) {
+        have_ao = lx_alphaopic_compute(ctx, spd, method, &ao) == LX_OK;
+        if (!have_ao && say) cli_error(cmd, "%s:%ld: spectrum '%s': alpha-opic columns empty: %s", file, line, label, lx_ctx_errmsg(ctx));
+        else if (say && !(ao.illuminance != 0) && (sel_kind(m, K_MEL_DER) || sel_kind(m, K_AO_DER)))
+            cli_error(cmd, "%s:%ld: spectrum '%s': the DER columns are empty: the spectrum has no luminous content", file, line,
+                      label);
+    }
     if ((need & G_MES)) {
-        /* only luminance is meaningful here: L_p = Y, L_s with K'm = 1699 lm/W as CIE 191 uses */
-        if (!strcmp(unit, "W/sr/m2/nm"))
-            have_mes = lx_mesopic_luminance(ctx, c->Y, c->scotopic_Y * 1699.0 / 1700.06, &lmes, &mm) == LX_OK;
+        /* only luminance is meaningful here: L_p = Y, L_s with K'm = 1699 lm/W as CIE 191 uses
+         * (the ratio first: scotopic_Y near the top of the double range times 1699 would overflow) */
+        if (!strcmp(unit, "W/sr/m2/nm")) {
+            have_mes = lx_mesopic_luminance(ctx, c->Y, c->scotopic_Y * (1699.0 / 1700.06), &lmes, &mm) == LX_OK;
+            if (!have_mes && say)
+                cli_error(cmd, "%s:%ld: spectrum '%s': mesopic columns empty: %s", file, line, label, lx_ctx_errmsg(ctx));
+        } else if (say) {
+            cli_error(cmd, "%s:%ld: spectrum '%s': mesopic columns empty: they need luminance (--unit W/sr/m2/nm, not %s)",
+                      file, line, label, unit);
+        }
+    }
+    if (have_tm && say && isnan(tm->rg)) {
+        /* an empty hue bin: no gamut polygon (TM-30 needs all 16) */
+        char bins[96] = "";
+        size_t off = 0;
+        for (int b = 0; b < 16; b++)
+            if (isnan(tm->rf_hue[b]) && off < sizeof bins - 4) off += (size_t)snprintf(bins + off, sizeof bins - off, "%s%d", off ? ", " : "", b + 1);
+        cli_error(cmd, "%s:%ld: spectrum '%s': tm30_rg (and those bins' tm30_*_h values) empty: hue bin%s %s hold%s none of "
+                       "the 99 colour evaluation samples under the reference (%.0f K), so TM-30's gamut polygon is undefined",
+                  file, line, label, strchr(bins, ',') ? "s" : "", bins, strchr(bins, ',') ? "" : "s", tm->cct_K);
     }
     for (int i = 0; i < ncols; i++) {
         if (!m->sel[i]) continue;
@@ -147,7 +226,21 @@ void cli_metrics_row(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const lx_s
         case K_MES_L: if (have_mes) v = lmes; break;
         case K_MES_M: if (have_mes) v = mm; break;
         }
+        /* a metric its group computed must be a number: a NaN or infinity is reported, never a
+         * silent blank (the undefined ones were reported above, with their reason) */
+        int computed = (cols[i].group == G_CRI && have_cri) || (cols[i].group == G_TM30 && have_tm) ||
+                       (cols[i].group == G_AO && have_ao) || (cols[i].group == G_MES && have_mes);
+        /* the empties explained above: Rg and the hue bins with no sample, DER without light */
+        int k = cols[i].kind;
+        if (have_tm && (k == K_RG || k == K_RF_H || k == K_RCS_H || k == K_RHS_H) && isnan(tm->rg) && isnan(v)) computed = 0;
+        if (have_ao && (k == K_MEL_DER || k == K_AO_DER) && !(ao.illuminance != 0)) computed = 0;
+        if (computed && !isfinite(v)) {
+            cli_error(cmd, "%s:%ld: spectrum '%s': %s is not finite (%s)", file, line, label, cols[i].name,
+                      isnan(v) ? "NaN" : "infinite");
+            bad++;
+        }
         cli_table_num(t, v);
     }
     free(tm);
+    return bad;
 }

@@ -2,6 +2,7 @@
 #include "core/core_private.h"
 
 #include <stdio.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -18,6 +19,7 @@ const char *lx_strerror(lx_status status)
     case LX_ERANGE: return "undefined for this input";
     case LX_EUNSUPPORTED: return "not supported";
     case LX_EDEVICE: return "OpenCL device error";
+    case LX_EWRITE: return "write error";
     }
     return "unknown status";
 }
@@ -28,6 +30,8 @@ lx_status lx_ctx_create(lx_ctx **out)
     *out = calloc(1, sizeof **out);
     if (!*out) return LX_ENOMEM;
     (*out)->log_max = LX_LOG_WARN;
+    (*out)->irr_method = LX_IRR_AUTO;
+    (*out)->irr_fast_cost_ratio = NAN;
     return LX_OK;
 }
 
@@ -82,6 +86,31 @@ lx_status lx__error(lx_ctx *ctx, lx_status status, const char *file, long line, 
         snprintf(ctx->errmsg, sizeof ctx->errmsg, "%s", what);
     return status;
 }
+
+void lx__fmt_magnitude(char *buf, size_t cap, double v)
+{
+    char t[48];
+    snprintf(t, sizeof t, "%.3g", v);
+    char *e = strchr(t, 'e');
+    if (e) { /* 1e+308 -> 1e308, 3e-05 -> 3e-5 */
+        char *q = e + 1, *d = e + 1;
+        if (*q == '+') q++;
+        else if (*q == '-') *d++ = *q++;
+        while (*q == '0' && q[1]) q++;
+        memmove(d, q, strlen(q) + 1);
+    }
+    snprintf(buf, cap, "%s", t);
+}
+
+lx_status lx__check_reserved(lx_ctx *ctx, const char *what, const void *p, size_t n)
+{
+    const unsigned char *b = p;
+    for (size_t i = 0; i < n; i++)
+        if (b[i]) return lx__error(ctx, LX_EINVAL, NULL, 0, "%s: reserved must be zero (zero-initialise the struct)", what);
+    return LX_OK;
+}
+
+void lx_text_free(char *text) { free(text); }
 
 void lx__log(lx_ctx *ctx, lx_log_level level, const char *fmt, ...)
 {

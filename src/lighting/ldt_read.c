@@ -79,15 +79,15 @@ lx_status lx__ldt_read(lx_ctx *ctx, const char *file, const char *buf, size_t le
     if ((st = whole(ctx, &r, "Ityp (type indicator)", 0, 3, &ityp))) goto fail;
     if ((st = whole(ctx, &r, "Isym (symmetry indicator)", 0, 4, &isym))) goto fail;
     long isym_line = r.it.line;
-    if ((st = whole(ctx, &r, "Mc (number of C-planes)", 1, 3600, &mc))) goto fail;
+    if ((st = whole(ctx, &r, "Mc (number of C-planes)", 1, LX__LDT_MAX_C_PLANES, &mc))) goto fail;
     if ((st = num(ctx, &r, "Dc (C-plane step)", &dc))) goto fail;
-    if ((st = whole(ctx, &r, "Ng (number of gamma angles)", 2, 18001, &ng))) goto fail;
+    if ((st = whole(ctx, &r, "Ng (number of gamma angles)", 2, LX__LDT_MAX_GAMMA, &ng))) goto fail;
     if ((st = num(ctx, &r, "Dg (gamma step)", &dg))) goto fail;
-    if ((st = text(ctx, &r, "the measurement report number", NULL))) goto fail;
+    if ((st = text(ctx, &r, "the measurement report number", &l->test))) goto fail;
     if ((st = text(ctx, &r, "the luminaire name", &l->description))) goto fail;
     if ((st = text(ctx, &r, "the luminaire number", &l->catalog))) goto fail;
     if ((st = text(ctx, &r, "the file name", NULL))) goto fail;
-    if ((st = text(ctx, &r, "the date/user", NULL))) goto fail;
+    if ((st = text(ctx, &r, "the date/user", &l->issuedate))) goto fail;
     static const char *dn[9] = {"the luminaire length", "the luminaire width", "the luminaire height",
                                 "the luminous area length", "the luminous area width", "the luminous height C0",
                                 "the luminous height C90", "the luminous height C180", "the luminous height C270"};
@@ -97,18 +97,18 @@ lx_status lx__ldt_read(lx_ctx *ctx, const char *file, const char *buf, size_t le
     if ((st = num(ctx, &r, "LORL (light output ratio)", &lorl))) goto fail;
     if ((st = num(ctx, &r, "the intensity conversion factor", &cfli))) goto fail;
     if ((st = num(ctx, &r, "the tilt during measurement", &tilt))) goto fail;
-    if ((st = whole(ctx, &r, "the number of lamp sets", 1, 20, &nsets))) goto fail;
+    if ((st = whole(ctx, &r, "the number of lamp sets", 1, LX__LDT_MAX_LAMP_SETS, &nsets))) goto fail;
     double flux1 = 0, watts1 = 0;
     long lamps1 = 0;
     for (long k = 0; k < nsets; k++) {
         double lamps, flux, w;
         if ((st = num(ctx, &r, "the number of lamps", &lamps))) goto fail;
-        if (lamps != floor(lamps) || lamps == 0 || fabs(lamps) > 1e6) {
+        if (lamps != floor(lamps) || lamps == 0 || fabs(lamps) > LX__LDT_MAX_LAMPS) {
             st = lx__error(ctx, LX_EPARSE, file, r.it.line, "the number of lamps must be a non-zero whole number of at most "
-                           "1e6 (got %g)", lamps);
+                           "%g (got %g)", LX__LDT_MAX_LAMPS, lamps);
             goto fail;
         }
-        if ((st = text(ctx, &r, "the lamp type", NULL))) goto fail;
+        if ((st = text(ctx, &r, "the lamp type", k == 0 ? &l->lamp : NULL))) goto fail;
         if ((st = num(ctx, &r, "the lamps' luminous flux", &flux))) goto fail;
         if (!(flux > 0)) {
             st = lx__error(ctx, LX_EPARSE, file, r.it.line, "the lamps' luminous flux must be positive (got %g lm)", flux);
@@ -188,8 +188,15 @@ lx_status lx__ldt_read(lx_ctx *ctx, const char *file, const char *buf, size_t le
     l->lamp_lumens = l->absolute ? NAN : flux1;
     l->stated_lumens = l->absolute ? flux1 : flux1 * lorl / 100.0;
     l->input_watts = watts1;
-    l->width_m = dim[3] / 1000.0;  /* luminous length: along C0-C180 */
-    l->length_m = dim[4] / 1000.0; /* luminous width: along C90-C270 */
+    /* the luminous area: its length (or diameter) lies along C0-C180, its width along C90-C270
+     * (EULUMDAT, as LM-63 puts length along 0-180 and width along 90-270); width 0 means a
+     * circle whose diameter is the length, stored as LM-63 does (both negative) */
+    if (dim[4] == 0 && dim[3] > 0) {
+        l->width_m = l->length_m = -dim[3] / 1000.0;
+    } else {
+        l->length_m = dim[3] / 1000.0;
+        l->width_m = dim[4] / 1000.0;
+    }
     l->height_m = dim[5] / 1000.0;
     long cdline = r.it.line + 1;
     for (long k = 0; k < count; k++) {

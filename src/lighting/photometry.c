@@ -67,6 +67,10 @@ void lx_luminaire_free(lx_luminaire *l)
     free(l->manufacturer);
     free(l->catalog);
     free(l->description);
+    free(l->test);
+    free(l->testlab);
+    free(l->issuedate);
+    free(l->lamp);
     free(l);
 }
 
@@ -88,10 +92,43 @@ static int has_tilt_line(const char *text, size_t len)
     return 0;
 }
 
+/* 1 when the lines that follow EULUMDAT's first (Ityp, Isym, Mc, Dc, Ng, Dg) hold numbers as far as
+ * the file goes; else the line number of the first that does not, in *bad */
+static int looks_ldt(const char *text, size_t len, long *bad)
+{
+    lx__lines it = {text, text + len, 0};
+    const char *s, *e;
+    if (!lx__next_line(&it, &s, &e)) return 1;
+    for (int k = 0; k < 6 && lx__next_line(&it, &s, &e); k++) {
+        while (s < e && (*s == ' ' || *s == '\t')) s++;
+        while (e > s && (e[-1] == ' ' || e[-1] == '\t')) e--;
+        double v;
+        if (s == e || lx__parse_double(s, e, &v) != e) {
+            *bad = it.line;
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* up to cap - 1 bytes of [s, e) with every byte outside printable ASCII as \xNN */
+static void escaped(char *buf, size_t cap, const char *s, const char *e)
+{
+    size_t k = 0;
+    for (; s < e && k + 8 < cap; s++) {
+        unsigned char c = (unsigned char)*s;
+        if (c >= 32 && c < 127 && c != '\\') buf[k++] = (char)c;
+        else k += (size_t)snprintf(buf + k, cap - k, "\\x%02X", c);
+    }
+    if (s < e && k + 4 < cap) memcpy(buf + k, "...", 3), k += 3; /* cut short */
+    buf[k] = 0;
+}
+
 lx_status lx_luminaire_read_mem(lx_ctx *ctx, const char *name, const char *text, size_t len, lx_luminaire **out)
 {
+    LX__NEED_CTX(ctx);
     if (out) *out = NULL;
-    if (!ctx || !out || (!text && len)) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_read_mem: NULL argument");
+    if (!out || (!text && len)) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_read_mem: NULL argument");
     if (!name) name = "(memory)";
     if (len == 0) return lx__error(ctx, LX_EPARSE, name, 1, "empty file");
     /* LM-63 by its TILT= line, or by its version line (then the IES reader reports the missing TILT) */
@@ -99,16 +136,32 @@ lx_status lx_luminaire_read_mem(lx_ctx *ctx, const char *name, const char *text,
     if (len == skip) return lx__error(ctx, LX_EPARSE, name, 1, "empty file (a byte-order mark only)");
     int ies_version = (len - skip >= 6 && !memcmp(text + skip, "IESNA", 5)) || (len - skip >= 4 && !memcmp(text + skip, "IES:", 4));
     if (has_tilt_line(text, len) || ies_version) return lx__ies_read(ctx, name, text, len, out);
+    long bad = 0;
+    if (!looks_ldt(text + skip, len - skip, &bad)) {
+        lx__lines it = {text + skip, text + len, 0};
+        const char *s, *e;
+        for (long k = 0; k < bad && lx__next_line(&it, &s, &e);) k = it.line;
+        char line[64], first[64]; /* excerpts: the message stays short */
+        escaped(line, sizeof line, s, e);
+        it = (lx__lines){text + skip, text + len, 0};
+        lx__next_line(&it, &s, &e);
+        escaped(first, sizeof first, s, e);
+        return lx__error(ctx, LX_EPARSE, name, bad,
+                         "neither IES LM-63 (no TILT= line, no IESNA version line) nor EULUMDAT (line %ld, \"%s\", is not "
+                         "a number); the file begins \"%s\"",
+                         bad, line, first);
+    }
     return lx__ldt_read(ctx, name, text, len, out);
 }
 
 lx_status lx_luminaire_read_file(lx_ctx *ctx, const char *path, lx_luminaire **out)
 {
+    LX__NEED_CTX(ctx);
     if (out) *out = NULL;
-    if (!ctx || !path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_read_file: NULL argument");
+    if (!path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_read_file: NULL argument");
     char *buf;
     size_t len;
-    lx_status st = lx__read_all(ctx, path, &buf, &len);
+    lx_status st = lx__read_all(ctx, path, LX_INPUT_LUMINAIRE, &buf, &len);
     if (st != LX_OK) return st;
     st = lx_luminaire_read_mem(ctx, path, buf, len, out);
     free(buf);
@@ -481,12 +534,37 @@ static double spread_angle(const lx_luminaire *l, double ca, double frac, double
 
 lx_status lx_luminaire_summary(lx_ctx *ctx, const lx_luminaire *l, lx_lum_summary *out)
 {
-    if (!ctx || !l || !out || !l->full_cd) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_summary: NULL argument");
+    LX__NEED_CTX(ctx);
+    if (!l || !out || !l->full_cd) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_summary: NULL argument");
     lx_lum_summary s;
-    double tf = lx_luminaire_tilt_factor(l, 0);
+    memset(&s, 0, sizeof s); /* reserved included (ABI policy) */
+    double tf = lx_luminaire_tilt_factor(l, 0), down = NAN;
     s.lumens = tf * integrate(l, -1e9, 1e9);
+    if (l->photometric_type == 1) down = tf * integrate(l, -1e9, 90);
+    double peak = 0;
+    for (size_t k = 0; k < l->n_c * l->n_g; k++) peak = fmax(peak, fabs(l->full_cd[k]));
+    if (!isfinite(s.lumens) && isfinite(peak)) {
+        /* candela near the top of the double range: the cell sums again on the table scaled by
+         * 2^-e (exact), then back, so a partial sum that overflowed does not make the flux overflow */
+        int e = 0;
+        frexp(peak, &e);
+        lx_luminaire scaled = *l;
+        double *cd = malloc(l->n_c * l->n_g * sizeof *cd);
+        if (!cd) return lx__error(ctx, LX_ENOMEM, l->file, 0, "out of memory");
+        for (size_t k = 0; k < l->n_c * l->n_g; k++) cd[k] = ldexp(l->full_cd[k], -e);
+        scaled.full_cd = cd;
+        s.lumens = ldexp(tf * integrate(&scaled, -1e9, 1e9), e);
+        if (l->photometric_type == 1) down = ldexp(tf * integrate(&scaled, -1e9, 90), e);
+        free(cd);
+    }
+    if (!isfinite(s.lumens)) {
+        char mb[48];
+        lx__fmt_magnitude(mb, sizeof mb, peak);
+        return lx__error(ctx, LX_ERANGE, l->file, 0, "integral overflows: candela values up to %s give lumens beyond the double range",
+                         mb);
+    }
     s.downward_fraction = NAN;
-    if (l->photometric_type == 1 && s.lumens > 0) s.downward_fraction = tf * integrate(l, -1e9, 90) / s.lumens;
+    if (l->photometric_type == 1 && s.lumens > 0) s.downward_fraction = down / s.lumens;
     s.max_intensity_cd = 0;
     s.peak_c_deg = s.peak_gamma_deg = 0;
     for (size_t i = 0; i < l->n_c; i++)
@@ -512,8 +590,13 @@ lx_status lx_luminaire_summary(lx_ctx *ctx, const lx_luminaire *l, lx_lum_summar
 
 lx_status lx_luminaire_from_model(lx_ctx *ctx, const lx_lum_model *m, lx_luminaire **out)
 {
+    LX__NEED_CTX(ctx);
     if (out) *out = NULL;
-    if (!ctx || !m || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_from_model: NULL argument");
+    if (!m || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_from_model: NULL argument");
+    lx_status st0 = lx__check_reserved(ctx, "luminaire model", m->reserved, sizeof m->reserved);
+    if (st0) return st0;
+    if (m->kind != LX_LUM_MODEL_POINT && m->kind != LX_LUM_MODEL_WARN && m->kind != LX_LUM_MODEL_LAMBERT)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown luminaire model %d", (int)m->kind);
     if (!(m->flux_lm > 0) || !isfinite(m->flux_lm))
         return lx__error(ctx, LX_EINVAL, NULL, 0, "the model's flux must be positive and finite (got %g lm)", m->flux_lm);
     if (m->kind == LX_LUM_MODEL_WARN && (!(m->exponent >= 0) || !isfinite(m->exponent) || m->exponent > 1e6))
@@ -551,8 +634,13 @@ lx_status lx_luminaire_from_model(lx_ctx *ctx, const lx_lum_model *m, lx_luminai
         snprintf(desc, sizeof desc, "%s, %.17g lm (analytic model sampled by luxcalc)", what, m->flux_lm);
     l->description = strdup(desc);
     l->catalog = strdup(m->catalog ? m->catalog : what);
-    l->manufacturer = strdup("luxcalc");
-    if (!l->h_deg || !l->v_deg || !l->cd || !l->description || !l->catalog || !l->manufacturer) {
+    l->manufacturer = strdup("luxcalc (an analytic model, no manufacturer)");
+    l->test = strdup("computed by luxcalc " LX_VERSION_STRING " from an analytic model (not a measurement)");
+    l->testlab = strdup("none: an analytic model, not a measurement");
+    l->lamp = strdup(what);
+    l->issuedate = lx__date_today();
+    if (!l->h_deg || !l->v_deg || !l->cd || !l->description || !l->catalog || !l->manufacturer || !l->test ||
+        !l->testlab || !l->lamp || !l->issuedate) {
         lx_luminaire_free(l);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }

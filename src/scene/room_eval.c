@@ -47,7 +47,7 @@ static void direct_run(void *arg, long i0, long i1, int t)
                     if ((J->only >= 0 && (long)l != J->only) || J->lum_cell[l] != p->cell) continue;
                     lx__scene_vis vis = {m->occ, (int)m->n_occ, p->occluder};
                     int test = m->n_occ && lx__room_lum_bv(m, &J->le[l], x, p->occluder);
-                    E += lx__scene_lum_E(cnt, &J->le[l], x, p->n, lx__scene_near(J->sc, J->le[l].l, x), J->near_tol,
+                    E += lx__scene_lum_E(cnt, &J->le[l], x, p->n, lx__scene_path(cnt, J->sc, &J->le[l], x, p->n, J->near_tol), J->near_tol,
                                          test ? &vis : NULL);
                 }
                 sum += gw[a] * gw[b] * E;
@@ -67,7 +67,7 @@ static lx_status direct_light(lx_ctx *ctx, const lx_scene *sc, const lx_scene_pl
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
     for (size_t l = 0; l < sc->n_lum; l++) {
-        lx__scene_lum_prepare(&sc->lum[l], plan, &le[l]);
+        lx__scene_lum_init(&le[l], &sc->lum[l], plan);
         lc[l] = lx__room_cell(sc, sc->lum[l].pos_m);
     }
     *J = (direct_job){sc, m, le, lc, only, fmax(sc->nearfield_tol, m->quad_tol), E_dir, {{0}}};

@@ -1,8 +1,8 @@
-/* room_geom.c - the geometry of rooms: exact point-to-polygon form factors (Lambert's contour
- * integral, the polygon clipped to the receiver's hemisphere), segment-occluder visibility, the
- * bounding-volume test, area-to-area form factors by tanh-sinh quadrature, Gauss-Legendre nodes.
- * The form factor and visibility functions are the CPU twins of kernels/room.cl: the kernel
- * repeats the same operations in the same order (FP_CONTRACT off on both sides). */
+/* room_geom.c - the geometry of rooms: exact point-to-polygon form factors (Lambert's formula of
+ * core/lambert.c, the polygon clipped to the receiver's hemisphere), segment-occluder visibility,
+ * the bounding-volume test, area-to-area form factors by tanh-sinh quadrature, Gauss-Legendre
+ * nodes. The form factor and visibility functions are the CPU twins of kernels/room.cl: the
+ * kernel repeats the same operations in the same order (no contraction on either side). */
 #include "scene/room_private.h"
 
 #include <math.h>
@@ -47,72 +47,30 @@ void lx__room_occ_quad(lx__room_occ *oc, const double o[3], const double u[3], c
     }
 }
 
-/* The contour sum over the polygon q (m vertices) seen from x with normal n; *degenerate is set
- * when x lies on one of its edges (the sum is then not defined). */
-static double contour(const double x[3], const double n[3], const double *q, int m, int *degenerate)
-{
-    double r[3 * LX__ROOM_MAXV], s = 0;
-    for (int k = 0; k < m; k++)
-        for (int c = 0; c < 3; c++) r[3 * k + c] = q[3 * k + c] - x[c];
-    for (int k = 0; k < m; k++) {
-        const double *a = r + 3 * k, *b = r + 3 * ((k + 1) % m);
-        double c[3];
-        cross3(a, b, c);
-        double cc = dot3(c, c), d = dot3(a, b);
-        if (!(cc > 1e-28 * (dot3(a, a) * dot3(b, b)))) {
-            if (d < 0) *degenerate = 1; /* x between the two ends of the edge */
-            continue;                   /* a zero-length edge, or x on its line outside it: no area */
-        }
-        double cn = sqrt(cc);
-        s += atan2(cn, d) * (dot3(n, c) / cn);
-    }
-    return s;
-}
-
-/* Clips the polygon p (nv vertices) to the half-space n . (y - x) >= 0 into q; returns the count. */
-static int clip_front(const double x[3], const double n[3], const double *p, int nv, double *q)
-{
-    int m = 0;
-    for (int k = 0; k < nv; k++) {
-        const double *a = p + 3 * k, *b = p + 3 * ((k + 1) % nv);
-        double da = n[0] * (a[0] - x[0]) + n[1] * (a[1] - x[1]) + n[2] * (a[2] - x[2]);
-        double db = n[0] * (b[0] - x[0]) + n[1] * (b[1] - x[1]) + n[2] * (b[2] - x[2]);
-        if (da >= 0) {
-            memcpy(q + 3 * m, a, 3 * sizeof *q);
-            m++;
-        }
-        if ((da >= 0) != (db >= 0)) {
-            double t = da / (da - db);
-            for (int c = 0; c < 3; c++) q[3 * m + c] = a[c] + t * (b[c] - a[c]);
-            m++;
-        }
-    }
-    return m;
-}
-
 double lx__room_ff_point(const double x[3], const double n[3], const double *p, int nv)
 {
-    double q[3 * LX__ROOM_MAXV];
-    int front = 0;
-    for (int k = 0; k < nv; k++)
-        front += n[0] * (p[3 * k] - x[0]) + n[1] * (p[3 * k + 1] - x[1]) + n[2] * (p[3 * k + 2] - x[2]) >= 0;
-    if (front == 0) return 0; /* wholly behind x's tangent plane */
-    int m = front == nv ? nv : clip_front(x, n, p, nv, q);
-    if (m < 3) return 0;
-    int deg = 0;
-    double s = contour(x, n, front == nv ? p : q, m, &deg);
-    if (deg) {
-        /* x lies on an edge: the limit from the front, x moved off by 1e-9 of the polygon's size */
-        double size = 0, y[3];
+    /* Lambert's formula (core/lambert.c) on the vertices seen from x; a point on one of the
+     * polygon's edges (whose term is undefined there) is moved 1e-9 of the polygon's size off
+     * its tangent plane: the limit from the front */
+    double v[LX__POLY_MAX][3], y[3] = {x[0], x[1], x[2]};
+    if (nv < 3 || nv > LX__POLY_MAX) return 0;
+    for (int pass = 0; pass < 2; pass++) {
+        int deg = 0;
+        for (int k = 0; k < nv; k++)
+            for (int c = 0; c < 3; c++) v[k][c] = p[3 * k + c] - y[c];
+        for (int k = 0; k < nv && !pass; k++) {
+            const double *a = v[k], *b = v[(k + 1) % nv];
+            double c[3];
+            cross3(a, b, c);
+            if (!(dot3(c, c) > 1e-28 * (dot3(a, a) * dot3(b, b))) && dot3(a, b) < 0) deg = 1;
+        }
+        if (!deg) break;
+        double size = 0;
         for (int k = 1; k < nv; k++)
             for (int c = 0; c < 3; c++) size = fmax(size, fabs(p[3 * k + c] - p[c]));
         for (int c = 0; c < 3; c++) y[c] = x[c] + 1e-9 * size * n[c];
-        m = clip_front(y, n, p, nv, q);
-        if (m < 3) return 0;
-        deg = 0;
-        s = contour(y, n, q, m, &deg);
     }
-    return fabs(s) / (2 * LX__PI);
+    return lx__polygon_projected((const double(*)[3])v, nv, n) / LX__PI;
 }
 
 double lx__room_ff_quad(const double x[3], const double n[3], const double o[3], const double u[3], const double v[3],

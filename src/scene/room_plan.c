@@ -98,7 +98,14 @@ static lx_status plan_occlusion(lx_ctx *ctx, const lx_scene *sc, lx_scene_plan *
 
 /* The largest indirect share of a receiver point's total: E_ind / (E_ind + E_dir), E_dir probed
  * by the point law with visibility (not counted as work). */
-static double share_max(const lx_scene *sc, const lx_scene_plan *p, const lx__room_mesh *m, const lx__scene_lum *le,
+static void add_counters(lx_counters *to, const lx_counters *c)
+{
+    unsigned long long *a = (unsigned long long *)to;
+    const unsigned long long *b = (const unsigned long long *)c;
+    for (size_t k = 0; k < sizeof *to / sizeof *a; k++) a[k] += b[k];
+}
+
+static double share_max(const lx_scene *sc, lx_scene_plan *p, const lx__room_mesh *m, const lx__scene_lum *le,
                         double E_ind)
 {
     lx_counters probe;
@@ -118,6 +125,7 @@ static double share_max(const lx_scene *sc, const lx_scene_plan *p, const lx__ro
             double s = E_ind > 0 ? E_ind / (E_ind + E) : 0;
             if (s > worst) worst = s;
         }
+    add_counters(&p->planning, &probe); /* the planner's own work */
     return worst;
 }
 
@@ -214,6 +222,7 @@ static lx_status plan_interreflection(lx_ctx *ctx, const lx_scene *sc, lx_scene_
     lx__room_mesh *m = NULL;
     lx_status st = lx__room_mesh_build(ctx, sc, p, &o, &m);
     if (st != LX_OK) return st;
+    add_counters(&p->planning, &m->probe);
     if (!p->on[LX_EFFECT_OCCLUSION]) m->n_occ = 0; /* occlusion off: nothing blocks, faces still reflect */
     R->mesh = m;
     flux_balance(sc, m, &S, &rho, &flux); /* the exposed area */
@@ -268,7 +277,7 @@ lx_status lx__room_plan(lx_ctx *ctx, const lx_scene *sc, int backend, lx_scene_p
     lx__scene_lum *le = calloc(sc->n_lum ? sc->n_lum : 1, sizeof *le);
     lx__room_mesh *occ = NULL;
     if (!le) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
-    for (size_t l = 0; l < sc->n_lum; l++) lx__scene_lum_prepare(&sc->lum[l], p, &le[l]);
+    for (size_t l = 0; l < sc->n_lum; l++) lx__scene_lum_init(&le[l], &sc->lum[l], p);
     lx_status st = lx__room_occluders(ctx, sc, &occ); /* and the faces, without patches */
     if (st == LX_OK) st = plan_occlusion(ctx, sc, p, occ, le);
     if (st == LX_OK) st = plan_interreflection(ctx, sc, p, occ, le);

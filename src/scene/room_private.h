@@ -12,8 +12,6 @@
 
 /* ---- geometry (room_geom.c; the CPU twins of kernels/room.cl) ---- */
 
-#define LX__ROOM_MAXV 8 /* vertices of a parallelogram clipped by one plane (5) with room to spare */
-
 /* An occluder: an axis-aligned box (an obstruction) or a parallelogram o + s u + t v (a surface).
  * lo/hi bound it in both cases (the bounding-volume test). */
 typedef struct lx__room_occ {
@@ -27,11 +25,10 @@ typedef struct lx__room_occ {
 void lx__room_occ_box(lx__room_occ *oc, const double lo[3], const double hi[3]);
 void lx__room_occ_quad(lx__room_occ *oc, const double o[3], const double u[3], const double v[3]);
 
-/* Form factor from a differential area at x with unit normal n to the convex polygon p (nv
- * vertices, xyz each), counting only the part in front of x's tangent plane: Lambert's contour
- * integral F = |sum_k gamma_k n.(a_k x b_k)/|a_k x b_k|| / 2 pi, a_k = p_k - x, gamma_k the angle
- * between a_k and a_k+1. A point on an edge of the polygon is moved 1e-9 of the polygon's size
- * off its plane (the limit from the front). nv <= 4. */
+/* Form factor from a differential area at x with unit normal n to the convex polygon p (nv <=
+ * LX__POLY_MAX vertices, xyz each), counting only the part in front of x's tangent plane:
+ * Lambert's formula, lx__polygon_projected / pi. A point on an edge of the polygon is moved 1e-9
+ * of the polygon's size off its tangent plane (the limit from the front). */
 double lx__room_ff_point(const double x[3], const double n[3], const double *p, int nv);
 
 /* The same for the parallelogram o + s u + t v, 0 if x is behind it (n_poly . (x - o) <= 0). */
@@ -106,6 +103,7 @@ typedef struct lx__room_mesh {
     size_t n_nodes;                      /* direct-light quadrature nodes over all elements */
     size_t n_refined;                    /* elements split by the refinement */
     const lx_scene *sc;                  /* the scene the faces came from (not owned) */
+    lx_counters probe;                   /* the work of the refinement's probes (the planner's) */
     int *obst_occ, *surf_occ;            /* the occluder of each obstruction and surface */
 } lx__room_mesh;
 

@@ -37,11 +37,10 @@ void lx_scene_result_free(lx_scene_result *res)
     free(res);
 }
 
-static double dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+typedef lx__scene_lum lum_eval;
 
-void lx__scene_lum_prepare(const lx_scene_luminaire *l, const lx_scene_plan *plan, lx__scene_lum *e)
+void lx__scene_lum_init(lx__scene_lum *e, const lx_scene_luminaire *l, const lx_scene_plan *plan)
 {
-    memset(e, 0, sizeof *e);
     e->l = l;
     lx__scene_frame(l, e->ex, e->ey, e->ez);
     e->area = l->radius_m > 0 ? LX__PI * l->radius_m * l->radius_m : l->width_m * l->length_m;
@@ -50,9 +49,11 @@ void lx__scene_lum_prepare(const lx_scene_luminaire *l, const lx_scene_plan *pla
     e->cosine = plan->on[LX_EFFECT_COSINE];
 }
 
+static double dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
 /* Intensity (cd) of the whole luminaire (frac = 1) or of a fraction of its luminous area towards
  * the unit direction u (from the luminaire to the receiver). */
-static double intensity(lx_counters *cnt, const lx__scene_lum *le, const double u[3], double frac)
+static double intensity(lx_counters *cnt, const lum_eval *le, const double u[3], double frac)
 {
     const lx_scene_luminaire *l = le->l;
     switch (l->kind) {
@@ -96,14 +97,20 @@ static double point_E(lx_counters *cnt, const lx__scene_lum *le, const double s[
     return intensity(cnt, le, u, frac) * cx / d2;
 }
 
+double lx__scene_point_E(lx_ctx *ctx, const lx__scene_lum *le, const double s[3], const double q[3], const double n[3],
+                         double frac)
+{
+    return point_E(&ctx->counters, le, s, q, n, frac, NULL);
+}
+
 /* The near field shares the grid engine's scheme (lx__area_cell / lx__area_refine in grid.c):
  * rectangles n x n cells, disks n rings of equal area x 2n sectors, each cell a point source
  * carrying its share of the intensity; n doubles until the Richardson-extrapolated estimate (the
  * midpoint rule's error is even in the cell size) changes by less than tol, or 512 per side.
- * With vis, each cell's ray is tested: only the visible part of the area is integrated. */
+ * With vis, each cell's rays are tested: only the visible part of the area is integrated. */
 typedef struct near_arg {
     lx_counters *cnt;
-    const lx__scene_lum *le;
+    const lum_eval *le;
     const double *q, *n;
     const lx__scene_vis *vis;
 } near_arg;
@@ -113,7 +120,8 @@ static double near_mean(void *arg, int lev)
     const near_arg *A = arg;
     const lx_scene_luminaire *l = A->le->l;
     int circular = l->radius_m > 0;
-    double w = circular ? 2 * l->radius_m : l->width_m, len = circular ? 0 : l->length_m;
+    double w, len;
+    lx__scene_lum_extent(l, &w, &len);
     size_t cells = lx__area_cells(circular, lev);
     double frac = 1.0 / (double)cells, sum = 0;
     for (size_t c = 0; c < cells; c++) {
@@ -138,7 +146,7 @@ static double near_mean(void *arg, int lev)
     return sum;
 }
 
-static double near_E(lx_counters *cnt, const lx__scene_lum *le, const double q[3], const double n[3], double tol,
+static double near_E(lx_counters *cnt, const lum_eval *le, const double q[3], const double n[3], double tol,
                      const lx__scene_vis *vis, int n_max)
 {
     unsigned long long patches = 0;
@@ -162,24 +170,36 @@ static double near_E(lx_counters *cnt, const lx__scene_lum *le, const double q[3
     return x > 0 ? x : 0;
 }
 
+/* A Lambertian disk or rectangle in closed form (area_exact.c): any receiver orientation. */
+static double closed_E(lx_counters *cnt, const lum_eval *le, const double q[3], const double n[3])
+{
+    const lx_scene_luminaire *l = le->l;
+    double m[3] = {-le->ez[0], -le->ez[1], -le->ez[2]}; /* the emitting normal: the aim */
+    cnt->nearfield_pairs++;
+    cnt->closed_form_evaluations++;
+    if (l->kind == LX_SLUM_DISK) return lx__lambert_disk_E(l->luminance_cd_m2, l->pos_m, le->ex, le->ey, m, l->radius_m, q, n, NULL);
+    return lx__lambert_rect_E(l->luminance_cd_m2, l->pos_m, le->ex, le->ey, m, l->width_m, l->length_m, q, n);
+}
+
 /* Probe points of a luminous area for the partial-visibility test: centre, edge midpoints, corners
  * (a disk: centre and 8 points on its rim). */
 static void probe_point(const lx__scene_lum *le, int k, double s[3])
 {
     const lx_scene_luminaire *l = le->l;
-    double a, b;
+    double a, b, w, len;
+    lx__scene_lum_extent(l, &w, &len);
     if (l->radius_m > 0) {
         double t = 2 * LX__PI * (k - 1) / 8.0;
         a = k ? l->radius_m * cos(t) : 0;
         b = k ? l->radius_m * sin(t) : 0;
     } else {
-        a = 0.5 * l->width_m * (k % 3 - 1);
-        b = 0.5 * l->length_m * (k / 3 - 1);
+        a = 0.5 * w * (k % 3 - 1);
+        b = 0.5 * len * (k / 3 - 1);
     }
     for (int c = 0; c < 3; c++) s[c] = l->pos_m[c] + a * le->ex[c] + b * le->ey[c];
 }
 
-double lx__scene_lum_E(lx_counters *cnt, const lx__scene_lum *le, const double q[3], const double n[3], int near,
+double lx__scene_lum_E(lx_counters *cnt, const lx__scene_lum *le, const double q[3], const double n[3], int path,
                        double near_tol, const lx__scene_vis *vis)
 {
     double size = lx__scene_lum_size(le->l);
@@ -196,9 +216,48 @@ double lx__scene_lum_E(lx_counters *cnt, const lx__scene_lum *le, const double q
         if (seen < 9) return near_E(cnt, le, q, n, near_tol, vis, near_tol >= 1e-4 ? 32 : 128);
         vis = NULL;
     }
-    if (near) return near_E(cnt, le, q, n, near_tol, vis, 512);
+    if (path == LX__PATH_CLOSED) return closed_E(cnt, le, q, n);
+    if (path) return near_E(cnt, le, q, n, near_tol, NULL, LX__NEAR_MAX_CELLS);
     cnt->point_evaluations++;
     return point_E(cnt, le, le->l->pos_m, q, n, 1, vis);
+}
+
+/* The probe function of the near-field decision (as the planner's): the luminaire as a point at
+ * offset (a, b) on its opening. */
+typedef struct path_arg {
+    lx_counters *cnt;
+    const lx__scene_lum *le;
+    const double *q, *n;
+} path_arg;
+
+static double path_g(void *arg, double a, double b)
+{
+    const path_arg *A = arg;
+    double s[3];
+    for (int k = 0; k < 3; k++) s[k] = A->le->l->pos_m[k] + a * A->le->ex[k] + b * A->le->ey[k];
+    return point_E(A->cnt, A->le, s, A->q, A->n, 1, NULL);
+}
+
+int lx__scene_path(lx_counters *cnt, const lx_scene *sc, const lx__scene_lum *le, const double q[3], const double n[3],
+                   double tol)
+{
+    const lx_scene_luminaire *L = le->l;
+    lx_effect_force F = sc->force[LX_EFFECT_NEAR_FIELD];
+    if (!(lx__scene_lum_size(L) > 0) || F == LX_FORCE_OFF) return LX__PATH_POINT;
+    if (L->kind != LX_SLUM_FILE) return le->cosine ? LX__PATH_CLOSED : LX__PATH_AREA;
+    if (F == LX_FORCE_ON) return LX__PATH_AREA;
+    double ax, ay, d = 0;
+    lx__scene_lum_extent(L, &ax, &ay);
+    for (int c = 0; c < 3; c++) d += (q[c] - L->pos_m[c]) * (q[c] - L->pos_m[c]);
+    path_arg A = {cnt, le, q, n};
+    int circ = L->radius_m > 0;
+    lx__nf_probe pr;
+    lx__nf_probe_pair(path_g, &A, circ, ax, ay, sqrt(d), lx__nf_faces(L->pos_m, le->ex, le->ey, circ, ax, ay, q, n), &pr);
+    cnt->nearfield_probes++;
+    unsigned char near = 0;
+    size_t order = 0;
+    lx__nf_decide(1, &pr, pr.point, tol, &near, &order);
+    return near ? LX__PATH_AREA : LX__PATH_POINT;
 }
 
 static double now_s(void)
@@ -261,7 +320,7 @@ static lx_status device_blocks(lx_ctx *ctx, const lx_scene *sc, const lx_scene_p
             double tilt = lx_luminaire_tilt_factor(L->lum, acos(fmax(-1.0, fmin(1.0, -L->aim[2]))));
             double k = tilt > 0 ? L->scale / tilt : 0;
             for (size_t i = 0; i < rc->n; i++) contrib[(g0 + i) * (nl + 1) + l] = E[i] * k;
-            ctx->counters.kernel_launches += o.used == LX_BACKEND_OPENCL;
+            ctx->counters.kernel_launches += lx_ctx_backend_used(ctx) == LX_BACKEND_OPENCL;
             ctx->counters.point_evaluations += rc->n;
             ctx->counters.goniometric_lookups += rc->n;
             d[l * sc->n_rec + r] = 1;
@@ -273,10 +332,43 @@ static lx_status device_blocks(lx_ctx *ctx, const lx_scene *sc, const lx_scene_p
     return LX_OK;
 }
 
+/* Every result that is defined must be a number: an infinity or NaN (fluxes, intensities or
+ * distances that leave the double range) is an error naming the receiver, its point and the
+ * luminaire, never a value handed on to be printed blank. */
+static lx_status check_finite(lx_ctx *ctx, const lx_scene *sc, const lx_scene_result *res, size_t nl, int spectral)
+{
+    for (size_t r = 0; r < sc->n_rec; r++) {
+        const lx_scene_receiver *rc = &sc->rec[r];
+        for (size_t g = res->first[r]; g < res->first[r + 1]; g++) {
+            const double *c = res->contrib_lx + g * (nl + 1), *q = rc->points + 3 * (g - res->first[r]);
+            const char *what = NULL, *who = NULL;
+            double v = 0;
+            for (size_t k = 0; k <= nl && !what; k++)
+                if (!isfinite(c[k])) what = "illuminance_lx", v = c[k], who = k < nl ? sc->lum[k].name : NULL;
+            if (!what && !isfinite(res->E_lx[g])) what = "illuminance_lx", v = res->E_lx[g];
+            if (!what && sc->want_luminance && rc->reflectance >= 0 && !isfinite(res->L_cd_m2[g]))
+                what = "luminance_cd_m2", v = res->L_cd_m2[g];
+            if (!what && spectral && res->E_lx[g] > 0 && !isfinite(res->melanopic_edi_lx[g]))
+                what = "melanopic_edi_lx", v = res->melanopic_edi_lx[g];
+            if (what)
+                return lx__error(ctx, LX_ERANGE, rc->file, rc->line,
+                                 "receiver '%s', point %zu (%g, %g, %g m): %s is %s%s%s%s: the fluxes, intensities or "
+                                 "distances leave the double range",
+                                 rc->name, g - res->first[r] + 1, q[0], q[1], q[2], what, isnan(v) ? "NaN" : "infinite",
+                                 who ? " from luminaire '" : "", who ? who : "", who ? "'" : "");
+        }
+    }
+    return LX_OK;
+}
+
 lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *plan, const lx_scene_eval_opts *opts,
                         lx_scene_result **out)
 {
-    if (!ctx || !sc || !plan || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_eval: NULL argument");
+    LX__NEED_CTX(ctx);
+    if (!sc || !plan || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_eval: NULL argument");
+    *out = NULL;
+    lx_status st0 = opts ? lx__check_reserved(ctx, "scene options", opts->reserved, sizeof opts->reserved) : LX_OK;
+    if (st0) return st0;
     long only = opts && opts->single ? (long)opts->index : -1;
     if (opts && opts->single && opts->index >= sc->n_lum)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_eval: no luminaire %zu", opts->index);
@@ -284,7 +376,7 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
     lx_counters before = ctx->counters;
     size_t np = plan->n_points, nl = sc->n_lum, nc = nl + 1;
     lx_scene_result *res = calloc(1, sizeof *res);
-    lx__scene_lum *le = calloc(nl ? nl : 1, sizeof *le);
+    lum_eval *le = calloc(nl ? nl : 1, sizeof *le);
     scene__spec *spec = calloc(nc, sizeof *spec);
     void *map = NULL, *occm = NULL;
     unsigned char *ondev = NULL;
@@ -302,7 +394,7 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
     if (!res->first || !res->E_lx || !res->contrib_lx || !res->L_cd_m2 || !res->cct_K || !res->duv ||
         !res->melanopic_edi_lx)
         goto nomem;
-    for (size_t l = 0; l < nl; l++) lx__scene_lum_prepare(&sc->lum[l], plan, &le[l]);
+    for (size_t l = 0; l < nl; l++) lx__scene_lum_init(&le[l], &sc->lum[l], plan);
     int sky = plan->on[LX_EFFECT_ENVIRONMENT] && only < 0;
     int spectral = plan->on[LX_EFFECT_SPECTRAL];
     if (sky && sc->sky == LX_SKY_MAP && (st = lx__scene_sky_map_load(ctx, sc, &map)) != LX_OK) goto fail;
@@ -387,6 +479,7 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
             }
         }
     }
+    if ((st = check_finite(ctx, sc, res, nl, spectral)) != LX_OK) goto fail;
     free(ondev);
     lx__scene_sky_map_free(map);
     lx__room_mesh_free(occm);
@@ -394,6 +487,7 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
     free(spec);
     counters_diff(&ctx->counters, &before, &res->work);
     res->seconds = now_s() - t0;
+    lx__backend_used(ctx, res->work.kernel_launches ? LX_BACKEND_OPENCL : LX_BACKEND_CPU);
     *out = res;
     return LX_OK;
 nomem:

@@ -50,6 +50,25 @@ lx_status lx__scene_rec_finish(lx_ctx *ctx, lx_scene *sc, scene__rec_raw *r);
 lx_status lx__scene_sky_key(lx_ctx *ctx, lx_scene *sc, const char *file, long line, const char *key,
                             const char *value);
 
+/* Daylight (scene_daylight.c): the [sky] keys of cie and perez skies (*known 0 when key is none
+ * of them), the raw [sun] keys, [observer NAME] sections, and the whole-scene checks that build
+ * the sun's direction (SPA) and the sky model. */
+typedef struct scene__sun_raw {
+    int has_dir, has_alt, has_az, has_date, has_time, has_tz, has_lat, has_lon, has_illum;
+    double dir[3], alt, az, tz, lat, lon, illum, elev, pressure, temp, delta_t;
+    int y, mo, d, h, mi;
+    double s;
+} scene__sun_raw;
+lx_status lx__scene_sky_daylight_key(lx_ctx *ctx, lx_scene *sc, const char *file, long line, const char *key,
+                                     const char *value, int *known);
+void lx__scene_sun_raw_init(scene__sun_raw *r);
+lx_status lx__scene_sun_key(lx_ctx *ctx, lx_scene *sc, scene__sun_raw *r, const char *file, long line, const char *key,
+                            const char *value);
+lx_status lx__scene_obs_open(lx_ctx *ctx, lx_scene *sc, const char *name, const char *file, long line);
+lx_status lx__scene_obs_key(lx_ctx *ctx, lx_scene *sc, const char *file, long line, const char *key, const char *value);
+lx_status lx__scene_obs_finish(lx_ctx *ctx, lx_scene *sc);
+lx_status lx__scene_daylight_finish(lx_ctx *ctx, lx_scene *sc, const scene__sun_raw *sun);
+
 /* A new empty scene (defaults set), its whole-scene checks, and a kept copy of a file name. */
 lx_scene *lx__scene_new(const char *file);
 lx_status lx__scene_finish(lx_ctx *ctx, lx_scene *sc);
@@ -69,35 +88,12 @@ char *lx__scene_resolve(const char *base_file, const char *rel);
 void lx__scene_frame(const lx_scene_luminaire *l, double ex[3], double ey[3], double ez[3]);
 /* The size the five-times rule uses: disk diameter, rectangle (or opening) diagonal; 0 for points. */
 double lx__scene_lum_size(const lx_scene_luminaire *l);
+/* The luminous opening along the luminaire's ex (C0) and ey (C90) axes: a rectangle's width and
+ * length; a file luminaire's length (C0-C180) and width (C90-C270), as LM-63 and EULUMDAT define
+ * them; a disk's diameter (both). 0 for points. */
+void lx__scene_lum_extent(const lx_scene_luminaire *l, double *along_x, double *along_y);
 /* Total flux of a file luminaire's table times its scale (lm). */
 double lx__scene_file_flux(const lx_scene_luminaire *l);
-/* The near-field rule for luminaire L and a receiver point q (honours [effects] near_field): 1 when
- * the pair takes the luminous-area integration. */
-int lx__scene_near(const lx_scene *sc, const lx_scene_luminaire *L, const double q[3]);
-
-/* ---- the one direct-lighting path (scene_eval.c): receiver points and room patches alike ---- */
-/* A luminaire prepared for evaluation: its frame and the effects that apply to it. */
-typedef struct lx__scene_lum {
-    const lx_scene_luminaire *l;
-    double ex[3], ey[3], ez[3];
-    double area;
-    int spot_falloff, gonio, cosine;
-} lx__scene_lum;
-void lx__scene_lum_prepare(const lx_scene_luminaire *l, const lx_scene_plan *plan, lx__scene_lum *out);
-/* Occluders a contribution is tested against (NULL: none can cut it). */
-struct lx__room_occ;
-typedef struct lx__scene_vis {
-    const struct lx__room_occ *occ;
-    int n_occ;
-    int skip; /* an occluder the receiver is part of (never blocks it), -1 none */
-} lx__scene_vis;
-/* The illuminance (lx) luminaire le gives at q (unit normal n): the point law, or the near-field
- * integration over its luminous area (near = 1, to near_tol). With vis: every ray is tested; an
- * area luminaire partly hidden (its 3 x 3 probe points disagree) is integrated over its luminous
- * area with each cell's ray tested (the visible part only). Adds its work to cnt. Thread-safe
- * for distinct cnt. */
-double lx__scene_lum_E(lx_counters *cnt, const lx__scene_lum *le, const double q[3], const double n[3], int near,
-                       double near_tol, const lx__scene_vis *vis);
 
 /* ---- rooms: the keys of [room], [surface], [obstruction] (room_read.c) ---- */
 enum { SCENE__ROOM = 1, SCENE__SURFACE = 2, SCENE__OBSTRUCTION = 3 };
@@ -127,6 +123,45 @@ lx_status lx__room_plan(lx_ctx *ctx, const lx_scene *sc, int backend, lx_scene_p
 void lx__room_plan_free(lx_scene_plan *p);
 /* Evaluation's part: the solve and the gather; adds indirect_lx to res (room_eval.c). */
 lx_status lx__room_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *plan, long only, lx_scene_result *res);
+
+/* What a luminaire needs during evaluation (and the planner's probes): its frame, area and the
+ * effects that shape its intensity. */
+typedef struct lx__scene_lum {
+    const lx_scene_luminaire *l;
+    double ex[3], ey[3], ez[3];
+    double area;
+    int spot_falloff, gonio, cosine;
+} lx__scene_lum;
+void lx__scene_lum_init(lx__scene_lum *e, const lx_scene_luminaire *l, const lx_scene_plan *plan);
+/* E at receiver point q (unit normal n) of the luminaire as a point source at s carrying frac of
+ * its intensity (the point model; counts its spot and table work). */
+double lx__scene_point_E(lx_ctx *ctx, const lx__scene_lum *le, const double s[3], const double q[3], const double n[3],
+                         double frac);
+
+/* The paths of lx_scene_plan.near: the point model, the luminous area integrated in patches, a
+ * disk or rectangle in closed form. */
+enum { LX__PATH_POINT = 0, LX__PATH_AREA = 1, LX__PATH_CLOSED = 2 };
+
+/* ---- the one direct-lighting path (scene_eval.c): receiver points and room patches alike ---- */
+/* Occluders a contribution is tested against (NULL: none can cut it). */
+struct lx__room_occ;
+typedef struct lx__scene_vis {
+    const struct lx__room_occ *occ;
+    int n_occ;
+    int skip; /* an occluder the receiver is part of (never blocks it), -1 none */
+} lx__scene_vis;
+/* The illuminance (lx) luminaire le gives at q (unit normal n) by `path` (LX__PATH_*: the point
+ * model, the luminous area integrated to near_tol, a closed form). With vis every ray is tested;
+ * an area luminaire partly hidden (its 3 x 3 probe points disagree) is integrated over its
+ * luminous area with each cell's visible fraction (the visible part only), one wholly hidden gives
+ * 0. Adds its work to cnt. Thread-safe for distinct cnt. */
+double lx__scene_lum_E(lx_counters *cnt, const lx__scene_lum *le, const double q[3], const double n[3], int path,
+                       double near_tol, const lx__scene_vis *vis);
+/* The path of luminaire le for a receiver point the planner did not see (a room's patch): the
+ * planner's rule for one pair (closed forms for disks and rectangles, the point model's probed
+ * error against tol for IES/LDT openings, [effects] near_field). Counts its probes in cnt. */
+int lx__scene_path(lx_counters *cnt, const lx_scene *sc, const lx__scene_lum *le, const double q[3], const double n[3],
+                   double tol);
 
 /* Sky illuminance on a receiver with unit normal n (lx): sky plus ground. Counts its work. */
 lx_status lx__scene_sky_eval(lx_ctx *ctx, const lx_scene *sc, const void *map, const double n[3], double *E_lx);

@@ -2,15 +2,26 @@
  * integrals at once (lx_batch_integrate), then CCT/Duv and the rest per spectrum on threads. */
 #include "spectral/spectral_private.h"
 
+#include <math.h>
 #include <stdlib.h>
 
 typedef struct job {
     const lx_batch *b;
     lx_observer obs;
+    double lo_K, hi_K;  /* the CCT range as Planckian radiators at its ends show it on this grid */
     const double *ints; /* n x 4: xbar, ybar, zbar, V' integrals */
     lx_colorimetry *out;
     lx_status st[64];   /* per thread */
 } job;
+
+/* Value j of spectrum i, times 2^-e. */
+static double value_at(const lx_batch *b, size_t i, size_t j, int e)
+{
+    size_t stride = b->row_stride ? b->row_stride : b->n_lambda;
+    double v = b->dtype == LX_F32 ? (double)((const float *)b->values)[i * stride + j]
+                                  : ((const double *)b->values)[i * stride + j];
+    return e ? ldexp(v, -e) : v;
+}
 
 static double radiant_of(const lx_batch *b, size_t i)
 {
@@ -24,7 +35,17 @@ static double radiant_of(const lx_batch *b, size_t i)
         const double *v = (const double *)b->values + i * stride;
         for (size_t j = 0; j + 1 < b->n_lambda; j++) sum += v[j] + v[j + 1];
     }
-    return 0.5 * b->step_nm * sum; /* the trapezoid rule, as lx_spd_integrate_radiant */
+    double r = 0.5 * b->step_nm * sum; /* the trapezoid rule, as lx_spd_integrate_radiant */
+    if (isfinite(r) || !isinf(sum)) return r;
+    /* values near the top of the double range: the sum again scaled by 2^-e (exact), then back,
+     * so a partial sum that overflowed does not make the integral overflow */
+    double m = 0;
+    for (size_t j = 0; j < b->n_lambda; j++) m = fmax(m, fabs(value_at(b, i, j, 0)));
+    int e = 0;
+    frexp(m, &e);
+    sum = 0.0;
+    for (size_t j = 0; j + 1 < b->n_lambda; j++) sum += value_at(b, i, j, e) + value_at(b, i, j + 1, e);
+    return ldexp(0.5 * b->step_nm * sum, e);
 }
 
 /* Spectra [i0, i1) on thread t, with a context of its own (a context is one thread's). */
@@ -35,14 +56,16 @@ static void work(void *arg, long i0, long i1, int t)
     if ((j->st[t] = lx_ctx_create(&ctx)) != LX_OK) return;
     for (long i = i0; i < i1 && j->st[t] == LX_OK; i++) {
         j->out[i].method = LX_METHOD_CIE15;
-        j->st[t] = lx_colorimetry_from_integrals(ctx, j->obs, j->ints + 4 * i, j->ints[4 * i + 3], radiant_of(j->b, i),
-                                              &j->out[i]);
+        j->st[t] = lx__colorimetry_range(ctx, j->obs, j->ints + 4 * i, j->ints[4 * i + 3], radiant_of(j->b, i), j->lo_K,
+                                         j->hi_K, &j->out[i], NULL);
     }
     lx_ctx_destroy(ctx);
 }
 
-lx_status lx_batch_colorimetry(lx_ctx *ctx, const lx_batch *b, lx_observer obs, lx_batch_opts *opts, lx_colorimetry *out)
+lx_status lx_batch_colorimetry(lx_ctx *ctx, const lx_batch *b, lx_observer obs, const lx_batch_opts *opts,
+                               lx_colorimetry *out)
 {
+    LX__NEED_CTX(ctx);
     if (!b || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch and output are required");
     if (obs != LX_OBSERVER_2 && obs != LX_OBSERVER_10)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "observer must be 2 or 10 degrees, not %d", (int)obs);
@@ -59,7 +82,16 @@ lx_status lx_batch_colorimetry(lx_ctx *ctx, const lx_batch *b, lx_observer obs, 
     }
     /* below 256 spectra a thread costs more than the CCT solves it takes over */
     int nt = b->n_spectra < 256 ? 1 : lx__threads(opts ? opts->threads : 0, (long)b->n_spectra);
-    job J = {.b = b, .obs = obs, .ints = ints, .out = out};
+    job J = {.b = b, .obs = obs, .lo_K = 1000.0, .hi_K = 100000.0, .ints = ints, .out = out};
+    /* the range ends through the grid's own sampling (the batch sums at the grid's step, the CIE 015
+     * rule), as lx_spd_colorimetry takes them: a blackbody at an end is in the range */
+    double *grid = malloc(b->n_lambda * sizeof *grid);
+    if (grid) {
+        for (size_t k = 0; k < b->n_lambda; k++) grid[k] = b->start_nm + (double)k * b->step_nm;
+        lx_spd g = {.n = b->n_lambda, .lambda_nm = grid, .value = grid, .name = "grid"};
+        lx__cct_range_ends(ctx, &g, obs, LX_METHOD_CIE15, &J.lo_K, &J.hi_K);
+        free(grid);
+    }
     lx__parallel_for(ctx, nt, (long)b->n_spectra, work, &J);
     free(ints);
     for (int t = 0; t < nt; t++)

@@ -3,6 +3,7 @@
  * chunk by chunk (lx_batch_table_stream, lx_batch_table_integrate_file); lines of short decimals by
  * the AVX-512 line parser of csv_vector.c, others by a SWAR number parser and lx__parse_double
  * (all exact, as strtod). */
+#define _DEFAULT_SOURCE /* madvise (MADV_DONTNEED): the streamed text read so far leaves memory */
 #include "spectral/spectral_private.h"
 
 #include <errno.h>
@@ -43,6 +44,21 @@ static int is_skip_line(const char *s, const char *e)
 {
     while (s < e && (*s == ' ' || *s == '\t' || *s == '\r')) s++;
     return s == e || *s == '#';
+}
+
+/* The end of the line at s (its '\n', or end), or NULL when it is longer than LX__BATCH_LINE_MAX
+ * bytes (without its '\n'): the search never looks further than that. */
+static const char *line_end_bounded(const char *s, const char *end)
+{
+    size_t room = (size_t)(end - s);
+    const char *nl = memchr(s, '\n', room > LX__BATCH_LINE_MAX ? LX__BATCH_LINE_MAX + 1 : room);
+    return nl ? nl : room > LX__BATCH_LINE_MAX ? NULL : end;
+}
+
+static lx_status line_too_long(lx_ctx *ctx, const char *file, long line)
+{
+    return lx__error(ctx, LX_EPARSE, file, line, "line longer than %zu MB, the longest line of a batch CSV file",
+                     LX__BATCH_LINE_MAX >> 20);
 }
 
 static void *count_part(void *arg)
@@ -309,8 +325,8 @@ static lx_status read_header(lx_ctx *ctx, const char *file, const char *text, si
     long line = 1;
     const char *hs = NULL, *he = NULL;
     while (s < end) { /* the header: the first line that is not blank or a comment */
-        const char *nl = memchr(s, '\n', (size_t)(end - s));
-        const char *le = nl ? nl : end;
+        const char *le = line_end_bounded(s, end), *nl = le && le < end ? le : NULL;
+        if (!le) return line_too_long(ctx, file, line);
         if (!is_skip_line(s, le)) {
             hs = s;
             he = le > s && le[-1] == '\r' ? le - 1 : le;
@@ -381,8 +397,10 @@ static lx_status read_header(lx_ctx *ctx, const char *file, const char *text, si
 lx_status lx_batch_table_read_mem(lx_ctx *ctx, const char *file, const char *text, size_t len, lx_dtype dtype,
                                   int threads, lx_batch_table **out)
 {
+    LX__NEED_CTX(ctx);
     if (!text || !out) return lx__error(ctx, LX_EINVAL, file, 0, "batch csv: NULL argument");
     *out = NULL;
+    if (dtype != LX_F32 && dtype != LX_F64) return lx__error(ctx, LX_EINVAL, file, 0, "batch csv: unknown dtype");
     csv_header H;
     lx_status hst = read_header(ctx, file, text, len, &H);
     if (hst) return hst;
@@ -476,43 +494,37 @@ typedef struct text_file {
     char *buf;   /* read, or NULL */
 } text_file;
 
-static lx_status text_open(lx_ctx *ctx, const char *path, text_file *tf)
+static void text_close(text_file *tf);
+
+/* Regular files are mapped: whole (lx_batch_table_read, `whole` = 1) within the spectrum-file
+ * size limit, streamed at any size. Standard input, pipes, FIFOs and devices are read by
+ * lx__read_all under that limit, so memory stays bounded whatever they deliver. */
+static lx_status text_open(lx_ctx *ctx, const char *path, int whole, text_file *tf)
 {
     memset(tf, 0, sizeof *tf);
-    FILE *f = NULL;
-    lx_status ost = lx__open_read(ctx, path, &f);
-    if (ost) return ost;
     struct stat sb;
-    int have_stat = f != stdin && fstat(fileno(f), &sb) == 0;
-    if (have_stat && S_ISREG(sb.st_mode) && sb.st_size > 0) {
-        void *m = mmap(NULL, (size_t)sb.st_size, PROT_READ, MAP_PRIVATE, fileno(f), 0);
+    if (strcmp(path, "-") != 0 && stat(path, &sb) == 0 && S_ISREG(sb.st_mode) && sb.st_size > 0) {
+        lx_status st = whole ? lx__input_size_check(ctx, path, LX_INPUT_SPECTRUM, (unsigned long long)sb.st_size) : LX_OK;
+        FILE *f = NULL;
+        if (!st) st = lx__open_read(ctx, path, &f);
+        if (st) return st;
+        void *m = fstat(fileno(f), &sb) == 0 && sb.st_size > 0
+                      ? mmap(NULL, (size_t)sb.st_size, PROT_READ, MAP_PRIVATE, fileno(f), 0)
+                      : MAP_FAILED;
+        fclose(f);
         if (m != MAP_FAILED) {
             posix_madvise(m, (size_t)sb.st_size, POSIX_MADV_SEQUENTIAL);
-            fclose(f);
             tf->map = m;
             tf->text = m;
             tf->len = (size_t)sb.st_size;
-            return LX_OK;
+            if ((st = lx__text_check(ctx, path, tf->text, tf->len))) text_close(tf);
+            return st;
         }
     }
-    size_t cap = have_stat && sb.st_size > 0 ? (size_t)sb.st_size + 1 : 1 << 20;
-    size_t len = 0, got;
-    char *buf = malloc(cap);
-    while (buf && (got = fread(buf + len, 1, cap - len, f)) > 0) {
-        len += got;
-        if (len == cap) {
-            char *b = realloc(buf, cap *= 2);
-            if (!b) free(buf);
-            buf = b;
-        }
-    }
-    int rerr = ferror(f);
-    if (f != stdin) fclose(f);
-    if (!buf) return lx__error(ctx, LX_ENOMEM, path, 0, "out of memory reading the file");
-    if (rerr) {
-        free(buf);
-        return lx__error(ctx, LX_EIO, path, 0, "read error");
-    }
+    char *buf = NULL;
+    size_t len = 0;
+    lx_status st = lx__read_all(ctx, path, LX_INPUT_SPECTRUM, &buf, &len);
+    if (st) return st;
     tf->buf = buf;
     tf->text = buf;
     tf->len = len;
@@ -527,9 +539,11 @@ static void text_close(text_file *tf)
 
 lx_status lx_batch_table_read(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads, lx_batch_table **out)
 {
+    LX__NEED_CTX(ctx);
     if (!path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch csv: NULL argument");
+    *out = NULL;
     text_file tf;
-    lx_status st = text_open(ctx, path, &tf);
+    lx_status st = text_open(ctx, path, 1, &tf);
     if (st) return st;
     st = lx_batch_table_read_mem(ctx, path, tf.text, tf.len, dtype, threads, out);
     text_close(&tf);
@@ -564,10 +578,11 @@ static void parse_set(void *arg, int t)
 lx_status lx_batch_table_stream(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads, lx_batch_chunk_fn fn,
                                 void *user)
 {
+    LX__NEED_CTX(ctx);
     if (!path || !fn) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch csv: NULL argument");
     if (dtype != LX_F32 && dtype != LX_F64) return lx__error(ctx, LX_EINVAL, path, 0, "batch csv: unknown dtype");
     text_file tf;
-    lx_status st = text_open(ctx, path, &tf);
+    lx_status st = text_open(ctx, path, 0, &tf);
     if (st) return st;
     csv_header H;
     if ((st = read_header(ctx, path, tf.text, tf.len, &H))) {
@@ -576,7 +591,10 @@ lx_status lx_batch_table_stream(lx_ctx *ctx, const char *path, lx_dtype dtype, i
     }
     int T = lx__threads(threads, 0);
     size_t n = H.n, es = dtype == LX_F32 ? sizeof(float) : sizeof(double);
-    const char *end = tf.text + tf.len, *pos = H.body;
+    /* end: where cutting stops (moved back to a line longer than LX__BATCH_LINE_MAX, whose
+     * number is reported once every row before it was handed on); lim: the end of the text */
+    const char *lim = tf.text + tf.len, *end = lim, *pos = H.body, *too_long = NULL;
+    const char *released = tf.text; /* mapped text before this has been handed back (madvise) */
     /* the table parse_part reads its grid and dtype from */
     lx_batch_table tmpl = {.batch = {.n_lambda = n, .start_nm = H.start, .step_nm = H.step, .dtype = dtype}};
     part_set *sets = calloc(2, sizeof *sets);
@@ -593,11 +611,22 @@ lx_status lx_batch_table_stream(lx_ctx *ctx, const char *path, lx_dtype dtype, i
         S->first_line = next_line;
         lx__team team = {.started = 0};
         int max_parts = STREAM_PARTS_PER_THREAD * T < 64 ? STREAM_PARTS_PER_THREAD * T : 64;
-        while (pos < end && S->count < max_parts) { /* cut the next chunk into parts at line boundaries */
+        const char *set_start = pos;
+        /* cut the next chunk into parts at line boundaries (a set holds about max_parts parts'
+         * worth of text, however long its lines, so memory stays bounded) */
+        while (pos < end && S->count < max_parts && (size_t)(pos - set_start) < (size_t)max_parts * STREAM_PART_BYTES) {
             part *q = &S->p[S->count];
             const char *pe = (size_t)(end - pos) > STREAM_PART_BYTES ? pos + STREAM_PART_BYTES : end;
-            const char *nl = pe < end ? memchr(pe, '\n', (size_t)(end - pe)) : NULL;
-            pe = pe < end ? (nl ? nl + 1 : end) : end;
+            if (pe < end) { /* the end of the line at the cut: the only line of the part that can be long */
+                const char *nl = line_end_bounded(pe, end), *ls = NULL;
+                if (!nl || (size_t)(nl - pos) > LX__BATCH_LINE_MAX) {
+                    for (ls = pe; ls > pos && ls[-1] != '\n'; ls--) continue;
+                    if (nl && (size_t)(nl - ls) <= LX__BATCH_LINE_MAX) ls = NULL;
+                }
+                if (ls) too_long = end = pe = ls; /* the rows before it are parsed; then the error */
+                else pe = nl < end ? nl + 1 : end;
+            }
+            if (pe == pos) break;
             /* a row takes at least 2 n - 1 bytes (n one-character values and their separators) */
             size_t cap = (size_t)(pe - pos) / (2 * n - 1 + (n == 1)) + 1;
             if (cap > S->cap[S->count]) {
@@ -611,7 +640,7 @@ lx_status lx_batch_table_stream(lx_ctx *ctx, const char *path, lx_dtype dtype, i
             }
             q->s = pos;
             q->e = pe;
-            q->lim = end;
+            q->lim = lim;
             q->t = &tmpl;
             q->sep = H.sep;
             q->named = H.named;
@@ -636,6 +665,14 @@ lx_status lx_batch_table_stream(lx_ctx *ctx, const char *path, lx_dtype dtype, i
                 row0 += q->rows_done;
             }
             have_prev = 0;
+            /* its text is no longer needed: resident memory stays a few chunks, not the file */
+            const char *done = P->count ? P->p[P->count - 1].e : released;
+            size_t page = (size_t)sysconf(_SC_PAGESIZE);
+            size_t drop = page ? ((size_t)(done - released) / page) * page : 0;
+            if (tf.map && drop) {
+                madvise((void *)released, drop, MADV_DONTNEED);
+                released += drop;
+            }
         }
         lx__team_join(&team);
         parse_set(S, 0); /* parts no thread took (none started, say) */
@@ -650,6 +687,7 @@ lx_status lx_batch_table_stream(lx_ctx *ctx, const char *path, lx_dtype dtype, i
         have_prev = S->count > 0;
         cur ^= 1;
     }
+    if (!st && too_long) st = line_too_long(ctx, path, next_line); /* every row before it went to fn */
     for (int k = 0; k < 2; k++)
         for (int i = 0; i < 64; i++) {
             free(sets[k].p[i].values);
@@ -686,10 +724,14 @@ static lx_status integ_chunk(void *user, const lx_batch_table *chunk, size_t row
     return lx_batch_integrate(I->ctx, &chunk->batch, I->fns, I->k, &o, I->out + row0 * I->k);
 }
 
+void lx_batch_results_free(double *results) { free(results); }
+
 lx_status lx_batch_table_integrate_file(lx_ctx *ctx, const char *path, const lx_function *fns, size_t k, int threads,
                                         double **out, size_t *n_spectra)
 {
+    LX__NEED_CTX(ctx);
     if (!path || !fns || !k || !out || !n_spectra) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch csv: NULL argument");
+    *out = NULL;
     integ I = {ctx, fns, k, 0, 0, NULL};
     /* double values: the same numbers strtod gives, summed in double */
     lx_status st = lx_batch_table_stream(ctx, path, LX_F64, threads, integ_chunk, &I);

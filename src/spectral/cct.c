@@ -108,6 +108,7 @@ static lx_status locus(lx_ctx *ctx, lx_observer obs, lx__locus **out, cmf3 *c)
 
 lx_status lx_planck_uv(lx_ctx *ctx, lx_observer obs, double T, double *u, double *v)
 {
+    LX__NEED_CTX(ctx);
     cmf3 c;
     lx_status st = get_cmf(ctx, obs, &c);
     if (st != LX_OK) return st;
@@ -166,6 +167,7 @@ static double hermite_guess(const lx__locus *L, int k, double u, double v)
 
 lx_status lx_cct_from_uv(lx_ctx *ctx, lx_observer obs, double u, double v, double *cct_K, double *duv)
 {
+    LX__NEED_CTX(ctx);
     if (cct_K) *cct_K = NAN;
     if (duv) *duv = NAN;
     if (!isfinite(u) || !isfinite(v)) return lx__error(ctx, LX_ERANGE, NULL, 0, "chromaticity is not finite");
@@ -246,6 +248,7 @@ lx_status lx_cct_from_uv(lx_ctx *ctx, lx_observer obs, double u, double v, doubl
 
 lx_status lx_cct_from_xy(lx_ctx *ctx, lx_observer obs, double x, double y, double *cct_K, double *duv)
 {
+    LX__NEED_CTX(ctx);
     double d = -2 * x + 12 * y + 3;
     if (!(d != 0) || !isfinite(d)) {
         if (cct_K) *cct_K = NAN;

@@ -14,6 +14,9 @@ lx_status lx__spd_set_build(lx_ctx *ctx, const char *file, size_t nlam, const do
                             const double *val, size_t ss, size_t ks, char *const *names,
                             const long *lines, lx_spd_set **out);
 
+/* The largest |value| of spd. */
+double lx__spd_max_abs(const lx_spd *spd);
+
 /* CGATS / Argyll spectral files (cgats.c): detection by content, and the reader. */
 int lx__cgats_detect(const char *text, size_t len);
 lx_status lx__cgats_read(lx_ctx *ctx, const char *file, const char *text, size_t len, lx_spd_set **out);
@@ -32,5 +35,14 @@ lx_status lx__batch_weights(lx_ctx *ctx, const lx_function *fns, size_t k, doubl
 int lx__csv_fast_line(const char *q, const char *stop, int whole, char sep, size_t n, int f32, void *dst,
                       const char **line_end);
 int lx__csv_have_fast_line(void);
+
+/* Colorimetry from integrals with the CCT range [lo_K, hi_K] (inclusive to 1e-9 relative);
+ * *solved_K (may be NULL) the solved CCT when |Duv| <= 0.05 whatever the range, else NaN
+ * (colorimetry.c). */
+lx_status lx__colorimetry_range(lx_ctx *ctx, lx_observer obs, const double xyz[3], double vprime, double radiant,
+                                double lo_K, double hi_K, lx_colorimetry *out, double *solved_K);
+/* The ends of 1000-100000 K as Planckian radiators at those temperatures show them when sampled at
+ * spd's wavelengths and integrated by method (never inside the nominal range). */
+void lx__cct_range_ends(lx_ctx *ctx, const lx_spd *spd, lx_observer obs, lx_method method, double *lo_K, double *hi_K);
 
 #endif /* LX_SPECTRAL_PRIVATE_H */

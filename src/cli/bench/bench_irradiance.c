@@ -119,7 +119,7 @@ int cli_bench_irradiance(FILE *out)
         if (!m) break;
         char path[256];
         snprintf(path, sizeof path, "%s/sky.exr", tmp);
-        lx_exr_write(ctx, path, m, NULL);
+        lx_envmap_write_exr(ctx, path, m, NULL);
         double t[5], tread, tsh9, tfast, tbrute = NAN;
         for (int k = 0; k < 5; k++) {
             double t0 = now_s();
@@ -129,7 +129,7 @@ int cli_bench_irradiance(FILE *out)
         }
         qsort(t, 5, sizeof *t, cmp_d);
         tread = t[2];
-        lx_irr_opts o = {0};
+        lx_irr_opts o = {.method = LX_IRR_SH9};
         for (int k = 0; k < 5; k++) {
             double t0 = now_s();
             lx_irradiance_map(ctx, r, 0, 0, &o, &e);
