@@ -1820,6 +1820,12 @@ typedef struct lx_counters {
     unsigned long long nearfield_probes;       /* pairs whose point-model error was estimated (13 point
                                                 * evaluations each: the near-field decision) */
     unsigned long long closed_form_evaluations;/* disk and rectangle luminaires evaluated in closed form */
+    /* rooms: occlusion and interreflection (README "Rooms") */
+    unsigned long long visibility_tests;       /* segments tested against surfaces and obstructions (ray casts) */
+    unsigned long long form_factors;           /* point-to-polygon form factors (patch matrix and gathers) */
+    unsigned long long radiosity_patches;      /* patches of the interreflection solves */
+    unsigned long long radiosity_shots;        /* patch shots of the progressive refinement */
+    unsigned long long gather_points;          /* receiver points and element centres gathered */
     unsigned long long reserved[2];            /* zero: room for later counters (ABI policy) */
 } lx_counters;
 
@@ -1838,11 +1844,14 @@ typedef enum lx_effect {
     LX_EFFECT_SPECTRAL,           /* spectral sums: CCT and melanopic EDI at receivers */
     LX_EFFECT_ENVIRONMENT,        /* sky and ground irradiance */
     LX_EFFECT_OPENCL,             /* grid work on an OpenCL device */
+    LX_EFFECT_OCCLUSION,          /* surfaces and obstructions that cut luminaire-receiver segments */
+    LX_EFFECT_INTERREFLECTION,    /* diffuse interreflection between the faces of rooms, surfaces, obstructions */
     LX_EFFECT_COUNT
 } lx_effect;
 
 /** "inverse_square", "cosine", "spot_falloff", "goniometric", "near_field", "spectral",
- * "environment", "opencl" (static storage; NULL for a bad value). Thread-safe. */
+ * "environment", "opencl", "occlusion", "interreflection" (static storage; NULL for a bad value).
+ * Thread-safe. */
 LX_API const char *lx_effect_name(lx_effect e);
 
 /** Luminaire kinds of a scene. */
@@ -1926,6 +1935,44 @@ typedef struct lx_scene_observer {
 /** Forced state of an effect in [effects]. */
 typedef enum lx_effect_force { LX_FORCE_AUTO = 0, LX_FORCE_ON = 1, LX_FORCE_OFF = 2 } lx_effect_force;
 
+/** The faces of a room, in this order (the index of lx_scene_room.reflectance; `--surfaces` rows). */
+typedef enum lx_room_face {
+    LX_ROOM_FLOOR = 0, LX_ROOM_CEILING, LX_ROOM_WALL_XMIN, LX_ROOM_WALL_XMAX, LX_ROOM_WALL_YMIN, LX_ROOM_WALL_YMAX
+} lx_room_face;
+
+/** A room: an axis-aligned box whose six faces reflect diffusely on their inside. The luminaires
+ * and receivers inside it see its inside only (no light passes its walls). */
+typedef struct lx_scene_room {
+    char *name;
+    const char *file;         /* the scene file and line of its section header */
+    long line;
+    double min_m[3], max_m[3];
+    double reflectance[6];    /* per lx_room_face, 0 <= rho < 1 */
+    long long reserved[4];    /* zero: room for later fields (an element of lx_scene.room: ABI policy) */
+} lx_scene_room;
+
+/** A surface: the planar parallelogram corner + s edge1 + t edge2 (0 <= s, t <= 1), Lambertian on
+ * both sides with one reflectance; it blocks light. Its front is the side edge1 x edge2 points to. */
+typedef struct lx_scene_surface {
+    char *name;
+    const char *file;
+    long line;
+    double corner_m[3], edge1_m[3], edge2_m[3];
+    double reflectance;       /* 0 <= rho < 1 */
+    long long reserved[4];    /* zero: room for later fields */
+} lx_scene_surface;
+
+/** An obstruction: an axis-aligned box that blocks light; its six faces reflect diffusely. */
+typedef struct lx_scene_obstruction {
+    char *name;
+    const char *file;
+    long line;
+    double min_m[3], max_m[3];
+    double reflectance;       /* 0 <= rho < 1 */
+    long long reserved[4];    /* zero: room for later fields */
+} lx_scene_obstruction;
+
+/** A scene read from a file. Owns everything it points to. Read-only after reading. */
 /** A scene read from a file. Owns everything it points to. Read-only after reading; freed with
  * lx_scene_free (a struct only the library allocates: ABI policy). */
 typedef struct lx_scene {
@@ -1968,6 +2015,17 @@ typedef struct lx_scene {
     long sun_line;
     size_t n_obs;                         /* [observer NAME] sections */
     lx_scene_observer *obs;
+    /* rooms, surfaces and obstructions (README "Rooms") */
+    size_t n_room, n_surf, n_obst;
+    lx_scene_room *room;
+    lx_scene_surface *surf;
+    lx_scene_obstruction *obst;
+    double interreflection_tol;           /* [scene] interreflection_tolerance: relative, on every receiver's
+                                           * total illuminance (default 1e-3) */
+    double patch_size_m;                  /* [scene] patch_size: the radiosity patch size (0: the planner chooses) */
+    int patch_refinement;                 /* [scene] patch_refinement: 1 (default) splits patches near luminaires,
+                                           * shadow edges and receivers; 0 keeps them uniform */
+    long interreflection_tol_line, patch_size_line; /* their lines (0 when not given) */
 } lx_scene;
 
 /** Reads a scene file ('-' is standard input); includes are resolved relative to the including
@@ -1982,6 +2040,30 @@ LX_API lx_status lx_scene_read_mem(lx_ctx *ctx, const char *name, const char *te
 /** Frees a scene. Accepts NULL. */
 LX_API void lx_scene_free(lx_scene *scene);
 
+/** The planner's interreflection choices (all zero when interreflection is off). */
+typedef struct lx_scene_room_plan {
+    double flux_lm;            /* luminaire flux the reflecting faces can receive (in rooms, or in the open
+                                * with reflecting surfaces) */
+    double area_m2;            /* S: the exposed reflecting area */
+    double mean_reflectance;   /* the area-weighted reflectance rho */
+    double indirect_est_lx;    /* the integrating-sphere estimate rho Phi / (S (1 - rho)) */
+    double share_est;          /* the largest estimated indirect share of a receiver point's total */
+    double tolerance;          /* interreflection_tolerance */
+    double patch_size_m;       /* chosen (or given by patch_size) */
+    size_t n_patches;          /* the solve's patches */
+    size_t n_elements;         /* the gather's elements: the patches, split where the light varies fast or a
+                                * receiver is close (the final gather resolves them) */
+    size_t n_refined;          /* splits the refinement made (near luminaires, shadow edges, receivers) */
+    size_t n_nodes;            /* direct-light quadrature nodes over all elements */
+    double stop_unshot_lm;     /* the solve iterates until the unshot flux is below this */
+    double memory_bytes;       /* what the solve allocates (the form-factor matrix dominates) */
+    double memory_limit_bytes; /* the bound (1 GiB; LX_ROOM_MEMORY_MB overrides) */
+    int backend;               /* lx_backend for the form factors and gathers (AUTO: the size decides) */
+    void *mesh;                /* the patches, faces and occluders (internal; owned) */
+    long long reserved[4];     /* zero: room for later fields (embedded in lx_scene_plan: ABI policy) */
+} lx_scene_room_plan;
+
+/** The planner's decision. */
 /** Why a luminaire-receiver pair takes its path (lx_scene_plan.near_why). */
 typedef enum lx_near_why {
     LX_NEAR_NONE = 0,    /* point model: the luminaire has no luminous area */
@@ -2023,6 +2105,12 @@ typedef struct lx_scene_plan {
                                        * the point's illuminance (NaN where it was not estimated); owned */
     unsigned char *near_why;          /* n_lum x n_points: an lx_near_why; owned */
     lx_counters planning;             /* the work the planner did itself (the near-field probes) */
+    /* occlusion and interreflection (README "Rooms") */
+    unsigned char *occ;               /* n_lum x n_points (luminaire-major): 0 no surface or obstruction can cut
+                                       * the pair (bounding-volume test), 1 visibility-tested, 2 blocked (the pair
+                                       * is in different rooms); owned; NULL when occlusion is off */
+    size_t n_occ_tested, n_occ_blocked;
+    lx_scene_room_plan room;
 } lx_scene_plan;
 
 /** Plans a scene: which effects, and which pairs take the near-field path. backend: AUTO lets
@@ -2035,18 +2123,55 @@ typedef struct lx_scene_plan {
 LX_API lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *scene, lx_backend backend, lx_scene_plan **out);
 LX_API void lx_scene_plan_free(lx_scene_plan *plan);
 
+/** One face's results (`luxcalc scene --surfaces`): area-weighted averages over its exposed area
+ * (the flux it receives divided by its area). */
+typedef struct lx_scene_surface_result {
+    char *name;                 /* ROOM.floor, ROOM.ceiling, ROOM.wall_xmin ... ROOM.wall_ymax,
+                                 * SURFACE.front, SURFACE.back, OBSTRUCTION.bottom, .top, .xmin ... .ymax */
+    double area_m2;             /* exposed area (less what an obstruction standing on it covers) */
+    double direct_lx, indirect_lx, E_lx;
+    double L_cd_m2;             /* rho E / pi */
+    double reflectance;
+    long long reserved[4];      /* zero: room for later results (an element of lx_scene_result.surfaces) */
+} lx_scene_surface_result;
+
+/** What the interreflection solve did. */
+typedef struct lx_scene_room_stats {
+    size_t n_patches;
+    unsigned long long sweeps;  /* progressive-refinement sweeps over the patches */
+    unsigned long long shots;   /* patch shots */
+    double direct_lm;           /* flux the faces received directly from the sources */
+    double indirect_lm;         /* flux they received after one or more reflections */
+    double absorbed_lm;         /* (1 - rho) x received, over every face */
+    double escaped_lm;          /* reflected flux that reached no face (open scenes) */
+    double unshot_lm;           /* reflected flux not yet distributed when the solve stopped */
+    double indirect_share;      /* measured: sum of indirect / sum of total over the receiver points */
+    double gather_check;        /* rms relative difference between each patch's indirect illuminance in the
+                                 * solve and the exact-form-factor gather at its centre (discretisation) */
+    int backend;                /* lx_backend the form factors and gathers ran on */
+    double seconds_ff, seconds_solve, seconds_gather;
+    long long reserved[4];      /* zero: room for later results (embedded in lx_scene_result) */
+} lx_scene_room_stats;
+
+/** Results at every receiver point (receiver order, then point order). */
 /** Results at every receiver point (receiver order, then point order); made by lx_scene_eval,
  * freed with lx_scene_result_free (a struct only the library allocates). */
 typedef struct lx_scene_result {
     size_t n_points, n_lum;
     size_t *first;              /* n_rec + 1: receiver r has points first[r] .. first[r+1]-1 */
     double *E_lx;               /* n_points: total illuminance */
-    double *contrib_lx;         /* n_points x (n_lum + 1): each luminaire's part, last the sky's */
+    double *contrib_lx;         /* n_points x (n_lum + 1): each luminaire's part, last the sky's (direct
+                                 * light: with interreflection on, the reflected part is indirect_lx) */
     double *L_cd_m2;            /* n_points: rho E / pi (NaN without a reflectance or not asked) */
     double *cct_K, *duv;        /* n_points (NaN when spectral is off or CCT undefined) */
     double *melanopic_edi_lx;   /* n_points (NaN when spectral is off) */
     lx_counters work;           /* the work this evaluation did */
     double seconds;             /* wall-clock time of the evaluation */
+    /* interreflection (NULL and zero when it is off): E_lx = direct_lx + indirect_lx */
+    double *direct_lx, *indirect_lx;   /* n_points */
+    size_t n_surfaces;                 /* room faces, surface sides, obstruction faces */
+    lx_scene_surface_result *surfaces;
+    lx_scene_room_stats room;
 } lx_scene_result;
 
 /** Options of lx_scene_eval (zero-initialise for defaults: everything; ABI policy: reserved stays
