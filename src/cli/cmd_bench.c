@@ -43,7 +43,7 @@ static const struct {
     {"metrics", bench_metrics, "CRI, TM-30 and alpha-opic per second over 1e5 spectra vs colour-science, luxpy"},
     {"grid", bench_grid, "illuminance grid: 1e6 points x 10 luminaires, CPU and OpenCL vs numpy"},
     /* ---- bench topics (one line each: irradiance, grid, accuracy) ---- */
-    {"accuracy", bench_accuracy, "error against a reference vs time of every method: spectra, radiance fields, lighting"},
+    {"accuracy", bench_accuracy, "error against a reference vs time of every method: spectra, radiance fields, lighting, near field"},
     {"irradiance", bench_irradiance, "irradiance maps: SH9, exact (fast), brute force vs numpy, 512x256..4096x2048"},
     {NULL, NULL, NULL},
 };
