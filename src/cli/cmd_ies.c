@@ -78,6 +78,70 @@ static const char *opening(const lx_luminaire *l, double *diameter)
     return "other";
 }
 
+/* the summary of every FILE (argv[first] ...): one row each, a bad file reported and skipped */
+static int summaries(lx_ctx *ctx, int first, int argc, char **argv, cli_format fmt, const char *outpath)
+{
+    int rc = CLI_OK;
+    static const char *const names[] = {"file", "format", "lumens", "max_intensity_cd", "beam_angle_deg", "field_angle_deg",
+                                        "symmetry", "rated_lumens", "stated_lumens", "lumens_diff", "photometric_type",
+                                        "planes", "angles", "beam_angle_c90_deg", "field_angle_c90_deg",
+                                        "downward_fraction", "shape", "width_m", "length_m", "height_m", "diameter_m",
+                                        "lor", "input_watts", "efficacy_lm_per_W", "manufacturer", "catalog"};
+    static const char *const units[] = {NULL, NULL, "lm", "cd", "deg", "deg", NULL, "lm", "lm", NULL, NULL, NULL, NULL,
+                                        "deg", "deg", NULL, NULL, "m", "m", "m", "m", NULL, "W", "lm/W", NULL, NULL};
+    cli_table *t = cli_table_new(26, names, units);
+    if (!t) return cli_error("ies", "out of memory"), CLI_RUNTIME;
+    for (int i = first; i < argc; i++) {
+        lx_luminaire *l = NULL;
+        lx_lum_summary s;
+        lx_status st = lx_luminaire_read_file(ctx, argv[i], &l);
+        if (!st) st = lx_luminaire_summary(ctx, l, &s);
+        if (st) {
+            int r = cli_fail("ies", ctx, st);
+            if (r > rc) rc = r;
+            lx_luminaire_free(l);
+            continue;
+        }
+        double rated = isfinite(l->lamp_lumens) ? l->lamp_lumens : l->stated_lumens;
+        cli_table_str(t, argv[i]);
+        cli_table_str(t, lx_lum_format_name(l->format));
+        cli_table_num(t, s.lumens);
+        cli_table_num(t, s.max_intensity_cd);
+        cli_table_num(t, s.beam_angle_deg);
+        cli_table_num(t, s.field_angle_deg);
+        cli_table_str(t, lx_lum_symmetry_name(l->symmetry));
+        cli_table_num(t, rated);
+        cli_table_num(t, l->stated_lumens);
+        cli_table_num(t, isfinite(l->stated_lumens) ? s.lumens / l->stated_lumens - 1 : NAN);
+        cli_table_str(t, l->photometric_type == 1 ? "C" : "B");
+        cli_table_int(t, (long long)l->n_h);
+        cli_table_int(t, (long long)l->n_v);
+        cli_table_num(t, s.beam_angle_c90_deg);
+        cli_table_num(t, s.field_angle_c90_deg);
+        cli_table_num(t, s.downward_fraction);
+        double dia = NAN;
+        cli_table_str(t, opening(l, &dia));
+        cli_table_num(t, isfinite(dia) ? dia : fabs(l->width_m)); /* round: its diameter both ways */
+        cli_table_num(t, isfinite(dia) ? dia : fabs(l->length_m));
+        cli_table_num(t, fabs(l->height_m));
+        cli_table_num(t, dia);
+        /* the light output ratio of relative photometry: the luminaire's flux over its lamps' */
+        cli_table_num(t, !l->absolute && rated > 0 ? s.lumens / rated : NAN);
+        double watts = l->input_watts > 0 ? l->input_watts : NAN;
+        cli_table_num(t, watts);
+        cli_table_num(t, s.lumens / watts);
+        cli_table_str(t, l->manufacturer ? l->manufacturer : "");
+        cli_table_str(t, l->catalog ? l->catalog : "");
+        lx_luminaire_free(l);
+    }
+    if (cli_table_rows(t) > 0) {
+        int r = lt_write("ies", t, fmt, outpath);
+        if (r > rc) rc = r;
+    }
+    cli_table_free(t);
+    return rc;
+}
+
 int cmd_ies(int argc, char **argv)
 {
     static const struct option opts[] = {
@@ -202,66 +266,7 @@ int cmd_ies(int argc, char **argv)
         lx_luminaire_free(l);
         goto done;
     }
-    static const char *const names[] = {"file", "format", "lumens", "max_intensity_cd", "beam_angle_deg", "field_angle_deg",
-                                        "symmetry", "rated_lumens", "stated_lumens", "lumens_diff", "photometric_type",
-                                        "planes", "angles", "beam_angle_c90_deg", "field_angle_c90_deg",
-                                        "downward_fraction", "shape", "width_m", "length_m", "height_m", "diameter_m",
-                                        "lor", "input_watts", "efficacy_lm_per_W", "manufacturer", "catalog"};
-    static const char *const units[] = {NULL, NULL, "lm", "cd", "deg", "deg", NULL, "lm", "lm", NULL, NULL, NULL, NULL,
-                                        "deg", "deg", NULL, NULL, "m", "m", "m", "m", NULL, "W", "lm/W", NULL, NULL};
-    cli_table *t = cli_table_new(26, names, units);
-    if (!t) {
-        rc = CLI_RUNTIME;
-        goto done;
-    }
-    for (int i = optind; i < argc; i++) {
-        lx_luminaire *l = NULL;
-        lx_lum_summary s;
-        lx_status st = lx_luminaire_read_file(ctx, argv[i], &l);
-        if (!st) st = lx_luminaire_summary(ctx, l, &s);
-        if (st) {
-            int r = cli_fail("ies", ctx, st);
-            if (r > rc) rc = r;
-            lx_luminaire_free(l);
-            continue;
-        }
-        double rated = isfinite(l->lamp_lumens) ? l->lamp_lumens : l->stated_lumens;
-        cli_table_str(t, argv[i]);
-        cli_table_str(t, lx_lum_format_name(l->format));
-        cli_table_num(t, s.lumens);
-        cli_table_num(t, s.max_intensity_cd);
-        cli_table_num(t, s.beam_angle_deg);
-        cli_table_num(t, s.field_angle_deg);
-        cli_table_str(t, lx_lum_symmetry_name(l->symmetry));
-        cli_table_num(t, rated);
-        cli_table_num(t, l->stated_lumens);
-        cli_table_num(t, isfinite(l->stated_lumens) ? s.lumens / l->stated_lumens - 1 : NAN);
-        cli_table_str(t, l->photometric_type == 1 ? "C" : "B");
-        cli_table_int(t, (long long)l->n_h);
-        cli_table_int(t, (long long)l->n_v);
-        cli_table_num(t, s.beam_angle_c90_deg);
-        cli_table_num(t, s.field_angle_c90_deg);
-        cli_table_num(t, s.downward_fraction);
-        double dia = NAN;
-        cli_table_str(t, opening(l, &dia));
-        cli_table_num(t, isfinite(dia) ? dia : fabs(l->width_m)); /* round: its diameter both ways */
-        cli_table_num(t, isfinite(dia) ? dia : fabs(l->length_m));
-        cli_table_num(t, fabs(l->height_m));
-        cli_table_num(t, dia);
-        /* the light output ratio of relative photometry: the luminaire's flux over its lamps' */
-        cli_table_num(t, !l->absolute && rated > 0 ? s.lumens / rated : NAN);
-        double watts = l->input_watts > 0 ? l->input_watts : NAN;
-        cli_table_num(t, watts);
-        cli_table_num(t, s.lumens / watts);
-        cli_table_str(t, l->manufacturer ? l->manufacturer : "");
-        cli_table_str(t, l->catalog ? l->catalog : "");
-        lx_luminaire_free(l);
-    }
-    if (cli_table_rows(t) > 0) {
-        int r = lt_write("ies", t, fmt, outpath);
-        if (r > rc) rc = r;
-    }
-    cli_table_free(t);
+    rc = summaries(ctx, optind, argc, argv, fmt, outpath);
 done:
     lx_ctx_destroy(ctx);
     return rc;

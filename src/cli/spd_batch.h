@@ -3,6 +3,7 @@
 #define LX_SPD_BATCH_H
 
 #include "cli.h"
+#include "spd_metrics.h"
 
 /* A file with at least this many spectra on one uniform grid takes the batch path even without
  * --backend (results agree with the per-spectrum path to 1e-9 relative, not bit for bit). */
@@ -19,6 +20,10 @@ typedef struct cli_spd_batch {
     void (*flush)(void *arg);   /* called after each chunk's rows were added */
     void *flush_arg;
     size_t rejected;            /* spectra reported on stderr instead of a row (exit status 2) */
+    const cli_metrics *metrics; /* the --metrics selection (batchable groups only), NULL for none */
+    const char *unit;           /* the current file's unit name (the metrics' units) */
+    const lx_vendor_results *vendor; /* the current file's instrument results, NULL for none */
+    const char *instrument;     /* the current file's instrument JSON cell, NULL for null */
 } cli_spd_batch;
 
 /* 1 when every spectrum of set shares one uniform grid that the method integrates with cie15. */
@@ -32,7 +37,9 @@ lx_status cli_spd_batch_set(cli_spd_batch *B, const lx_spd_set *set);
  * method, fewer than CLI_SPD_BATCH_MIN spectra without --backend, or any error: the general
  * reader then reports the file's first problem, FILE:LINE, exactly as before), and -EXIT when
  * the file failed and is larger than the general reader's size limit: the error was printed
- * (FILE:LINE) and EXIT is its exit status. */
+ * (FILE:LINE) and EXIT is its exit status. A file larger than that limit is printed chunk by
+ * chunk as it is computed (memory stays a chunk, whatever the number of rows), a spectrum that
+ * fails reported as "FILE: spectrum 'NAME' (data row N): why" and skipped (B->rejected). */
 int cli_spd_batch_file(cli_spd_batch *B, const char *path);
 /* "START:END:STEP" in nm into the grid; 0 on success. */
 int cli_spd_parse_grid(const char *s, double *start, double *step, size_t *n);

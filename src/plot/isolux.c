@@ -19,9 +19,11 @@ typedef struct iso {
     const lx_plane *p;
     const double *E;     /* display units (lx or fc) */
     double len;          /* metres per display length unit */
-    double A0, A1, B0, B1; /* the area drawn, display length units */
+    double A0, A1, B0, B1; /* the view drawn (the area and the luminaires near it), display length units */
+    double fA0, fA1, fB0, fB1; /* the calculation area (the field), display length units */
     double pa0, pa1, pb0, pb1; /* the points' extent, display length units */
-    lx__box area;        /* pixels */
+    lx__box area;        /* the view in pixels */
+    lx__box field;       /* the calculation area in pixels */
     lx__scale scale;
     double level[LX__MAX_LEVELS];
     int nlev, geometric, white;
@@ -77,13 +79,15 @@ static double db_of(const iso *g, double y) { return g->B0 + (g->area.y1 - y) / 
 /* the false-colour field, one value per pixel */
 static lx_status draw_field(lx_ctx *ctx, lx__page *pg, const iso *g)
 {
-    int w = (int)lround(g->area.x1 - g->area.x0), h = (int)lround(g->area.y1 - g->area.y0);
+    const lx__box F = g->field;
+    int w = (int)lround(F.x1 - F.x0), h = (int)lround(F.y1 - F.y0);
+    if (w < 1 || h < 1) return LX_OK;
     double *img = malloc(sizeof(double) * (size_t)w * (size_t)h);
     if (!img) return lx__error(ctx, LX_ENOMEM, NULL, 0, "grid plot: out of memory");
     for (int y = 0; y < h; y++)
         for (int x = 0; x < w; x++)
-            img[(size_t)y * w + x] = value_at(g, da_of(g, g->area.x0 + x + 0.5), db_of(g, g->area.y0 + y + 0.5));
-    lx_status st = lx__page_map(ctx, pg, g->area, img, w, h, &g->scale);
+            img[(size_t)y * w + x] = value_at(g, da_of(g, F.x0 + x + 0.5), db_of(g, F.y0 + y + 0.5));
+    lx_status st = lx__page_map(ctx, pg, F, img, w, h, &g->scale);
     free(img);
     return st;
 }
@@ -116,23 +120,28 @@ static void seg_add(void *arg, double x0, double y0, double x1, double y1)
 static lx_status contours(lx_ctx *ctx, lx__page *pg, const iso *g, seg_list *segs)
 {
     const double step = 2;
-    int gw = (int)floor((g->area.x1 - g->area.x0) / step) + 1, gh = (int)floor((g->area.y1 - g->area.y0) / step) + 1;
+    const lx__box F = g->field;
+    int gw = (int)floor((F.x1 - F.x0) / step) + 1, gh = (int)floor((F.y1 - F.y0) / step) + 1;
     double *v = malloc(sizeof(double) * (size_t)gw * (size_t)gh);
     if (!v) return lx__error(ctx, LX_ENOMEM, NULL, 0, "grid plot: out of memory");
     for (int j = 0; j < gh; j++)
         for (int i = 0; i < gw; i++)
-            v[(size_t)j * gw + i] = value_at(g, da_of(g, g->area.x0 + i * step), db_of(g, g->area.y0 + j * step));
+            v[(size_t)j * gw + i] = value_at(g, da_of(g, F.x0 + i * step), db_of(g, F.y0 + j * step));
     cairo_t *cr = pg->cr;
     for (int k = 0; k < g->nlev; k++) {
-        segs[k] = (seg_list){.ox = g->area.x0, .oy = g->area.y0, .step = step};
+        segs[k] = (seg_list){.ox = F.x0, .oy = F.y0, .step = step};
         lx__contour(v, gw, gh, g->level[k], seg_add, &segs[k]);
         if (segs[k].oom) {
             free(v);
             return lx__error(ctx, LX_ENOMEM, NULL, 0, "grid plot: out of memory");
         }
         unsigned char c[3];
-        if (g->white) lx__falsecolor(lx__scale_t(&g->scale, g->level[k]), c);
-        else memcpy(c, INK, 3);
+        if (g->white) { /* the level's colour, darkened so yellow reads on white */
+            lx__falsecolor(lx__scale_t(&g->scale, g->level[k]), c);
+            for (int i = 0; i < 3; i++) c[i] = (unsigned char)(c[i] * 0.78);
+        } else {
+            memcpy(c, INK, 3);
+        }
         lx__rgb(cr, c, g->white ? 1 : 0.85);
         cairo_set_line_width(cr, g->white ? 1.8 : 1.2);
         for (size_t s = 0; s < segs[k].n; s++) {
@@ -162,7 +171,7 @@ static void level_text(char *buf, size_t cap, const iso *g, int k)
 static void contour_labels(lx__page *pg, const iso *g, const seg_list *segs)
 {
     const lx__font f = {11, 1, {20, 20, 20}, 0};
-    lx__box inside = {g->area.x0 + 2, g->area.y0 + 2, g->area.x1 - 2, g->area.y1 - 2};
+    lx__box inside = {g->field.x0 + 2, g->field.y0 + 2, g->field.x1 - 2, g->field.y1 - 2};
     for (int k = 0; k < g->nlev; k++) {
         const seg_list *s = &segs[k];
         if (s->n == 0) continue;
@@ -288,6 +297,12 @@ static void axes(lx__page *pg, const iso *g)
     cairo_set_line_width(cr, 1);
     cairo_rectangle(cr, A.x0 - 0.5, A.y0 - 0.5, A.x1 - A.x0 + 1, A.y1 - A.y0 + 1);
     cairo_stroke(cr);
+    const lx__box F = g->field; /* the calculation area inside a larger view: its own frame */
+    if (F.x0 > A.x0 + 0.5 || F.y0 > A.y0 + 0.5 || F.x1 < A.x1 - 0.5 || F.y1 < A.y1 - 0.5) {
+        lx__rgb(cr, GREY, 1);
+        cairo_rectangle(cr, F.x0 - 0.5, F.y0 - 0.5, F.x1 - F.x0 + 1, F.y1 - F.y0 + 1);
+        cairo_stroke(cr);
+    }
     double t[64], step;
     lx__box page = {0, 0, pg->w, pg->h};
     int nt = lx__ticks_linear(g->A0, g->A1, (int)fmax(2, (A.x1 - A.x0) / 90), t, 64, &step);
@@ -471,6 +486,22 @@ static lx_status setup(lx_ctx *ctx, iso *g, const lx_plane *p, const double *E_l
     double wa = g->A1 - g->A0, wb = g->B1 - g->B0, w = fmax(wa, wb) > 0 ? fmax(wa, wb) : 1;
     if (!(wa > 0)) g->A0 -= 0.05 * w, g->A1 += 0.05 * w; /* a line of points: a strip */
     if (!(wb > 0)) g->B0 -= 0.05 * w, g->B1 += 0.05 * w;
+    g->fA0 = g->A0, g->fA1 = g->A1, g->fB0 = g->B0, g->fB1 = g->B1;
+    /* the view takes in the luminaires just outside the area (street lights beside a road): those
+     * within half the area's size of it, with a margin */
+    wa = g->A1 - g->A0, wb = g->B1 - g->B0;
+    double pad = 0.03 * fmax(wa, wb);
+    for (size_t k = 0; k < o->n_marks; k++) {
+        double d[3];
+        for (int i = 0; i < 3; i++) d[i] = o->marks[k].pos_m[i] - p->origin_m[i];
+        double a = (d[0] * p->u[0] + d[1] * p->u[1] + d[2] * p->u[2]) / g->len;
+        double b = (d[0] * p->v[0] + d[1] * p->v[1] + d[2] * p->v[2]) / g->len;
+        if (a < g->fA0 - 0.5 * wa || a > g->fA1 + 0.5 * wa || b < g->fB0 - 0.5 * wb || b > g->fB1 + 0.5 * wb) continue;
+        if (a < g->fA0 || a > g->fA1 || b < g->fB0 || b > g->fB1) {
+            g->A0 = fmin(g->A0, a - pad), g->A1 = fmax(g->A1, a + pad);
+            g->B0 = fmin(g->B0, b - pad), g->B1 = fmax(g->B1, b + pad);
+        }
+    }
     g->nlev = lx__levels_125(mn, mx, g->level, LX__MAX_LEVELS, &g->geometric);
     int log = o->scale == LX_PLOT_SCALE_LOG || (o->scale == LX_PLOT_SCALE_AUTO && g->geometric);
     if (log && !(mx > 0)) log = 0;
@@ -495,20 +526,34 @@ lx_status lx__isolux_png(lx_ctx *ctx, const char *path, const lx_plane *p, const
     double *E = NULL;
     lx_status st = setup(ctx, &g, p, E_lx, &o, &E);
     if (st) return st;
-    /* the data area keeps the plane's aspect: the longer side 640 pixels, the shorter at least 160 */
+    /* the view keeps the plane's aspect: the longer side 640 pixels (up to 960 for a long strip,
+     * whose shorter side then gets 240), the shorter at least 160 */
     double wa = g.A1 - g.A0, wb = g.B1 - g.B0;
     int pw = 640, ph = 640;
-    if (wa >= wb) ph = (int)fmax(160, lround(640 * wb / wa));
-    else pw = (int)fmax(160, lround(640 * wa / wb));
+    if (wa >= wb) {
+        pw = (int)fmin(960, fmax(640, lround(240 * wa / wb)));
+        ph = (int)fmax(160, lround(pw * wb / wa));
+    } else {
+        ph = (int)fmin(960, fmax(640, lround(240 * wb / wa)));
+        pw = (int)fmax(160, lround(ph * wa / wb));
+    }
     const int left = 84, top = 66, gap = 26, legend_w = 120, right = 16, below = 54, stats_h = 60;
-    int body = ph > 260 ? ph : 260;
+    int body = ph > 220 ? ph : 220;
     int W = left + pw + gap + legend_w + right, H = top + body + below + stats_h + 14;
     if (W < 720) W = 720;
     static const unsigned char bg[3] = {255, 255, 255};
     lx__page pg;
     if ((st = lx__page_init(ctx, &pg, W, H, bg))) goto fail;
     g.area = (lx__box){left, top, left + pw, top + ph};
+    g.field = (lx__box){px_x(&g, g.fA0), px_y(&g, g.fB1), px_x(&g, g.fA1), px_y(&g, g.fB0)};
     pg.lay.area = g.area;
+    if (!g.white && (g.field.x0 > g.area.x0 + 0.5 || g.field.y0 > g.area.y0 + 0.5 || g.field.x1 < g.area.x1 - 0.5 ||
+                     g.field.y1 < g.area.y1 - 0.5)) { /* outside the calculation area */
+        static const unsigned char around[3] = {236, 236, 236};
+        lx__rgb(pg.cr, around, 1);
+        cairo_rectangle(pg.cr, g.area.x0, g.area.y0, g.area.x1 - g.area.x0, g.area.y1 - g.area.y0);
+        cairo_fill(pg.cr);
+    }
     pg.lay.ax0 = g.A0, pg.lay.ax1 = g.A1, pg.lay.ay0 = g.B0, pg.lay.ay1 = g.B1;
     seg_list segs[LX__MAX_LEVELS];
     memset(segs, 0, sizeof segs);
