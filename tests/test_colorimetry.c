@@ -382,6 +382,7 @@ int main(void)
         cmocka_unit_test(test_scotopic_and_ler),     cmocka_unit_test(test_bad_views),
         cmocka_unit_test(test_ler_flat),
         cmocka_unit_test(test_cct_range_ends),
+        cmocka_unit_test(test_linear1nm_wide_range),
     };
     return cmocka_run_group_tests_name("colorimetry", tests, lx_test_ctx_setup, lx_test_ctx_teardown);
 }
