@@ -1,5 +1,6 @@
 /* batch_colorimetry.c - every colorimetric quantity for a batch of spectra on one grid: the
- * integrals at once (lx_batch_integrate), then CCT/Duv and the rest per spectrum on threads. */
+ * integrals at once (lx_batch_integrate), then CCT/Duv (the fast solver, cct_fast.c) and the rest
+ * per spectrum on threads. */
 #include "spectral/spectral_private.h"
 
 #include <stdlib.h>
@@ -35,8 +36,8 @@ static void work(void *arg, long i0, long i1, int t)
     if ((j->st[t] = lx_ctx_create(&ctx)) != LX_OK) return;
     for (long i = i0; i < i1 && j->st[t] == LX_OK; i++) {
         j->out[i].method = LX_METHOD_CIE15;
-        j->st[t] = lx_colorimetry_from_integrals(ctx, j->obs, j->ints + 4 * i, j->ints[4 * i + 3], radiant_of(j->b, i),
-                                              &j->out[i]);
+        j->st[t] = lx__colorimetry_derive(ctx, j->obs, j->ints + 4 * i, j->ints[4 * i + 3], radiant_of(j->b, i), 1,
+                                          &j->out[i]);
     }
     lx_ctx_destroy(ctx);
 }

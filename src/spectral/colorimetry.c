@@ -6,8 +6,47 @@
 #include <string.h>
 
 
-lx_status lx_colorimetry_from_integrals(lx_ctx *ctx, lx_observer obs, const double xyz[3], double vprime,
-                                        double radiant, lx_colorimetry *out)
+/* The CCT columns of r from its u', v': by the fast table (cct_fast.c) when fast and the answer is
+ * clear of the validity edges (|Duv| 0.05, 1000 K, 100000 K: there the two solvers' last bits could
+ * disagree, so the exact one decides), else by the exact solver. An invalid fast answer is final:
+ * within 0.1 of the locus the root it finds is the only one (cct_fast.c), so a point it puts
+ * farther than 0.05 from the locus, or whose root it finds outside its table (900 K - 120000 K),
+ * has no CCT in 1000 K - 100000 K within 0.05 either. */
+static void cct_columns(lx_ctx *ctx, lx_observer obs, lx_colorimetry *r, int fast)
+{
+    double u = r->u_prime, v = r->v_prime * 2.0 / 3.0, T, duv;
+    int got = fast ? lx__cct_fast(obs, u, v, &T, &duv) : 0;
+    /* the nearest locus point beyond 900 K - 120000 K: CCT outside 1000-100000 K or |Duv| > 0.1 */
+    if (fast && !got) return;
+    if (got) {
+        double ad = fabs(duv);
+        int edge = fabs(ad - 0.05) < 1e-9 || fabs(T - 1000.0) < 1e-4 || fabs(T - 100000.0) < 1e-2;
+        if (!edge) {
+            r->cct_valid = ad <= 0.05 && T >= 1000.0 && T <= 100000.0;
+            if (r->cct_valid) r->cct_K = T, r->duv = duv;
+            return;
+        }
+    }
+    /* an undefined CCT is a result, not an error: keep the context's error state */
+    lx_status st0 = ctx->status;
+    long line0 = ctx->errline;
+    char msg0[LX__ERRMSG_MAX], file0[sizeof ctx->errfile];
+    memcpy(msg0, ctx->errmsg, sizeof msg0);
+    memcpy(file0, ctx->errfile, sizeof file0);
+    if (lx_cct_from_uv(ctx, obs, u, v, &T, &duv) == LX_OK) {
+        /* the range ends are inclusive to solver precision (a 1000 K blackbody solves to 1000 K - 1e-9) */
+        r->cct_valid = fabs(duv) <= 0.05 && T >= 1000.0 * (1 - 1e-9) && T <= 100000.0 * (1 + 1e-9);
+        if (r->cct_valid) r->cct_K = T, r->duv = duv;
+    } else {
+        ctx->status = st0;
+        ctx->errline = line0;
+        memcpy(ctx->errmsg, msg0, sizeof msg0);
+        memcpy(ctx->errfile, file0, sizeof file0);
+    }
+}
+
+lx_status lx__colorimetry_derive(lx_ctx *ctx, lx_observer obs, const double xyz[3], double vprime, double radiant,
+                                 int fast, lx_colorimetry *out)
 {
     if (!out || !xyz) return lx__error(ctx, LX_EINVAL, NULL, 0, "integrals and output are required");
     if (obs != LX_OBSERVER_2 && obs != LX_OBSERVER_10)
@@ -30,27 +69,15 @@ lx_status lx_colorimetry_from_integrals(lx_ctx *ctx, lx_observer obs, const doub
     r.sp_ratio = r.Y != 0 ? r.scotopic_Y / r.Y : NAN;
     r.cct_K = r.duv = NAN;
     r.cct_valid = 0;
-    if (d != 0 && isfinite(r.u_prime)) {
-        double T, duv;
-        /* an undefined CCT is a result, not an error: keep the context's error state */
-        lx_status st0 = ctx->status;
-        long line0 = ctx->errline;
-        char msg0[LX__ERRMSG_MAX], file0[sizeof ctx->errfile];
-        memcpy(msg0, ctx->errmsg, sizeof msg0);
-        memcpy(file0, ctx->errfile, sizeof file0);
-        if (lx_cct_from_uv(ctx, obs, r.u_prime, r.v_prime * 2.0 / 3.0, &T, &duv) == LX_OK) {
-            /* the range ends are inclusive to solver precision (a 1000 K blackbody solves to 1000 K - 1e-9) */
-            r.cct_valid = fabs(duv) <= 0.05 && T >= 1000.0 * (1 - 1e-9) && T <= 100000.0 * (1 + 1e-9);
-            if (r.cct_valid) r.cct_K = T, r.duv = duv;
-        } else {
-            ctx->status = st0;
-            ctx->errline = line0;
-            memcpy(ctx->errmsg, msg0, sizeof msg0);
-            memcpy(ctx->errfile, file0, sizeof file0);
-        }
-    }
+    if (d != 0 && isfinite(r.u_prime)) cct_columns(ctx, obs, &r, fast);
     *out = r;
     return LX_OK;
+}
+
+lx_status lx_colorimetry_from_integrals(lx_ctx *ctx, lx_observer obs, const double xyz[3], double vprime,
+                                        double radiant, lx_colorimetry *out)
+{
+    return lx__colorimetry_derive(ctx, obs, xyz, vprime, radiant, 0, out);
 }
 
 lx_status lx_spd_colorimetry(lx_ctx *ctx, const lx_spd *spd, lx_observer obs, lx_method method, lx_colorimetry *out)

@@ -33,4 +33,22 @@ int lx__csv_fast_line(const char *q, const char *stop, int whole, char sep, size
                       const char **line_end);
 int lx__csv_have_fast_line(void);
 
+/* CIE 1960 uv of the Planckian radiator at T[k], k < n (cct.c, the exact solver's sums) with
+ * their first three derivatives in s = ln T: out[k] = {u, v, u', v', u'', v'', u''', v'''}.
+ * LX_ENOMEM (no message) when out of memory. */
+lx_status lx__planck_uv_ds3(lx_observer obs, size_t n, const double *T, double (*out)[8]);
+
+/* The fast CCT solver (cct_fast.c) for one chromaticity: the precomputed locus of the observer,
+ * no exp. Returns 1 with *cct_K and *duv when the nearest locus point lies inside its table
+ * (LX__CCT_FAST_T_MIN..MAX), else 0 (the caller runs lx_cct_from_uv). Thread-safe. */
+#define LX__CCT_FAST_T_MIN 900.0
+#define LX__CCT_FAST_T_MAX 120000.0
+int lx__cct_fast(lx_observer obs, double u, double v, double *cct_K, double *duv);
+
+/* lx_colorimetry_from_integrals with the CCT by the fast solver when fast (colorimetry.c): the
+ * same columns to 1e-10 relative; the exact solver where the fast one does not answer or the
+ * answer lies at a validity edge. */
+lx_status lx__colorimetry_derive(lx_ctx *ctx, lx_observer obs, const double xyz[3], double vprime, double radiant,
+                                 int fast, lx_colorimetry *out);
+
 #endif /* LX_SPECTRAL_PRIVATE_H */
