@@ -32,7 +32,7 @@ TEST_SRC := $(wildcard tests/test_*.c tests/hard_cases/test_*.c)
 DATA := $(sort $(wildcard src/data/*.csv))
 KERNELS := $(sort $(wildcard kernels/*.cl))
 
-GEN_SRC := $(BUILD)/gen/tables/lx_tables.c $(BUILD)/gen/core/lx_kernels.c
+GEN_SRC := $(BUILD)/gen/tables/lx_tables.c $(BUILD)/gen/core/lx_kernels.c $(BUILD)/gen/core/lx_pow5.c
 LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/obj/%.o) $(GEN_SRC:$(BUILD)/gen/%.c=$(BUILD)/obj/%.o)
 CLI_OBJ := $(CLI_SRC:src/cli/%.c=$(BUILD)/obj/cli/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
@@ -87,6 +87,10 @@ $(BUILD)/gen/tables/lx_tables.c: $(BUILD)/lxgen $(DATA)
 $(BUILD)/gen/core/lx_kernels.c: $(BUILD)/lxgen $(KERNELS) Makefile
 	@mkdir -p $(dir $@)
 	$(BUILD)/lxgen kernels $@ $(KERNELS)
+
+$(BUILD)/gen/core/lx_pow5.c: $(BUILD)/lxgen
+	@mkdir -p $(dir $@)
+	$(BUILD)/lxgen pow5 $@
 
 $(BUILD):
 	@mkdir -p $@

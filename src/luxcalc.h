@@ -16,6 +16,7 @@
 #define LUXCALC_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -100,6 +101,16 @@ LX_API long lx_ctx_errline(const lx_ctx *ctx);
 
 /** Installs a log callback (NULL removes it). Messages at or below max_level are delivered. */
 LX_API void lx_ctx_set_log(lx_ctx *ctx, lx_log_fn fn, void *user, lx_log_level max_level);
+
+/** Room lx_double_format needs, the terminating NUL included. */
+#define LX_DOUBLE_CHARS 32
+
+/** Writes value as the shortest decimal text that reads back (strtod) as exactly value, the
+ * closest such text when there are several (Ryu, Adams 2018), laid out as printf("%.*g", P) with
+ * P = max(15, digits) lays out those digits ("0.1", "1e-07", "123456789012345680", "-0"; inf,
+ * -inf and nan as printf). out needs LX_DOUBLE_CHARS bytes; returns the length (without the NUL).
+ * Thread-safe, no allocation, about 30 ns. */
+LX_API size_t lx_double_format(double value, char *out);
 
 /* ============================================================================================ */
 /* 2. Backends, SIMD paths and OpenCL devices (src/core) */
@@ -408,6 +419,42 @@ typedef lx_status (*lx_batch_chunk_fn)(void *user, const lx_batch_table *chunk, 
  * before the bad one: callers that must not act on a bad file keep what fn gives until success. */
 LX_API lx_status lx_batch_table_stream(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads,
                                        lx_batch_chunk_fn fn, void *user);
+
+/** The callbacks of lx_batch_table_stream_ex (zero-initialise, then set emit at least). */
+typedef struct lx_batch_stream {
+    void *user;
+    /* Optional, on the parsing threads: called for each part of the file (consecutive rows, about
+     * 512 KB of text) as soon as it is parsed, several at once, in no particular order. thread
+     * (0 .. threads - 1, below 64) is the calling thread's index, for per-thread state (a context
+     * each: contexts are one thread's); *state is the part's own pointer, kept from one part to the
+     * next that takes its place (for buffers). A non-LX_OK return stops the stream when the part
+     * comes to be emitted, and is returned by it (ctx holds no message for it). */
+    lx_status (*work)(void *user, int thread, const lx_batch_table *part, void **state);
+    /* Required, on the caller's thread, every part in file order after its work: rows row0 ..
+     * row0 + part->batch.n_spectra - 1; state as work left it. A non-LX_OK return stops the stream. */
+    lx_status (*emit)(void *user, const lx_batch_table *part, size_t row0, void *state);
+    /* Optional: frees a part's state at the end of the stream. */
+    void (*release)(void *user, void *state);
+    /* Optional, on the caller's thread after each emitted part: bytes of the input consumed so far
+     * and the input's size (0 when unknown: a pipe). */
+    void (*progress)(void *user, unsigned long long done_bytes, unsigned long long total_bytes);
+    /* Optional: read this open stream instead of opening path (path then names it in messages),
+     * after the prefix_len bytes at prefix that the caller already read from it (the start of a
+     * pipe it looked at). Not closed. */
+    FILE *input;
+    const char *prefix;
+    size_t prefix_len;
+} lx_batch_stream;
+
+/** lx_batch_table_stream with work on the parsing threads: each part is parsed and handed to
+ * cb->work on the thread that parsed it while it is in cache, and the results come to cb->emit
+ * in file order, so the per-part work (colorimetry, formatting) runs on every core and overlaps
+ * the parsing. Memory stays bounded whatever the file's size: a regular file is memory-mapped and
+ * the pages already read are unmapped behind the reader; a pipe or standard input is read into
+ * two alternating buffers of a few MB (a line longer than that grows them). Errors as
+ * lx_batch_table_stream. */
+LX_API lx_status lx_batch_table_stream_ex(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads,
+                                          const lx_batch_stream *cb);
 
 /** CSV end to end: streams a rows-layout batch CSV (lx_batch_table_stream, double values) and
  * integrates each chunk as lx_batch_integrate on the CPU while the next one parses. *out

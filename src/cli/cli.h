@@ -64,7 +64,7 @@ int cli_table_flush(cli_table *t, cli_format fmt, FILE *out, int json_array, int
 void cli_table_free(cli_table *t);
 int cli_table_rows(const cli_table *t); /* rows added so far, written or not */
 
-/* Prints a double in the shortest form that reads back exactly ("%.17g" trimmed). */
+/* Prints a double in the shortest form that reads back exactly (lx_double_format). */
 void cli_print_exact(FILE *out, double v);
 
 /* ---- atomic output: -o FILE ---- */

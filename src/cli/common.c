@@ -91,12 +91,9 @@ void cli_print_help(const char *text) { fputs(text, stdout); }
 
 void cli_print_exact(FILE *out, double v)
 {
-    char buf[64];
-    for (int prec = 15; prec <= 17; prec++) { /* shortest of %.15g..%.17g that reads back exactly */
-        snprintf(buf, sizeof buf, "%.*g", prec, v);
-        if (strtod(buf, NULL) == v) break;
-    }
-    fputs(buf, out);
+    char buf[LX_DOUBLE_CHARS];
+    size_t n = lx_double_format(v, buf); /* the shortest text that reads back exactly */
+    fwrite(buf, 1, n, out);
 }
 
 /* ---- the result table ---- */

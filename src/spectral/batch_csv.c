@@ -1,9 +1,9 @@
 /* batch_csv.c - reads a rows-layout batch CSV (header "id,380,381,...": one spectrum per line on a
- * uniform grid) into a float or double batch in parallel, whole (lx_batch_table_read) or streamed
- * chunk by chunk (lx_batch_table_stream, lx_batch_table_integrate_file); lines of short decimals by
- * the AVX-512 line parser of csv_vector.c, others by a SWAR number parser and lx__parse_double
- * (all exact, as strtod). */
-#include "spectral/spectral_private.h"
+ * uniform grid) into a float or double batch in parallel (lx_batch_table_read; streamed chunk by
+ * chunk in batch_stream.c): the header, and the parser of a part of the text, lines of short
+ * decimals by the vector line parser of csv_vector.c, others by a SWAR number parser and
+ * lx__parse_double (all exact, as strtod). */
+#include "spectral/batch_csv.h"
 
 #include <errno.h>
 #include <float.h>
@@ -18,26 +18,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-typedef struct part {
-    const char *s, *e;   /* whole lines */
-    size_t rows, lines;  /* data rows and all lines in the part (pass 1) */
-    size_t row0;         /* first row index (pass 2) */
-    long line0;          /* line number of its first line */
-    const char *lim;     /* end of the readable text (for 8-byte loads) */
-    size_t rows_cap;     /* rows the part's destination and name_at can hold */
-    void *values;        /* the destination of its first row (pass 2) */
-    size_t rows_done;    /* rows parsed (pass 2) */
-    long lines_done;     /* lines consumed before stopping (pass 2; the bad line on error) */
-    /* pass 2 */
-    const lx_batch_table *t;
-    char sep;
-    int named;           /* rows start with a name cell */
-    char *names;         /* this part's names, NUL-separated */
-    size_t names_len, names_cap, name_at_cap;
-    size_t *name_at;     /* local offsets */
-    long err_line;       /* 0: no error */
-    char err[256];
-} part;
+typedef lx__csv_part part;
 
 static int is_skip_line(const char *s, const char *e)
 {
@@ -185,9 +166,8 @@ static int keep_name(part *p, const char *s, size_t len, size_t *r, long line)
     return 1;
 }
 
-static void *parse_part(void *arg)
+void lx__csv_parse_part(part *p)
 {
-    part *p = arg;
     const lx_batch_table *t = p->t;
     size_t n = t->batch.n_lambda, row = 0;
     long line = p->line0;
@@ -210,7 +190,7 @@ static void *parse_part(void *arg)
     if (!p->names || !p->name_at) {
         p->err_line = line;
         snprintf(p->err, sizeof p->err, "out of memory");
-        return NULL;
+        return;
     }
     const char *s = p->s;
     /* the vector parser's 64-byte loads stay inside the text: lines it reads end before stop */
@@ -224,7 +204,7 @@ static void *parse_part(void *arg)
                 for (c = s; c < stop && *c != sep && *c != '\n'; c++) continue;
             if (c < stop && (!p->named || *c == sep) &&
                 lx__csv_fast_line(c + 1, stop, whole, sep, n, f32, (char *)p->values + row * n * (f32 ? 4 : 8), &le)) {
-                if (!keep_name(p, s, p->named ? (size_t)(c - s) : 0, &r, line)) return NULL;
+                if (!keep_name(p, s, p->named ? (size_t)(c - s) : 0, &r, line)) return;
                 row++;
                 p->rows_done = row;
                 s = le < p->e ? le + 1 : p->e;
@@ -242,10 +222,10 @@ static void *parse_part(void *arg)
         if (!c) {
             p->err_line = line;
             snprintf(p->err, sizeof p->err, "a row needs a name and %zu values", n);
-            return NULL;
+            return;
         }
         size_t nl_len = p->named ? (size_t)(c - s) : 0;
-        if (!keep_name(p, s, nl_len, &r, line)) return NULL;
+        if (!keep_name(p, s, nl_len, &r, line)) return;
         const char *q = c + 1;
         float *of = (float *)p->values + row * n;
         double *od = (double *)p->values + row * n;
@@ -257,14 +237,14 @@ static void *parse_part(void *arg)
                 p->err_line = line;
                 snprintf(p->err, sizeof p->err, "value %zu of row '%.*s' is not a finite number%s", j + 1,
                          (int)(nl_len < 60 ? nl_len : 60), s, z && isfinite(v) ? " in float range" : "");
-                return NULL;
+                return;
             }
             while (z < le && *z == ' ') z++;
             if (j + 1 < n ? (z >= le || *z != sep) : z != le) {
                 p->err_line = line;
                 snprintf(p->err, sizeof p->err, "row '%.*s' has %s than %zu values", (int)(nl_len < 60 ? nl_len : 60), s,
                          j + 1 < n ? "fewer" : "more", n);
-                return NULL;
+                return;
             }
             if (f32) of[j] = (float)v;
             else od[j] = v;
@@ -275,7 +255,7 @@ static void *parse_part(void *arg)
         s = next;
     }
     p->lines_done = line - p->line0;
-    return NULL;
+    return;
 }
 
 void lx_batch_table_free(lx_batch_table *t)
@@ -287,22 +267,13 @@ void lx_batch_table_free(lx_batch_table *t)
     free(t);
 }
 
-/* The header: the first line that is not blank or a comment; its separator, whether rows start
- * with a name cell, and the uniform grid. *body: the text after it, *line: its line number. */
-typedef struct csv_header {
-    const char *body;
-    long line;
-    char sep;
-    int named;
-    size_t n;
-    double start, step;
-} csv_header;
+typedef lx__csv_header csv_header;
 
 /* count_part / parse_part on part t of an array, as thread t of lx__parallel_run */
 static void count_each(void *arg, int t) { count_part((part *)arg + t); }
-static void parse_each(void *arg, int t) { parse_part((part *)arg + t); }
+static void parse_each(void *arg, int t) { lx__csv_parse_part((part *)arg + t); }
 
-static lx_status read_header(lx_ctx *ctx, const char *file, const char *text, size_t len, csv_header *H)
+lx_status lx__csv_read_header(lx_ctx *ctx, const char *file, const char *text, size_t len, csv_header *H)
 {
     const char *end = text + len, *s = text;
     if (len >= 3 && !memcmp(s, "\xEF\xBB\xBF", 3)) s += 3;
@@ -384,7 +355,7 @@ lx_status lx_batch_table_read_mem(lx_ctx *ctx, const char *file, const char *tex
     if (!text || !out) return lx__error(ctx, LX_EINVAL, file, 0, "batch csv: NULL argument");
     *out = NULL;
     csv_header H;
-    lx_status hst = read_header(ctx, file, text, len, &H);
+    lx_status hst = lx__csv_read_header(ctx, file, text, len, &H);
     if (hst) return hst;
     const char *end = text + len, *s = H.body;
     long line = H.line;
@@ -435,7 +406,7 @@ lx_status lx_batch_table_read_mem(lx_ctx *ctx, const char *file, const char *tex
         parts[i].rows_cap = parts[i].rows;
         parts[i].values = (char *)vals + parts[i].row0 * n * es;
     }
-    for (int i = lx__parallel_run(T, parse_each, parts); i < T; i++) parse_part(&parts[i]);
+    for (int i = lx__parallel_run(T, parse_each, parts); i < T; i++) lx__csv_parse_part(&parts[i]);
     lx_status st = LX_OK;
     size_t names_len = 0;
     for (int i = 0; i < T && !st; i++) {
@@ -534,171 +505,4 @@ lx_status lx_batch_table_read(lx_ctx *ctx, const char *path, lx_dtype dtype, int
     st = lx_batch_table_read_mem(ctx, path, tf.text, tf.len, dtype, threads, out);
     text_close(&tf);
     return st;
-}
-
-/* ---- streaming: parse the next chunk on threads while the caller handles this one ---- */
-
-/* A round parses up to STREAM_PARTS_PER_THREAD parts a thread of this much text each; threads take parts from a
- * counter, so one kept off its core by another process delays a round by one part at most. */
-#define STREAM_PART_BYTES ((size_t)512 << 10)
-/* parts in flight per thread: 4 measured 14 % faster than 8 (42 MB, 2 threads): the values of a
- * smaller chunk are still in cache when they are integrated, and fewer buffers are first-touched */
-#define STREAM_PARTS_PER_THREAD 4
-
-typedef struct part_set {
-    part p[64];
-    size_t cap[64]; /* rows each p[i].values holds */
-    int count;
-    _Atomic int next; /* the next part to parse */
-    long first_line;  /* line number of the first line of p[0] */
-} part_set;
-
-/* Parts of a set, taken one at a time from its counter by each thread of a team. */
-static void parse_set(void *arg, int t)
-{
-    (void)t;
-    part_set *S = arg;
-    for (int i; (i = atomic_fetch_add_explicit(&S->next, 1, memory_order_relaxed)) < S->count;) parse_part(&S->p[i]);
-}
-
-lx_status lx_batch_table_stream(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads, lx_batch_chunk_fn fn,
-                                void *user)
-{
-    if (!path || !fn) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch csv: NULL argument");
-    if (dtype != LX_F32 && dtype != LX_F64) return lx__error(ctx, LX_EINVAL, path, 0, "batch csv: unknown dtype");
-    text_file tf;
-    lx_status st = text_open(ctx, path, &tf);
-    if (st) return st;
-    csv_header H;
-    if ((st = read_header(ctx, path, tf.text, tf.len, &H))) {
-        text_close(&tf);
-        return st;
-    }
-    int T = lx__threads(threads, 0);
-    size_t n = H.n, es = dtype == LX_F32 ? sizeof(float) : sizeof(double);
-    const char *end = tf.text + tf.len, *pos = H.body;
-    /* the table parse_part reads its grid and dtype from */
-    lx_batch_table tmpl = {.batch = {.n_lambda = n, .start_nm = H.start, .step_nm = H.step, .dtype = dtype}};
-    part_set *sets = calloc(2, sizeof *sets);
-    if (!sets) {
-        text_close(&tf);
-        return lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
-    }
-    long next_line = H.line + 1;
-    size_t row0 = 0;
-    int cur = 0, have_prev = 0;
-    while (!st && (pos < end || have_prev)) {
-        part_set *S = &sets[cur], *P = &sets[cur ^ 1];
-        S->count = 0;
-        S->first_line = next_line;
-        lx__team team = {.started = 0};
-        int max_parts = STREAM_PARTS_PER_THREAD * T < 64 ? STREAM_PARTS_PER_THREAD * T : 64;
-        while (pos < end && S->count < max_parts) { /* cut the next chunk into parts at line boundaries */
-            part *q = &S->p[S->count];
-            const char *pe = (size_t)(end - pos) > STREAM_PART_BYTES ? pos + STREAM_PART_BYTES : end;
-            const char *nl = pe < end ? memchr(pe, '\n', (size_t)(end - pe)) : NULL;
-            pe = pe < end ? (nl ? nl + 1 : end) : end;
-            /* a row takes at least 2 n - 1 bytes (n one-character values and their separators) */
-            size_t cap = (size_t)(pe - pos) / (2 * n - 1 + (n == 1)) + 1;
-            if (cap > S->cap[S->count]) {
-                free(q->values);
-                q->values = malloc(cap * n * es);
-                S->cap[S->count] = q->values ? cap : 0;
-                if (!q->values) {
-                    st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory for a chunk of %zu spectra", cap);
-                    break;
-                }
-            }
-            q->s = pos;
-            q->e = pe;
-            q->lim = end;
-            q->t = &tmpl;
-            q->sep = H.sep;
-            q->named = H.named;
-            q->line0 = 0;
-            q->rows_cap = cap;
-            q->rows_done = 0;
-            q->lines_done = 0;
-            pos = pe;
-            S->count++;
-        }
-        if (st) break;
-        atomic_store(&S->next, 0);
-        if (S->count) lx__team_start(&team, T, 0, parse_set, S);
-        /* meanwhile: the previous chunk, in file order, on this thread */
-        if (have_prev) {
-            for (int i = 0; i < P->count && !st; i++) {
-                part *q = &P->p[i];
-                lx_batch_table view = {.batch = tmpl.batch, .names = q->names, .name_at = q->name_at};
-                view.batch.n_spectra = q->rows_done;
-                view.batch.values = q->values;
-                if (q->rows_done) st = fn(user, &view, row0);
-                row0 += q->rows_done;
-            }
-            have_prev = 0;
-        }
-        lx__team_join(&team);
-        parse_set(S, 0); /* parts no thread took (none started, say) */
-        if (st) break;
-        long line = S->first_line;
-        for (int i = 0; i < S->count && !st; i++) {
-            part *q = &S->p[i];
-            if (q->err_line) st = lx__error(ctx, LX_EPARSE, path, line + q->err_line, "%s", q->err);
-            line += q->lines_done;
-        }
-        next_line = line;
-        have_prev = S->count > 0;
-        cur ^= 1;
-    }
-    for (int k = 0; k < 2; k++)
-        for (int i = 0; i < 64; i++) {
-            free(sets[k].p[i].values);
-            free(sets[k].p[i].names);
-            free(sets[k].p[i].name_at);
-        }
-    free(sets);
-    text_close(&tf);
-    return st;
-}
-
-/* lx_batch_table_integrate_file: every chunk integrated into a growing result on the caller's thread */
-typedef struct integ {
-    lx_ctx *ctx;
-    const lx_function *fns;
-    size_t k, cap, rows;
-    double *out;
-} integ;
-
-static lx_status integ_chunk(void *user, const lx_batch_table *chunk, size_t row0)
-{
-    integ *I = user;
-    size_t need = (row0 + chunk->batch.n_spectra) * I->k;
-    if (need > I->cap) {
-        size_t cap = need > 2 * I->cap ? need : 2 * I->cap;
-        double *o = realloc(I->out, cap * sizeof *o);
-        if (!o) return lx__error(I->ctx, LX_ENOMEM, NULL, 0, "out of memory for the results");
-        I->out = o;
-        I->cap = cap;
-    }
-    /* one thread: the other cores are parsing the next chunk */
-    lx_batch_opts o = {.backend = LX_BACKEND_CPU, .threads = 1};
-    I->rows = row0 + chunk->batch.n_spectra;
-    return lx_batch_integrate(I->ctx, &chunk->batch, I->fns, I->k, &o, I->out + row0 * I->k);
-}
-
-lx_status lx_batch_table_integrate_file(lx_ctx *ctx, const char *path, const lx_function *fns, size_t k, int threads,
-                                        double **out, size_t *n_spectra)
-{
-    if (!path || !fns || !k || !out || !n_spectra) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch csv: NULL argument");
-    integ I = {ctx, fns, k, 0, 0, NULL};
-    /* double values: the same numbers strtod gives, summed in double */
-    lx_status st = lx_batch_table_stream(ctx, path, LX_F64, threads, integ_chunk, &I);
-    if (!st && !I.out && !(I.out = malloc(sizeof(double)))) st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
-    if (st) {
-        free(I.out);
-        return st;
-    }
-    *out = I.out;
-    *n_spectra = I.rows;
-    return LX_OK;
 }
