@@ -112,6 +112,12 @@ LX_API void lx_ctx_set_log(lx_ctx *ctx, lx_log_fn fn, void *user, lx_log_level m
  * Thread-safe, no allocation, about 30 ns. */
 LX_API size_t lx_double_format(double value, char *out);
 
+/** Opens path for reading as every reader of the library does: "-" is standard input; a missing
+ * file or a directory is LX_EIO naming the path; a FIFO waits at most LX_FIFO_WAIT_S seconds
+ * (default 10; 0: for ever) for its first data (LX_EIO saying so after that). Close *out with
+ * fclose unless it is stdin. */
+LX_API lx_status lx_file_open(lx_ctx *ctx, const char *path, FILE **out);
+
 /* ============================================================================================ */
 /* 2. Backends, SIMD paths and OpenCL devices (src/core) */
 /* ============================================================================================ */

@@ -101,6 +101,13 @@ static int spd_open(spd_out *so)
     return 0;
 }
 
+static FILE *spd_out_fp(void *arg)
+{
+    spd_out *so = arg;
+    if (!so->opened && !so->failed) spd_open(so);
+    return so->failed ? NULL : so->o.fp;
+}
+
 static void spd_flush(void *arg)
 {
     spd_out *so = arg;
@@ -226,7 +233,8 @@ int cmd_spd(int argc, char **argv)
     spd_out so;
     memset(&so, 0, sizeof so);
     so.t = t, so.fmt = (cli_format)fmt, so.cmd = cmd;
-    cli_spd_batch B = {ctx, cmd, t, obs, method, backend, backend_given, spd_flush, &so};
+    cli_spd_batch B = {ctx, cmd, t, obs, method, backend, backend_given, spd_flush, &so, (cli_format)fmt, spd_out_fp,
+                       outpath && strcmp(outpath, "-") != 0};
     so.path = outpath;
     int nfiles = 0;
     char **files = cli_expand_files(argc - optind, argv + optind, &nfiles);
@@ -238,13 +246,21 @@ int cmd_spd(int argc, char **argv)
             spd_flush(&so);
             continue;
         }
-        /* rows-layout files: streamed, integrated chunk by chunk (spd_batch.c); else the general reader */
-        if (!msel.any && !report_dir && cli_spd_batch_file(&B, arg)) {
-            spd_flush(&so);
-            continue;
+        /* rows-layout files: streamed, part by part on every core (spd_stream.c); else the general
+         * reader (from memory for what the stream read of a pipe before handing it back) */
+        char *mtext = NULL;
+        size_t mlen = 0;
+        if (!msel.any && !report_dir) {
+            int r = cli_spd_batch_file(&B, arg, &mtext, &mlen);
+            if (r != 0) {
+                if (r < 0 && rc < CLI_INPUT) rc = CLI_INPUT;
+                spd_flush(&so);
+                continue;
+            }
         }
         lx_spd_set *set = NULL;
-        lx_status st = lx_spd_read_file(ctx, arg, &set);
+        lx_status st = mtext ? lx_spd_read_mem(ctx, arg, mtext, mlen, &set) : lx_spd_read_file(ctx, arg, &set);
+        free(mtext);
         if (st != LX_OK) {
             int e = cli_fail(cmd, ctx, st);
             if (e > rc) rc = e;

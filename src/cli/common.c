@@ -168,18 +168,32 @@ void cli_table_free(cli_table *t)
     free(t);
 }
 
+char *cli_csv_field(char *dst, const char *s, size_t len)
+{
+    if (memchr(s, ',', len) || memchr(s, '"', len) || memchr(s, '\n', len) || memchr(s, '\r', len)) {
+        *dst++ = '"';
+        for (size_t i = 0; i < len; i++) {
+            if (s[i] == '"') *dst++ = '"';
+            *dst++ = s[i];
+        }
+        *dst++ = '"';
+    } else {
+        memcpy(dst, s, len);
+        dst += len;
+    }
+    return dst;
+}
+
 static void csv_str(FILE *out, const char *s)
 {
-    if (strpbrk(s, ",\"\n\r")) {
-        fputc('"', out);
-        for (; *s; s++) {
-            if (*s == '"') fputc('"', out);
-            fputc(*s, out);
-        }
-        fputc('"', out);
-    } else {
-        fputs(s, out);
+    size_t n = strlen(s);
+    char stack[256], *b = 2 * n + 2 <= sizeof stack ? stack : malloc(2 * n + 2);
+    if (!b) {
+        fprintf(stderr, "luxcalc: out of memory\n");
+        exit(CLI_RUNTIME);
     }
+    fwrite(b, 1, (size_t)(cli_csv_field(b, s, n) - b), out);
+    if (b != stack) free(b);
 }
 
 static void json_str(FILE *out, const char *s)
@@ -267,6 +281,17 @@ int cli_table_flush(cli_table *t, cli_format fmt, FILE *out, int json_array, int
     if (final && fmt == CLI_FMT_JSON && t->json_array) fputs(t->emitted ? "\n]\n" : "]\n", out);
     return ferror(out) ? -1 : 0;
 }
+
+int cli_table_header(cli_table *t, cli_format fmt, FILE *out)
+{
+    if (fmt != CLI_FMT_CSV || t->header_done) return 0;
+    for (int c = 0; c < t->ncols; c++) fprintf(out, "%s%s", c ? "," : "", t->names[c]);
+    fputc('\n', out);
+    t->header_done = 1;
+    return ferror(out) ? -1 : 0;
+}
+
+void cli_table_count_written(cli_table *t, size_t rows) { t->emitted += rows; }
 
 int cli_table_write(cli_table *t, cli_format fmt, FILE *out, int json_array)
 {

@@ -1,6 +1,7 @@
 /* spd_batch.c - the batch paths of `luxcalc spd`: many spectra on one uniform grid go through
  * lx_batch_colorimetry (vectorised, threaded, OpenCL when asked or large), and raw float32 input
- * (--input-format f32 --grid START:END:STEP) for pipelines whose data is already numeric. */
+ * (--input-format f32 --grid START:END:STEP) for pipelines whose data is already numeric.
+ * Rows-layout CSV files are streamed by spd_stream.c. */
 #include "spd_batch.h"
 #include "progress.h"
 
@@ -12,7 +13,7 @@
 
 #define CHUNK 65536 /* spectra per batch call: bounds memory, lets output stream */
 
-static void add_row(cli_table *t, const char *file, const char *name, const lx_colorimetry *r)
+void cli_spd_add_row(cli_table *t, const char *file, const char *name, const lx_colorimetry *r)
 {
     cli_table_str(t, file);
     cli_table_str(t, name);
@@ -35,7 +36,7 @@ static lx_status run_chunk(cli_spd_batch *B, const lx_batch *b, const char *file
         char idx[32];
         for (size_t i = 0; i < b->n_spectra; i++) {
             const char *name = names ? names[i] : (snprintf(idx, sizeof idx, "%zu", i0 + i + 1), idx);
-            add_row(B->table, file, name, &res[i]);
+            cli_spd_add_row(B->table, file, name, &res[i]);
         }
         if (B->flush) B->flush(B->flush_arg);
     }
@@ -87,124 +88,6 @@ lx_status cli_spd_batch_set(cli_spd_batch *B, const lx_spd_set *set)
     }
     cli_progress_end();
     return st;
-}
-
-/* ---- rows-layout files streamed (lx_batch_table_stream) ---- */
-
-typedef struct stream_acc {
-    cli_spd_batch *B;
-    lx_colorimetry *res;
-    char *names;       /* NUL-separated, in row order */
-    size_t rows, cap, names_len, names_cap;
-    int checked;       /* the grid was checked on the first chunk */
-} stream_acc;
-
-/* 1 when the file's first content line is a header the general reader also reads as a rows
- * layout with names: one kind of separator (, ; or tab), a first cell that is not a number,
- * at least two more cells, no quotes. Anything else goes to the general reader. */
-static int plain_rows_header(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return 0;
-    static char buf[1 << 16];
-    size_t len = fread(buf, 1, sizeof buf - 1, f);
-    fclose(f);
-    buf[len] = 0;
-    char *s = buf;
-    if (len >= 3 && !memcmp(s, "\xEF\xBB\xBF", 3)) s += 3;
-    for (;;) { /* skip blank and comment lines */
-        char *e = strchr(s, '\n');
-        char *t = s;
-        while (*t == ' ' || *t == '\t' || *t == '\r') t++;
-        if (*t && *t != '\n' && *t != '#') break;
-        if (!e) return 0;
-        s = e + 1;
-    }
-    char *e = strchr(s, '\n');
-    if (!e) return 0; /* the header must end within the first 64 KB */
-    *e = 0;
-    int kinds = (strchr(s, ',') != NULL) + (strchr(s, ';') != NULL) + (strchr(s, '\t') != NULL);
-    if (kinds != 1 || strchr(s, '"')) return 0;
-    char sep = strchr(s, ',') ? ',' : strchr(s, ';') ? ';' : '\t';
-    char *c1 = strchr(s, sep);
-    char *end;
-    strtod(s, &end);
-    if (end == c1 || s == c1) return 0; /* a numeric or empty first cell */
-    char *c2 = strchr(c1 + 1, sep);
-    return c2 != NULL;
-}
-
-static lx_status stream_chunk(void *user, const lx_batch_table *chunk, size_t row0)
-{
-    stream_acc *A = user;
-    cli_spd_batch *B = A->B;
-    const lx_batch *b = &chunk->batch;
-    size_t n = b->n_lambda;
-    if (!A->checked) {
-        double *lam = malloc(n * sizeof *lam);
-        if (!lam) return LX_ENOMEM;
-        for (size_t j = 0; j < n; j++) lam[j] = b->start_nm + (double)j * b->step_nm;
-        lx_spd s0 = {NULL, n, lam, lam};
-        int ok = n >= 2 && lx_method_resolve(&s0, B->method) == LX_METHOD_CIE15;
-        free(lam);
-        if (!ok) return LX_EUNSUPPORTED;
-        A->checked = 1;
-    }
-    if (row0 + b->n_spectra > A->cap) {
-        size_t cap = 2 * (row0 + b->n_spectra);
-        lx_colorimetry *r = realloc(A->res, cap * sizeof *r);
-        if (!r) return LX_ENOMEM;
-        A->res = r;
-        A->cap = cap;
-    }
-    for (size_t i = 0; i < b->n_spectra; i++) { /* names as the general reader keeps them */
-        const char *nm = chunk->names + chunk->name_at[i];
-        size_t l = strlen(nm);
-        if (l && (nm[0] == ' ' || nm[l - 1] == ' ' || nm[l - 1] == '\t' || nm[0] == '\t')) return LX_EUNSUPPORTED;
-        if (A->names_len + l + 1 > A->names_cap) {
-            size_t cap = 2 * (A->names_len + l + 1) + 4096;
-            char *q = realloc(A->names, cap);
-            if (!q) return LX_ENOMEM;
-            A->names = q;
-            A->names_cap = cap;
-        }
-        memcpy(A->names + A->names_len, nm, l + 1);
-        A->names_len += l + 1;
-        /* the checks of the general path (cli_spd_batchable): each spectrum as lx_spd_check sees it */
-        const double *v = (const double *)b->values + i * n;
-        for (size_t j = 0; j < n; j++)
-            if (!isfinite(v[j])) return LX_EUNSUPPORTED;
-    }
-    lx_batch_opts opts;
-    memset(&opts, 0, sizeof opts);
-    opts.backend = B->backend;
-    opts.threads = 1; /* the other cores parse the next chunk meanwhile */
-    lx_status st = lx_batch_colorimetry(B->ctx, b, B->observer, &opts, A->res + row0);
-    A->rows = row0 + b->n_spectra;
-    return st;
-}
-
-int cli_spd_batch_file(cli_spd_batch *B, const char *path)
-{
-    /* only regular files: a FIFO or a device must be read once, by the general reader */
-    struct stat sb;
-    if (!strcmp(path, "-") || stat(path, &sb) != 0 || !S_ISREG(sb.st_mode) || !plain_rows_header(path)) return 0;
-    stream_acc A;
-    memset(&A, 0, sizeof A);
-    A.B = B;
-    lx_status st = lx_batch_table_stream(B->ctx, path, LX_F64, 0, stream_chunk, &A);
-    int done = st == LX_OK && A.rows > 0 && (B->forced || A.rows >= CLI_SPD_BATCH_MIN);
-    if (done) {
-        size_t off = 0;
-        for (size_t i = 0; i < A.rows; i++) {
-            add_row(B->table, path, A.names + off, &A.res[i]);
-            off += strlen(A.names + off) + 1;
-        }
-        if (B->flush) B->flush(B->flush_arg);
-    }
-    free(A.res);
-    free(A.names);
-    return done;
 }
 
 int cli_spd_parse_grid(const char *s, double *start, double *step, size_t *n)

@@ -108,3 +108,9 @@ lx_status lx__read_all(lx_ctx *ctx, const char *path, char **text, size_t *len)
     *len = n;
     return LX_OK;
 }
+
+lx_status lx_file_open(lx_ctx *ctx, const char *path, FILE **out)
+{
+    if (!path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "file open: NULL argument");
+    return lx__open_read(ctx, path, out);
+}
