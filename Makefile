@@ -1,4 +1,4 @@
-# luxcalc - one plain Makefile. Targets: all test demo bench asan install uninstall clean deps.
+# luxcalc - one plain Makefile. Targets: all test test-simd demo bench asan install uninstall clean deps.
 # LX_OPENCL=0 builds without OpenCL. Sources are found by wildcard: src/LAYER/*.c is the library
 # (one folder per layer), src/cli/*.c and src/cli/bench/*.c the command-line tool, tests/test_*.c
 # one cmocka binary each, kernels/*.cl embedded.
@@ -49,7 +49,7 @@ SONAME := libluxcalc.so.0
 SHARED := $(BUILD)/$(SONAME)
 CLI := $(BUILD)/luxcalc
 
-.PHONY: all test demo bench asan tsan install uninstall clean deps fuzz
+.PHONY: all test test-simd demo bench asan tsan install uninstall clean deps fuzz
 
 all: $(STATIC) $(SHARED) $(CLI) $(BUILD)/libs.txt
 
@@ -145,6 +145,17 @@ test: deps
 	@$(MAKE) --no-print-directory all $(TEST_BIN) $(FAULT_CLI)
 	@LX_SHARED_DIR=$${LX_SHARED_DIR:-$(CURDIR)/../shared} POCL_CACHE_DIR=$(CURDIR)/$(BUILD)/pocl-cache \
 	  sh tests/run.sh $(BUILD) $(TEST_BIN)
+
+# the suite again with the SIMD paths capped, as an AVX2-only and a plain x86-64 CPU run it (the
+# binaries of `make test`, not rebuilt); the tests of the paths above the cap report SKIPPED
+SIMD_CAPS ?= avx2 scalar
+test-simd: deps
+	@$(MAKE) --no-print-directory all $(TEST_BIN) $(FAULT_CLI)
+	@for s in $(SIMD_CAPS); do log=$$(mktemp); \
+	  LX_SIMD=$$s LX_SHARED_DIR=$${LX_SHARED_DIR:-$(CURDIR)/../shared} POCL_CACHE_DIR=$(CURDIR)/$(BUILD)/pocl-cache \
+	  sh tests/run.sh $(BUILD) $(TEST_BIN) > $$log 2>&1; rc=$$?; \
+	  grep -E '^\[  (FAILED|SKIPPED) \] [a-z]|^not ok|: not ok|^failing' $$log | sort -u; \
+	  echo "LX_SIMD=$$s: $$(tail -n 1 $$log)"; rm -f $$log; [ $$rc -eq 0 ] || exit 1; done
 
 demo: deps
 	@$(MAKE) --no-print-directory all

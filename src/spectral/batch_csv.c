@@ -166,6 +166,10 @@ static int keep_name(part *p, const char *s, size_t len, size_t *r, long line)
     return 1;
 }
 
+static _Atomic unsigned long long fast_rows_total; /* rows the vector line parser took, for the tests */
+
+unsigned long long lx__csv_fast_rows(void) { return atomic_load(&fast_rows_total); }
+
 void lx__csv_parse_part(part *p)
 {
     const lx_batch_table *t = p->t;
@@ -173,7 +177,8 @@ void lx__csv_parse_part(part *p)
     long line = p->line0;
     char sep = p->sep;
     int f32 = t->batch.dtype == LX_F32;
-    int fast = lx__csv_have_fast_line();
+    int fast = lx__csv_fast_level();
+    unsigned long long fast_rows = 0;
     size_t names_cap = (size_t)(p->e - p->s) / 8 + p->rows_cap + 16, r = 0;
     if (p->names_cap < names_cap) { /* buffers are kept from one chunk to the next when streaming */
         free(p->names);
@@ -203,9 +208,10 @@ void lx__csv_parse_part(part *p)
             if (p->named)
                 for (c = s; c < stop && *c != sep && *c != '\n'; c++) continue;
             if (c < stop && (!p->named || *c == sep) &&
-                lx__csv_fast_line(c + 1, stop, whole, sep, n, f32, (char *)p->values + row * n * (f32 ? 4 : 8), &le)) {
+                lx__csv_fast_line(fast, c + 1, stop, whole, sep, n, f32, (char *)p->values + row * n * (f32 ? 4 : 8), &le)) {
                 if (!keep_name(p, s, p->named ? (size_t)(c - s) : 0, &r, line)) return;
                 row++;
+                fast_rows++;
                 p->rows_done = row;
                 s = le < p->e ? le + 1 : p->e;
                 continue;
@@ -255,7 +261,7 @@ void lx__csv_parse_part(part *p)
         s = next;
     }
     p->lines_done = line - p->line0;
-    return;
+    atomic_fetch_add(&fast_rows_total, fast_rows);
 }
 
 void lx_batch_table_free(lx_batch_table *t)

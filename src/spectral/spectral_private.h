@@ -27,11 +27,14 @@ lx_status lx__batch_weights(lx_ctx *ctx, const lx_function *fns, size_t k, doubl
  * when whole (stop is the end of the text); 64 bytes past stop are readable. The values go to dst
  * (float when f32), each correctly rounded as strtod; *line_end gets the line's end (its '\n', or
  * stop). 0 when any field is not "-?D+(.D*)?" of at most 15 characters, the count is not n, or no
- * line end comes before stop (the general parser then reads the line). lx__csv_have_fast_line: 1
- * when this CPU runs it (lx_simd_level() is AVX-512 and lx__cpu_has_bitalg()). */
-int lx__csv_fast_line(const char *q, const char *stop, int whole, char sep, size_t n, int f32, void *dst,
+ * line end comes before stop (the general parser then reads the line). level: what
+ * lx__csv_fast_level() says this CPU runs: 2 AVX-512 (with BITALG), 1 AVX2 (+FMA, BMI1/2), 0 none
+ * (lx_simd_level() capped). */
+int lx__csv_fast_line(int level, const char *q, const char *stop, int whole, char sep, size_t n, int f32, void *dst,
                       const char **line_end);
-int lx__csv_have_fast_line(void);
+int lx__csv_fast_level(void);
+/* Rows the vector line parser has taken in this process (the tests check that a path ran). */
+unsigned long long lx__csv_fast_rows(void);
 
 /* CIE 1960 uv of the Planckian radiator at T[k], k < n (cct.c, the exact solver's sums) with
  * their first three derivatives in s = ln T: out[k] = {u, v, u', v', u'', v'', u''', v'''}.
