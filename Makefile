@@ -45,7 +45,9 @@ FAULT_LIB := $(BUILD)/faults/libluxcalc.a
 FAULT_CLI := $(BUILD)/tests/luxcalc-faults
 
 STATIC := $(BUILD)/libluxcalc.a
-SONAME := libluxcalc.so.0
+# the soname follows the header's major version (luxcalc.h "ABI policy": libluxcalc.so.0 for 0.x)
+VERSION := $(shell sed -n 's/^\#define LX_VERSION_STRING "\(.*\)"/\1/p' src/luxcalc.h)
+SONAME := libluxcalc.so.$(firstword $(subst ., ,$(VERSION)))
 SHARED := $(BUILD)/$(SONAME)
 CLI := $(BUILD)/luxcalc
 
@@ -176,7 +178,6 @@ INCLUDEDIR ?= $(PREFIX)/include
 BINDIR ?= $(PREFIX)/bin
 MANDIR ?= $(PREFIX)/share/man
 COMPLETIONDIR ?= $(PREFIX)/share/bash-completion/completions
-VERSION := $(shell sed -n 's/^\#define LX_VERSION_STRING "\(.*\)"/\1/p' src/luxcalc.h)
 
 $(BUILD)/luxcalc.1: $(CLI) src/tools/mkman.sh
 	sh src/tools/mkman.sh cli $(CLI) > $@.tmp && mv $@.tmp $@

@@ -1,6 +1,28 @@
-/* luxcalc.h - the whole public API of luxcalc, a C11 library for photometry and radiometry.
- * All quantities are double, SI units unless a name says otherwise (_nm, _lm, _lx, _cd, _K).
- * The library never prints and never exits: every call that can fail returns an lx_status.
+/* luxcalc.h - the whole public API of luxcalc, a C11 library for photometry and radiometry, and its
+ * reference manual: the conventions below hold for every function unless its own comment says
+ * otherwise; each comment adds what is particular to it (units, ownership, errors).
+ *
+ * Units: all quantities are double, SI units unless a name says otherwise (_nm, _lm, _lx, _cd, _K,
+ * _cd_m2, ...); struct fields carry their unit in their name or comment.
+ *
+ * Errors: every call that can fail returns an lx_status; the library never prints and never exits.
+ * - A NULL context is LX_EINVAL, and nothing is read or written (there is nowhere to put a message).
+ *   The functions that accept a NULL context say so: lx_ctx_destroy, the lx_ctx_* getters (they
+ *   return "", NULL, 0 or LX_BACKEND_AUTO), lx_ctx_set_log and lx_ctx_counters_reset (no-ops).
+ * - LX_EINVAL for a NULL pointer the call needs or an argument outside its documented range;
+ *   LX_ENOMEM when memory runs out. Codes beyond these are listed at each function ("Errors:").
+ * - After a failure lx_ctx_errmsg(ctx) holds the detail (file and line where they apply); outputs
+ *   are untouched, except that a function creating an object sets its *out to NULL.
+ *
+ * Ownership:
+ * - arguments are borrowed for the call only: the library keeps no pointer to them once it returns
+ *   (the exceptions say so: lx_cl_borrow retains the OpenCL objects it is given);
+ * - an object or array the library makes for the caller comes back through an out pointer; the
+ *   caller owns it and frees it with the function the comment names (lx_*_free, never free():
+ *   the library may allocate differently in a later release); every lx_*_free accepts NULL;
+ * - views (the lx_spd of lx_function_get, lx_illuminant_get, lx_tcs_get; lx_units; every const char *
+ *   returned) point to static storage, or into the object they came from and live as long as it;
+ *   they are never freed.
  *
  * Thread safety, for every function below unless its comment says otherwise:
  * - a function that takes an lx_ctx may run in several threads at once when each thread uses its
@@ -11,7 +33,31 @@
  *   several threads may read them (and pass them to functions) at once; freeing is not concurrent;
  * - the embedded tables and other lazily built globals are initialised safely (pthread_once).
  * tests/test_threads.c checks this: threads with their own contexts and shared objects give
- * bit-identical results to a serial run. */
+ * bit-identical results to a serial run.
+ *
+ * ABI policy (README "ABI"). The shared library's soname is libluxcalc.so.MAJOR, so
+ * libluxcalc.so.0 for every 0.x release. Within one soname a program built against an earlier
+ * release (from 0.2.0 on) runs unchanged against a later one:
+ * - functions and enum values are only added (enum values at the end, before a *_COUNT); nothing
+ *   exported is removed, renamed, or given another signature or meaning;
+ * - structs the caller allocates are of three kinds.
+ *   Options (lx_batch_opts, lx_grid_opts, lx_irr_opts, lx_exr_write_opts, lx_scene_eval_opts,
+ *   lx_lum_model) are only read: zero-initialise them (zero is every field's default) and leave
+ *   `reserved` zero, which the library checks (LX_EINVAL otherwise); a later option takes reserved
+ *   space, its zero meaning the earlier behaviour.
+ *   Results (lx_colorimetry, lx_cri, lx_tm30, lx_alphaopic, lx_source_result, lx_lum_summary,
+ *   lx_grid_stats, lx_cl_device_info, lx_counters) are written whole by the library, `reserved`
+ *   set to zero; a later result takes reserved space.
+ *   Views and values (lx_spd, lx_batch, lx_placement, lx_plane, lx_plot_point, lx_unit, lx_sh9)
+ *   never change within a soname: a new need gets a new type.
+ * - structs only the library allocates (lx_spd_set, lx_batch_table, lx_luminaire, lx_envmap,
+ *   lx_xyz_image, lx_scene, lx_scene_plan, lx_scene_result) grow by fields appended at their end:
+ *   read their fields, but never allocate, copy or take the size of one. The structs of their arrays
+ *   (lx_scene_luminaire, lx_scene_receiver) carry reserved space, as results do.
+ * - LX_EFFECT_COUNT sizes arrays inside lx_scene and lx_scene_plan: a new effect changes their
+ *   layout and so needs a new soname; LX_FN_COUNT and LX_Q_COUNT size nothing public and may grow.
+ * An incompatible change needs a new MAJOR version, whose soname follows it (1.0: libluxcalc.so.1).
+ * LX_VERSION_* below are the version this header belongs to; lx_version() the library's. */
 #ifndef LUXCALC_H
 #define LUXCALC_H
 
@@ -31,11 +77,12 @@ extern "C" {
 #endif
 
 #define LX_VERSION_MAJOR 0
-#define LX_VERSION_MINOR 1
+#define LX_VERSION_MINOR 2
 #define LX_VERSION_PATCH 0
-#define LX_VERSION_STRING "0.1.0"
+#define LX_VERSION_STRING "0.2.0"
 
-/** The library version as "MAJOR.MINOR.PATCH" (static storage). Thread-safe. */
+/** The library's version as "MAJOR.MINOR.PATCH" (static storage): the version of the library the
+ * program runs with, which may be later than the LX_VERSION_* it was compiled with. Thread-safe. */
 LX_API const char *lx_version(void);
 
 /* Contents, by layer (each section is one layer of src/, lowest first; README "Development"):
@@ -50,7 +97,7 @@ LX_API const char *lx_version(void);
  *   9. lighting  Units and quantities
  *  10. lighting  Sources, inverse problems and solid angles
  *  11. lighting  Luminaires (IES LM-63, EULUMDAT) and illuminance grids
- *  12. radiance  Environment maps, OpenEXR and irradiance
+ *  12. radiance  Environment maps, OpenEXR and irradiance; daylight skies and the sun
  *  13. radiance  Spectral OpenEXR images
  *  14. scene     Scenes: files, the planner, evaluation and work counters
  *  15. plot      Plots (PNG, written atomically)
@@ -71,36 +118,66 @@ typedef enum lx_status {
     LX_EDEVICE = 7       /* an OpenCL runtime or device error; the message names the call and code */
 } lx_status;
 
-/** Static text for a status code ("invalid argument", ...). Never NULL. Thread-safe. */
+/** Static text for a status code ("invalid argument", ...; "unknown status" for another value).
+ * Never NULL, static storage. Thread-safe. */
 LX_API const char *lx_strerror(lx_status status);
 
 /** Log levels passed to the log callback. */
 typedef enum lx_log_level { LX_LOG_ERROR = 0, LX_LOG_WARN = 1, LX_LOG_INFO = 2, LX_LOG_DEBUG = 3 } lx_log_level;
 
-/** Log callback: receives one message, without a trailing newline. */
+/** Log callback: receives one message, without a trailing newline, valid only during the call. It is
+ * called on the thread that called the library function (never concurrently for one context). */
 typedef void (*lx_log_fn)(void *user, lx_log_level level, const char *message);
 
 /** An opaque library context: error state, log callback, lazily built caches (locus tables,
  * OpenCL programs). One context may be used by one thread at a time; use one per thread. */
 typedef struct lx_ctx lx_ctx;
 
-/** Creates a context in *out. Returns LX_ENOMEM on allocation failure (then *out is NULL). */
+/** Creates a context in *out; free it with lx_ctx_destroy. Errors: LX_EINVAL (out NULL), LX_ENOMEM
+ * (then *out is NULL). Thread-safe. */
 LX_API lx_status lx_ctx_create(lx_ctx **out);
 
-/** Destroys a context and everything it owns. Accepts NULL. */
+/** Destroys a context and everything it owns (caches, the OpenCL state, borrowed OpenCL objects
+ * released). Accepts NULL. Objects made with the context (sets, luminaires, maps, ...) do not
+ * belong to it and stay valid. */
 LX_API void lx_ctx_destroy(lx_ctx *ctx);
 
 /** The detail of the last error on this context, as "FILE:LINE: what" when a file and line
- * apply, else "what". Empty string when no error occurred. Owned by ctx, valid until the next
- * call that fails on it. */
+ * apply, else "what". Empty string when no error occurred, and for a NULL context. Owned by ctx,
+ * valid until the next call that fails on it. */
 LX_API const char *lx_ctx_errmsg(const lx_ctx *ctx);
 
-/** The file and line of the last error (NULL and 0 when none apply). */
+/** The file and line of the last error (NULL and 0 when none apply, and for a NULL context). The
+ * string is owned by ctx, valid until the next call that fails on it. */
 LX_API const char *lx_ctx_errfile(const lx_ctx *ctx);
 LX_API long lx_ctx_errline(const lx_ctx *ctx);
 
-/** Installs a log callback (NULL removes it). Messages at or below max_level are delivered. */
+/** Installs a log callback (fn NULL removes it). Messages at or below max_level are delivered; the
+ * default (no callback) delivers none. A NULL context is a no-op. */
 LX_API void lx_ctx_set_log(lx_ctx *ctx, lx_log_fn fn, void *user, lx_log_level max_level);
+
+/** The kinds of text file the library reads whole, each with a size limit (README "Robustness",
+ * src/core/limits.h). A reader refuses a larger file, device or stream when it reaches the limit
+ * ("FILE: larger than N MB (raise with LX_MAX_INPUT_MB)", LX_EIO), and refuses binary data (a NUL
+ * byte, UTF-16 text, control bytes in the first block; LX_EPARSE naming the line) as it arrives. */
+typedef enum lx_input_kind {
+    LX_INPUT_SPECTRUM = 0,  /* spectra: SPD text, CGATS, instrument exports (default 256 MB) */
+    LX_INPUT_LUMINAIRE = 1, /* photometric files: IES LM-63, EULUMDAT, TILT tables (default 16 MB) */
+    LX_INPUT_SCENE = 2,     /* scene files and their includes (default 16 MB) */
+    LX_INPUT_KERNEL = 3     /* OpenCL kernel sources read from LX_KERNEL_DIR (default 16 MB) */
+} lx_input_kind;
+#define LX_INPUT_KIND_COUNT 4
+
+/** Sets the size limit in bytes for files of `kind` read through ctx; 0 restores the default:
+ * the environment variable LX_MAX_INPUT_MB (a whole number of MB of 2^20 bytes, 1 to 1048576,
+ * for every kind) when set, else the kind's default. LX_EINVAL for an unknown kind. */
+LX_API lx_status lx_ctx_set_input_limit(lx_ctx *ctx, lx_input_kind kind, size_t max_bytes);
+
+/** The size limit in bytes in effect for `kind` on ctx (ctx may be NULL: the default). */
+LX_API size_t lx_ctx_input_limit(const lx_ctx *ctx, lx_input_kind kind);
+
+/** Frees text the library wrote to memory for the caller (lx_luminaire_write_ies). Accepts NULL. */
+LX_API void lx_text_free(char *text);
 
 /** Room lx_double_format needs, the terminating NUL included. */
 #define LX_DOUBLE_CHARS 32
@@ -115,7 +192,7 @@ LX_API size_t lx_double_format(double value, char *out);
 /** Opens path for reading as every reader of the library does: "-" is standard input; a missing
  * file or a directory is LX_EIO naming the path; a FIFO waits at most LX_FIFO_WAIT_S seconds
  * (default 10; 0: for ever) for its first data (LX_EIO saying so after that). Close *out with
- * fclose unless it is stdin. */
+ * fclose unless it is stdin. Errors: LX_EINVAL (a NULL context, path or out), LX_EIO. */
 LX_API lx_status lx_file_open(lx_ctx *ctx, const char *path, FILE **out);
 
 /* ============================================================================================ */
@@ -126,11 +203,19 @@ LX_API lx_status lx_file_open(lx_ctx *ctx, const char *path, FILE **out);
  * start-up (see README "opencl"); never an error when no OpenCL platform exists. */
 typedef enum lx_backend { LX_BACKEND_AUTO = 0, LX_BACKEND_CPU = 1, LX_BACKEND_OPENCL = 2 } lx_backend;
 
-/** Parses "auto", "cpu" or "opencl" into *out; returns LX_EINVAL (message names the text) otherwise. */
+/** Parses "auto", "cpu" or "opencl" into *out. Errors: LX_EINVAL (another text; the message names it). */
 LX_API lx_status lx_backend_parse(lx_ctx *ctx, const char *text, lx_backend *out);
 
-/** The backend named by the environment variable LX_BACKEND, or LX_BACKEND_AUTO when unset/invalid. */
+/** The backend named by the environment variable LX_BACKEND, or LX_BACKEND_AUTO when unset/invalid.
+ * Reads the environment on every call. Thread-safe. */
 LX_API lx_backend lx_backend_from_env(void);
+
+/** The backend (LX_BACKEND_CPU or LX_BACKEND_OPENCL) that did the work of the last successful call on
+ * this context that chooses one: lx_batch_integrate, lx_batch_resample, lx_batch_colorimetry,
+ * lx_alphaopic_batch, lx_spectral_exr_read_xyz, lx_grid_illuminance, lx_irradiance_dirs,
+ * lx_irradiance_map and lx_scene_eval (OPENCL when any of its grid work ran on a device). A failed
+ * call leaves it as it was. LX_BACKEND_AUTO before any such call, and for a NULL context. */
+LX_API lx_backend lx_ctx_backend_used(const lx_ctx *ctx);
 
 /** The SIMD paths of the CPU code. A path runs only on a CPU with every instruction-set extension
  * its code uses (AVX2: the x86-64-v3 set, AVX2 FMA F16C BMI1 BMI2 LZCNT MOVBE POPCNT; AVX512: the
@@ -146,27 +231,30 @@ LX_API lx_simd lx_simd_cpu(void);
  * unknown value does not cap). Thread-safe. */
 LX_API lx_simd lx_simd_level(void);
 
-/** "scalar", "avx2" or "avx512"; NULL for a value that is none of them. */
+/** "scalar", "avx2" or "avx512" (static storage); NULL for a value that is none of them. Thread-safe. */
 LX_API const char *lx_simd_name(lx_simd simd);
 
-/** Parses "scalar", "avx2" or "avx512" into *out; LX_EINVAL (message names the text) otherwise. */
+/** Parses "scalar", "avx2" or "avx512" into *out. Errors: LX_EINVAL (another text; the message names it). */
 LX_API lx_status lx_simd_parse(lx_ctx *ctx, const char *text, lx_simd *out);
 
 /** OpenCL device types for the device choice. */
 typedef enum lx_cl_type { LX_CL_AUTO = 0, LX_CL_CPU = 1, LX_CL_GPU = 2 } lx_cl_type;
 
 /** Chooses the OpenCL device this context will use, before its first OpenCL work: platform and
- * device indices (-1: any; then the environment LX_PLATFORM / LX_DEVICE apply) and a type (AUTO
- * prefers a GPU, then any device). Releases an OpenCL state the context already holds.
- * Returns LX_EUNSUPPORTED in a build without OpenCL. Does not initialise OpenCL. */
+ * device indices (negative: any; then the environment LX_PLATFORM / LX_DEVICE apply) and a type
+ * (AUTO prefers a GPU, then any device). Releases an OpenCL state the context already holds. Does
+ * not initialise OpenCL: indices that name no device fail at the first OpenCL work (LX_EDEVICE).
+ * Errors: LX_EINVAL (an unknown type), LX_EUNSUPPORTED (a build without OpenCL). */
 LX_API lx_status lx_cl_select(lx_ctx *ctx, int platform, int device, lx_cl_type type);
 
 /** Borrows a caller's OpenCL context and command queue (cl_context and cl_command_queue passed
- * as void*, so this header needs no OpenCL headers). The library retains both and releases them
- * at lx_ctx_destroy; the device is the queue's. Returns LX_EUNSUPPORTED without OpenCL. */
+ * as void*, so this header needs no OpenCL headers). The library retains both (clRetain*) and
+ * releases them at lx_ctx_destroy; the caller may release its own references at once. The device
+ * is the queue's. Errors: LX_EINVAL (either NULL), LX_EDEVICE (the queue cannot be queried),
+ * LX_EUNSUPPORTED (a build without OpenCL). */
 LX_API lx_status lx_cl_borrow(lx_ctx *ctx, void *cl_context, void *cl_command_queue);
 
-/** Description of one OpenCL device. */
+/** Description of one OpenCL device. A result struct (ABI policy: reserved is written as zero). */
 typedef struct lx_cl_device_info {
     int platform, device;           /* indices as LX_PLATFORM / LX_DEVICE count them */
     char platform_name[128];
@@ -176,19 +264,28 @@ typedef struct lx_cl_device_info {
     unsigned compute_units;
     unsigned long long global_mem_bytes;
     unsigned long long max_alloc_bytes; /* CL_DEVICE_MAX_MEM_ALLOC_SIZE, the chunk limit */
-    int fp64;                       /* 1 when cl_khr_fp64 (or OpenCL >= 1.2 double) is available */
+    int fp64;                       /* 1 when cl_khr_fp64 (or OpenCL >= 1.2 double) is available
+                                     * and not switched off by LX_CL_FP64=0 */
     int is_default;                 /* 1 for the device the AUTO choice (and environment) picks */
+    long long reserved[4];          /* zero: room for later fields */
 } lx_cl_device_info;
 
-/** Lists every OpenCL device of every platform into *out (malloc'ed, free with free()), *n of
- * them. No platform is not an error: *n = 0. Does not create an OpenCL context. */
+/** Lists every OpenCL device of every platform into *out, *n of them; free the array with
+ * lx_cl_devices_free. No platform is not an error: *n = 0 and *out NULL, also in a build without
+ * OpenCL. Does not create an OpenCL context. Errors: only the general ones (NULL arguments,
+ * LX_ENOMEM). */
 LX_API lx_status lx_cl_devices(lx_ctx *ctx, lx_cl_device_info **out, size_t *n);
 
+/** Frees the array of lx_cl_devices. Accepts NULL. */
+LX_API void lx_cl_devices_free(lx_cl_device_info *devices);
+
 /** Initialises OpenCL on ctx if not done yet (device choice, context, queue) and describes the
- * device in use. LX_EDEVICE when no device can be used, with the OpenCL call and code. */
+ * device in use. Errors: LX_EDEVICE (no device can be used; the message names the OpenCL call and
+ * code), LX_EUNSUPPORTED (a build without OpenCL). */
 LX_API lx_status lx_cl_info(lx_ctx *ctx, lx_cl_device_info *out);
 
-/** 1 when ctx already holds an initialised OpenCL state (start-up already paid), else 0. */
+/** 1 when ctx already holds an initialised OpenCL state (start-up already paid), else 0 (also for a
+ * NULL context). */
 LX_API int lx_cl_ready(const lx_ctx *ctx);
 
 /* ============================================================================================ */
@@ -215,18 +312,20 @@ typedef enum lx_function {
     LX_FN_COUNT
 } lx_function;
 
-/** A view of an embedded weighting function. Returns LX_EINVAL for an unknown id. */
+/** A view of an embedded weighting function (static storage, never freed). Errors: LX_EINVAL (an
+ * unknown id). */
 LX_API lx_status lx_function_get(lx_ctx *ctx, lx_function fn, lx_spd *out);
 
 /** A view of a CIE illuminant from the embedded tables by name: "A", "D50", "D55", "D65", "D75",
  * "E", "FL1".."FL12", "FL3.1".."FL3.15", "LED-B1".."LED-V2", "HP1".."HP5" (relative SPDs as
- * published, 5 nm). Returns LX_EINVAL for an unknown name. */
+ * published, 5 nm; static storage, never freed). Errors: LX_EINVAL (an unknown name). */
 LX_API lx_status lx_illuminant_get(lx_ctx *ctx, const char *name, lx_spd *out);
 
-/** The names of the embedded illuminants, NULL-terminated (static storage). */
+/** The names of the embedded illuminants, NULL-terminated (static storage). Thread-safe. */
 LX_API const char *const *lx_illuminant_names(void);
 
-/** CIE illuminant A by its defining formula (CIE 015:2018 eq. 4.1), any wavelength: 100 at 560 nm. */
+/** CIE illuminant A by its defining formula (CIE 015:2018 eq. 4.1), relative, any wavelength in nm:
+ * 100 at 560 nm. NaN for a wavelength that is not positive. Thread-safe. */
 LX_API double lx_illuminant_a(double lambda_nm);
 
 /** Planck's law: spectral radiance of a blackbody in W/(sr m2 nm) at lambda_nm and T_K, with
@@ -234,28 +333,31 @@ LX_API double lx_illuminant_a(double lambda_nm);
  * underflows to 0). Returns NaN when lambda_nm or T_K is not positive and finite. Thread-safe. */
 LX_API double lx_planck(double lambda_nm, double T_K);
 
-/** Total radiant exitance of a blackbody, Stefan-Boltzmann sigma T^4 in W/m2. */
+/** Total radiant exitance of a blackbody, Stefan-Boltzmann sigma T^4 in W/m2 (T_K in K). Thread-safe. */
 LX_API double lx_stefan_boltzmann(double T_K);
 
 /** CIE D-series relative SPD for a correlated colour temperature 4000-25000 K (CIE 015:2018
- * 4.1.2; M1, M2 rounded to 3 decimals as the standard prescribes) at n wavelengths (300-830 nm,
- * basis linearly interpolated; 0 outside). Returns LX_ERANGE for a CCT outside 4000-25000 K. */
+ * 4.1.2; M1, M2 rounded to 3 decimals as the standard prescribes) at n wavelengths lambda_nm into
+ * value (n doubles, caller's; 300-830 nm, basis linearly interpolated; 0 outside). Errors: LX_ERANGE
+ * (a CCT outside 4000-25000 K), LX_EINVAL (NULL arrays with n > 0). */
 LX_API lx_status lx_daylight(lx_ctx *ctx, double cct_K, size_t n, const double *lambda_nm,
                              double *value);
 
-/** Chromaticity of CIE daylight at cct_K (CIE 015:2018 eq. 4.7-4.8). */
+/** Chromaticity x, y (either may be NULL) of CIE daylight at cct_K (CIE 015:2018 eq. 4.7-4.8).
+ * Errors: LX_ERANGE (a CCT outside 4000-25000 K). */
 LX_API lx_status lx_daylight_xy(lx_ctx *ctx, double cct_K, double *x, double *y);
 
 /** A view of CIE 13.3-1995 test colour sample TCS01..TCS14 (index 1..14): spectral reflectance
- * factor, 360-830 nm at 5 nm, from the embedded table (valid for the life of the program).
- * LX_EINVAL for another index. Thread-safe. */
+ * factor, 360-830 nm at 5 nm, from the embedded table (static storage, never freed). Errors:
+ * LX_EINVAL (another index). */
 LX_API lx_status lx_tcs_get(lx_ctx *ctx, int index, lx_spd *out);
 
 /* ============================================================================================ */
 /* 4. Spectra: reading, integration, colorimetry (src/spectral) */
 /* ============================================================================================ */
 
-/** Spectra read from one file. Owns every array and string it points to. */
+/** Spectra read from one file. Owns every array and string it points to; made by lx_spd_read_file
+ * or lx_spd_read_mem, freed with lx_spd_set_free. */
 typedef struct lx_spd_set {
     char *file;    /* the path given to the reader ("-" for standard input) */
     size_t count;  /* number of spectra */
@@ -263,21 +365,31 @@ typedef struct lx_spd_set {
     long *line;    /* for each spectrum, the line of the file it starts on (rows layout) or its header line */
 } lx_spd_set;
 
-/** Reads spectra from a text file ("-" is standard input): columns (wavelength, value...) or rows
- * (a header of wavelengths, one spectrum per row), separators , ; tab or spaces, '#' comments,
+/** Reads spectra from a text file ("-" is standard input): columns (wavelength in nm, value...) or
+ * rows (a header of wavelengths, one spectrum per row), separators , ; tab or spaces, '#' comments,
  * optional header, CRLF, UTF-8 BOM, and CGATS/Argyll spectral files (SPECTRAL_* fields).
- * Unsorted rows are sorted. Errors (LX_EPARSE, LX_EIO) name the file and line. On success *out
- * owns the result; free it with lx_spd_set_free. On failure *out is NULL. */
+ * Unsorted rows are sorted. On success the caller owns *out; free it with lx_spd_set_free. On
+ * failure *out is NULL. Errors: LX_EPARSE (malformed data; the message names file and line), LX_EIO
+ * (cannot open or read), LX_ENOMEM. */
 LX_API lx_status lx_spd_read_file(lx_ctx *ctx, const char *path, lx_spd_set **out);
 
-/** Same as lx_spd_read_file on a memory buffer; name is used in messages and as set->file. */
+/** Same as lx_spd_read_file on len bytes of text (need not be NUL-terminated; not kept); name (NULL:
+ * "(memory)") is used in messages and copied to set->file. Errors: as lx_spd_read_file, less LX_EIO. */
 LX_API lx_status lx_spd_read_mem(lx_ctx *ctx, const char *name, const char *text, size_t len,
                                  lx_spd_set **out);
+
+/** The same for an open stream (a pipe; not closed) whose first prefix_len bytes at prefix the
+ * caller already read from it (prefix may be NULL when none): the rest is read as
+ * lx_spd_read_file reads "-", under the spectrum size limit (the prefix counted), binary data
+ * refused; name is used in messages and as set->file. Errors: those of lx_spd_read_file. */
+LX_API lx_status lx_spd_read_stream(lx_ctx *ctx, const char *name, FILE *in, const char *prefix, size_t prefix_len,
+                                    lx_spd_set **out);
 
 /** Frees a set. Accepts NULL. */
 LX_API void lx_spd_set_free(lx_spd_set *set);
 
-/** Checks a spectrum view: n >= 2, finite values, strictly increasing wavelengths. */
+/** Checks a spectrum view: n >= 2, finite values, strictly increasing finite wavelengths. Errors:
+ * LX_EINVAL (the message says which sample fails). */
 LX_API lx_status lx_spd_check(lx_ctx *ctx, const lx_spd *spd);
 
 /** Integration methods (see README): */
@@ -291,17 +403,20 @@ typedef enum lx_method {
 /** Standard observers. */
 typedef enum lx_observer { LX_OBSERVER_2 = 2, LX_OBSERVER_10 = 10 } lx_observer;
 
-/** The method LX_METHOD_AUTO picks for this spectrum (never returns LX_METHOD_AUTO). */
+/** The method LX_METHOD_AUTO picks for this spectrum (never returns LX_METHOD_AUTO); another method
+ * is returned as given. spd must be a valid view (lx_spd_check). Thread-safe. */
 LX_API lx_method lx_method_resolve(const lx_spd *spd, lx_method method);
 
-/** Integrates spd * weight over wavelength with the given method, where weight is any sampled
- * function (a colour-matching function, an action spectrum). The result has the unit of
- * spd value x weight x nm. For LX_METHOD_CIE15 spd must be uniformly sampled (else LX_EINVAL). */
+/** Integrates spd * weight over wavelength with the given method into *out, where weight is any
+ * sampled function (a colour-matching function, an action spectrum). The result has the unit of
+ * spd value x weight x nm. Errors: LX_EINVAL (an invalid view, an unknown method, LX_METHOD_CIE15 on
+ * a spectrum that is not uniformly sampled). */
 LX_API lx_status lx_spd_integrate(lx_ctx *ctx, const lx_spd *spd, const lx_spd *weight,
                                   lx_method method, double *out);
 
-/** Integral of the spectrum alone over its whole range (the radiant integral): the exact integral of
- * the piecewise-linear spectrum (trapezoid rule) whatever the method (validated, otherwise unused). */
+/** Integral of the spectrum alone over its whole range (the radiant integral, unit of value x nm):
+ * the exact integral of the piecewise-linear spectrum (trapezoid rule) whatever the method
+ * (validated, otherwise unused). Errors: LX_EINVAL (an invalid view or method). */
 LX_API lx_status lx_spd_integrate_radiant(lx_ctx *ctx, const lx_spd *spd, lx_method method,
                                           double *out);
 
@@ -318,45 +433,62 @@ typedef struct lx_colorimetry {
     double scotopic_Y;        /* K'm * integral(S V') with K'm = 1700.06 lm/W */
     double sp_ratio;          /* scotopic_Y / Y (NaN when Y is 0) */
     lx_method method;         /* the method used (auto resolved) */
+    long long reserved[4];    /* zero: room for later results (ABI policy) */
 } lx_colorimetry;
 
-/** Computes every quantity of lx_colorimetry for one spectrum. A spectrum with zero luminous
- * content gives X = Y = Z = 0 and NaN chromaticities (not an error). */
+/** Computes every quantity of lx_colorimetry for one spectrum (values in W/nm give lm, W/m2/nm lx,
+ * W/(sr m2 nm) cd/m2). A spectrum with zero luminous content gives X = Y = Z = 0 and NaN
+ * chromaticities (not an error; lx_colorimetry_check reports it); a CCT out of range is
+ * cct_valid = 0, not an error. Values near the top of the double range are integrated scaled (a
+ * spectrum at 1e300 computes). Errors: LX_EINVAL (an invalid view, observer or method), LX_ERANGE
+ * "integral overflows: values up to M ..." when a result itself leaves the double range. */
 LX_API lx_status lx_spd_colorimetry(lx_ctx *ctx, const lx_spd *spd, lx_observer observer,
                                     lx_method method, lx_colorimetry *out);
 
 /** The derived quantities of lx_colorimetry from the integrals of a spectrum: xyz[k] = integral
  * of S times xbar, ybar, zbar (without Km), vprime = integral of S V', radiant = integral of S.
- * out->method is kept as given (set it before the call). For batch paths that integrate many
- * spectra at once (lx_batch_integrate) and need every other column. */
+ * out->method is kept as given (set it before the call); every other field is written. For batch
+ * paths that integrate many spectra at once (lx_batch_integrate) and need every other column.
+ * Errors: LX_EINVAL (an unknown observer, NULL xyz or out). */
 LX_API lx_status lx_colorimetry_from_integrals(lx_ctx *ctx, lx_observer observer, const double xyz[3],
                                                double vprime, double radiant, lx_colorimetry *out);
+
+/** Checks a result before it is reported: LX_ERANGE when an integral left the double range
+ * ("integral overflows: values up to M give X beyond the double range"; max_abs, the largest
+ * |value| of the spectrum, or NaN when unknown) or when a quantity that is always defined is
+ * NaN or infinite ("x is undefined (NaN): X + Y + Z = 0 (no luminous content)"); the message
+ * names the quantity. cct_K and duv are not checked (NaN there means no CCT, cct_valid = 0). */
+LX_API lx_status lx_colorimetry_check(lx_ctx *ctx, const lx_colorimetry *r, double max_abs);
 
 /* ============================================================================================ */
 /* 5. Correlated colour temperature (src/spectral) */
 /* ============================================================================================ */
 
-/** CCT and Duv from CIE 1960 (u, v), solved exactly on the Planckian locus computed with the
- * observer's colour-matching functions (360-830 nm, 1 nm) and c2 = 1.4388e-2 m K. Searches
- * 500 K to 1e6 K; returns LX_ERANGE (and NaN outputs) when the nearest locus point is outside that. */
+/** CCT (K) and Duv from CIE 1960 (u, v), solved exactly on the Planckian locus computed with the
+ * observer's colour-matching functions (360-830 nm, 1 nm) and c2 = 1.4388e-2 m K; the locus tables
+ * are built on first use and cached on ctx. Searches 500 K to 1e6 K. cct_K and duv may be NULL;
+ * both are set to NaN on failure. Errors: LX_ERANGE (u or v not finite, or the nearest locus point
+ * outside that range), LX_EINVAL (an unknown observer). */
 LX_API lx_status lx_cct_from_uv(lx_ctx *ctx, lx_observer observer, double u, double v,
                                 double *cct_K, double *duv);
 
-/** Convenience: from CIE xy. */
+/** The same from CIE 1931 x, y. Errors: as lx_cct_from_uv (LX_ERANGE also where x, y has no uv). */
 LX_API lx_status lx_cct_from_xy(lx_ctx *ctx, lx_observer observer, double x, double y,
                                 double *cct_K, double *duv);
 
 /** CCT and Duv of n chromaticities (CIE 1960 u[i], v[i]) at once, fast: the Planckian locus
  * precomputed once per process (513 nodes in ln T, 900 K - 120000 K, quintic Hermite with exact
  * derivatives), the nearest point found by bisection and Newton steps, no exp (about 0.1 us a point).
- * Agrees with lx_cct_from_uv to rounding (tests/test_cct_fast.c: |dT| < 1e-9 relative, |dDuv| <
+ * Agrees with lx_cct_from_uv to rounding (tests/test_cct_fast.c: |dT| < 1e-10 relative, |dDuv| <
  * 1e-12); a point whose nearest locus point is outside the table or more than 0.09 from the locus
  * is solved by lx_cct_from_uv. Where lx_cct_from_uv has no answer (LX_ERANGE) cct_K[i] and duv[i]
- * are NaN; that is not an error. Returns LX_EINVAL for a bad observer or NULL arrays. */
+ * are NaN; that is not an error. Errors: LX_EINVAL (a NULL context, an unknown observer, NULL
+ * arrays with n > 0). */
 LX_API lx_status lx_cct_from_uv_batch(lx_ctx *ctx, lx_observer observer, size_t n, const double *u,
                                       const double *v, double *cct_K, double *duv);
 
-/** CIE 1960 uv of the Planckian radiator at T_K with the observer's CMFs. */
+/** CIE 1960 u, v (either may be NULL) of the Planckian radiator at T_K with the observer's CMFs.
+ * Errors: LX_EINVAL (an unknown observer, T_K not positive and finite). */
 LX_API lx_status lx_planck_uv(lx_ctx *ctx, lx_observer observer, double T_K, double *u, double *v);
 
 /* ============================================================================================ */
@@ -367,7 +499,8 @@ LX_API lx_status lx_planck_uv(lx_ctx *ctx, lx_observer observer, double T_K, dou
 typedef enum lx_dtype { LX_F32 = 0, LX_F64 = 1 } lx_dtype;
 
 /** N spectra sampled on one uniform grid start_nm + j * step_nm, j < n_lambda, row-major:
- * spectrum i starts at element i * row_stride (row_stride 0 means n_lambda). Not owned. */
+ * spectrum i starts at element i * row_stride (row_stride 0 means n_lambda). A view: it does not
+ * own values. */
 typedef struct lx_batch {
     size_t n_spectra;
     size_t n_lambda;       /* >= 1 */
@@ -377,24 +510,28 @@ typedef struct lx_batch {
     const void *values;    /* float or double, n_spectra rows */
 } lx_batch;
 
-/** Options of lx_batch_integrate (zero-initialise for defaults). */
+/** Options of the batch calls (zero-initialise for defaults; ABI policy: reserved stays zero). The
+ * backend that did the work is lx_ctx_backend_used(ctx) afterwards. */
 typedef struct lx_batch_opts {
     lx_backend backend;    /* AUTO (default) also reads LX_BACKEND */
     int threads;           /* CPU threads; 0 = every online core */
     size_t chunk_spectra;  /* OpenCL: spectra per chunk; 0 = from CL_DEVICE_MAX_MEM_ALLOC_SIZE */
-    lx_backend used;       /* OUT: the backend that did the work */
+    long long reserved[4]; /* zero: room for later options */
 } lx_batch_opts;
 
 /** Integrates N spectra against K weighting functions at once with the cie15 rule:
  * out[i*k + f] = sum_j value[i][j] * w_f(start_nm + j*step_nm) * step_nm, the weights linearly
- * interpolated from their tables and zero outside them (no Km factor). Accumulates in double on
- * both backends (1e-9 relative CPU vs OpenCL for double input, 1e-6 for float). opts may be NULL.
- * A fall-back from OpenCL to the CPU in AUTO is reported through the log callback (LX_LOG_INFO).
- * Thread-safe for distinct contexts. Outputs untouched on failure. */
+ * interpolated from their tables and zero outside them (no Km factor; unit of value x nm). out:
+ * n_spectra x k doubles, the caller's. Accumulates in double on both backends (1e-9 relative CPU vs
+ * OpenCL for double input, 1e-6 for float). opts may be NULL. A fall-back from OpenCL to the CPU in
+ * AUTO is reported through the log callback (LX_LOG_INFO). Errors: LX_EINVAL (an invalid grid,
+ * dtype, function id or option), LX_EUNSUPPORTED (OPENCL asked of a build without OpenCL, or double
+ * input on a device without fp64), LX_EDEVICE (an OpenCL failure when OPENCL was asked). */
 LX_API lx_status lx_batch_integrate(lx_ctx *ctx, const lx_batch *batch, const lx_function *fns, size_t k,
-                                    lx_batch_opts *opts, double *out);
+                                    const lx_batch_opts *opts, double *out);
 
-/** A batch read from a rows-layout CSV: one spectrum per line on the header's uniform grid. */
+/** A batch read from a rows-layout CSV: one spectrum per line on the header's uniform grid. Made by
+ * lx_batch_table_read(_mem), freed with lx_batch_table_free. */
 typedef struct lx_batch_table {
     lx_batch batch;  /* owns batch.values */
     char *names;     /* the rows' first cells, NUL-separated ("" when the file has no name column) */
@@ -403,9 +540,11 @@ typedef struct lx_batch_table {
 
 /** Reads a rows-layout batch CSV ("id,380,381,...,780" then "name,v1,v2,..." per line; separators
  * , ; or tab; '#' comment and blank lines skipped; CRLF; BOM) into a float or double batch, in
- * parallel on `threads` threads (0 = every core). The header's wavelengths must form a uniform
- * grid (else LX_EUNSUPPORTED: use lx_spd_read_file). Errors (LX_EPARSE) name file and line.
- * "-" is standard input. Free *out with lx_batch_table_free. */
+ * parallel on `threads` threads (0 = every core). "-" is standard input. The caller owns *out; free
+ * it with lx_batch_table_free (*out is NULL on failure). Errors: LX_EPARSE (naming file and line),
+ * LX_EUNSUPPORTED (the header's wavelengths are not a uniform grid: use lx_spd_read_file), LX_EIO,
+ * LX_EINVAL (an unknown dtype). lx_batch_table_read_mem reads len bytes of text (not kept), file
+ * naming it in messages. lx_batch_table_free accepts NULL. */
 LX_API lx_status lx_batch_table_read(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads,
                                      lx_batch_table **out);
 LX_API lx_status lx_batch_table_read_mem(lx_ctx *ctx, const char *file, const char *text, size_t len,
@@ -413,20 +552,22 @@ LX_API lx_status lx_batch_table_read_mem(lx_ctx *ctx, const char *file, const ch
 LX_API void lx_batch_table_free(lx_batch_table *t);
 
 /** Called by lx_batch_table_stream for each chunk of consecutive rows, in file order, on the
- * caller's thread: chunk (valid only during the call; its names as in lx_batch_table) holds rows
- * row0 .. row0 + chunk->batch.n_spectra - 1 of the file. A non-LX_OK return stops the stream
- * and is returned by it. */
+ * caller's thread: chunk (owned by the stream, valid only during the call; its names as in
+ * lx_batch_table) holds rows row0 .. row0 + chunk->batch.n_spectra - 1 of the file. A non-LX_OK
+ * return stops the stream and is returned by it. */
 typedef lx_status (*lx_batch_chunk_fn)(void *user, const lx_batch_table *chunk, size_t row0);
 
 /** Reads a rows-layout batch CSV (as lx_batch_table_read; the file is memory-mapped) chunk by
  * chunk: `threads` threads (0 = every core) parse the next chunk while fn handles this one, so
  * memory stays bounded (a few MB of text per thread) and the work overlaps. On LX_EPARSE (file
  * and line of the first bad row in ctx) fn has been called for some, possibly none, of the rows
- * before the bad one: callers that must not act on a bad file keep what fn gives until success. */
+ * before the bad one: callers that must not act on a bad file keep what fn gives until success.
+ * Errors: those of lx_batch_table_read, and fn's own status. */
 LX_API lx_status lx_batch_table_stream(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads,
                                        lx_batch_chunk_fn fn, void *user);
 
-/** The callbacks of lx_batch_table_stream_ex (zero-initialise, then set emit at least). */
+/** The callbacks of lx_batch_table_stream_ex (zero-initialise, then set emit at least; ABI policy:
+ * reserved stays zero). */
 typedef struct lx_batch_stream {
     void *user;
     /* Optional, on the parsing threads: called for each part of the file (consecutive rows, about
@@ -450,6 +591,7 @@ typedef struct lx_batch_stream {
     FILE *input;
     const char *prefix;
     size_t prefix_len;
+    long long reserved[4]; /* zero: room for later options (ABI policy) */
 } lx_batch_stream;
 
 /** lx_batch_table_stream with work on the parsing threads: each part is parsed and handed to
@@ -457,31 +599,41 @@ typedef struct lx_batch_stream {
  * in file order, so the per-part work (colorimetry, formatting) runs on every core and overlaps
  * the parsing. Memory stays bounded whatever the file's size: a regular file is memory-mapped and
  * the pages already read are unmapped behind the reader; a pipe or standard input is read into
- * two alternating buffers of a few MB (a line longer than that grows them). Errors as
- * lx_batch_table_stream. */
+ * two alternating buffers of a few MB, without the size limit of whole files (a line longer than
+ * that grows them, up to the 4 MB a batch line may hold). Errors as lx_batch_table_stream, and
+ * LX_EINVAL for a NULL context, path, cb or cb->emit, or non-zero reserved. */
 LX_API lx_status lx_batch_table_stream_ex(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads,
                                           const lx_batch_stream *cb);
 
 /** CSV end to end: streams a rows-layout batch CSV (lx_batch_table_stream, double values) and
- * integrates each chunk as lx_batch_integrate on the CPU while the next one parses. *out
- * (malloc'ed, free with free()) gets n_spectra x k results, row-major, in file order. */
+ * integrates each chunk as lx_batch_integrate on the CPU while the next one parses. *out gets
+ * n_spectra x k results, row-major, in file order; the caller owns it and frees it with
+ * lx_batch_results_free (*out is NULL on failure). Errors: those of lx_batch_table_read and
+ * lx_batch_integrate. */
 LX_API lx_status lx_batch_table_integrate_file(lx_ctx *ctx, const char *path, const lx_function *fns, size_t k,
                                                int threads, double **out, size_t *n_spectra);
 
+/** Frees the results of lx_batch_table_integrate_file. Accepts NULL. */
+LX_API void lx_batch_results_free(double *results);
+
 /** Resamples N spectra given on their own strictly increasing wavelengths (row i: n_in[i]
  * samples at lambda_nm + offset[i], values at value + offset[i]) onto the uniform grid of dst
- * (dst->values must point to writable memory of dst->dtype, n_spectra rows) by linear
- * interpolation, zero outside each spectrum: the piecewise-linear model the exact method uses.
- * backend as in lx_batch_integrate (OpenCL: the resample kernel). */
+ * (dst->values must point to the caller's writable memory of dst->dtype, n_spectra rows; dst->n_spectra
+ * is set) by linear interpolation, zero outside each spectrum: the piecewise-linear model the exact
+ * method uses. opts (may be NULL) as in lx_batch_integrate (OpenCL: the resample kernel). Errors:
+ * LX_EINVAL (an invalid grid, wavelengths not increasing), LX_EUNSUPPORTED and LX_EDEVICE as for
+ * lx_batch_integrate (the kernel needs fp64). */
 LX_API lx_status lx_batch_resample(lx_ctx *ctx, size_t n_spectra, const double *lambda_nm, const double *value,
-                                   const size_t *offset, const size_t *n_in, lx_batch *dst, lx_batch_opts *opts);
+                                   const size_t *offset, const size_t *n_in, lx_batch *dst,
+                                   const lx_batch_opts *opts);
 
 /** Colorimetry of every spectrum of a batch (N spectra on one uniform grid, lx_batch)
  * with the cie15 rule: the integrals by lx_batch_integrate on opts->backend, the derived
- * quantities (CCT and Duv solved per spectrum) on opts->threads threads. out: n_spectra entries.
- * Agrees with lx_spd_colorimetry (method cie15) to 1e-9 relative. opts may be NULL. */
+ * quantities (CCT and Duv solved per spectrum) on opts->threads threads. out: n_spectra entries,
+ * the caller's. Agrees with lx_spd_colorimetry (method cie15) to 1e-9 relative. opts may be NULL.
+ * Errors: those of lx_batch_integrate; LX_EINVAL (an unknown observer, n_lambda < 2). */
 LX_API lx_status lx_batch_colorimetry(lx_ctx *ctx, const lx_batch *batch, lx_observer observer,
-                                      lx_batch_opts *opts, lx_colorimetry *out);
+                                      const lx_batch_opts *opts, lx_colorimetry *out);
 
 /* ============================================================================================ */
 /* 7. Photobiology: alpha-opic and mesopic quantities, efficacy of a file (src/spectral) */
@@ -505,21 +657,24 @@ typedef struct lx_alphaopic {
     double elr[5];        /* alpha-opic efficacy of radiation E_alpha / E_v, W/lm (NaN when E_v = 0) */
     double edi[5];        /* alpha-opic equivalent daylight (D65) illuminance E_alpha / K_alpha^D65, lx */
     double der[5];        /* daylight efficacy ratio elr / K_alpha^D65 (NaN when E_v = 0) */
+    long long reserved[4]; /* zero: room for later results (ABI policy) */
 } lx_alphaopic;
 
-/** K_alpha,v^D65 of CIE S 026:2018 Table 2 in W/lm (melanopic 1.3262e-3); NaN for a bad index. */
+/** K_alpha,v^D65 of CIE S 026:2018 Table 2 in W/lm (melanopic 1.3262e-3); NaN for a bad index.
+ * Thread-safe. */
 LX_API double lx_alphaopic_d65_efficacy(lx_alphaopic_kind kind);
 
 /** CIE S 026:2018 alpha-opic irradiances, equivalent daylight illuminances and DERs with the
- * integration method of lx_spd_integrate (action spectra 380-780 nm, 1 nm). Thread-safe for
- * distinct contexts. */
+ * integration method of lx_spd_integrate (action spectra 380-780 nm, 1 nm). Errors: LX_EINVAL (an
+ * invalid view or method). */
 LX_API lx_status lx_alphaopic_compute(lx_ctx *ctx, const lx_spd *spd, lx_method method, lx_alphaopic *out);
 
 /** The same for a batch (cie15 rule, see lx_batch_integrate; OpenCL when opts->backend asks for
- * it or AUTO finds it pays). out[i*6 + k]: the five alpha-opic irradiances (k = 0..4, order of
- * lx_alphaopic_kind) and the illuminance E_v (k = 5) of spectrum i; EDI = out[k] /
- * lx_alphaopic_d65_efficacy(k). opts may be NULL. */
-LX_API lx_status lx_alphaopic_batch(lx_ctx *ctx, const lx_batch *batch, lx_batch_opts *opts,
+ * it or AUTO finds it pays). out (n_spectra x 6 doubles, the caller's) [i*6 + k]: the five
+ * alpha-opic irradiances (k = 0..4, order of lx_alphaopic_kind) and the illuminance E_v (k = 5) of
+ * spectrum i; EDI = out[k] / lx_alphaopic_d65_efficacy(k). opts may be NULL. Errors: those of
+ * lx_batch_integrate. */
+LX_API lx_status lx_alphaopic_batch(lx_ctx *ctx, const lx_batch *batch, const lx_batch_opts *opts,
                                     double *out);
 
 /** CIE 191:2010 MES2 mesopic luminance from photopic luminance L_p and scotopic luminance L_s
@@ -527,13 +682,13 @@ LX_API lx_status lx_alphaopic_batch(lx_ctx *ctx, const lx_batch *batch, lx_batch
  * L_mes = (m L_p + (1 - m) L_s V'0) / (m + (1 - m) V'0), m = 0.7670 + 0.3334 log10(L_mes)
  * clamped to [0, 1], by the standard's iteration from m = 0.5 (bisection if it ever fails to
  * converge). L_p >= 5 cd/m2 gives m = 1, L_mes = L_p. *m_out (may be NULL) receives m.
- * LX_EINVAL for negative or non-finite input. Thread-safe. */
+ * Errors: LX_EINVAL (negative or non-finite input). */
 LX_API lx_status lx_mesopic_luminance(lx_ctx *ctx, double photopic_cd_m2, double scotopic_cd_m2,
                                       double *mesopic_cd_m2, double *m_out);
 
 /** The luminous efficacy of radiation (lm/W, 2 deg observer, auto method) of the single
- * spectrum in a file read with lx_spd_read_file (efficacy.c). LX_EINVAL when the file holds
- * more than one spectrum or its radiant integral is zero. */
+ * spectrum in a file read with lx_spd_read_file (efficacy.c). Errors: those of lx_spd_read_file;
+ * LX_EINVAL (the file holds more than one spectrum, or its radiant integral is zero). */
 LX_API lx_status lx_efficacy_from_spd_file(lx_ctx *ctx, const char *path, double *ler_lm_per_W);
 
 /* ============================================================================================ */
@@ -549,6 +704,7 @@ typedef struct lx_cri {
     int ref_daylight;   /* 0: Planckian reference (CCT < 5000 K), 1: CIE daylight (>= 5000 K) */
     double dc;          /* distance test - reference white in CIE 1960 uv (CIE 13.3 "DC") */
     int valid;          /* 1 when dc <= 5.4e-3; else the CIE says Ra is not meaningful */
+    long long reserved[4]; /* zero: room for later results (ABI policy) */
 } lx_cri;
 
 /** CIE 13.3-1995 colour rendering index: R1-R14 and Ra with the CIE reference illuminant
@@ -558,7 +714,7 @@ typedef struct lx_cri {
  * outside its data). Refuses with LX_ERANGE (the message says why): |Duv| > 0.05, CCT above
  * 25000 K (CIE daylight undefined) or below 500 K, no luminous content, or more than 1 % of the
  * reference's X, Y or Z outside the spectrum's wavelength range (truncated data). Scale-free.
- * Thread-safe for distinct contexts. *out untouched on failure. */
+ * Errors: LX_ERANGE (those refusals), LX_EINVAL (an invalid view). */
 LX_API lx_status lx_cri_compute(lx_ctx *ctx, const lx_spd *spd, lx_cri *out);
 
 /** CIE 224:2017 / ANSI/IES TM-30-20 colour fidelity and gamut of one spectrum. */
@@ -571,14 +727,15 @@ typedef struct lx_tm30 {
     double rcs_hue[16]; /* local chroma shift Rcs,h1..h16, in per cent */
     double rhs_hue[16]; /* local hue shift Rhs,h1..h16 (fraction of the bin radius) */
     double ref_ab[16][2], test_ab[16][2]; /* bin averages of a', b' (the colour vector graphic) */
+    long long reserved[4]; /* zero: room for later results (ABI policy) */
 } lx_tm30;
 
 /** CIE 224:2017 Rf and ANSI/IES TM-30-20 Rf, Rg, per-bin Rf/Rcs/Rhs in CAM02-UCS (CIECAM02:
  * L_A 100 cd/m2, Y_b 20, average surround, D = 1) with the 99 colour evaluation samples over
  * 380-780 nm (5 nm sums for 5 nm data on multiples of 5 nm, else 1 nm), 10 deg observer for
  * the samples, 2 deg for the CCT. Reference: Planckian below 4000 K, CIE daylight above
- * 5000 K, a Y-normalised mix between. Missing data counts as zero (CIE 224); refusals
- * (LX_ERANGE) as for lx_cri_compute. Thread-safe for distinct contexts. */
+ * 5000 K, a Y-normalised mix between. Missing data counts as zero (CIE 224). Errors: LX_ERANGE
+ * (refusals as for lx_cri_compute), LX_EINVAL (an invalid view). */
 LX_API lx_status lx_tm30_compute(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out);
 
 /* ============================================================================================ */
@@ -616,7 +773,7 @@ typedef struct lx_unit {
     const char *title;    /* long name, e.g. "foot-candle (lm/ft2)" */
 } lx_unit;
 
-/** The unit table (static storage, *count entries, aliases included). Thread-safe. */
+/** The unit table (static storage, *count entries, aliases included; count may be NULL). Thread-safe. */
 LX_API const lx_unit *lx_units(size_t *count);
 
 /** The quantity's name ("illuminance") and SI unit ("lx"); "" for LX_Q_NONE. Thread-safe. */
@@ -627,32 +784,34 @@ LX_API const char *lx_quantity_si_unit(lx_quantity q);
  * W/m2 <-> lx, W/sr/m2 <-> cd/m2); LX_Q_NONE for quantities that have none. Thread-safe. */
 LX_API lx_quantity lx_quantity_counterpart(lx_quantity q);
 
-/** Finds a unit by name (case-insensitive; "cd/m^2", "cd/m²", "nits", "lux" accepted).
- * Returns LX_EPARSE naming the unit when it is unknown. */
+/** Finds a unit by name (case-insensitive where that is unambiguous; "cd/m^2", "cd/m²", "nits",
+ * "lux" accepted); *out points into the static table. Errors: LX_EPARSE (an unknown name; the
+ * message names it). */
 LX_API lx_status lx_unit_find(lx_ctx *ctx, const char *name, const lx_unit **out);
 
 /** Parses "1000lm", "2.5 m", "30deg", "46 fc", or a bare number into *si_value (SI unit of its
  * quantity). expect: the quantity wanted (LX_Q_NONE accepts any); a bare number takes
  * bare_unit (a unit name; NULL means the SI unit of expect). *got (may be NULL) receives the
- * quantity parsed. Errors: LX_EPARSE for malformed text or an unknown unit, LX_EINVAL for a
- * unit of another quantity (the message names the unit and both quantities). */
+ * quantity parsed. Errors: LX_EPARSE (malformed text, an unknown unit), LX_EINVAL (a unit of
+ * another quantity; the message names the unit and both quantities). */
 LX_API lx_status lx_quantity_parse(lx_ctx *ctx, const char *text, lx_quantity expect,
                                    const char *bare_unit, double *si_value, lx_quantity *got);
 
-/** Converts value from unit `from` to unit `to` (both names). LX_EINVAL when the quantities
- * differ, LX_EPARSE for unknown names. */
+/** Converts value from unit `from` to unit `to` (both names) into *out. Errors: LX_EINVAL (the
+ * quantities differ), LX_EPARSE (an unknown name). */
 LX_API lx_status lx_unit_convert(lx_ctx *ctx, double value, const char *from, const char *to,
                                  double *out);
 
 /** Writes "VALUE UNIT" with VALUE = si_value expressed in `unit`, printed in the shortest form
- * that reads back exactly, into buf (cap bytes, always terminated). */
+ * that reads back exactly, into buf (the caller's, cap bytes, always terminated). Errors: LX_EINVAL
+ * (no buffer, or cap too small: buf then holds the text cut short), LX_EPARSE (an unknown unit). */
 LX_API lx_status lx_unit_format(lx_ctx *ctx, double si_value, const char *unit, char *buf,
                                 size_t cap);
 
 /** Radiometric -> photometric (or back, with to_photometric = 0) with an explicit luminous
  * efficacy of radiation K in lm/W: photometric = K * radiometric. q is the quantity of the
- * input; *out_q the quantity of the result. LX_EINVAL for K not positive and finite or a q
- * without counterpart. There is no default efficacy: the caller must supply one. */
+ * input; *out_q (may be NULL) the quantity of the result. There is no default efficacy: the caller
+ * must supply one. Errors: LX_EINVAL (K not positive and finite, a q without counterpart). */
 LX_API lx_status lx_radiometric_convert(lx_ctx *ctx, double value_si, lx_quantity q,
                                         double efficacy_lm_per_W, double *out_si,
                                         lx_quantity *out_q);
@@ -661,15 +820,17 @@ LX_API lx_status lx_radiometric_convert(lx_ctx *ctx, double value_si, lx_quantit
 /* 10. Sources, inverse problems and solid angles (src/lighting) */
 /* ============================================================================================ */
 
-/* Sources (sources.c). Distances in m, angles in rad, luminance in cd/m2. A distance that is
- * zero, negative or not finite is LX_EINVAL (never infinity). Receivers facing away get 0. */
+/* Sources (sources.c). Distances in m, angles in rad, luminance in cd/m2. Errors of every function
+ * here: LX_EINVAL for a distance or size that is zero, negative or not finite (never infinity), a
+ * flux, intensity or luminance that is negative or not finite, a NULL output; LX_ERANGE when the
+ * result overflows. Receivers facing away get 0 (not an error). */
 
-/** Illuminance from a point source of intensity I at distance d, incidence angle a from the
- * receiver normal: E = I cos(a) / d^2; 0 when cos(a) <= 0 (back-facing or grazing). */
+/** Illuminance (lx) from a point source of intensity I (cd) at distance d, incidence angle a from
+ * the receiver normal: E = I cos(a) / d^2; 0 when cos(a) <= 0 (back-facing or grazing). */
 LX_API lx_status lx_point_illuminance(lx_ctx *ctx, double intensity_cd, double distance_m,
                                       double incidence_rad, double *illuminance_lx);
 
-/** Intensity of an isotropic point source of flux F: I = F / (4 pi). */
+/** Intensity (cd) of an isotropic point source of flux F (lm): I = F / (4 pi). */
 LX_API lx_status lx_point_intensity(lx_ctx *ctx, double flux_lm, double *intensity_cd);
 
 /** Warn spotlight of flux F and exponent S >= 0 (finite): I(a) = c cos^S(a) for |a| < pi/2,
@@ -678,10 +839,12 @@ LX_API lx_status lx_point_intensity(lx_ctx *ctx, double flux_lm, double *intensi
 LX_API lx_status lx_warn_intensity(lx_ctx *ctx, double flux_lm, double exponent, double angle_rad,
                                    double *peak_cd, double *intensity_cd);
 
-/** cos^S(a) for |a| <= pi/2, else 0 (the normalised Warn lobe). NaN for S < 0 or NaN input. */
+/** cos^S(a) for |a| <= pi/2, else 0 (the normalised Warn lobe). NaN for S < 0 or NaN input.
+ * Thread-safe. */
 LX_API double lx_warn_lobe(double exponent, double angle_rad);
 
-/** Warn exponent whose full beam angle (where I = I_peak / 2) is beam_rad, and back. */
+/** Warn exponent whose full beam angle (where I = I_peak / 2) is beam_rad, and back. Errors:
+ * LX_EINVAL (a beam angle outside (0, pi), an exponent that is not positive). */
 LX_API lx_status lx_warn_exponent_from_beam(lx_ctx *ctx, double beam_rad, double *exponent);
 LX_API lx_status lx_warn_beam_from_exponent(lx_ctx *ctx, double exponent, double *beam_rad);
 
@@ -704,12 +867,14 @@ typedef struct lx_source_result {
     double largest_dimension_m;  /* disk: diameter; rectangle: diagonal */
     int near_field;              /* 1 when distance_m < 5 x largest_dimension_m */
     lx_model model;              /* LX_MODEL_POINT or LX_MODEL_EXACT, never AUTO */
+    long long reserved[4];       /* zero: room for later results (ABI policy) */
 } lx_source_result;
 
 /** Lambertian disk of luminance L and radius R; receiver parallel to it at height h, offset r
  * from the axis. Exact: configuration factor of a parallel differential element to a disk,
  * F = (1/2)[1 - (h^2 + r^2 - R^2) / sqrt((h^2 + r^2 + R^2)^2 - 4 r^2 R^2)], rewritten so no
- * subtraction cancels (see sources.c). Point: E = L pi R^2 h^2 / (h^2 + r^2)^2. */
+ * subtraction cancels (see sources.c). Point: E = L pi R^2 h^2 / (h^2 + r^2)^2. Errors: as above,
+ * and LX_EINVAL for an unknown model or an offset that is not finite. */
 LX_API lx_status lx_disk_illuminance(lx_ctx *ctx, double luminance_cd_m2, double radius_m,
                                      double height_m, double offset_m, lx_model model,
                                      lx_source_result *out);
@@ -717,16 +882,21 @@ LX_API lx_status lx_disk_illuminance(lx_ctx *ctx, double luminance_cd_m2, double
 /** Lambertian rectangle width a (along x) x length b (along y) of luminance L; receiver parallel
  * at height h, its foot at (x, y) from the rectangle's centre (a corner is (a/2, b/2)). Exact: the
  * corner configuration factor (Howell's catalogue, case B-3) superposed over four corner
- * rectangles with signs. Point: E = L a b h^2 / (h^2 + x^2 + y^2)^2. */
+ * rectangles with signs. Point: E = L a b h^2 / (h^2 + x^2 + y^2)^2. Errors: as above, and
+ * LX_EINVAL for an unknown model or x, y not finite. */
 LX_API lx_status lx_rect_illuminance(lx_ctx *ctx, double luminance_cd_m2, double width_m,
                                      double length_m, double height_m, double x_m, double y_m,
                                      lx_model model, lx_source_result *out);
 
-/** Luminance of a Lambertian reflector of reflectance rho (0..1) under illuminance E: rho E / pi. */
+/** Luminance (cd/m2) of a Lambertian reflector of reflectance rho (0..1) under illuminance E (lx):
+ * rho E / pi. Errors: LX_EINVAL (rho outside [0, 1], E negative or not finite). */
 LX_API lx_status lx_lambertian_luminance(lx_ctx *ctx, double reflectance, double illuminance_lx,
                                          double *luminance_cd_m2);
 
-/* Inverse problems (solve.c): a point receiver facing the source at incidence a (rad). */
+/* Inverse problems (solve.c): a point receiver facing the source at incidence a (rad). Errors of
+ * each: LX_EINVAL (a target illuminance, intensity or distance that is not positive and finite, an
+ * angle that is not finite, a NULL output), LX_ERANGE (no solution: the receiver gets no light at
+ * that incidence or angle, or the answer overflows). */
 
 /** Distance at which intensity I gives illuminance E: d = sqrt(I cos a / E). */
 LX_API lx_status lx_solve_distance(lx_ctx *ctx, double illuminance_lx, double intensity_cd,
@@ -742,18 +912,22 @@ LX_API lx_status lx_solve_flux(lx_ctx *ctx, double illuminance_lx, double distan
                                double incidence_rad, double exponent, double angle_rad,
                                double *flux_lm);
 
-/* Solid angles (solid_angle.c), in sr. */
+/* Solid angles (solid_angle.c), in sr, into *sr. Errors: LX_EINVAL (a NULL output and the ranges
+ * each names). */
 
-/** A cone (spherical cap) of half-angle a in [0, pi]: 2 pi (1 - cos a) = 4 pi sin^2(a/2). */
+/** A cone (spherical cap) of half-angle a in [0, pi] (else LX_EINVAL): 2 pi (1 - cos a) =
+ * 4 pi sin^2(a/2). */
 LX_API lx_status lx_solid_angle_cap(lx_ctx *ctx, double half_angle_rad, double *sr);
 
 /** A pixel of a width x height lat-long map (row 0 at theta = 0, theta from +z, phi from +x):
- * (2 pi / width) (cos theta0 - cos theta1), computed as a product of sines. */
+ * (2 pi / width) (cos theta0 - cos theta1), computed as a product of sines. LX_EINVAL for sizes
+ * below 1 or a row outside the map. */
 LX_API lx_status lx_solid_angle_latlong_pixel(lx_ctx *ctx, int width, int height, int row,
                                               double *sr);
 
 /** The rectangle [x0, x1] x [y0, y1] of a plane at distance d, seen from the point whose foot on
- * the plane is the origin: corner terms atan(x y / (d sqrt(x^2 + y^2 + d^2))) with signs. */
+ * the plane is the origin: corner terms atan(x y / (d sqrt(x^2 + y^2 + d^2))) with signs. LX_EINVAL
+ * for d not positive and finite, bounds not finite or out of order. */
 LX_API lx_status lx_solid_angle_rect(lx_ctx *ctx, double x0, double x1, double y0, double y1,
                                      double distance_m, double *sr);
 
@@ -792,7 +966,8 @@ typedef enum lx_lum_symmetry {
 LX_API const char *lx_lum_format_name(lx_lum_format f);
 LX_API const char *lx_lum_symmetry_name(lx_lum_symmetry s);
 
-/** A luminaire read from a file or built from a model. Owns every array and string. The "file"
+/** A luminaire read from a file or built from a model; freed with lx_luminaire_free. Owns every
+ * array and string (a struct only the library allocates: ABI policy). The "file"
  * arrays hold the table as stored (angles in degrees, candela already scaled); the "full" arrays
  * the table expanded to the whole range of planes (C 0..360 inclusive, or H -90..90) that the
  * model interpolates (zero outside its gamma or V range). Read-only after creation: evaluating
@@ -828,12 +1003,14 @@ typedef struct lx_luminaire {
 } lx_luminaire;
 
 /** Reads an IES LM-63 file (1986, 1991, 1995, 2002, 2019) or EULUMDAT file ("-" is stdin),
- * detected by content. Errors name the file and line: LX_EPARSE for malformed data (counts that
- * do not match, truncated tables, negative candela, angles out of order or incomplete),
- * LX_EUNSUPPORTED for type A photometry, LX_EIO. On success *out owns the result. */
+ * detected by content. The caller owns *out and frees it with lx_luminaire_free (*out is NULL on
+ * failure). Errors name the file and line: LX_EPARSE (malformed data: counts that do not match,
+ * truncated tables, negative candela, angles out of order or incomplete), LX_EUNSUPPORTED (type A
+ * photometry), LX_EIO. */
 LX_API lx_status lx_luminaire_read_file(lx_ctx *ctx, const char *path, lx_luminaire **out);
 
-/** Same, from memory; name is used in messages and as lum->file. */
+/** Same, from len bytes of text (not kept); name (NULL: "(memory)") is used in messages and copied
+ * to lum->file. Errors: as lx_luminaire_read_file, less LX_EIO. */
 LX_API lx_status lx_luminaire_read_mem(lx_ctx *ctx, const char *name, const char *text, size_t len,
                                        lx_luminaire **out);
 
@@ -849,14 +1026,15 @@ typedef enum lx_interp {
 } lx_interp;
 
 /** Intensity in cd towards the unit direction (x, y, z) of the luminaire's frame (nadir -z,
- * C0 +x). LX_INTERP_TABLE is treated as bilinear here. Tilt factors are not applied. */
+ * C0 +x). LX_INTERP_TABLE is treated as bilinear here. Tilt factors are not applied. Thread-safe;
+ * lum must be a valid luminaire (no context, so no error: NaN for a NULL one). */
 LX_API double lx_luminaire_intensity_dir(const lx_luminaire *lum, lx_interp interp, double x, double y, double z);
 
-/** Intensity in cd at (C, gamma) in radians (type C), or (H, V) for type B. */
+/** Intensity in cd at (C, gamma) in radians (type C), or (H, V) for type B. As above. */
 LX_API double lx_luminaire_intensity(const lx_luminaire *lum, lx_interp interp, double c_rad, double gamma_rad);
 
 /** The TILT factor for a lamp tilt of tilt_rad (linear in the table, clamped at its ends); 1
- * without a tilt table. */
+ * without a tilt table. Thread-safe. */
 LX_API double lx_luminaire_tilt_factor(const lx_luminaire *lum, double tilt_rad);
 
 /** Summary of a luminaire. */
@@ -867,11 +1045,13 @@ typedef struct lx_lum_summary {
     double beam_angle_deg;    /* full angle to 50 % of the peak, in the C0-C180 plane through the peak */
     double field_angle_deg;   /* the same to 10 % */
     double beam_angle_c90_deg, field_angle_c90_deg; /* the same in the C90-C270 plane */
-    double downward_fraction; /* flux below the horizontal / total */
+    double downward_fraction; /* flux below the horizontal / total (NaN for type B or no flux) */
+    long long reserved[4];    /* zero: room for later results (ABI policy) */
 } lx_lum_summary;
 
 /** Integrates and summarises. Beam and field angles are NaN when the intensity in the plane does
- * not fall to the fraction (or the peak is not in it). */
+ * not fall to the fraction (or the peak is not in it). Errors: LX_EINVAL (a luminaire without
+ * photometry). */
 LX_API lx_status lx_luminaire_summary(lx_ctx *ctx, const lx_luminaire *lum, lx_lum_summary *out);
 
 /** Analytic models the writer can sample. */
@@ -881,27 +1061,34 @@ typedef enum lx_lum_model_kind {
     LX_LUM_MODEL_LAMBERT = 2  /* Lambertian panel: I = (F / pi) cos gamma, gamma < 90 deg */
 } lx_lum_model_kind;
 
+/** A model to sample (options: zero-initialise; reserved stays zero). */
 typedef struct lx_lum_model {
     lx_lum_model_kind kind;
     double flux_lm;           /* > 0 */
     double exponent;          /* Warn S >= 0 */
     double width_m, length_m; /* luminous opening (0: a point); width along C0 */
     double step_deg;          /* gamma step of the table (0: 1 deg for point/Lambert, finer for narrow spots) */
-    const char *catalog;      /* [LUMCAT] text (NULL: a description of the model) */
+    const char *catalog;      /* [LUMCAT] text (NULL: a description of the model), copied */
+    long long reserved[4];    /* zero: room for later options (ABI policy) */
 } lx_lum_model;
 
-/** Samples a model into an axially symmetric luminaire (absolute photometry, LM-63-2002). */
+/** Samples a model into an axially symmetric luminaire (absolute photometry, LM-63-2002). The
+ * caller owns *out (free with lx_luminaire_free; NULL on failure). Errors: LX_EINVAL (an unknown
+ * kind, a flux that is not positive and finite, a Warn exponent outside 0 to 1e6, a negative
+ * opening, a step outside 0.01 to 45 deg, non-zero reserved). */
 LX_API lx_status lx_luminaire_from_model(lx_ctx *ctx, const lx_lum_model *model, lx_luminaire **out);
 
 /** Writes lum as IES LM-63-2002 text (type C; the stored planes and symmetry kept; absolute
- * photometry when lum->absolute, else its lamps and lumens) into *text (malloc'ed, free with
- * free()), *len bytes. Numbers are printed so they read back exactly. */
+ * photometry when lum->absolute, else its lamps and lumens) into *text, *len bytes (NUL-terminated
+ * besides); the caller owns *text and frees it with lx_text_free. Numbers are printed so they read
+ * back exactly. Errors: LX_EUNSUPPORTED (type B photometry), LX_EINVAL (a luminaire without a table). */
 LX_API lx_status lx_luminaire_write_ies(lx_ctx *ctx, const lx_luminaire *lum, char **text, size_t *len);
 
 /* Illuminance grids (grid.c, OpenCL twin kernels/grid.cl). World frame in metres. */
 
 /** A luminaire in a scene: its position, where its nadir (gamma 0) points, and the turn of its
- * C0 plane about that axis. With aim (0,0,-1) and rotate 0, C0 is +x and C90 is +y. */
+ * C0 plane about that axis. With aim (0,0,-1) and rotate 0, C0 is +x and C90 is +y. A view (ABI
+ * policy: frozen). */
 typedef struct lx_placement {
     const lx_luminaire *lum;  /* not owned */
     double pos_m[3];
@@ -909,7 +1096,8 @@ typedef struct lx_placement {
     double rotate_rad;
 } lx_placement;
 
-/** A plane of points: origin + a u + b v for a = a0, a0 + da, ..., a1 and the same for b. */
+/** A plane of points: origin + a u + b v for a = a0, a0 + da, ..., a1 and the same for b. A value
+ * (ABI policy: frozen). */
 typedef struct lx_plane {
     double origin_m[3];
     double u[3], v[3];        /* unit, orthogonal axes of the plane */
@@ -921,11 +1109,13 @@ typedef struct lx_plane {
 /** Fills a plane for "z=H" / "x=H" / "y=H" (axis 'x', 'y' or 'z') with the area A0:A1,B0:B1
  * along the plane's axes ((x, y), (y, z), (x, z)) and either a spacing (> 0; the count is
  * floor((A1 - A0) / S + 1e-9) + 1, so A1 is included when it lies on the grid) or na x nb points.
- * The normal is the plane's axis pointing to +z, +x or +y. */
+ * The normal is the plane's axis pointing to +z, +x or +y. Errors: LX_EINVAL (another axis, bounds
+ * not finite or out of order, no spacing and no counts, too many points). */
 LX_API lx_status lx_plane_axis(lx_ctx *ctx, char axis, double level_m, double a0, double a1, double b0,
                                double b1, double spacing_m, size_t na, size_t nb, lx_plane *out);
 
-/** Options of lx_grid_illuminance (zero-initialise for defaults). */
+/** Options of lx_grid_illuminance (zero-initialise for defaults; ABI policy: reserved stays zero).
+ * The backend that did the work is lx_ctx_backend_used(ctx) afterwards. */
 typedef struct lx_grid_opts {
     lx_model model;           /* LX_MODEL_POINT (default 0 = AUTO: where the point is closer than
                                * 5 x the opening's largest dimension, integrate over the luminous
@@ -939,32 +1129,87 @@ typedef struct lx_grid_opts {
     int fp32;                 /* OpenCL: 1 computes in float (else double where the device has it) */
     double nearfield_tol;     /* AUTO: relative change of the Richardson-extrapolated area sum at
                                * which refinement stops (0: 1e-4; 1e-12 to 0.1) */
-    lx_backend used;          /* OUT: the backend that did the work */
+    long long reserved[4];    /* zero: room for later options */
 } lx_grid_opts;
 
-/** Illuminance in lx at n points (xyz interleaved) on receivers with the given unit normals (n
- * normals, or one when shared_normal), summed over m luminaires: E = sum I(C, gamma) cos(xi) / d^2
- * x tilt factor x maintenance factor. Points behind a receiver's face get 0. Outputs untouched
- * on failure. Thread-safe for distinct contexts. */
+/** Illuminance in lx at n points (xyz interleaved, m) on receivers with the given unit normals (n
+ * normals, or one when shared_normal), summed over m luminaires (borrowed for the call): E = sum
+ * I(C, gamma) cos(xi) / d^2 x tilt factor x maintenance factor, into E_lx (n doubles, the
+ * caller's). Points behind a receiver's face get 0. opts may be NULL. Errors: LX_EINVAL (a normal
+ * that is not a unit vector, a luminaire without photometry or with a non-finite placement, an
+ * option out of its range, OPENCL asked for an interpolation other than the table),
+ * LX_EUNSUPPORTED (OPENCL asked of a build without OpenCL), LX_EDEVICE (an OpenCL failure when
+ * OPENCL was asked). */
 LX_API lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, const double *points,
-                                     size_t n, const double *normals, int shared_normal, lx_grid_opts *opts,
+                                     size_t n, const double *normals, int shared_normal, const lx_grid_opts *opts,
                                      double *E_lx);
 
-/** The points of a plane (na x nb, a fastest) into *points (malloc'ed xyz, free with free()). */
+/** The points of a plane (na x nb, a fastest) into *points (xyz, m), *n of them; the caller owns the
+ * array and frees it with lx_plane_points_free. Errors: LX_EINVAL (fewer than 1 x 1 points). */
 LX_API lx_status lx_plane_points(lx_ctx *ctx, const lx_plane *plane, double **points, size_t *n);
 
-/** E_avg, E_min, E_max and U0 = E_min / E_avg (NaN when E_avg is 0) of n values. */
-typedef struct lx_grid_stats { double avg, min, max, u0; } lx_grid_stats;
+/** Frees the points of lx_plane_points. Accepts NULL. */
+LX_API void lx_plane_points_free(double *points);
+
+/** E_avg, E_min, E_max (the unit of the values, lx for illuminance) and U0 = E_min / E_avg (NaN when
+ * E_avg is 0) of n values. A result struct (ABI policy: reserved is written as zero). */
+typedef struct lx_grid_stats {
+    double avg, min, max, u0;
+    long long reserved[4]; /* zero: room for later results */
+} lx_grid_stats;
+
+/** Fills *out from n >= 1 values (Neumaier-summed average). Errors: LX_EINVAL (no values). */
 LX_API lx_status lx_grid_stats_compute(lx_ctx *ctx, const double *E, size_t n, lx_grid_stats *out);
 
+/* Glare (ugr.c): the CIE 117-1995 unified glare rating and the CIE 190:2010 tabular method. */
+
+/** The Guth position index of a source seen at sigma (the angle between the line of sight and the
+ * direction to the source) and tau (the angle, about the line of sight, between the vertical of
+ * the visual field and the plane through the line of sight and the source: 0 straight above),
+ * both in degrees. Above the line of sight (tau <= 90): the Luckiesh-Guth fit CIE 117 gives,
+ * ln p = (35.2 - 0.31889 tau - 1.22 exp(-2 tau / 9)) 1e-3 sigma + (21 + 0.26667 tau - 0.002963
+ * tau^2) 1e-5 sigma^2; below it (tau > 90): Iwata & Tokura 1997, p = 1 + 0.8 R/D for R/D < 0.6,
+ * else 1 + 1.2 R/D, R/D = tan(sigma) (as Radiance evalglare). Thread-safe. */
+LX_API double lx_guth_position_index(double sigma_deg, double tau_deg);
+
+/** UGR = 8 log10(0.25 / Lb sum L^2 omega / p^2) over n glare sources (luminance cd/m2, solid angle
+ * sr, position index), background luminance Lb > 0 (cd/m2). terms (n values, may be NULL) gets
+ * each source's L^2 omega / p^2. *ugr is NaN when the sum is 0 (no glare source). */
+LX_API lx_status lx_ugr(lx_ctx *ctx, double background_cd_m2, size_t n, const double *luminance_cd_m2,
+                        const double *solid_angle_sr, const double *position_index, double *terms, double *ugr);
+
+/** The luminous area of a luminaire projected towards the unit direction (x, y, z) of its own frame
+ * (nadir -z, C0 +x): W L |z| + H (L |x| + W |y|) for a rectangular opening of width W (along C0),
+ * length L and height H; pi D^2/4 |z| + D H sqrt(x^2 + y^2) for a circular one (IES: negative
+ * width; EULUMDAT: width 0, length the diameter). 0 for a point (no opening). m^2. Thread-safe. */
+LX_API double lx_luminaire_projected_area(const lx_luminaire *lum, double x, double y, double z);
+
+/** The CIE 190:2010 UGR table of a luminaire: 19 rooms X x Y (X across the line of sight, 2H..12H),
+ * 5 reflectance combinations (ceiling/walls/floor cavity 70/50/20, 70/30/20, 50/50/20, 50/30/20,
+ * 30/30/20), viewed crosswise and endwise, uncorrected (the luminaire's own lamp flux). The
+ * observer's eye is H = 2 m below the luminaire plane at the middle of a wall; luminaires on a
+ * square grid of spacing 0.25 H; those with T/R > 3 or gamma > 85 deg are left out (CIE 117
+ * 4.5); Lb from CIE 190 eqs. 7-12 (10-degree zonal fluxes, Tables 4 and 5). L = I / A_p with A_p
+ * the projected luminous area (lx_luminaire_projected_area; LX_EINVAL without one). */
+typedef struct lx_ugr_table {
+    double x_h[19], y_h[19];       /* room sizes in multiples of H */
+    double ugr[19][10];            /* [room][0..4 crosswise, 5..9 endwise] per reflectance combination */
+    double lamp_flux_lm;           /* the flux the table is for */
+    double spacing_h;              /* 0.25 */
+    double lb_cd_m2[19][5];        /* the background luminance per room and reflectance combination */
+} lx_ugr_table;
+LX_API lx_status lx_ugr_table_compute(lx_ctx *ctx, const lx_luminaire *lum, lx_ugr_table *out);
+
 /* ============================================================================================ */
-/* 12. Environment maps, OpenEXR and irradiance (src/radiance) */
+/* 12. Environment maps, OpenEXR and irradiance; daylight skies and the sun (src/radiance) */
 /* ============================================================================================ */
 
 /* Lat-long (equirectangular) environment maps (envmap.c). Direction convention (CLI.md): +z up,
  * theta from +z, phi from +x towards +y. In a width x height map, pixel (row j, column i) covers
  * theta in [j, j+1] pi/height and phi in [i, i+1] 2 pi/width; row 0 touches theta = 0. The map is
- * read as piecewise constant: each pixel's radiance holds over its whole patch of sphere. */
+ * read as piecewise constant: each pixel's radiance holds over its whole patch of sphere. The
+ * geometry helpers without a context (directions, solid angles, moments) are pure and thread-safe
+ * and do not check their arguments: sizes must be >= 1 and rows and columns inside the map. */
 
 /** What the channels of a map measure. */
 typedef enum lx_envmap_units {
@@ -978,7 +1223,9 @@ typedef enum lx_envmap_units {
 #define LX_ENV_DEFAULT_EFFICACY 179.0
 
 /** A lat-long map with 1 (Y) or 3 (R, G, B) channels stored as float (as read; all arithmetic on
- * it is double). Owns data. Create with lx_envmap_create or lx_exr_read, free with lx_envmap_free. */
+ * it is double). Owns data. Made by lx_envmap_create(_cube), lx_exr_read(_any), lx_envmap_downsample
+ * or lx_irradiance_map, freed with lx_envmap_free (a struct only the library allocates: ABI
+ * policy). The caller may write the pixels and the metadata fields of a map it owns. */
 typedef struct lx_envmap {
     int width, height;      /* pixels (any sizes >= 1; lat-long maps are usually width = 2 height) */
     int channels;           /* 1 or 3 */
@@ -987,7 +1234,7 @@ typedef struct lx_envmap {
                              * file's chromaticities, else Rec.709/sRGB (0.2126729, 0.7151522,
                              * 0.0721750); {1, 0, 0} for one channel */
     int has_chromaticities; /* 1 when y_weights came from a chromaticities attribute */
-    double chroma_xy[8];    /* that attribute (rx ry gx gy bx by wx wy), written back by lx_exr_write */
+    double chroma_xy[8];    /* that attribute (rx ry gx gy bx by wx wy), written back by lx_envmap_write_exr */
     lx_envmap_units units;  /* RADIANCE or LUMINANCE (never AUTO once read) */
     double lum_per_unit;    /* cd/m2 per unit of Y: efficacy (RADIANCE) or whiteLuminance / 1 (LUMINANCE) */
     int layout;             /* lx_envmap_layout: LATLONG (0, what lx_envmap_create makes) or CUBE */
@@ -1005,11 +1252,13 @@ typedef enum lx_envmap_layout {
     LX_ENV_CUBE = 1
 } lx_envmap_layout;
 
-/** Creates a zero-filled cube map with faces of size x size texels (width size, height 6 size). */
+/** Creates a zero-filled cube map with faces of size x size texels (width size, height 6 size),
+ * channels 1 or 3; free it with lx_envmap_free (*out NULL on failure). Errors: LX_EINVAL (size
+ * outside 1 to 16384, other channels). */
 LX_API lx_status lx_envmap_create_cube(lx_ctx *ctx, int size, int channels, lx_envmap **out);
 
 /** Unit vector of a cube-map point at fractional map coordinates (row in [0, 6 size), col in
- * [0, size]); texel centres are (r + 0.5, c + 0.5). Thread-safe. */
+ * [0, size]); texel centres are (r + 0.5, c + 0.5). */
 LX_API void lx_envmap_cube_direction(int size, double row, double col, double dir[3]);
 
 /** Exact solid angle of cube texel (row, col) of a face (row 0..size-1; the same on every face):
@@ -1017,7 +1266,7 @@ LX_API void lx_envmap_cube_direction(int size, double row, double col, double di
 LX_API double lx_envmap_cube_texel_sr(int size, int row, int col);
 
 /** Exact first moment (integral of omega d omega, Lambert's polygon formula) of the cube texel at
- * map row (0..6 size - 1) and column. Thread-safe. */
+ * map row (0..6 size - 1) and column. */
 LX_API void lx_envmap_cube_texel_moment(int size, int row, int col, double m[3]);
 
 /** Exact solid angle of any pixel of a map (lat-long or cube), in sr. */
@@ -1026,14 +1275,16 @@ LX_API double lx_envmap_texel_sr(const lx_envmap *map, int row, int col);
 /** Unit vector of the centre of pixel (row, col) of a map (lat-long or cube). */
 LX_API void lx_envmap_texel_direction(const lx_envmap *map, int row, int col, double dir[3]);
 
-/** Creates a zero-filled map (Rec.709 weights, RADIANCE, efficacy 179 lm/W). channels 1 or 3. */
+/** Creates a zero-filled lat-long map (Rec.709 weights, RADIANCE, efficacy 179 lm/W), channels 1
+ * or 3; free it with lx_envmap_free (*out NULL on failure). Errors: LX_EINVAL (a size below 1, more
+ * than 1e9 pixels, other channels). */
 LX_API lx_status lx_envmap_create(lx_ctx *ctx, int width, int height, int channels, lx_envmap **out);
 
 /** Frees a map. Accepts NULL. */
 LX_API void lx_envmap_free(lx_envmap *map);
 
 /** Unit vector of the pixel centre of (row j + 0.5, column i + 0.5) as fractional coordinates
- * (row, col): theta = row pi / height, phi = col 2 pi / width. Thread-safe. */
+ * (row, col): theta = row pi / height, phi = col 2 pi / width. */
 LX_API void lx_envmap_direction(int width, int height, double row, double col, double dir[3]);
 
 /** Exact solid angle of a pixel of row j: (2 pi / width)(cos theta0 - cos theta1), in sr. */
@@ -1041,22 +1292,26 @@ LX_API double lx_envmap_pixel_sr(int width, int height, int row);
 
 /** Exact first moment of a pixel, m = integral over the pixel of omega d omega (a vector whose
  * length is slightly below its solid angle): the projected solid angle seen by a normal n that
- * sees the whole pixel is n . m. Thread-safe. */
+ * sees the whole pixel is n . m. */
 LX_API void lx_envmap_pixel_moment(int width, int height, int row, int col, double m[3]);
 
-/** Luminance Y of a map's channel values: sum y_weights[c] v[c] (no lum_per_unit factor). */
+/** Luminance Y of a map's channel values (pixel: map->channels floats): sum y_weights[c] v[c] (no
+ * lum_per_unit factor). */
 LX_API double lx_envmap_y(const lx_envmap *map, const float *pixel);
 
-/** Per-pixel luminance in cd/m2 (lum_per_unit * Y) into out (width * height doubles). */
+/** Per-pixel luminance in cd/m2 (lum_per_unit * Y) into out (width * height doubles, the caller's).
+ * Errors: only the general ones (a NULL map or out). */
 LX_API lx_status lx_envmap_luminance(lx_ctx *ctx, const lx_envmap *map, double *out);
 
 /** Solid-angle-weighted box filter to a width x height map whose sizes divide the input's: each
  * output pixel is sum(L d omega) / sum(d omega) over the input pixels it covers, so the radiant
- * power of every block is kept exactly. *out is a new map (same weights and units). */
+ * power of every block is kept exactly. *out is a new map (same weights and units) the caller
+ * frees with lx_envmap_free. Errors: LX_EINVAL (sizes that do not divide), LX_EUNSUPPORTED (a cube
+ * map). */
 LX_API lx_status lx_envmap_downsample(lx_ctx *ctx, const lx_envmap *in, int width, int height, lx_envmap **out);
 
 /** Luminance weights (the Y row of the RGB -> XYZ matrix) of RGB primaries and white point given
- * as CIE xy: rx, ry, gx, gy, bx, by, wx, wy. Returns LX_EINVAL for degenerate primaries. */
+ * as CIE xy: rx, ry, gx, gy, bx, by, wx, wy. Errors: LX_EINVAL (degenerate or non-finite primaries). */
 LX_API lx_status lx_rgb_y_weights(lx_ctx *ctx, const double xy[8], double weights[3]);
 
 /* OpenEXR input and output (exr_io.c, OpenEXRCore). */
@@ -1065,12 +1320,13 @@ LX_API lx_status lx_rgb_y_weights(lx_ctx *ctx, const double xy[8], double weight
  * or float channels, any compression OpenEXR supports, channels R,G,B[,A] or Y (or a single
  * channel of any name); A is ignored. The map covers the display window; data-window pixels
  * outside it are dropped and display pixels without data are 0. chromaticities sets y_weights,
- * whiteLuminance makes units LUMINANCE (lum_per_unit = its value). Cube maps, deep and
- * multi-part-only-deep files give LX_EUNSUPPORTED; malformed files LX_EPARSE, unreadable LX_EIO. */
+ * whiteLuminance makes units LUMINANCE (lum_per_unit = its value). The caller owns *out and frees
+ * it with lx_envmap_free (*out NULL on failure). Errors: LX_EUNSUPPORTED (cube maps, deep and
+ * multi-part-only-deep files), LX_EPARSE (a malformed file), LX_EIO (an unreadable one). */
 LX_API lx_status lx_exr_read(lx_ctx *ctx, const char *path, lx_envmap **out);
 
 /** As lx_exr_read, and also reads cube maps (envmap attribute cube, display window N x 6N):
- * map->layout says which. For callers that handle both layouts. */
+ * map->layout says which. For callers that handle both layouts. Errors: as lx_exr_read. */
 LX_API lx_status lx_exr_read_any(lx_ctx *ctx, const char *path, lx_envmap **out);
 
 /** EXR compressions (the values of the file format). */
@@ -1079,19 +1335,22 @@ typedef enum lx_exr_compression {
     LX_EXR_PXR24 = 5, LX_EXR_B44 = 6, LX_EXR_B44A = 7, LX_EXR_DWAA = 8, LX_EXR_DWAB = 9
 } lx_exr_compression;
 
-/** Options of lx_exr_write (zero-initialise for defaults: float, ZIP, scanlines). */
+/** Options of lx_envmap_write_exr (zero-initialise for defaults: float, ZIP, scanlines; ABI
+ * policy: reserved stays zero). */
 typedef struct lx_exr_write_opts {
     int half;                       /* 1: half channels (values rounded to nearest half), 0: float */
     int use_compression;            /* 0: ZIP; 1: the compression below */
     lx_exr_compression compression;
     int tile_size;                  /* > 0: a tiled file with square tiles of this size */
+    long long reserved[4];          /* zero: room for later options */
 } lx_exr_write_opts;
 
 /** Writes a map as an OpenEXR lat-long or cube file (envmap attribute latlong or cube as map->layout
- * says, channels R,G,B or Y,
- * chromaticities when the map has them, whiteLuminance for LUMINANCE maps) atomically: a
- * temporary file renamed into place, an existing file replaced only on success. opts may be NULL. */
-LX_API lx_status lx_exr_write(lx_ctx *ctx, const char *path, const lx_envmap *map, const lx_exr_write_opts *opts);
+ * says, channels R,G,B or Y, chromaticities when the map has them, whiteLuminance for LUMINANCE
+ * maps) atomically: a temporary file renamed into place, an existing file replaced only on success.
+ * opts may be NULL. Errors: LX_EINVAL (an unknown compression, non-zero reserved), LX_EIO (the file
+ * cannot be written; nothing is left at path). */
+LX_API lx_status lx_envmap_write_exr(lx_ctx *ctx, const char *path, const lx_envmap *map, const lx_exr_write_opts *opts);
 
 /* Irradiance from radiance (irradiance*.c): E(n) = integral L(omega) max(0, n . omega) d omega. */
 
@@ -1108,40 +1367,175 @@ typedef enum lx_sh9_window {
     LX_SH9_WINDOW_NONNEG = 1 /* (1, 6/7, 32/35): point-source response (3/28)(1 + 2 cos g)^2 >= 0 */
 } lx_sh9_window;
 
-/** Options of the irradiance calls (zero-initialise for defaults). */
+/** Options of the irradiance calls (zero-initialise for defaults; ABI policy: reserved stays zero).
+ * Where the work ran is lx_ctx_backend_used(ctx) afterwards (BRUTE on a lat-long map may run on
+ * OpenCL; every other method runs on the CPU). */
 typedef struct lx_irr_opts {
     lx_irr_method method;
     lx_sh9_window window;    /* SH9 only */
     lx_backend backend;      /* BRUTE only: AUTO uses OpenCL when the work is large, CPU otherwise */
     int threads;             /* CPU threads; 0 = every online core */
-    lx_backend used;         /* OUT: where BRUTE ran (CPU for the other methods) */
+    long long reserved[4];   /* zero: room for later options */
 } lx_irr_opts;
 
 /** Spherical-harmonic coefficients L_lm of a map (l <= 2, index l^2 + l + m, real orthonormal
- * basis of Ramamoorthi and Hanrahan 2001), per channel. */
+ * basis of Ramamoorthi and Hanrahan 2001), per channel, in the map's unit. A value (ABI policy:
+ * frozen). */
 typedef struct lx_sh9 {
     int channels;
     double c[9][3];
 } lx_sh9;
 
 /** Projects a map onto 9 SH coefficients: each pixel's basis integral is exact (closed forms over
- * its theta and phi range), so the projection of the piecewise-constant map is exact. */
+ * its theta and phi range), so the projection of the piecewise-constant map is exact. Errors:
+ * LX_EINVAL (a map without data). */
 LX_API lx_status lx_sh9_project(lx_ctx *ctx, const lx_envmap *map, lx_sh9 *out);
 
 /** E(n) per channel from SH9 coefficients: sum_l w_l A_l L_lm Y_lm(n), A = (pi, 2pi/3, pi/4).
- * n need not be normalised (it is). out has sh->channels values. */
+ * n need not be normalised (it is). out has sh->channels values. Errors: LX_EINVAL (n zero or not
+ * finite). */
 LX_API lx_status lx_sh9_irradiance(lx_ctx *ctx, const lx_sh9 *sh, lx_sh9_window window, const double n[3], double *out);
 
-/** Irradiance for n_dirs normals (3 doubles each) into out (n_dirs * map->channels doubles, in
- * the map's unit times sr: W/m2 for RADIANCE maps). opts may be NULL (SH9). */
+/** Irradiance for n_dirs normals (3 doubles each) into out (n_dirs * map->channels doubles, the
+ * caller's, in the map's unit times sr: W/m2 for RADIANCE maps). opts may be NULL (SH9). Errors:
+ * LX_EINVAL (an invalid map, a non-finite pixel, a zero or non-finite normal, an unknown method),
+ * LX_EUNSUPPORTED and LX_EDEVICE as for lx_batch_integrate (BRUTE with OPENCL asked). */
 LX_API lx_status lx_irradiance_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const double *dirs,
-                                    lx_irr_opts *opts, double *out);
+                                    const lx_irr_opts *opts, double *out);
 
 /** Irradiance environment map: E at the pixel centre directions of a width x height map in the
- * input's layout (the input's size when both are 0; a cube input needs height = 6 width). *out is a new map with the input's channels,
- * weights and units. opts may be NULL (SH9). */
+ * input's layout (the input's size when both are 0; a cube input needs height = 6 width). *out is a
+ * new map with the input's channels, weights and units, which the caller frees with lx_envmap_free
+ * (NULL on failure). opts may be NULL (SH9). Errors: as lx_irradiance_dirs, and LX_EINVAL for a
+ * size that does not fit the layout. */
 LX_API lx_status lx_irradiance_map(lx_ctx *ctx, const lx_envmap *map, int width, int height,
-                                   lx_irr_opts *opts, lx_envmap **out);
+                                   const lx_irr_opts *opts, lx_envmap **out);
+
+/* Daylight: the CIE standard general skies, the Perez all-weather sky (sky.c, sky_perez.c), the
+ * sun's position (sun.c, NREL SPA) and sky maps (sky_map.c). World directions: +z up, +y north,
+ * +x east (the convention of Radiance gensky/gendaylit); solar azimuth is measured from north
+ * towards east. Luminance in cd/m2, illuminance in lx, irradiance in W/m2. */
+
+/** Sky models. */
+typedef enum lx_sky_model {
+    LX_SKY_MODEL_CIE = 0,   /* ISO 15469 / CIE S 011 standard general sky, types 1..15 */
+    LX_SKY_MODEL_PEREZ = 1  /* Perez, Seals & Michalsky 1993 all-weather sky */
+} lx_sky_model;
+
+/** A sky luminance distribution L(dir) = zenith_cd_m2 * rel(dir) / rel(zenith), zero below the
+ * horizon. rel = (1 + a exp(b / cos Z)) * indicatrix(chi): CIE 1 + c (exp(d chi) - exp(d pi/2))
+ * + e cos^2 chi; Perez 1 + c exp(d chi) + e cos^2 chi (Z zenith angle of the element, chi its
+ * angle from the sun). Plain data: copy freely; evaluating it is thread-safe. */
+typedef struct lx_sky {
+    lx_sky_model model;
+    int cie_type;               /* 1..15 (CIE), 0 for Perez */
+    double a, b, c, d, e;       /* the model's parameters */
+    double sun_dir[3];          /* unit vector towards the sun (may be below the horizon for CIE types
+                                 * whose indicatrix is uniform: 1, 3, 5) */
+    double zenith_cd_m2;        /* Lz */
+    double diffuse_horizontal_lx; /* Dv: the horizontal illuminance from the sky (without the sun) */
+    double epsilon, delta;      /* Perez: sky clearness and brightness (NaN for CIE) */
+    int perez_bin;              /* Perez: clearness bin 1..8 (0 for CIE) */
+    double sun_normal_lx;       /* Perez: the direct normal illuminance Evn from the efficacy model (lx);
+                                 * CIE: NaN (the sun's illuminance is given separately) */
+} lx_sky;
+
+/** How a CIE sky is scaled: by its zenith luminance (cd/m2) or by its diffuse horizontal
+ * illuminance Dv (lx). */
+typedef enum lx_sky_scale { LX_SKY_BY_ZENITH = 0, LX_SKY_BY_HORIZONTAL = 1 } lx_sky_scale;
+
+/** A CIE standard general sky of type 1..15 with the sun towards sun_dir (any length > 0), scaled
+ * to value (zenith luminance or horizontal illuminance, > 0). Dv is the exact integral of the
+ * distribution (adaptive quadrature to 1e-12 relative). LX_EINVAL for a bad type, value or a sun
+ * below the horizon on a type whose indicatrix is not uniform. */
+LX_API lx_status lx_sky_cie(lx_ctx *ctx, int type, const double sun_dir[3], lx_sky_scale scale, double value,
+                            lx_sky *out);
+
+/** The parameters (a, b, c, d, e) of CIE type 1..15 from the embedded table (src/data). */
+LX_API lx_status lx_sky_cie_params(lx_ctx *ctx, int type, double params[5]);
+
+/** Inputs of the Perez sky: the sun and the measured irradiance, as gendaylit -W takes them. */
+typedef struct lx_perez_input {
+    double sun_dir[3];           /* towards the sun, above the horizon */
+    double direct_normal_W_m2;   /* DNI, >= 0 */
+    double diffuse_horizontal_W_m2; /* DHI, > 0 */
+    int day_of_year;             /* 1..366 (the extraterrestrial irradiance's eccentricity factor) */
+    double precipitable_water_cm;/* atmospheric precipitable water for the efficacy models (0: 2 cm, gendaylit's default) */
+} lx_perez_input;
+
+/** The Perez all-weather sky for the given irradiance: sky clearness epsilon and brightness Delta
+ * (Perez 1990: Kasten air mass, solar constant 1367 W/m2), the coefficients of its clearness bin
+ * (Perez 1993, gendaylit's adjustments: Delta >= 0.2 for 1.065 < epsilon < 2.8), the diffuse
+ * horizontal and direct normal illuminance from the Perez 1990 efficacy models, and the
+ * distribution scaled so its horizontal illuminance is that diffuse illuminance (exact quadrature;
+ * gendaylit uses a 145-point sum instead). epsilon is clamped to at most 12 (gendaylit's range);
+ * Delta is clamped to 0.01..0.6 (gendaylit's range) and the luminance to >= 0. LX_EINVAL for a sun at or
+ * below the horizon or bad irradiance. */
+LX_API lx_status lx_sky_perez(lx_ctx *ctx, const lx_perez_input *in, lx_sky *out);
+
+/** Luminance (cd/m2) of the sky towards dir (any length > 0); 0 below the horizon. Thread-safe. */
+LX_API double lx_sky_luminance(const lx_sky *sky, const double dir[3]);
+
+/** Illuminance (lx) from the sky alone (no sun, no ground) on a plane with normal n (any length
+ * > 0): the integral of L max(0, n . w) over the sky hemisphere by Gauss-Legendre quadrature on
+ * pieces split at the receiver's horizon and at the sun (nodes per piece and axis, 8..1024; 0:
+ * 48: 1e-8 relative or better on the CIE skies). Thread-safe. */
+LX_API lx_status lx_sky_illuminance(lx_ctx *ctx, const lx_sky *sky, const double n[3], int nodes, double *E_lx);
+
+/** Inputs of the solar position algorithm (NREL SPA, Reda & Andreas 2004). */
+typedef struct lx_sun_input {
+    int year, month, day, hour, minute; /* local standard time; year -2000..6000 */
+    double second;
+    double timezone_h;        /* hours east of Greenwich (-7 for US Mountain Standard Time) */
+    double delta_ut1_s;       /* UT1 - UTC, -1..1 s (0 when unknown) */
+    double delta_t_s;         /* TT - UT1 (about 69 s in the 2020s) */
+    double latitude_deg;      /* north positive */
+    double longitude_deg;     /* east positive */
+    double elevation_m;
+    double pressure_mbar;     /* annual mean local pressure (for refraction; 1013.25 at sea level) */
+    double temperature_C;     /* annual mean local temperature */
+    double refraction_deg;    /* atmospheric refraction at sunrise and sunset (0.5667 usually) */
+} lx_sun_input;
+
+/** The sun's position and the intermediate SPA values the algorithm's published test prints. */
+typedef struct lx_sun_position {
+    double julian_day;
+    double L_deg, B_deg, R_au;     /* Earth heliocentric longitude, latitude, radius vector */
+    double delta_psi_deg, delta_epsilon_deg, epsilon_deg; /* nutation and true obliquity */
+    double hour_angle_deg;         /* observer local hour angle H (before parallax) */
+    double declination_deg;        /* topocentric declination */
+    double zenith_deg;             /* topocentric zenith angle, refraction applied */
+    double azimuth_deg;            /* from north towards east, 0..360 */
+    double dir[3];                 /* unit vector towards the sun (x east, y north, z up) */
+} lx_sun_position;
+
+/** NREL SPA (Reda & Andreas 2004, NREL/TP-560-34302): the sun's topocentric zenith and azimuth,
+ * uncertainty +-0.0003 deg for years -2000..6000. LX_EINVAL (message names the field) for inputs
+ * outside SPA's ranges. Thread-safe. */
+LX_API lx_status lx_sun_spa(lx_ctx *ctx, const lx_sun_input *in, lx_sun_position *out);
+
+/** The direction towards the sun (x east, y north, z up) at altitude and azimuth (from north
+ * towards east), in radians. Thread-safe. */
+LX_API void lx_sun_direction(double altitude_rad, double azimuth_rad, double dir[3]);
+
+/** Half the angle the solar disc subtends: 0.2665 deg (Radiance gendaylit), in radians. */
+#define LX_SUN_HALF_ANGLE_RAD (0.2665 * 3.14159265358979323846 / 180.0)
+
+/** Options of lx_sky_map (zero-initialise for defaults). */
+typedef struct lx_sky_map_opts {
+    int width, height;           /* lat-long size (0: 1024 x 512) */
+    double sun_normal_lx;        /* direct normal illuminance of the sun disc (0: no sun) */
+    double ground_reflectance;   /* below the horizon: uniform rho (Dv + Evn sin(altitude)) / pi (0: black) */
+    int supersample;             /* sky samples per pixel and axis, Gauss-Legendre in cos(theta) and phi (0: 4) */
+} lx_sky_map_opts;
+
+/** Renders a sky (and the sun disc) as a one-channel (Y) lat-long map in the convention of
+ * lx_envmap (+z up, theta from +z, phi from +x towards +y) with units LUMINANCE (lum_per_unit 1:
+ * values are cd/m2). Each sky pixel holds the solid-angle mean of the luminance over its patch;
+ * the sun disc (half angle LX_SUN_HALF_ANGLE_RAD) is spread over the pixels it covers in proportion
+ * to the covered solid angle, scaled so the map's sum of L dOmega over the disc is exactly
+ * sun_normal_lx. *out is a new map. */
+LX_API lx_status lx_sky_map(lx_ctx *ctx, const lx_sky *sky, const lx_sky_map_opts *opts, lx_envmap **out);
 
 /* ============================================================================================ */
 /* 13. Spectral OpenEXR images (src/radiance) */
@@ -1152,7 +1546,8 @@ LX_API lx_status lx_irradiance_map(lx_ctx *ctx, const lx_envmap *map, int width,
  * "S0.550,000000nm" (units nm, um, mm, m, pm); polarised S1-S3 channels are ignored; reflective
  * "T." channels alone are LX_EUNSUPPORTED. Values are spectral radiance W/(sr m2 nm). */
 
-/** A spectral image integrated per pixel to absolute CIE XYZ. Owns its arrays. */
+/** A spectral image integrated per pixel to absolute CIE XYZ. Owns its arrays; made by
+ * lx_spectral_exr_read_xyz, freed with lx_xyz_image_free (a struct only the library allocates). */
 typedef struct lx_xyz_image {
     int width, height;     /* the data window */
     double *xyz;           /* width * height * 3, row-major, X Y Z interleaved: Km * integral of S xbar
@@ -1169,13 +1564,15 @@ typedef struct lx_xyz_image {
  * and integrates every pixel with lx_batch_integrate (opts may be NULL; opts->backend chooses CPU
  * or OpenCL). Errors name the file: LX_EPARSE (not EXR, no S0 channels, a malformed wavelength,
  * a duplicate or non-finite value), LX_EUNSUPPORTED (reflective only, subsampled or integer
- * channels, deep data), LX_EIO. Free *out with lx_xyz_image_free. */
-LX_API lx_status lx_spectral_exr_read_xyz(lx_ctx *ctx, const char *path, lx_observer observer, lx_batch_opts *opts,
-                                          lx_xyz_image **out);
+ * channels, deep data), LX_EIO; LX_EINVAL (an unknown observer) and those of lx_batch_integrate.
+ * The caller owns *out and frees it with lx_xyz_image_free (*out NULL on failure). */
+LX_API lx_status lx_spectral_exr_read_xyz(lx_ctx *ctx, const char *path, lx_observer observer,
+                                          const lx_batch_opts *opts, lx_xyz_image **out);
 
 /** Writes the image as a float OpenEXR with channels X, Y, Z (ZIP), atomically (temporary file +
- * rename; an existing file is replaced only on success). */
-LX_API lx_status lx_xyz_exr_write(lx_ctx *ctx, const char *path, const lx_xyz_image *img);
+ * rename; an existing file is replaced only on success). Errors: LX_EINVAL (an image without data),
+ * LX_EIO (the file cannot be written; nothing is left at path). */
+LX_API lx_status lx_xyz_image_write_exr(lx_ctx *ctx, const char *path, const lx_xyz_image *img);
 
 /** Frees an image. Accepts NULL. */
 LX_API void lx_xyz_image_free(lx_xyz_image *img);
@@ -1199,11 +1596,12 @@ typedef struct lx_counters {
     unsigned long long environment_samples;    /* numerical sky samples (quadrature nodes, map pixels) */
     unsigned long long spectra_integrated;     /* spectrum integrations (colorimetry, alpha-opic: one each per source) */
     unsigned long long kernel_launches;        /* OpenCL batches run by scene evaluation (each >= 1 kernel launch) */
+    unsigned long long reserved[4];            /* zero: room for later counters (ABI policy) */
 } lx_counters;
 
-/** Copies the context's counters into *out (zeros for a NULL ctx). Thread-safe for distinct contexts. */
+/** Copies the context's counters into *out (zeros for a NULL ctx; nothing for a NULL out). */
 LX_API void lx_ctx_counters(const lx_ctx *ctx, lx_counters *out);
-/** Sets the context's counters to zero. */
+/** Sets the context's counters to zero (a NULL context is a no-op). */
 LX_API void lx_ctx_counters_reset(lx_ctx *ctx);
 
 /** The effects a scene may need. */
@@ -1220,7 +1618,7 @@ typedef enum lx_effect {
 } lx_effect;
 
 /** "inverse_square", "cosine", "spot_falloff", "goniometric", "near_field", "spectral",
- * "environment", "opencl" (static storage; NULL for a bad value). */
+ * "environment", "opencl" (static storage; NULL for a bad value). Thread-safe. */
 LX_API const char *lx_effect_name(lx_effect e);
 
 /** Luminaire kinds of a scene. */
@@ -1234,7 +1632,8 @@ typedef enum lx_scene_lum_kind {
 
 /** One luminaire of a scene. Its frame is the one lx_grid_illuminance uses: the smallest rotation
  * taking the nadir (0, 0, -1) to aim (the nadir, spot axis and emitting normal), then a turn by
- * rotate about the aim; with aim (0, 0, -1) and rotate 0, C0 and the rectangle width are +x. */
+ * rotate about the aim; with aim (0, 0, -1) and rotate 0, C0 and the rectangle width are +x. An
+ * element of lx_scene.lum (ABI policy: reserved space, as results). */
 typedef struct lx_scene_luminaire {
     char *name;
     const char *file;         /* the scene file and line of its section header (names kept by the scene) */
@@ -1257,12 +1656,14 @@ typedef struct lx_scene_luminaire {
     lx_spd_set *spd;          /* owned, when spd_path is set (the first spectrum, or `spectrum`) */
     size_t spd_index;
     double cct_K;             /* NaN unless cct was given */
+    long long reserved[4];    /* zero: room for later fields */
 } lx_scene_luminaire;
 
 /** Receiver kinds. */
 typedef enum lx_scene_rec_kind { LX_SREC_POINT = 0, LX_SREC_GRID = 1 } lx_scene_rec_kind;
 
-/** One receiver: a point, or a grid of na x nb points on a plane x, y or z = level. */
+/** One receiver: a point, or a grid of na x nb points on a plane x, y or z = level. An element of
+ * lx_scene.rec (ABI policy: reserved space, as results). */
 typedef struct lx_scene_receiver {
     char *name;
     const char *file;         /* the scene file and line of its section header */
@@ -1274,15 +1675,32 @@ typedef struct lx_scene_receiver {
     size_t na, nb;            /* grid: points along the first and second free axes (x before y before z) */
     size_t n;                 /* points */
     double *points;           /* n x 3 (grids: a fastest), owned */
+    long long reserved[4];    /* zero: room for later fields */
 } lx_scene_receiver;
 
 /** The sky kinds. */
-typedef enum lx_scene_sky_kind { LX_SKY_NONE = 0, LX_SKY_UNIFORM, LX_SKY_OVERCAST, LX_SKY_MAP } lx_scene_sky_kind;
+typedef enum lx_scene_sky_kind {
+    LX_SKY_NONE = 0, LX_SKY_UNIFORM, LX_SKY_OVERCAST, LX_SKY_MAP,
+    LX_SKY_CIE,   /* a CIE standard general sky (type 1..15), by zenith luminance or horizontal illuminance */
+    LX_SKY_PEREZ  /* the Perez all-weather sky from direct-normal and diffuse-horizontal irradiance */
+} lx_scene_sky_kind;
+
+/** A glare observer: UGR (CIE 117) at an eye position looking along view. */
+typedef struct lx_scene_observer {
+    char *name;
+    const char *file;         /* the scene file and line of its section header */
+    long line;
+    double pos_m[3];          /* the eye */
+    double view[3];           /* unit line of sight */
+    double up[3];             /* unit, orthogonal to view: the vertical of the visual field (from +z) */
+    double background_cd_m2;  /* Lb given in the scene (NaN: none) */
+} lx_scene_observer;
 
 /** Forced state of an effect in [effects]. */
 typedef enum lx_effect_force { LX_FORCE_AUTO = 0, LX_FORCE_ON = 1, LX_FORCE_OFF = 2 } lx_effect_force;
 
-/** A scene read from a file. Owns everything it points to. Read-only after reading. */
+/** A scene read from a file. Owns everything it points to. Read-only after reading; freed with
+ * lx_scene_free (a struct only the library allocates: ABI policy). */
 typedef struct lx_scene {
     char *file;
     char *title;                          /* [scene] title, or "" */
@@ -1306,19 +1724,39 @@ typedef struct lx_scene {
     long spectral_line;                   /* the [output] line that first asked for cct or melanopic_edi */
     char **names;                         /* the file names the entities point to (owned) */
     size_t n_names;
+    /* daylight: CIE and Perez skies, the sun, glare observers (scene_daylight.c) */
+    int sky_cie_type;                     /* cie: 1..15 */
+    int sky_by_illuminance;               /* cie: scaled by `illuminance` (Dv) instead of `luminance` (Lz) */
+    double sky_illuminance_lx;            /* cie: the horizontal illuminance given */
+    double sky_dni_W_m2, sky_dhi_W_m2;    /* perez: direct normal and diffuse horizontal irradiance */
+    double sky_water_cm;                  /* perez: precipitable water (0: 2 cm) */
+    int sky_day_of_year;                  /* perez: from [sky] day_of_year or the [sun] date (0: unset) */
+    lx_sky sky_model;                     /* cie, perez: the distribution, set when the scene is read */
+    int has_sun;                          /* a [sun] section */
+    double sun_dir[3];                    /* towards the sun (x east, y north, z up) */
+    double sun_normal_lx;                 /* its direct normal illuminance (0: the sun only places the sky) */
+    int sun_by_date;                      /* 1: placed by date, time and site (sun_position holds SPA's result) */
+    lx_sun_position sun_position;
+    const char *sun_file_at;              /* the scene file and line of [sun] */
+    long sun_line;
+    size_t n_obs;                         /* [observer NAME] sections */
+    lx_scene_observer *obs;
 } lx_scene;
 
 /** Reads a scene file ('-' is standard input); includes are resolved relative to the including
  * file. Errors (LX_EPARSE naming file and line: unknown section or key, bare dimensional
  * number, wrong unit, missing key, include cycle; LX_EIO; errors of referenced IES/SPD files)
- * leave *out NULL. Referenced photometric and spectral files are read here. */
+ * leave *out NULL. Referenced photometric and spectral files are read here. The caller owns *out
+ * and frees it with lx_scene_free. */
 LX_API lx_status lx_scene_read_file(lx_ctx *ctx, const char *path, lx_scene **out);
-/** Same from memory; name is used in messages and to resolve includes (its directory). */
+/** Same from len bytes of text (not kept); name (required) is used in messages and to resolve
+ * includes (its directory). Errors: as lx_scene_read_file. */
 LX_API lx_status lx_scene_read_mem(lx_ctx *ctx, const char *name, const char *text, size_t len, lx_scene **out);
 /** Frees a scene. Accepts NULL. */
 LX_API void lx_scene_free(lx_scene *scene);
 
-/** The planner's decision. */
+/** The planner's decision; made by lx_scene_plan_make, freed with lx_scene_plan_free (a struct only
+ * the library allocates). */
 typedef struct lx_scene_plan {
     int on[LX_EFFECT_COUNT];          /* 1 when the effect is simulated */
     int forced[LX_EFFECT_COUNT];      /* 1 when [effects] decided it */
@@ -1329,7 +1767,7 @@ typedef struct lx_scene_plan {
     unsigned char *near;              /* n_lum x n_points (luminaire-major): 1 = near-field path; owned */
     size_t n_normals;                 /* distinct receiver normals (sky evaluations) */
     lx_counters estimate;             /* the work the plan expects */
-    int backend;                      /* an lx_backend: OPENCL when some grid work runs on a device */
+    lx_backend backend;               /* OPENCL when some grid work runs on a device, else CPU */
     unsigned char *device;            /* n_lum x n_rec: 1 = this IES luminaire's work on this grid (all
                                        * far field) runs as one lx_grid_illuminance OpenCL batch; owned */
     int device_required;              /* 1 when asked for explicitly: a device failure is then an error */
@@ -1337,13 +1775,16 @@ typedef struct lx_scene_plan {
 
 /** Plans a scene: which effects, and which pairs take the near-field path. backend: AUTO lets
  * the size of the work decide (OpenCL for >= 1e7 far-field IES evaluations on grids), CPU never
- * uses a device, OPENCL sends every eligible grid batch to one. LX_EPARSE (naming the [effects] or [output]
- * line) when a forced effect cannot be honoured (spectral forced on without spectra,
- * environment forced on without a sky). Free with lx_scene_plan_free. */
-LX_API lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *scene, int backend, lx_scene_plan **out);
+ * uses a device, OPENCL sends every eligible grid batch to one. Errors: LX_EPARSE (naming the [effects]
+ * or [output] line) when a forced effect cannot be honoured (spectral forced on without spectra,
+ * environment forced on without a sky); LX_EINVAL (an unknown backend). The caller owns *out (NULL
+ * on failure) and frees it with lx_scene_plan_free, which accepts NULL. The plan refers to the
+ * scene: use it only with that scene, and free it before the scene. */
+LX_API lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *scene, lx_backend backend, lx_scene_plan **out);
 LX_API void lx_scene_plan_free(lx_scene_plan *plan);
 
-/** Results at every receiver point (receiver order, then point order). */
+/** Results at every receiver point (receiver order, then point order); made by lx_scene_eval,
+ * freed with lx_scene_result_free (a struct only the library allocates). */
 typedef struct lx_scene_result {
     size_t n_points, n_lum;
     size_t *first;              /* n_rec + 1: receiver r has points first[r] .. first[r+1]-1 */
@@ -1356,17 +1797,47 @@ typedef struct lx_scene_result {
     double seconds;             /* wall-clock time of the evaluation */
 } lx_scene_result;
 
-/** Options of lx_scene_eval (zero-initialise for defaults: everything). */
+/** Options of lx_scene_eval (zero-initialise for defaults: everything; ABI policy: reserved stays
+ * zero). */
 typedef struct lx_scene_eval_opts {
     int single;                 /* 1: evaluate luminaire `index` alone (no sky) */
     size_t index;
+    long long reserved[4];      /* zero: room for later options */
 } lx_scene_eval_opts;
 
-/** Evaluates a planned scene (opts may be NULL). Adds its work to the context's counters.
- * Free *out with lx_scene_result_free. Outputs untouched on failure. */
+/** Evaluates a planned scene (opts may be NULL). Adds its work to the context's counters, and sets
+ * lx_ctx_backend_used. The caller owns *out and frees it with lx_scene_result_free (accepts NULL).
+ * Errors: LX_EINVAL (an index outside the scene, non-zero reserved), LX_EDEVICE (a device failure
+ * when the plan requires the device; otherwise the work falls back to the CPU), LX_ENOMEM. */
 LX_API lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *scene, const lx_scene_plan *plan,
                                const lx_scene_eval_opts *opts, lx_scene_result **out);
 LX_API void lx_scene_result_free(lx_scene_result *res);
+
+/** One luminaire as a glare source for one observer (CIE 117). */
+typedef struct lx_glare_term {
+    int visible;                /* 1 when it counts: a luminous area, in front of the eye (sigma < 90 deg) and lit towards it */
+    double luminance_cd_m2;     /* L = I(towards the eye) / projected luminous area */
+    double solid_angle_sr;      /* omega = projected area / d^2 */
+    double position_index;      /* Guth p (lx_guth_position_index) */
+    double sigma_deg, tau_deg;  /* the source's angle from the line of sight, and about it from the vertical */
+    double term;                /* L^2 omega / p^2 */
+} lx_glare_term;
+
+/** The glare of a scene at its observers. */
+typedef struct lx_scene_glare {
+    size_t n_obs, n_lum;
+    double *ugr;                /* n_obs: UGR (NaN when no luminaire counts) */
+    double *background_cd_m2;   /* n_obs: Lb used */
+    lx_glare_term *terms;       /* n_obs x n_lum, observer-major */
+} lx_scene_glare;
+
+/** UGR (CIE 117-1995) at every [observer]: UGR = 8 log10(0.25 / Lb sum L^2 omega / p^2) over the
+ * luminaires with a luminous area (disk, rect, file luminaires with an opening; points and spots
+ * have none and are left out). Lb is the observer's background_luminance (LX_EPARSE naming the
+ * observer when it has none: the background from a room's indirect illuminance needs rooms). Free
+ * with lx_scene_glare_free. */
+LX_API lx_status lx_scene_glare_eval(lx_ctx *ctx, const lx_scene *scene, lx_scene_glare **out);
+LX_API void lx_scene_glare_free(lx_scene_glare *glare);
 
 /* ============================================================================================ */
 /* 15. Plots (PNG, written atomically) (src/plot) */

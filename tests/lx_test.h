@@ -10,6 +10,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <cmocka.h>
 
 #include "luxcalc.h"
@@ -89,6 +90,28 @@ static inline void lx_test_simd_end(void)
 {
     if (lx_test_simd_had) setenv("LX_SIMD", lx_test_simd_saved, 1);
     else unsetenv("LX_SIMD");
+}
+
+/* Rewrites the box2i attribute `name` ("dataWindow", "displayWindow") of the OpenEXR header in
+ * path to (0, 0)-(xmax, ymax), in place: a header that declares what the file cannot hold.
+ * Returns 0, or -1 when the attribute is not found. */
+static inline int lx_test_exr_set_window(const char *path, const char *name, int32_t xmax, int32_t ymax)
+{
+    FILE *f = fopen(path, "r+b");
+    if (!f) return -1;
+    unsigned char buf[65536];
+    size_t n = fread(buf, 1, sizeof buf, f), nl = strlen(name);
+    long at = -1;
+    for (size_t i = 0; i + nl + 7 + 4 + 16 <= n && at < 0; i++) /* NAME\0box2i\0 <size 16> <4 x int32> */
+        if (!memcmp(buf + i, name, nl) && !memcmp(buf + i + nl, "\0box2i\0", 7))
+            at = (long)(i + nl + 7 + 4);
+    int rc = -1;
+    if (at >= 0) {
+        int32_t box[4] = {0, 0, xmax, ymax}; /* little-endian on disk, as this host (x86-64, arm64) */
+        rc = fseek(f, at, SEEK_SET) == 0 && fwrite(box, 4, 4, f) == 4 ? 0 : -1;
+    }
+    if (fclose(f) != 0) rc = -1;
+    return rc;
 }
 
 #endif /* LX_TEST_H */

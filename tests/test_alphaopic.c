@@ -82,7 +82,7 @@ static void test_batch(void **state)
         }
     }
     lx_batch b = {3, 81, 0, 380.0, 5.0, LX_F64, vals};
-    lx_batch_opts o = {LX_BACKEND_CPU, 1, 0, LX_BACKEND_AUTO};
+    lx_batch_opts o = {.backend = LX_BACKEND_CPU, .threads = 1};
     double out[18];
     lx_assert_ok(ctx, lx_alphaopic_batch(ctx, &b, &o, out));
     for (int i = 0; i < 3; i++) {

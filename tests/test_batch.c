@@ -41,8 +41,9 @@ static void test_table_sums(void **state)
     lx_batch b = {.n_spectra = 1, .n_lambda = 471, .start_nm = 360, .step_nm = 1, .dtype = LX_F64, .values = ones};
     double out[4];
     lx_batch_opts o = {.backend = LX_BACKEND_CPU};
+    assert_int_equal(lx_ctx_backend_used(ctx), LX_BACKEND_AUTO); /* no backend-choosing call yet */
     lx_assert_ok(ctx, lx_batch_integrate(ctx, &b, fns, 4, &o, out));
-    assert_int_equal(o.used, LX_BACKEND_CPU);
+    assert_int_equal(lx_ctx_backend_used(ctx), LX_BACKEND_CPU);
     /* sums of the CIE 1931 2 deg CMFs 360-830 nm at 1 nm: colour-science 0.4.7
      * MSDS_CMFS["CIE 1931 2 Degree Standard Observer"].values.sum(axis=0); STYLE.md: sum ybar 106.856917 */
     lx_assert_near(out[0], 106.86546949, 0, 1e-9);
@@ -229,7 +230,7 @@ static void test_auto_small_batch_stays_on_cpu(void **state)
     double out[3];
     unsetenv("LX_BACKEND");
     lx_assert_ok(ctx, lx_batch_integrate(ctx, &b, XYZ, 3, &o, out));
-    assert_int_equal(o.used, LX_BACKEND_CPU);
+    assert_int_equal(lx_ctx_backend_used(ctx), LX_BACKEND_CPU);
     assert_int_equal(lx_cl_ready(ctx), 0); /* a one-off calculation never starts OpenCL */
 }
 
@@ -399,7 +400,7 @@ static void test_batch_stream(void **state)
     for (size_t i = 0; i < rows; i += 13)
         for (int f = 0; f < 4; f++)
             lx_assert_near(out[i * 4 + (size_t)f], (double)oracle(ctx, want + i * 471, 471, 360, 1, fns[f]), 1e-12, 1e-12);
-    free(out);
+    lx_batch_results_free(out);
     free(want);
     /* a bad value in row 1234: file line = 1 comment + 1 header + 1234 rows before it + the blank
      * lines after rows i % 97 == 5 below 1234 (i = 5, 102, ..., 1169: 13 of them) + 1 */
@@ -572,6 +573,84 @@ static void test_batch_stream_ex(void **state)
     unlink(path);
 }
 
+/* A line longer than the documented maximum (4 MB, README "Robustness") is refused with its
+ * line, after every row before it was handed on; a line of exactly 4 MB is read. So is a header
+ * line that long; lx_batch_table_read (the whole file in memory) keeps the spectrum-file limit. */
+static lx_status count_rows(void *user, const lx_batch_table *chunk, size_t row0)
+{
+    stream_check *c = user;
+    if (row0 != c->rows_seen) c->bad++;
+    const double *v = chunk->batch.values;
+    for (size_t i = 0; i < chunk->batch.n_spectra * chunk->batch.n_lambda; i++)
+        if (v[i] != 1) c->bad++;
+    c->rows_seen += chunk->batch.n_spectra;
+    return LX_OK;
+}
+
+static void write_long_line_csv(const char *path, size_t rows_before, size_t long_bytes, size_t rows_after)
+{
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fprintf(f, "id,400,500,600\n");
+    for (size_t i = 0; i < rows_before; i++) fprintf(f, "r%zu,1,1,1\n", i);
+    /* a comment line of long_bytes bytes: skipped when it is allowed, refused when too long */
+    fputc('#', f);
+    for (size_t i = 1; i < long_bytes; i++) fputc('x', f);
+    fputc('\n', f);
+    for (size_t i = 0; i < rows_after; i++) fprintf(f, "t%zu,1,1,1\n", i);
+    assert_int_equal(fclose(f), 0);
+}
+
+static void test_batch_line_limit(void **state)
+{
+    lx_ctx *ctx = *state;
+    char path[] = "/tmp/lx_test_longline_XXXXXX";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    close(fd);
+    size_t max = (size_t)4 << 20;
+    write_long_line_csv(path, 100000, max, 10); /* 1.3 MB of rows first: the line straddles parts */
+    stream_check c = {NULL, 3, 0, 0, 0};
+    lx_assert_ok(ctx, lx_batch_table_stream(ctx, path, LX_F64, 2, count_rows, &c));
+    assert_int_equal(c.rows_seen, 100010);
+    assert_int_equal(c.bad, 0);
+    write_long_line_csv(path, 100000, max + 1, 10);
+    memset(&c, 0, sizeof c);
+    assert_int_equal(lx_batch_table_stream(ctx, path, LX_F64, 2, count_rows, &c), LX_EPARSE);
+    assert_int_equal(lx_ctx_errline(ctx), 1 + 100000 + 1);
+    assert_non_null(strstr(lx_ctx_errmsg(ctx), ":100002: line longer than 4 MB, the longest line of a batch CSV file"));
+    assert_int_equal(c.rows_seen, 100000); /* every row before it */
+    assert_int_equal(c.bad, 0);
+    write_long_line_csv(path, 0, 5 << 20, 3); /* at the start of the body */
+    memset(&c, 0, sizeof c);
+    assert_int_equal(lx_batch_table_stream(ctx, path, LX_F64, 1, count_rows, &c), LX_EPARSE);
+    assert_int_equal(lx_ctx_errline(ctx), 2);
+    assert_int_equal(c.rows_seen, 0);
+    /* a header line too long, and a file with no line end at all */
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs("id", f);
+    for (size_t i = 0; i < max / 4; i++) fputs(",500", f);
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(lx_batch_table_stream(ctx, path, LX_F64, 1, count_rows, &c), LX_EPARSE);
+    assert_int_equal(lx_ctx_errline(ctx), 1);
+    assert_non_null(strstr(lx_ctx_errmsg(ctx), "line longer than 4 MB"));
+    /* the whole-file reader keeps the spectrum-file size limit */
+    write_long_line_csv(path, 1000, 10, 0);
+    lx_batch_table *t = NULL;
+    lx_assert_ok(ctx, lx_ctx_set_input_limit(ctx, LX_INPUT_SPECTRUM, 1000));
+    assert_int_equal(lx_batch_table_read(ctx, path, LX_F64, 1, &t), LX_EIO);
+    assert_non_null(strstr(lx_ctx_errmsg(ctx), "larger than 1000 bytes"));
+    memset(&c, 0, sizeof c); /* streaming is bounded by its chunks, not by the limit */
+    lx_assert_ok(ctx, lx_batch_table_stream(ctx, path, LX_F64, 1, count_rows, &c));
+    assert_int_equal(c.rows_seen, 1000);
+    lx_assert_ok(ctx, lx_ctx_set_input_limit(ctx, LX_INPUT_SPECTRUM, 0));
+    lx_assert_ok(ctx, lx_batch_table_read(ctx, path, LX_F64, 1, &t));
+    assert_int_equal(t->batch.n_spectra, 1000);
+    lx_batch_table_free(t);
+    unlink(path);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -588,6 +667,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_batch_csv, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(test_batch_stream, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(test_batch_stream_ex, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(test_batch_line_limit, lx_test_ctx_setup, lx_test_ctx_teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

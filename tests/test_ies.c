@@ -205,7 +205,7 @@ static void test_write_round_trip(void **state)
      * integral of (S+1)/(2 pi) F cos^S over the lower hemisphere is F exactly */
     lx_assert_near(lumens(ctx, r), 1000, 0, 2e-3);
     lx_assert_near(r->stated_lumens, 1000, 0, 0);
-    free(text);
+    lx_text_free(text);
     lx_luminaire_free(l);
     lx_luminaire_free(r);
 }

@@ -17,9 +17,12 @@ static int have_platform(void)
 #if LX_OPENCL
     lx_cl_device_info *d = NULL;
     size_t n = 0;
-    if (lx_cl_devices(NULL, &d, &n) != LX_OK) return 0;
-    free(d);
-    return n > 0;
+    lx_ctx *ctx = NULL;
+    if (lx_ctx_create(&ctx) != LX_OK) return 0;
+    lx_status st = lx_cl_devices(ctx, &d, &n);
+    lx_ctx_destroy(ctx);
+    lx_cl_devices_free(d);
+    return st == LX_OK && n > 0;
 #else
     return 0;
 #endif
@@ -60,7 +63,7 @@ static void parity(lx_ctx *ctx, size_t ns, size_t n, size_t stride, double start
         lx_batch_opts cpu = {.backend = LX_BACKEND_CPU};
         lx_assert_ok(ctx, lx_batch_integrate(ctx, &b, fns, k, &cpu, c));
         lx_assert_ok(ctx, lx_batch_integrate(ctx, &b, fns, k, &ocl, a));
-        if (ns) assert_int_equal(ocl.used, LX_BACKEND_OPENCL);
+        if (ns) assert_int_equal(lx_ctx_backend_used(ctx), LX_BACKEND_OPENCL);
         for (size_t i = 0; i < ns * k; i++) lx_assert_near(a[i], c[i], 1e-300, t ? 1e-9 : rel_f32);
     }
     free(vf);
@@ -121,8 +124,9 @@ static void test_resample_parity(void **state)
         dc.values = c;
         lx_batch_opts ocl = {.backend = LX_BACKEND_OPENCL}, cpu = {.backend = LX_BACKEND_CPU};
         lx_assert_ok(ctx, lx_batch_resample(ctx, ns, lam, val, off, nin, &da, &ocl));
+        assert_int_equal(lx_ctx_backend_used(ctx), LX_BACKEND_OPENCL);
         lx_assert_ok(ctx, lx_batch_resample(ctx, ns, lam, val, off, nin, &dc, &cpu));
-        assert_int_equal(ocl.used, LX_BACKEND_OPENCL);
+        assert_int_equal(lx_ctx_backend_used(ctx), LX_BACKEND_CPU);
         for (size_t i = 0; i < ns * 471; i++) {
             double x = t ? ((double *)a)[i] : ((float *)a)[i], y = t ? ((double *)c)[i] : ((float *)c)[i];
             lx_assert_near(x, y, 1e-15, t ? 1e-12 : 1e-7);
@@ -154,7 +158,7 @@ static void test_device_list_and_info(void **state)
     assert_int_equal(lx_cl_ready(ctx), 1);
     for (size_t i = 0; i < n; i++)
         if (d[i].is_default) assert_string_equal(d[i].device_name, in_use.device_name);
-    free(d);
+    lx_cl_devices_free(d);
 }
 
 static void capture_log(void *user, lx_log_level level, const char *msg)
@@ -183,7 +187,7 @@ static void test_selection_errors_and_fallback(void **state)
     lx_batch_opts o = {.backend = LX_BACKEND_AUTO};
     lx_assert_ok(ctx, lx_batch_integrate(ctx, &b, XYZV, 4, &o, out));
     unsetenv("LX_AUTO_BREAK_EVEN");
-    assert_int_equal(o.used, LX_BACKEND_CPU);
+    assert_int_equal(lx_ctx_backend_used(ctx), LX_BACKEND_CPU);
     assert_non_null(strstr(logbuf, "falling back to the CPU"));
     /* sum of ybar 360-830 nm: colour-science 0.4.7 CMF table sum (see test_batch.c) */
     lx_assert_near(out[1], 106.8569171, 0, 1e-9);

@@ -351,7 +351,7 @@ static void test_sky_map(void **state)
     char exr[64];
     snprintf(exr, sizeof exr, "%s.exr", path);
     unlink(path);
-    lx_assert_ok(ctx, lx_exr_write(ctx, exr, m, NULL));
+    lx_assert_ok(ctx, lx_envmap_write_exr(ctx, exr, m, NULL));
     lx_envmap_free(m);
     char text[1024];
     snprintf(text, sizeof text,
@@ -391,7 +391,7 @@ static char *write_model_ies(lx_ctx *ctx, lx_lum_model_kind kind, double flux, d
     assert_true(fd >= 0);
     assert_int_equal(write(fd, text, len), (long)len);
     close(fd);
-    free(text);
+    lx_text_free(text);
     return path;
 }
 
@@ -627,7 +627,7 @@ static void test_linearity(void **state)
     size_t np = full.res->n_points, nl = full.sc->n_lum;
     double *sum = calloc(np, sizeof *sum);
     for (size_t l = 0; l < nl; l++) {
-        lx_scene_eval_opts o = {1, l};
+        lx_scene_eval_opts o = {.single = 1, .index = l};
         lx_scene_result *one = NULL;
         lx_assert_ok(ctx, lx_scene_eval(ctx, full.sc, full.plan, &o, &one));
         for (size_t g = 0; g < np; g++) {

@@ -126,7 +126,7 @@ static void uniform_scanline(void **state)
     /* the XYZ EXR: channels X, Y, Z; Y read back through lx_exr_read (a Y-only luminance map) */
     char out[128];
     snprintf(out, sizeof out, "%s/xyz.exr", dir);
-    lx_assert_ok(ctx, lx_xyz_exr_write(ctx, out, img));
+    lx_assert_ok(ctx, lx_xyz_image_write_exr(ctx, out, img));
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     init.error_handler_fn = quiet;
     exr_context_t e = NULL;
@@ -155,7 +155,7 @@ static void uniform_scanline(void **state)
     png_image_free(&pi);
     /* an unwritable place: LX_EIO and nothing left */
     snprintf(out, sizeof out, "%s/none/xyz.exr", dir);
-    assert_int_equal(lx_xyz_exr_write(ctx, out, img), LX_EIO);
+    assert_int_equal(lx_xyz_image_write_exr(ctx, out, img), LX_EIO);
     assert_int_equal(access(out, F_OK), -1);
     lx_xyz_image_free(img);
 
@@ -248,6 +248,28 @@ static void refusals(void **state)
     assert_null(img);
 }
 
+/* A spectral header declaring 100000 x 100000 pixels x 3 channels (3e10 values) is refused before
+ * allocation (the limit: 4e9 values), and 3000 x 3000 in a small file by the per-byte bound. */
+static void window_that_lies(void **state)
+{
+    lx_ctx *ctx = *state;
+    char names[3][32] = {"S0.500nm", "S0.600nm", "S0.700nm"};
+    float data[W * H * 3];
+    for (int i = 0; i < W * H * 3; i++) data[i] = 1.0f;
+    char path[128];
+    snprintf(path, sizeof path, "%s/lie.exr", dir);
+    assert_int_equal(write_exr(path, 3, names, data, 0), 0);
+    assert_int_equal(lx_test_exr_set_window(path, "dataWindow", 99999, 99999), 0);
+    lx_xyz_image *img = NULL;
+    assert_int_equal(lx_spectral_exr_read_xyz(ctx, path, LX_OBSERVER_2, NULL, &img), LX_EPARSE);
+    assert_null(img);
+    assert_non_null(strstr(lx_ctx_errmsg(ctx), "data window 100000x100000 x 3 channels over the limit of 4e9 values"));
+    assert_int_equal(write_exr(path, 3, names, data, 0), 0);
+    assert_int_equal(lx_test_exr_set_window(path, "dataWindow", 2999, 2999), 0);
+    assert_int_equal(lx_spectral_exr_read_xyz(ctx, path, LX_OBSERVER_2, NULL, &img), LX_EPARSE);
+    assert_non_null(strstr(lx_ctx_errmsg(ctx), "too large for a file of"));
+}
+
 static int setup_dir(void **state)
 {
     (void)state;
@@ -270,6 +292,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(tiled_polarised, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(nonuniform, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(refusals, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(window_that_lies, lx_test_ctx_setup, lx_test_ctx_teardown),
     };
     return cmocka_run_group_tests(tests, setup_dir, teardown_dir);
 }

@@ -88,7 +88,7 @@ static void test_repeatable(void **state)
         for (int j = 0; j < 401; j++) v[i * 401 + j] = lx_planck(380 + j, 1500 + 300 * i);
     lx_batch b = {64, 401, 0, 380, 1, LX_F64, v};
     lx_colorimetry r1[64], r2[64];
-    lx_batch_opts o1 = {LX_BACKEND_CPU, 1, 0, LX_BACKEND_AUTO}, o2 = {LX_BACKEND_CPU, 2, 0, LX_BACKEND_AUTO};
+    lx_batch_opts o1 = {.backend = LX_BACKEND_CPU, .threads = 1}, o2 = {.backend = LX_BACKEND_CPU, .threads = 2};
     lx_assert_ok(ctx, lx_batch_colorimetry(ctx, &b, LX_OBSERVER_2, &o1, r1));
     lx_assert_ok(ctx, lx_batch_colorimetry(ctx, &b, LX_OBSERVER_2, &o2, r2));
     for (int i = 0; i < 64; i++) { /* member by member: the struct's padding bytes are never written */

@@ -20,7 +20,7 @@ static int write(lx_ctx *ctx, const char *dir, const char *name, lx_envmap *m, i
     char path[1024];
     snprintf(path, sizeof path, "%s/%s", dir, name);
     lx_exr_write_opts o = {.half = half};
-    if (lx_exr_write(ctx, path, m, &o)) {
+    if (lx_envmap_write_exr(ctx, path, m, &o)) {
         fprintf(stderr, "make_envmaps: %s\n", lx_ctx_errmsg(ctx));
         return 1;
     }

@@ -21,6 +21,12 @@ extern const cli_cmd cli_commands[];
 /* Global flags set by main before a command runs. */
 extern int cli_verbose; /* -v: 1, -vv: 2 */
 extern int cli_quiet;   /* -q */
+extern size_t cli_max_input_mb; /* --max-input-mb N: every kind's input size limit (0: the library's) */
+
+/* Parses a size limit in MB ("--max-input-mb", LX_MAX_INPUT_MB): a whole number from 1 to
+ * CLI_MAX_INPUT_MB; returns 0 on success. */
+#define CLI_MAX_INPUT_MB 1048576
+int cli_parse_input_mb(const char *s, size_t *mb);
 
 /* Prints "luxcalc: CMD: message" on stderr. */
 void cli_error(const char *cmd, const char *fmt, ...)

@@ -436,11 +436,11 @@ static int bench_spd(bench_ctx *b)
             size_t got = 0;
             if (lx_batch_table_integrate_file(ctx, path, FNS, 4, 0, &res, &got) != LX_OK || got != n) {
                 cli_fail("bench", ctx, LX_EPARSE);
-                free(res);
+                lx_batch_results_free(res);
                 break;
             }
             tl[r] = now_s() - t0;
-            free(res);
+            lx_batch_results_free(res);
             ts[r] = strtod_e2e(path, w, &rows);
         }
         double ml = median(tl, 3), ms = median(ts, 3);

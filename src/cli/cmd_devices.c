@@ -80,7 +80,7 @@ int cmd_devices(int argc, char **argv)
         if (cli_output_close(&o, bad == 0, cmd) != 0 || bad) rc = CLI_RUNTIME;
     }
     cli_table_free(t);
-    free(d);
+    lx_cl_devices_free(d);
     lx_ctx_destroy(ctx);
     return rc;
 }

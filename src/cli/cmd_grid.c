@@ -269,7 +269,7 @@ int cmd_grid(int argc, char **argv)
     cli_table_free(ts);
 done:
     cli_table_free(t);
-    free(pts);
+    lx_plane_points_free(pts);
     free(E);
     lx_luminaire_free(lum);
     lx_ctx_destroy(ctx);

@@ -45,11 +45,11 @@ static int write_ies(lx_ctx *ctx, const lx_luminaire *l, const char *path)
     if (st) return cli_fail("ies", ctx, st);
     cli_output o;
     if (cli_output_open(&o, path, "ies")) {
-        free(text);
+        lx_text_free(text);
         return CLI_RUNTIME;
     }
     size_t w = fwrite(text, 1, len, o.fp);
-    free(text);
+    lx_text_free(text);
     if (cli_output_close(&o, w == len, "ies") || w != len) return CLI_RUNTIME;
     return CLI_OK;
 }

@@ -206,7 +206,7 @@ int cmd_irradiance(int argc, char **argv)
         st = lx_irradiance_map(ctx, m, W, H, &io, &e);
         clock_gettime(CLOCK_MONOTONIC, &t1);
         lx_exr_write_opts wo = {.half = half};
-        if (!st) st = lx_exr_write(ctx, out, e, &wo);
+        if (!st) st = lx_envmap_write_exr(ctx, out, e, &wo);
         if (!st && png) {
             const lx_envmap *maps[2] = {m, e};
             char lab[64];
@@ -218,7 +218,7 @@ int cmd_irradiance(int argc, char **argv)
         else if (cli_verbose)
             fprintf(stderr, "luxcalc: irradiance: %s %dx%d -> %dx%d in %.3f s (%s)\n", mname[io.method], m->width,
                     m->height, e->width, e->height, (t1.tv_sec - t0.tv_sec) + 1e-9 * (t1.tv_nsec - t0.tv_nsec),
-                    io.used == LX_BACKEND_OPENCL ? "opencl" : "cpu");
+                    lx_ctx_backend_used(ctx) == LX_BACKEND_OPENCL ? "opencl" : "cpu");
     }
     lx_envmap_free(e);
     lx_envmap_free(m);

@@ -20,6 +20,8 @@ static const char help[] =
     "                    the near-field path, the estimated and the measured work (json: an object\n"
     "                    with \"effects\", \"reasons\", \"forced\", \"pairs\", \"estimated\", \"measured\")\n"
     "  --contributions   csv/json: one more column per luminaire (E_NAME_lx) and the sky (E_sky_lx)\n"
+    "  --glare           UGR (CIE 117) at each [observer]: one row per luminaire that counts with its\n"
+    "                    luminance, solid angle, position index and term L^2 w / p^2, and the UGR\n"
     "  --format F        table (default: a summary per receiver), csv or json (one row per point)\n"
     "  -o FILE           write to FILE (atomically)\n"
     "  --png DIR         also draw every grid receiver's illuminance as a false-colour PNG:\n"
@@ -196,6 +198,10 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
                 if (isfinite(res->cct_K[g])) cs += res->cct_K[g], cn++;
             }
             double n = (double)(b - a), avg = sum / n;
+            if (!isfinite(avg)) { /* finite values whose sum overflows: the mean of e / n instead */
+                avg = 0;
+                for (size_t g = a; g < b; g++) avg += res->E_lx[g] / n;
+            }
             cli_table_str(t, sc->rec[r].name);
             cli_table_int(t, (long long)(b - a));
             cli_table_num(t, avg);
@@ -252,14 +258,61 @@ static lx_status write_pngs(lx_ctx *ctx, const lx_scene *sc, const lx_scene_resu
     return LX_OK;
 }
 
+/* --glare: one row per observer and luminaire that counts, with the observer's UGR */
+static int glare_out(const char *cmd, lx_ctx *ctx, const lx_scene *sc, cli_format fmt, const char *out)
+{
+    lx_scene_glare *g = NULL;
+    lx_status st = lx_scene_glare_eval(ctx, sc, &g);
+    if (st != LX_OK) return cli_fail(cmd, ctx, st);
+    static const char *const names[] = {"observer", "luminaire", "luminance_cd_m2", "solid_angle_sr", "sigma_deg",
+                                        "tau_deg", "position_index", "term", "background_cd_m2", "ugr"};
+    static const char *const units[] = {"", "", "cd/m2", "sr", "deg", "deg", "", "", "cd/m2", ""};
+    cli_table *t = cli_table_new(10, names, units);
+    for (size_t o = 0; o < g->n_obs; o++) {
+        int any = 0;
+        for (size_t l = 0; l < g->n_lum; l++) {
+            const lx_glare_term *x = &g->terms[o * g->n_lum + l];
+            if (!x->visible) continue;
+            any = 1;
+            cli_table_str(t, sc->obs[o].name);
+            cli_table_str(t, sc->lum[l].name);
+            cli_table_num(t, x->luminance_cd_m2);
+            cli_table_num(t, x->solid_angle_sr);
+            cli_table_num(t, x->sigma_deg);
+            cli_table_num(t, x->tau_deg);
+            cli_table_num(t, x->position_index);
+            cli_table_num(t, x->term);
+            cli_table_num(t, g->background_cd_m2[o]);
+            cli_table_num(t, g->ugr[o]);
+        }
+        if (!any) { /* no glare source in view: one row, UGR empty */
+            cli_table_str(t, sc->obs[o].name);
+            cli_table_str(t, "");
+            for (int k = 0; k < 6; k++) cli_table_num(t, NAN);
+            cli_table_num(t, g->background_cd_m2[o]);
+            cli_table_num(t, NAN);
+        }
+    }
+    int rc = CLI_OK;
+    cli_output o;
+    if (cli_output_open(&o, out, cmd) != 0) rc = CLI_INPUT;
+    else {
+        int ok = cli_table_write(t, fmt, o.fp, 1) == 0;
+        if (cli_output_close(&o, ok, cmd) != 0 || !ok) rc = CLI_INPUT;
+    }
+    cli_table_free(t);
+    lx_scene_glare_free(g);
+    return rc;
+}
+
 int cmd_scene(int argc, char **argv)
 {
     static const struct option opts[] = {{"explain", no_argument, 0, 'e'},      {"contributions", no_argument, 0, 'c'},
                                          {"format", required_argument, 0, 'f'}, {"backend", required_argument, 0, 'b'},
-                                         {"png", required_argument, 0, 'p'},
+                                         {"png", required_argument, 0, 'p'},     {"glare", no_argument, 0, 'g'},
                                          {"help", no_argument, 0, 'h'},         {0, 0, 0, 0}};
     const char *cmd = "scene", *out = NULL, *backend_text = NULL, *png_dir = NULL;
-    int do_explain = 0, contrib = 0, c;
+    int do_explain = 0, contrib = 0, glare = 0, c;
     cli_format fmt = CLI_FMT_TABLE;
     optind = 1;
     opterr = 0;
@@ -267,6 +320,7 @@ int cmd_scene(int argc, char **argv)
         switch (c) {
         case 'e': do_explain = 1; break;
         case 'c': contrib = 1; break;
+        case 'g': glare = 1; break;
         case 'o': out = optarg; break;
         case 'b': backend_text = optarg; break;
         case 'p': png_dir = optarg; break;
@@ -299,7 +353,13 @@ int cmd_scene(int argc, char **argv)
     lx_scene_plan *plan = NULL;
     lx_scene_result *res = NULL;
     lx_status st = lx_scene_read_file(ctx, argv[optind], &sc);
-    if (st == LX_OK) st = lx_scene_plan_make(ctx, sc, (int)backend, &plan);
+    if (st == LX_OK && glare) {
+        int grc = glare_out(cmd, ctx, sc, fmt, out);
+        lx_scene_free(sc);
+        lx_ctx_destroy(ctx);
+        return grc;
+    }
+    if (st == LX_OK) st = lx_scene_plan_make(ctx, sc, backend, &plan);
     if (st == LX_OK) st = lx_scene_eval(ctx, sc, plan, NULL, &res);
     int rc = CLI_OK;
     if (st == LX_OK && png_dir) st = write_pngs(ctx, sc, res, argv[optind], png_dir);

@@ -17,6 +17,8 @@ static const char help[] =
     "CCT and Duv, luminous efficacy of radiation, scotopic Y and the S/P ratio.\n"
     "FILE: columns (wavelength_nm, value...) or rows (id,380,381,...), separators , ; tab space,\n"
     "'#' comments, optional header; CGATS/Argyll spectral files; '-' reads standard input.\n"
+    "Text files are read up to 256 MB (luxcalc --max-input-mb N, or LX_MAX_INPUT_MB, raises it);\n"
+    "rows-layout files on a 1 or 5 nm grid are streamed at any size (lines up to 4 MB).\n"
     "\n"
     "options:\n"
     "  --observer 2|10        CIE 1931 2 deg (default) or CIE 1964 10 deg observer\n"
@@ -233,7 +235,7 @@ int cmd_spd(int argc, char **argv)
     spd_out so;
     memset(&so, 0, sizeof so);
     so.t = t, so.fmt = (cli_format)fmt, so.cmd = cmd;
-    cli_spd_batch B = {ctx, cmd, t, obs, method, backend, backend_given, spd_flush, &so, (cli_format)fmt, spd_out_fp,
+    cli_spd_batch B = {ctx, cmd, t, obs, method, backend, backend_given, spd_flush, &so, 0, (cli_format)fmt, spd_out_fp,
                        outpath && strcmp(outpath, "-") != 0};
     so.path = outpath;
     int nfiles = 0;
@@ -247,20 +249,15 @@ int cmd_spd(int argc, char **argv)
             continue;
         }
         /* rows-layout files: streamed, part by part on every core (spd_stream.c); else the general
-         * reader (from memory for what the stream read of a pipe before handing it back) */
-        char *mtext = NULL;
-        size_t mlen = 0;
-        if (!msel.any && !report_dir) {
-            int r = cli_spd_batch_file(&B, arg, &mtext, &mlen);
-            if (r != 0) {
-                if (r < 0 && rc < CLI_INPUT) rc = CLI_INPUT;
-                spd_flush(&so);
-                continue;
-            }
-        }
+         * reader (a pipe the stream looked at comes back read) */
         lx_spd_set *set = NULL;
-        lx_status st = mtext ? lx_spd_read_mem(ctx, arg, mtext, mlen, &set) : lx_spd_read_file(ctx, arg, &set);
-        free(mtext);
+        int streamed = !msel.any && !report_dir ? cli_spd_batch_file(&B, arg, &set) : 0;
+        if (streamed < 0 && -streamed > rc) rc = -streamed;
+        if (streamed) {
+            spd_flush(&so);
+            continue;
+        }
+        lx_status st = set ? LX_OK : lx_spd_read_file(ctx, arg, &set);
         if (st != LX_OK) {
             int e = cli_fail(cmd, ctx, st);
             if (e > rc) rc = e;
@@ -279,6 +276,7 @@ int cmd_spd(int argc, char **argv)
             cli_progress_update(k);
             lx_colorimetry r;
             st = lx_spd_colorimetry(ctx, &set->spd[k], obs, method, &r);
+            if (st == LX_OK) st = lx_colorimetry_check(ctx, &r, NAN); /* before printing: no blank columns */
             if (st != LX_OK) {
                 cli_error(cmd, "%s:%ld: spectrum '%s': %s", set->file, set->line ? set->line[k] : 0L,
                           set->spd[k].name ? set->spd[k].name : "", lx_ctx_errmsg(ctx));
@@ -292,9 +290,9 @@ int cmd_spd(int argc, char **argv)
                           r.scotopic_Y, r.sp_ratio, r.radiant};
             for (size_t j = 0; j < sizeof v / sizeof *v; j++) cli_table_num(t, v[j]);
             cli_table_str(t, method_name(r.method));
-            if (msel.any)
-                cli_metrics_row(t, ctx, &msel, &set->spd[k], method, units[unit].name, &r, set->file,
-                                set->line ? set->line[k] : 0L, cmd);
+            if (msel.any && cli_metrics_row(t, ctx, &msel, &set->spd[k], method, units[unit].name, &r, set->file,
+                                            set->line ? set->line[k] : 0L, cmd) > 0 && rc < CLI_INPUT)
+                rc = CLI_INPUT;
             if (report_dir) {
                 int e = cli_spd_report(ctx, cmd, report_dir, set->file, k, &set->spd[k], obs);
                 if (e > rc) rc = e;
@@ -304,6 +302,7 @@ int cmd_spd(int argc, char **argv)
         lx_spd_set_free(set);
         spd_flush(&so);
     }
+    if (B.rejected && rc < CLI_INPUT) rc = CLI_INPUT; /* batch spectra reported instead of printed */
     /* nothing computed and something failed: leave any existing output file as it was */
     if (!(rc != CLI_OK && cli_table_rows(t) == 0)) {
         if (!so.opened && spd_open(&so) != 0) rc = CLI_INPUT;

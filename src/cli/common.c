@@ -15,6 +15,7 @@
 
 int cli_verbose = 0;
 int cli_quiet = 0;
+size_t cli_max_input_mb = 0;
 
 void cli_error(const char *cmd, const char *fmt, ...)
 {
@@ -64,6 +65,8 @@ lx_ctx *cli_ctx(const char *cmd)
     }
     lx_log_level max = cli_quiet ? LX_LOG_ERROR : cli_verbose >= 2 ? LX_LOG_DEBUG : cli_verbose ? LX_LOG_INFO : LX_LOG_WARN;
     lx_ctx_set_log(ctx, cli_log, (void *)cmd, max);
+    for (int k = 0; cli_max_input_mb && k < LX_INPUT_KIND_COUNT; k++)
+        lx_ctx_set_input_limit(ctx, (lx_input_kind)k, cli_max_input_mb << 20);
     return ctx;
 }
 
@@ -84,6 +87,19 @@ int cli_parse_double(const char *s, double *out)
     while (*end == ' ') end++;
     if (*end || !isfinite(v) || errno == ERANGE) return -1;
     *out = v;
+    return 0;
+}
+
+int cli_parse_input_mb(const char *s, size_t *mb)
+{
+    size_t v = 0;
+    if (!s || !*s) return -1;
+    for (; *s; s++) {
+        if (*s < '0' || *s > '9' || v > CLI_MAX_INPUT_MB) return -1;
+        v = v * 10 + (size_t)(*s - '0');
+    }
+    if (v < 1 || v > CLI_MAX_INPUT_MB) return -1;
+    *mb = v;
     return 0;
 }
 

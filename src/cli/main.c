@@ -10,6 +10,8 @@ int cmd_daylight(int argc, char **argv);
 int cmd_ies(int argc, char **argv);
 int cmd_grid(int argc, char **argv);
 /* ---- command declarations (one line per command) ---- */
+int cmd_sky(int argc, char **argv);
+int cmd_ugr(int argc, char **argv);
 int cmd_irradiance(int argc, char **argv);
 int cmd_luminance_map(int argc, char **argv);
 int cmd_scene(int argc, char **argv);
@@ -40,17 +42,21 @@ const cli_cmd cli_commands[] = {
     {"devices", cmd_devices, "the OpenCL platforms and devices, and which one auto would use"},
     {"bench", cmd_bench, "measured performance and accuracy-against-time tables (spd, metrics, irradiance, grid, accuracy)"},
     /* ---- command table entries (one line per command) ---- */
+    {"sky", cmd_sky, "a CIE standard general or Perez sky with the sun as a lat-long luminance EXR"},
+    {"ugr", cmd_ugr, "the CIE 190 tabular UGR table of an IES/EULUMDAT luminaire"},
     {NULL, NULL, NULL},
 };
 
 static void usage(FILE *out)
 {
-    fprintf(out, "usage: luxcalc [--version] [-v|-q] COMMAND [OPTIONS] [ARGS]\n\n"
+    fprintf(out, "usage: luxcalc [--version] [-v|-q] [--max-input-mb N] COMMAND [OPTIONS] [ARGS]\n\n"
                  "Photometry and radiometry: spectra, lighting calculations, luminaires, radiance maps.\n\n"
                  "commands:\n");
     for (const cli_cmd *c = cli_commands; c->name; c++) fprintf(out, "  %-14s %s\n", c->name, c->summary);
     fprintf(out, "\nRun 'luxcalc COMMAND --help' for a command's options and an example.\n"
-                 "Exit status: 0 success, 1 usage error, 2 input error, 3 runtime error.\n");
+                 "Exit status: 0 success, 1 usage error, 2 input error, 3 runtime error.\n"
+                 "--max-input-mb N (or LX_MAX_INPUT_MB=N): the size limit of every text input file in MB\n"
+                 "(default 256 for spectra, 16 for photometric and scene files; README \"Robustness\").\n");
 }
 
 int main(int argc, char **argv)
@@ -70,6 +76,13 @@ int main(int argc, char **argv)
             cli_verbose += 2;
         } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
             cli_quiet = 1;
+        } else if (!strcmp(a, "--max-input-mb") || !strncmp(a, "--max-input-mb=", 15)) {
+            const char *v = a[14] == '=' ? a + 15 : i + 1 < argc ? argv[++i] : NULL;
+            if (cli_parse_input_mb(v, &cli_max_input_mb) != 0) {
+                fprintf(stderr, "luxcalc: --max-input-mb: expected a whole number of MB from 1 to %d, not '%s'\n",
+                        CLI_MAX_INPUT_MB, v ? v : "");
+                return CLI_USAGE;
+            }
         } else {
             fprintf(stderr, "luxcalc: unknown option '%s'\n", a);
             usage(stderr);
@@ -82,14 +95,30 @@ int main(int argc, char **argv)
     }
     /* the environment's switches, checked once for every command (the library ignores bad values) */
     const char *simd = getenv("LX_SIMD"), *backend = getenv("LX_BACKEND");
-    lx_simd sp;
-    lx_backend bp;
-    if (simd && *simd && lx_simd_parse(NULL, simd, &sp) != LX_OK) {
-        fprintf(stderr, "luxcalc: LX_SIMD='%s' is not scalar, avx2 or avx512\n", simd);
-        return CLI_USAGE;
+    if ((simd && *simd) || (backend && *backend)) {
+        lx_simd sp;
+        lx_backend bp;
+        lx_ctx *ctx = NULL;
+        if (lx_ctx_create(&ctx) != LX_OK) {
+            fprintf(stderr, "luxcalc: out of memory\n");
+            return CLI_RUNTIME;
+        }
+        int bad_simd = simd && *simd && lx_simd_parse(ctx, simd, &sp) != LX_OK;
+        int bad_backend = !bad_simd && backend && *backend && lx_backend_parse(ctx, backend, &bp) != LX_OK;
+        lx_ctx_destroy(ctx);
+        if (bad_simd) {
+            fprintf(stderr, "luxcalc: LX_SIMD='%s' is not scalar, avx2 or avx512\n", simd);
+            return CLI_USAGE;
+        }
+        if (bad_backend) {
+            fprintf(stderr, "luxcalc: LX_BACKEND='%s' is not auto, cpu or opencl\n", backend);
+            return CLI_USAGE;
+        }
     }
-    if (backend && *backend && lx_backend_parse(NULL, backend, &bp) != LX_OK) {
-        fprintf(stderr, "luxcalc: LX_BACKEND='%s' is not auto, cpu or opencl\n", backend);
+    const char *maxin = getenv("LX_MAX_INPUT_MB");
+    size_t mb;
+    if (maxin && *maxin && cli_parse_input_mb(maxin, &mb) != 0) {
+        fprintf(stderr, "luxcalc: LX_MAX_INPUT_MB='%s' is not a whole number of MB from 1 to %d\n", maxin, CLI_MAX_INPUT_MB);
         return CLI_USAGE;
     }
     for (const cli_cmd *c = cli_commands; c->name; c++)

@@ -23,8 +23,25 @@ void cli_spd_add_row(cli_table *t, const char *file, const char *name, const lx_
     cli_table_str(t, "cie15");
 }
 
-/* Colorimetry of spectra [i0, i0+n) of b, one row each; names[i] or the 1-based index. */
-static lx_status run_chunk(cli_spd_batch *B, const lx_batch *b, const char *file, const char *const *names, size_t i0)
+/* The largest |value| of spectrum i of b (for the overflow message). */
+double cli_spd_row_max_abs(const lx_batch *b, size_t i)
+{
+    size_t stride = b->row_stride ? b->row_stride : b->n_lambda;
+    double m = 0;
+    for (size_t j = 0; j < b->n_lambda; j++) {
+        double v = b->dtype == LX_F32 ? (double)((const float *)b->values)[i * stride + j]
+                                      : ((const double *)b->values)[i * stride + j];
+        if (fabs(v) > m) m = fabs(v);
+    }
+    return m;
+}
+
+/* Colorimetry of spectra [i0, i0+n) of b, one row each; names[i] or the 1-based index, lines[i]
+ * (or none). A result lx_colorimetry_check refuses (an overflow, a NaN) is reported on stderr as
+ * "FILE:LINE: spectrum 'NAME': why" instead of a row and counted in B->rejected; with stop_at_bad
+ * the chunk ends there (LX_ERANGE, the rows before it added). */
+static lx_status run_chunk(cli_spd_batch *B, const lx_batch *b, const char *file, const char *const *names,
+                           const long *lines, size_t i0, int stop_at_bad)
 {
     lx_colorimetry *res = malloc(sizeof *res * (b->n_spectra ? b->n_spectra : 1));
     if (!res) return LX_ENOMEM;
@@ -36,6 +53,16 @@ static lx_status run_chunk(cli_spd_batch *B, const lx_batch *b, const char *file
         char idx[32];
         for (size_t i = 0; i < b->n_spectra; i++) {
             const char *name = names ? names[i] : (snprintf(idx, sizeof idx, "%zu", i0 + i + 1), idx);
+            if (lx_colorimetry_check(B->ctx, &res[i], cli_spd_row_max_abs(b, i)) != LX_OK) {
+                if (lines) cli_error(B->cmd, "%s:%ld: spectrum '%s': %s", file, lines[i], name, lx_ctx_errmsg(B->ctx));
+                else cli_error(B->cmd, "%s: spectrum %s: %s", file, name, lx_ctx_errmsg(B->ctx));
+                B->rejected++;
+                if (stop_at_bad) {
+                    st = LX_ERANGE;
+                    break;
+                }
+                continue;
+            }
             cli_spd_add_row(B->table, file, name, &res[i]);
         }
         if (B->flush) B->flush(B->flush_arg);
@@ -81,7 +108,7 @@ lx_status cli_spd_batch_set(cli_spd_batch *B, const lx_spd_set *set)
             names[i] = set->spd[i0 + i].name ? set->spd[i0 + i].name : "";
         }
         lx_batch b = {m, n, 0, s0->lambda_nm[0], step, LX_F64, v};
-        st = run_chunk(B, &b, set->file, names, i0);
+        st = run_chunk(B, &b, set->file, names, set->line ? set->line + i0 : NULL, i0, 0);
         free(v);
         free(names);
         cli_progress_update(i0 + m);
@@ -149,9 +176,9 @@ lx_status cli_spd_f32_file(cli_spd_batch *B, const char *path, double start, dou
                 }
             if (st != LX_OK) break;
             lx_batch b = {m, n, 0, start, step, LX_F32, buf};
-            st = run_chunk(B, &b, path, NULL, total / per);
+            st = run_chunk(B, &b, path, NULL, NULL, total / per, 1); /* the first bad spectrum ends the file */
             if (st != LX_OK) {
-                cli_error(B->cmd, "%s: %s", path, lx_ctx_errmsg(B->ctx));
+                if (st != LX_ERANGE) cli_error(B->cmd, "%s: %s", path, lx_ctx_errmsg(B->ctx));
                 break;
             }
             total += got;

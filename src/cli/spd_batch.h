@@ -18,6 +18,7 @@ typedef struct cli_spd_batch {
     int forced;                 /* --backend or LX_BACKEND given: batch even small sets */
     void (*flush)(void *arg);   /* called after each chunk's rows were added */
     void *flush_arg;
+    size_t rejected;            /* spectra reported on stderr instead of a row (exit status 2) */
     cli_format format;
     /* the output, for rows the stream writes itself (csv): opened on first use (NULL on failure,
      * printed); private: it is a temporary file of ours (-o), so rows can be taken back */
@@ -27,6 +28,8 @@ typedef struct cli_spd_batch {
 
 /* One row of the default columns for spectrum `name` of `file`. */
 void cli_spd_add_row(cli_table *t, const char *file, const char *name, const lx_colorimetry *r);
+/* The largest |value| of spectrum i of b (for lx_colorimetry_check's overflow message). */
+double cli_spd_row_max_abs(const lx_batch *b, size_t i);
 /* 1 when every spectrum of set shares one uniform grid that the method integrates with cie15. */
 int cli_spd_batchable(const cli_spd_batch *B, const lx_spd_set *set);
 /* Adds one row per spectrum of a batchable set. */
@@ -34,14 +37,16 @@ lx_status cli_spd_batch_set(cli_spd_batch *B, const lx_spd_set *set);
 /* A rows-layout CSV (spd_stream.c): streamed through lx_batch_table_stream_ex, the colorimetry
  * and the csv text of each part made on the parsing threads, the rows written in order as they
  * come (csv) in bounded memory, and kept only when the whole file streamed (a file with a bad row
- * is skipped whole: rows already written are taken back). Returns 1 when it did the file, -1 when
- * the file failed and the error was printed, 0 when the caller must read it with the general
- * reader: not a plain rows layout, another method, fewer than CLI_SPD_BATCH_MIN spectra without
- * --backend, or an error in a regular file of up to 256 MB (the general reader then reports the
- * file's first problem, FILE:LINE, as before). For a pipe or standard input of up to 8 MB, or
- * any that is not a rows layout, the input read is handed back in *text, *len (malloc'ed: the
- * general reader reads it from memory). */
-int cli_spd_batch_file(cli_spd_batch *B, const char *path, char **text, size_t *len);
+ * is skipped whole: rows already written are taken back). Returns 1 when it did the file, -EXIT
+ * when the file failed and the error was printed (EXIT: its exit status), 0 when the caller must
+ * read it with the general reader: not a plain rows layout, another method, fewer than
+ * CLI_SPD_BATCH_MIN spectra without --backend, or an error in a regular file the general reader
+ * takes (within the spectrum size limit; it then reports the file's first problem, FILE:LINE, as
+ * before). Beyond that limit (and from a pipe) a result lx_colorimetry_check refuses is reported
+ * (FILE: spectrum 'NAME' (data row N): why) and counted in B->rejected instead of a row. A pipe,
+ * standard input or a device of up to 8 MB, or one that is not a rows layout, is read whole by
+ * the general reader here (its size limit): 0 and its spectra in *set (the caller's), or -EXIT. */
+int cli_spd_batch_file(cli_spd_batch *B, const char *path, lx_spd_set **set);
 /* "START:END:STEP" in nm into the grid; 0 on success. */
 int cli_spd_parse_grid(const char *s, double *start, double *step, size_t *n);
 /* Raw little-endian float32 spectra of n samples each ("-" is stdin); errors are printed. */

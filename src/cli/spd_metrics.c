@@ -95,9 +95,10 @@ int cli_metrics_columns(const cli_metrics *m, const char *unit, const char **nam
     return n;
 }
 
-void cli_metrics_row(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const lx_spd *spd, lx_method method,
-                     const char *unit, const lx_colorimetry *c, const char *file, long line, const char *cmd)
+int cli_metrics_row(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const lx_spd *spd, lx_method method,
+                    const char *unit, const lx_colorimetry *c, const char *file, long line, const char *cmd)
 {
+    int bad = 0;
     build();
     int need = 0;
     for (int i = 0; i < ncols; i++)
@@ -116,11 +117,15 @@ void cli_metrics_row(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const lx_s
         have_tm = lx_tm30_compute(ctx, spd, tm) == LX_OK;
         if (!have_tm && !cli_quiet) cli_error(cmd, "%s:%ld: spectrum '%s': %s", file, line, label, lx_ctx_errmsg(ctx));
     }
-    if ((need & G_AO)) have_ao = lx_alphaopic_compute(ctx, spd, method, &ao) == LX_OK;
-    if ((need & G_MES)) {
-        /* only luminance is meaningful here: L_p = Y, L_s with K'm = 1699 lm/W as CIE 191 uses */
-        if (!strcmp(unit, "W/sr/m2/nm"))
-            have_mes = lx_mesopic_luminance(ctx, c->Y, c->scotopic_Y * 1699.0 / 1700.06, &lmes, &mm) == LX_OK;
+    if ((need & G_AO)) {
+        have_ao = lx_alphaopic_compute(ctx, spd, method, &ao) == LX_OK;
+        if (!have_ao && !cli_quiet) cli_error(cmd, "%s:%ld: spectrum '%s': alpha-opic: %s", file, line, label, lx_ctx_errmsg(ctx));
+    }
+    if ((need & G_MES) && !strcmp(unit, "W/sr/m2/nm")) {
+        /* only luminance is meaningful here: L_p = Y, L_s with K'm = 1699 lm/W as CIE 191 uses
+         * (the ratio first: scotopic_Y near the top of the double range times 1699 would overflow) */
+        have_mes = lx_mesopic_luminance(ctx, c->Y, c->scotopic_Y * (1699.0 / 1700.06), &lmes, &mm) == LX_OK;
+        if (!have_mes && !cli_quiet) cli_error(cmd, "%s:%ld: spectrum '%s': %s", file, line, label, lx_ctx_errmsg(ctx));
     }
     for (int i = 0; i < ncols; i++) {
         if (!m->sel[i]) continue;
@@ -147,7 +152,17 @@ void cli_metrics_row(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const lx_s
         case K_MES_L: if (have_mes) v = lmes; break;
         case K_MES_M: if (have_mes) v = mm; break;
         }
+        /* a metric its group computed must be a number: a NaN or infinity is reported, never a
+         * silent blank (the undefined ones were reported above, with their reason) */
+        int computed = (cols[i].group == G_CRI && have_cri) || (cols[i].group == G_TM30 && have_tm) ||
+                       (cols[i].group == G_AO && have_ao) || (cols[i].group == G_MES && have_mes);
+        if (computed && !isfinite(v)) {
+            cli_error(cmd, "%s:%ld: spectrum '%s': %s is not finite (%s)", file, line, label, cols[i].name,
+                      isnan(v) ? "NaN" : "infinite");
+            bad++;
+        }
         cli_table_num(t, v);
     }
     free(tm);
+    return bad;
 }

@@ -21,8 +21,10 @@ int cli_metrics_parse(cli_metrics *m, const char *list, const char *cmd);
 int cli_metrics_columns(const cli_metrics *m, const char *unit, const char **names, const char **units, int n);
 
 /* Computes the selected metrics of one spectrum and appends one cell per selected column (empty
- * where a metric is refused; the reason goes to stderr unless -q). c: its colorimetry. */
-void cli_metrics_row(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const lx_spd *spd, lx_method method,
+ * where a metric is refused; the reason goes to stderr unless -q). c: its colorimetry. Returns
+ * the number of metrics that were computed but are not finite (each reported on stderr with its
+ * column name: the caller's exit status is then 2). */
+int cli_metrics_row(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const lx_spd *spd, lx_method method,
                      const char *unit, const lx_colorimetry *c, const char *file, long line, const char *cmd);
 
 #endif

@@ -16,7 +16,6 @@
 
 #define HOLD_MEM ((size_t)16 << 20)          /* standard output: rows held in memory up to this, then in a file */
 #define PIPE_PREFIX ((size_t)8 << 20)        /* a pipe of up to this goes to the general reader whole */
-#define FALLBACK_MAX ((long long)256 << 20)  /* a bad regular file up to this is read again by the general reader */
 #define MAX_THREADS 64
 
 /* What one part leaves for its emit: colorimetry, and the csv text of its rows. */
@@ -25,6 +24,9 @@ typedef struct part_out {
     size_t res_cap;
     char *text;
     size_t len, cap;
+    unsigned char *bad;  /* per row: refused by lx_colorimetry_check (reported, no row) */
+    char *why;           /* their messages, NUL-separated, in row order */
+    size_t nbad, why_len, why_cap;
 } part_out;
 
 typedef struct bstream {
@@ -46,6 +48,7 @@ typedef struct bstream {
     FILE *out;
     long long out0;           /* -o: where this file's rows begin in our temporary file */
     int started, failed;
+    int over_cap;             /* larger than the general reader takes (or a pipe): no second reading */
     /* other formats: the results, written to the table when the file is done */
     lx_colorimetry *res;
     char *names;
@@ -87,6 +90,7 @@ static int format_rows(bstream *S, const lx_batch_table *part, part_out *o)
     char *p = o->text;
     for (size_t i = 0; i < n; i++) {
         const lx_colorimetry *r = &o->res[i];
+        if (o->nbad && o->bad[i]) continue;
         memcpy(p, S->file_cell, S->file_cell_len);
         p += S->file_cell_len;
         *p++ = ',';
@@ -139,6 +143,31 @@ static lx_status part_rows(bstream *S, lx_ctx *ctx, lx_backend backend, const lx
     }
     lx_batch_opts opts = {.backend = backend, .threads = 1}; /* the other cores parse meanwhile */
     lx_status st = lx_batch_colorimetry(ctx, b, S->B->observer, &opts, o->res);
+    o->nbad = o->why_len = 0;
+    for (size_t i = 0; st == LX_OK && i < b->n_spectra; i++) {
+        if (lx_colorimetry_check(ctx, &o->res[i], cli_spd_row_max_abs(b, i)) == LX_OK) {
+            if (o->nbad) o->bad[i] = 0;
+            continue;
+        }
+        if (!S->over_cap) return LX_EUNSUPPORTED; /* the general reader reports it with its line */
+        if (!o->nbad) { /* the first refused row of this part */
+            unsigned char *f = realloc(o->bad, b->n_spectra);
+            if (!f) return LX_ENOMEM;
+            o->bad = f;
+            memset(f, 0, b->n_spectra);
+        }
+        o->bad[i] = 1;
+        o->nbad++;
+        const char *msg = lx_ctx_errmsg(ctx);
+        size_t l = strlen(msg) + 1;
+        if (o->why_len + l > o->why_cap) {
+            char *w = realloc(o->why, 2 * (o->why_len + l));
+            if (!w) return LX_ENOMEM;
+            o->why = w, o->why_cap = 2 * (o->why_len + l);
+        }
+        memcpy(o->why + o->why_len, msg, l);
+        o->why_len += l;
+    }
     if (st == LX_OK && S->csv && format_rows(S, part, o) != 0) st = LX_ENOMEM;
     return st;
 }
@@ -243,16 +272,26 @@ static void take_back(bstream *S)
 
 static lx_status on_emit(void *user, const lx_batch_table *part, size_t row0, void *state)
 {
-    (void)row0;
     bstream *S = user;
     cli_spd_batch *B = S->B;
     part_out local = {0}, *o = S->on_workers ? state : &local;
     lx_status st = LX_OK;
     if (!S->on_workers) st = part_rows(S, B->ctx, B->backend, part, o);
     size_t n = part->batch.n_spectra;
+    if (st == LX_OK && o->nbad) { /* refused results: reported in file order, no row */
+        const char *why = o->why;
+        for (size_t i = 0; i < n; i++) {
+            if (!o->bad[i]) continue;
+            size_t l;
+            const char *nm = row_name(part, i, &l);
+            cli_error(B->cmd, "%s: spectrum '%.*s' (data row %zu): %s", S->path, (int)l, nm, row0 + i + 1, why);
+            why += strlen(why) + 1;
+            B->rejected++;
+        }
+    }
     if (st == LX_OK && S->csv) {
         put(S, o->text, o->len);
-        S->rows += n;
+        S->rows += n - o->nbad;
         if (!S->started && (B->forced || S->rows >= CLI_SPD_BATCH_MIN)) start_output(S);
     } else if (st == LX_OK) { /* table and json: kept until the file is done */
         if (S->rows + n > S->res_cap) {
@@ -261,7 +300,9 @@ static lx_status on_emit(void *user, const lx_batch_table *part, size_t row0, vo
             if (!r) st = LX_ENOMEM;
             else S->res = r, S->res_cap = cap;
         }
+        size_t kept = 0;
         for (size_t i = 0; st == LX_OK && i < n; i++) {
+            if (o->nbad && o->bad[i]) continue;
             size_t l;
             const char *nm = row_name(part, i, &l);
             if (S->names_len + l + 1 > S->names_cap) {
@@ -276,12 +317,14 @@ static lx_status on_emit(void *user, const lx_batch_table *part, size_t row0, vo
             memcpy(S->names + S->names_len, nm, l);
             S->names[S->names_len + l] = 0;
             S->names_len += l + 1;
-            S->res[S->rows + i] = o->res[i];
+            S->res[S->rows + kept++] = o->res[i];
         }
-        if (st == LX_OK) S->rows += n;
+        if (st == LX_OK) S->rows += kept;
     }
     free(local.res);
     free(local.text);
+    free(local.bad);
+    free(local.why);
     if (st == LX_OK && S->failed) st = LX_EIO;
     if (st != LX_OK) atomic_store(&S->cb_failed, (int)st);
     return st;
@@ -293,6 +336,8 @@ static void on_release(void *user, void *state)
     part_out *o = state;
     free(o->res);
     free(o->text);
+    free(o->bad);
+    free(o->why);
     free(o);
 }
 
@@ -367,32 +412,6 @@ static char *read_prefix(cli_spd_batch *B, const char *path, FILE *f, size_t *le
     return buf;
 }
 
-/* the rest of a pipe after its prefix, for the general reader */
-static char *read_rest(cli_spd_batch *B, const char *path, FILE *f, char *buf, size_t *len)
-{
-    size_t n = *len, cap = n + 1, got;
-    for (;;) {
-        if (n == cap) {
-            char *b = realloc(buf, cap *= 2);
-            if (!b) {
-                cli_error(B->cmd, "%s: out of memory reading %zu bytes", path, n);
-                free(buf);
-                return NULL;
-            }
-            buf = b;
-        }
-        if ((got = fread(buf + n, 1, cap - n, f)) == 0) break;
-        n += got;
-    }
-    if (ferror(f)) {
-        cli_error(B->cmd, "%s: read error", path);
-        free(buf);
-        return NULL;
-    }
-    *len = n;
-    return buf;
-}
-
 static int run_stream(bstream *S, FILE *in, const char *prefix, size_t prefix_len, lx_status *st)
 {
     cli_spd_batch *B = S->B;
@@ -405,10 +424,9 @@ static int run_stream(bstream *S, FILE *in, const char *prefix, size_t prefix_le
     return *st == LX_OK && S->rows > 0 && (B->forced || S->rows >= CLI_SPD_BATCH_MIN || in);
 }
 
-int cli_spd_batch_file(cli_spd_batch *B, const char *path, char **text, size_t *len)
+int cli_spd_batch_file(cli_spd_batch *B, const char *path, lx_spd_set **set)
 {
-    *text = NULL;
-    *len = 0;
+    *set = NULL;
     struct stat sb;
     int std_in = !strcmp(path, "-"), have = !std_in && stat(path, &sb) == 0;
     int regular = have && S_ISREG(sb.st_mode), pipe_in = std_in || (have && (S_ISFIFO(sb.st_mode) || S_ISCHR(sb.st_mode)));
@@ -421,6 +439,8 @@ int cli_spd_batch_file(cli_spd_batch *B, const char *path, char **text, size_t *
     S.csv = B->format == CLI_FMT_CSV;
     S.on_workers = B->backend != LX_BACKEND_OPENCL && lx_backend_from_env() != LX_BACKEND_OPENCL;
     S.total = regular ? (unsigned long long)sb.st_size : 0;
+    /* beyond the general reader's size limit (or from a pipe) nothing can be read twice */
+    S.over_cap = !regular || (unsigned long long)sb.st_size > lx_ctx_input_limit(B->ctx, LX_INPUT_SPECTRUM);
     size_t pl = strlen(path);
     S.file_cell = malloc(2 * pl + 2);
     if (!S.file_cell) return 0;
@@ -432,18 +452,21 @@ int cli_spd_batch_file(cli_spd_batch *B, const char *path, char **text, size_t *
         lx_status ost = lx_file_open(B->ctx, path, &in);
         if (ost != LX_OK) {
             free(S.file_cell);
-            cli_fail(B->cmd, B->ctx, ost);
-            return -1;
+            return -cli_fail(B->cmd, B->ctx, ost);
         }
         int all = 0;
         prefix = read_prefix(B, path, in, &prefix_len, &all);
-        if (prefix && !all && !plain_rows_header(prefix, prefix_len)) prefix = read_rest(B, path, in, prefix, &prefix_len), all = 1;
-        if (!prefix || all) {
+        if (!prefix || all || !plain_rows_header(prefix, prefix_len)) {
+            /* the general reader, on what was read and the rest of the pipe (its size limit) */
+            lx_status st = prefix ? lx_spd_read_stream(B->ctx, path, in, prefix, prefix_len, set) : LX_EIO;
             if (in != stdin) fclose(in);
             free(S.file_cell);
-            if (!prefix) return -1;
-            *text = prefix;
-            *len = prefix_len;
+            if (st != LX_OK) {
+                int e = prefix ? -cli_fail(B->cmd, B->ctx, st) : -CLI_INPUT;
+                free(prefix);
+                return e;
+            }
+            free(prefix);
             return 0;
         }
     }
@@ -452,21 +475,23 @@ int cli_spd_batch_file(cli_spd_batch *B, const char *path, char **text, size_t *
     if (done && S.csv && commit(&S) != 0) {
         cli_error(B->cmd, "%s: cannot write the results", path);
         take_back(&S);
-        done = -1;
+        done = -CLI_INPUT;
     } else if (!done) {
         take_back(&S);
-        if (regular && (st != LX_EPARSE || (long long)sb.st_size <= FALLBACK_MAX)) {
+        if (!S.over_cap) {
             done = 0; /* the general reader: its messages, or the rows of a small or odd file */
+        } else if (st == LX_OK) {
+            cli_error(B->cmd, "%s: no spectra", path);
+            done = -CLI_INPUT;
+        } else if (!S.cb_failed) {
+            done = -cli_fail(B->cmd, B->ctx, st); /* the library's message: FILE:LINE */
         } else {
-            done = -1;
-            if (st != LX_OK && !S.cb_failed) cli_fail(B->cmd, B->ctx, st); /* the library's message: FILE:LINE */
-            else if (st != LX_OK)
-                cli_error(B->cmd, "%s: %s", path,
-                          S.odd_name ? "a row name in double quotes: the streamed reader of a pipe takes plain names only"
-                          : S.grid < 0 ? "its wavelengths need another method than cie15: save the input to a file"
-                          : S.failed   ? "cannot write the results"
-                                       : lx_strerror(st));
-            else cli_error(B->cmd, "%s: no spectra", path);
+            cli_error(B->cmd, "%s: %s", path,
+                      S.odd_name ? "a row name in double quotes: the streamed reader takes plain names only"
+                      : S.grid < 0 ? "its wavelengths need another method than cie15 (a pipe or a file beyond the size limit is streamed)"
+                      : S.failed   ? "cannot write the results"
+                                   : lx_strerror(st));
+            done = -cli_exit_code(st);
         }
     }
     if (done == 1 && !S.csv) {

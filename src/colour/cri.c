@@ -127,6 +127,7 @@ static void uvw_samples(const double *cmf, int n, const double *illum, const dou
 
 lx_status lx_cri_compute(lx_ctx *ctx, const lx_spd *spd, lx_cri *out)
 {
+    LX__NEED_CTX(ctx);
     if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "CRI: output is NULL");
     lx_status st = lx_spd_check(ctx, spd);
     if (st != LX_OK) return st;

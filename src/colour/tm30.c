@@ -155,6 +155,7 @@ static void samples_jab(const double *cmf10, int n, const double *illum, const d
 
 lx_status lx_tm30_compute(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out)
 {
+    LX__NEED_CTX(ctx);
     if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "TM-30: output is NULL");
     lx_status st = lx_spd_check(ctx, spd);
     if (st != LX_OK) return st;

@@ -7,13 +7,22 @@
 #include <stdlib.h>
 #include <string.h>
 
-lx_status lx_backend_parse(lx_ctx *ctx, const char *text, lx_backend *out)
+/* The backend named by text into *out; 0 when text names none (then *out is untouched). */
+static int backend_by_name(const char *text, lx_backend *out)
 {
-    if (!text || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "backend: NULL argument");
     if (!strcmp(text, "auto")) *out = LX_BACKEND_AUTO;
     else if (!strcmp(text, "cpu")) *out = LX_BACKEND_CPU;
     else if (!strcmp(text, "opencl")) *out = LX_BACKEND_OPENCL;
-    else return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown backend '%s' (expected auto, cpu or opencl)", text);
+    else return 0;
+    return 1;
+}
+
+lx_status lx_backend_parse(lx_ctx *ctx, const char *text, lx_backend *out)
+{
+    LX__NEED_CTX(ctx);
+    if (!text || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "backend: NULL argument");
+    if (!backend_by_name(text, out))
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown backend '%s' (expected auto, cpu or opencl)", text);
     return LX_OK;
 }
 
@@ -21,7 +30,7 @@ lx_backend lx_backend_from_env(void)
 {
     const char *s = getenv("LX_BACKEND");
     lx_backend b = LX_BACKEND_AUTO;
-    if (s && *s) lx_backend_parse(NULL, s, &b);
+    if (s && *s) backend_by_name(s, &b);
     return b;
 }
 
@@ -65,6 +74,10 @@ lx_status lx__backend_choose(lx_ctx *ctx, const char *job, lx_backend asked, dou
     return LX_OK;
 #endif
 }
+
+void lx__backend_used(lx_ctx *ctx, lx_backend used) { ctx->backend_used = used; }
+
+lx_backend lx_ctx_backend_used(const lx_ctx *ctx) { return ctx ? ctx->backend_used : LX_BACKEND_AUTO; }
 
 int lx__backend_fallback(lx_ctx *ctx, const char *job, lx_backend asked, lx_status st)
 {

@@ -12,6 +12,7 @@
 #include <stdio.h>
 
 #include "core/constants.h"
+#include "core/limits.h"
 
 #define LX__ERRMSG_MAX 1024
 
@@ -42,6 +43,8 @@ struct lx_ctx {
     void *cl;                         /* OpenCL state, NULL until first used */
     void (*cl_release)(lx_ctx *ctx);  /* frees cl; set by whoever creates it */
     lx_counters counters;             /* work counters of the lighting and scene layers */
+    size_t input_limit[LX_INPUT_KIND_COUNT]; /* bytes per lx_input_kind; 0: the default */
+    lx_backend backend_used;          /* lx_ctx_backend_used: AUTO until a backend-choosing call succeeds */
 };
 
 /* The data in slot id of ctx (NULL when empty or ctx is NULL). */
@@ -50,12 +53,25 @@ void *lx__slot_get(const lx_ctx *ctx, lx__slot_id id);
  * context. Returns data. */
 void *lx__slot_set(lx_ctx *ctx, lx__slot_id id, void *data, void (*free_fn)(void *data));
 
+/* The first statement of every public function that takes a context: a NULL context is LX_EINVAL
+ * (there is nowhere to put the message; nothing else is read or written). */
+#define LX__NEED_CTX(ctx)                                                                                    \
+    do {                                                                                                     \
+        if (!(ctx)) return LX_EINVAL;                                                                        \
+    } while (0)
+
 /* Records an error on ctx and returns status. file may be NULL, line <= 0 when it does not apply. */
 lx_status lx__error(lx_ctx *ctx, lx_status status, const char *file, long line, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 5, 6)))
 #endif
     ;
+
+/* v as "%.3g" with a bare exponent (1e308, 2.5e-7), for messages. */
+void lx__fmt_magnitude(char *buf, size_t cap, double v);
+/* Checks the reserved space of an option struct (ABI policy, luxcalc.h): n bytes at p must be zero,
+ * else LX_EINVAL naming what ("batch options"). */
+lx_status lx__check_reserved(lx_ctx *ctx, const char *what, const void *p, size_t n);
 
 /* Delivers a message to the log callback when one is installed and level <= its maximum. */
 void lx__log(lx_ctx *ctx, lx_log_level level, const char *fmt, ...)
@@ -67,11 +83,26 @@ void lx__log(lx_ctx *ctx, lx_log_level level, const char *fmt, ...)
 /* ---- text input (file_open.c, lines.c, numparse.c) ---- */
 
 /* Opens path for reading: "-" gives stdin; a directory or a missing file is LX_EIO naming the path;
- * a FIFO waits at most LX_FIFO_WAIT_S seconds (default 10, 0: for ever) for its first data. */
+ * a FIFO waits at most LX_FIFO_WAIT_S seconds (default LX__FIFO_WAIT_S, 0: for ever) for its first data. */
 lx_status lx__open_read(lx_ctx *ctx, const char *path, FILE **out);
-/* Reads a whole input file (as lx__open_read opens it; "-" is standard input) into *text (malloc'ed,
- * not terminated) and *len. Errors name the file: LX_EIO, LX_ENOMEM, and lx__open_read's. */
-lx_status lx__read_all(lx_ctx *ctx, const char *path, char **text, size_t *len);
+/* Reads a whole text input file of `kind` (as lx__open_read opens it; "-" is standard input: a
+ * regular file, a character device, a FIFO or a pipe alike) into *text (malloc'ed, not terminated)
+ * and *len, under the kind's size limit (lx_ctx_input_limit): a regular file larger than the limit
+ * is refused before it is read, a stream when the limit is reached ("FILE: larger than N MB (raise
+ * with LX_MAX_INPUT_MB)", LX_EIO). Binary input is refused as it arrives (LX_EPARSE, FILE:LINE): a
+ * NUL byte anywhere; in the first LX__TEXT_PROBE_BYTES a UTF-16 byte-order mark or pattern, or
+ * control bytes. Memory stays within the limit plus one block. Errors name the file: LX_EIO,
+ * LX_EPARSE, LX_ENOMEM, LX_EINVAL (an unknown kind), and lx__open_read's. */
+lx_status lx__read_all(lx_ctx *ctx, const char *path, lx_input_kind kind, char **text, size_t *len);
+/* The same on a stream the caller opened (not closed), after the prefix_len bytes at prefix it
+ * already read from it (they count towards the limit and are checked as the rest). */
+lx_status lx__read_stream(lx_ctx *ctx, const char *path, lx_input_kind kind, FILE *fp, const char *prefix,
+                          size_t prefix_len, char **text, size_t *len);
+/* For readers that map a file instead (the streamed batch CSV): LX_OK when size is within kind's
+ * limit, else lx__read_all's "larger than" error; and lx__read_all's binary-data checks on the
+ * first block [buf, buf + n) of a text (only its first LX__TEXT_PROBE_BYTES are looked at). */
+lx_status lx__input_size_check(lx_ctx *ctx, const char *path, lx_input_kind kind, unsigned long long size);
+lx_status lx__text_check(lx_ctx *ctx, const char *path, const char *buf, size_t n);
 
 /* A cursor over the lines of a buffer: LF or CRLF; line counts from 1 after the first call. */
 typedef struct lx__lines {
@@ -145,6 +176,8 @@ int lx__cpu_has_bitalg(void);
  * asked of a build without OpenCL. */
 lx_status lx__backend_choose(lx_ctx *ctx, const char *job, lx_backend asked, double work, double break_even,
                              double break_even_warm, lx_backend *out);
+/* Records on ctx the backend a successful backend-choosing call used (lx_ctx_backend_used). */
+void lx__backend_used(lx_ctx *ctx, lx_backend used);
 /* After an OpenCL attempt failed with st: logs "JOB: OpenCL failed (...), using the CPU path" at
  * warning level and returns 1 when the caller should fall back (AUTO asked), else 0 (OPENCL asked:
  * the error stands). */

@@ -58,13 +58,22 @@ int lx__cpu_has_bitalg(void)
 #endif
 }
 
-lx_status lx_simd_parse(lx_ctx *ctx, const char *text, lx_simd *out)
+/* The SIMD path named by text into *out; 0 when text names none (then *out is untouched). */
+static int simd_by_name(const char *text, lx_simd *out)
 {
-    if (!text || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "simd: NULL argument");
     if (!strcmp(text, "scalar")) *out = LX_SIMD_SCALAR;
     else if (!strcmp(text, "avx2")) *out = LX_SIMD_AVX2;
     else if (!strcmp(text, "avx512")) *out = LX_SIMD_AVX512;
-    else return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown SIMD path '%s' (expected scalar, avx2 or avx512)", text);
+    else return 0;
+    return 1;
+}
+
+lx_status lx_simd_parse(lx_ctx *ctx, const char *text, lx_simd *out)
+{
+    LX__NEED_CTX(ctx);
+    if (!text || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "simd: NULL argument");
+    if (!simd_by_name(text, out))
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown SIMD path '%s' (expected scalar, avx2 or avx512)", text);
     return LX_OK;
 }
 
@@ -72,7 +81,7 @@ lx_simd lx_simd_level(void)
 {
     lx_simd c = lx_simd_cpu(), cap = LX_SIMD_AVX512;
     const char *e = getenv("LX_SIMD"); /* read on every call: tests change it within one process */
-    if (e && *e) lx_simd_parse(NULL, e, &cap);
+    if (e && *e) simd_by_name(e, &cap);
     return c < cap ? c : cap;
 }
 

@@ -83,6 +83,31 @@ lx_status lx__error(lx_ctx *ctx, lx_status status, const char *file, long line, 
     return status;
 }
 
+void lx__fmt_magnitude(char *buf, size_t cap, double v)
+{
+    char t[48];
+    snprintf(t, sizeof t, "%.3g", v);
+    char *e = strchr(t, 'e');
+    if (e) { /* 1e+308 -> 1e308, 3e-05 -> 3e-5 */
+        char *q = e + 1, *d = e + 1;
+        if (*q == '+') q++;
+        else if (*q == '-') *d++ = *q++;
+        while (*q == '0' && q[1]) q++;
+        memmove(d, q, strlen(q) + 1);
+    }
+    snprintf(buf, cap, "%s", t);
+}
+
+lx_status lx__check_reserved(lx_ctx *ctx, const char *what, const void *p, size_t n)
+{
+    const unsigned char *b = p;
+    for (size_t i = 0; i < n; i++)
+        if (b[i]) return lx__error(ctx, LX_EINVAL, NULL, 0, "%s: reserved must be zero (zero-initialise the struct)", what);
+    return LX_OK;
+}
+
+void lx_text_free(char *text) { free(text); }
+
 void lx__log(lx_ctx *ctx, lx_log_level level, const char *fmt, ...)
 {
     if (!ctx || !ctx->log_fn || level > ctx->log_max) return;

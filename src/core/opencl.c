@@ -96,7 +96,11 @@ static void describe(cl_platform_id p, cl_device_id d, int pi, int di, lx_cl_dev
     info->max_alloc_bytes = a;
     cl_device_fp_config fp = 0;
     clGetDeviceInfo(d, CL_DEVICE_DOUBLE_FP_CONFIG, sizeof fp, &fp, NULL);
-    info->fp64 = fp != 0;
+    /* LX_CL_FP64=0 treats the device as one without fp64: the program is built with LX_FP64=0 and
+     * every kernel takes its float path (for devices whose fp64 is slow, and so that CI compiles and
+     * runs the variants of devices that have none) */
+    const char *f = getenv("LX_CL_FP64");
+    info->fp64 = fp != 0 && !(f && !strcmp(f, "0"));
 }
 
 /* Every device of every platform: ids and descriptions. Returns the count (0 when none). */
@@ -169,6 +173,7 @@ static void effective_choice(const lx__cl *cl, int *plat, int *dev, lx_cl_type *
 
 lx_status lx_cl_devices(lx_ctx *ctx, lx_cl_device_info **out, size_t *n)
 {
+    LX__NEED_CTX(ctx);
     if (!out || !n) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_cl_devices: NULL output");
     cl_platform_id pids[MAX_DEVICES];
     cl_device_id dids[MAX_DEVICES];
@@ -176,7 +181,7 @@ lx_status lx_cl_devices(lx_ctx *ctx, lx_cl_device_info **out, size_t *n)
     int cnt = enumerate(pids, dids, infos, MAX_DEVICES);
     int plat, dev;
     lx_cl_type type;
-    effective_choice(ctx ? ctx->cl : NULL, &plat, &dev, &type);
+    effective_choice(ctx->cl, &plat, &dev, &type);
     int def = choose(infos, cnt, plat, dev, type);
     if (def >= 0) infos[def].is_default = 1;
     *out = NULL;
@@ -192,7 +197,9 @@ lx_status lx_cl_devices(lx_ctx *ctx, lx_cl_device_info **out, size_t *n)
 
 lx_status lx_cl_select(lx_ctx *ctx, int platform, int device, lx_cl_type type)
 {
-    if (!ctx) return LX_EINVAL;
+    LX__NEED_CTX(ctx);
+    if (type != LX_CL_AUTO && type != LX_CL_CPU && type != LX_CL_GPU)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_cl_select: unknown device type %d", (int)type);
     if (ctx->cl) cl_release(ctx);
     lx__cl *cl = NULL;
     lx_status st = cl_state(ctx, &cl);
@@ -205,7 +212,8 @@ lx_status lx_cl_select(lx_ctx *ctx, int platform, int device, lx_cl_type type)
 
 lx_status lx_cl_borrow(lx_ctx *ctx, void *context, void *queue)
 {
-    if (!ctx || !context || !queue)
+    LX__NEED_CTX(ctx);
+    if (!context || !queue)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_cl_borrow: context and queue are required");
     cl_context c = context;
     cl_command_queue q = queue;
@@ -280,35 +288,13 @@ lx_status lx__cl_get(lx_ctx *ctx, lx__cl **out)
 
 lx_status lx_cl_info(lx_ctx *ctx, lx_cl_device_info *out)
 {
-    if (!ctx || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_cl_info: NULL argument");
+    LX__NEED_CTX(ctx);
+    if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_cl_info: NULL argument");
     lx__cl *cl = NULL;
     lx_status st = lx__cl_get(ctx, &cl);
     if (st) return st;
     *out = cl->info;
     return LX_OK;
-}
-
-/* Reads a whole file into a NUL-terminated buffer (NULL on failure). */
-static char *slurp(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    size_t cap = 1 << 14, n = 0, got;
-    char *buf = malloc(cap + 1);
-    while (buf && (got = fread(buf + n, 1, cap - n, f)) > 0) {
-        n += got;
-        if (n == cap) {
-            char *b = realloc(buf, (cap *= 2) + 1);
-            if (!b) {
-                free(buf);
-                buf = NULL;
-            }
-            buf = b;
-        }
-    }
-    fclose(f);
-    if (buf) buf[n] = 0;
-    return buf;
 }
 
 static lx_status build_program(lx_ctx *ctx, lx__cl *cl)
@@ -317,31 +303,35 @@ static lx_status build_program(lx_ctx *ctx, lx__cl *cl)
     if (n == 0) return lx__error(ctx, LX_EUNSUPPORTED, NULL, 0, "no OpenCL kernels were embedded in this build");
     const char **srcs = calloc((size_t)n, sizeof *srcs);
     char **owned = calloc((size_t)n, sizeof *owned);
-    if (!srcs || !owned) {
+    size_t *lens = calloc((size_t)n, sizeof *lens);
+    if (!srcs || !owned || !lens) {
         free(srcs);
         free(owned);
+        free(lens);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
     const char *dir = getenv("LX_KERNEL_DIR");
     lx_status st = LX_OK;
-    for (int i = 0; i < n; i++) {
-        if (dir && *dir) {
+    for (int i = 0; i < n && !st; i++) {
+        if (dir && *dir) { /* kernel work: the files of LX_KERNEL_DIR instead of the embedded text */
             char path[1024];
             snprintf(path, sizeof path, "%s/%s", dir, lx__kernel_sources[i].name);
-            owned[i] = slurp(path);
-            if (!owned[i]) {
-                st = lx__error(ctx, LX_EIO, path, 0, "cannot read kernel (LX_KERNEL_DIR)");
-                break;
+            st = lx__read_all(ctx, path, LX_INPUT_KERNEL, &owned[i], &lens[i]);
+            if (st) { /* the reader's message names the file; say where the path came from */
+                char why[LX__ERRMSG_MAX / 2];
+                snprintf(why, sizeof why, "%s", lx_ctx_errmsg(ctx));
+                lx__error(ctx, st, NULL, 0, "cannot read kernel (LX_KERNEL_DIR): %s", why);
             }
             srcs[i] = owned[i];
         } else {
             srcs[i] = lx__kernel_sources[i].source;
+            lens[i] = strlen(srcs[i]);
         }
     }
     cl_int err = CL_SUCCESS;
     cl_program prog = NULL;
     if (!st) {
-        prog = clCreateProgramWithSource(cl->context, (cl_uint)n, srcs, NULL, &err);
+        prog = clCreateProgramWithSource(cl->context, (cl_uint)n, srcs, lens, &err);
         st = lx__cl_check(ctx, err, "clCreateProgramWithSource");
     }
     if (!st) {
@@ -368,6 +358,7 @@ static lx_status build_program(lx_ctx *ctx, lx__cl *cl)
     for (int i = 0; i < n; i++) free(owned[i]);
     free(owned);
     free(srcs);
+    free(lens);
     if (!st) cl->program = prog;
     return st;
 }
@@ -390,6 +381,7 @@ lx_status lx__cl_kernel(lx_ctx *ctx, lx__cl *cl, const char *name, cl_kernel *ou
 
 static lx_status no_cl(lx_ctx *ctx)
 {
+    LX__NEED_CTX(ctx);
     return lx__error(ctx, LX_EUNSUPPORTED, NULL, 0, "this build has no OpenCL (built with LX_OPENCL=0)");
 }
 
@@ -407,6 +399,7 @@ lx_status lx_cl_borrow(lx_ctx *ctx, void *cl_context, void *cl_command_queue)
 
 lx_status lx_cl_devices(lx_ctx *ctx, lx_cl_device_info **out, size_t *n)
 {
+    LX__NEED_CTX(ctx);
     if (!out || !n) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_cl_devices: NULL output");
     *out = NULL;
     *n = 0;
@@ -415,7 +408,8 @@ lx_status lx_cl_devices(lx_ctx *ctx, lx_cl_device_info **out, size_t *n)
 
 lx_status lx_cl_info(lx_ctx *ctx, lx_cl_device_info *out)
 {
-    (void)out;
+    LX__NEED_CTX(ctx);
+    if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_cl_info: NULL argument");
     return no_cl(ctx);
 }
 
@@ -426,3 +420,5 @@ int lx_cl_ready(const lx_ctx *ctx)
 }
 
 #endif /* LX_OPENCL */
+
+void lx_cl_devices_free(lx_cl_device_info *devices) { free(devices); }

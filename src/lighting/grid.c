@@ -20,7 +20,8 @@
 lx_status lx_plane_axis(lx_ctx *ctx, char axis, double level_m, double a0, double a1, double b0, double b1, double spacing_m,
                         size_t na, size_t nb, lx_plane *out)
 {
-    if (!ctx || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_plane_axis: NULL argument");
+    LX__NEED_CTX(ctx);
+    if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_plane_axis: NULL argument");
     if (!isfinite(level_m) || !isfinite(a0) || !isfinite(a1) || !isfinite(b0) || !isfinite(b1) || a1 < a0 || b1 < b0)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "the area must be finite with A0 <= A1 and B0 <= B1");
     lx_plane p;
@@ -53,7 +54,9 @@ lx_status lx_plane_axis(lx_ctx *ctx, char axis, double level_m, double a0, doubl
 
 lx_status lx_plane_points(lx_ctx *ctx, const lx_plane *p, double **points, size_t *n)
 {
-    if (!ctx || !p || !points || !n) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_plane_points: NULL argument");
+    LX__NEED_CTX(ctx);
+    if (!p || !points || !n) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_plane_points: NULL argument");
+    *points = NULL;
     if (p->na < 1 || p->nb < 1) return lx__error(ctx, LX_EINVAL, NULL, 0, "a plane needs at least 1 x 1 points");
     size_t cnt = p->na * p->nb;
     double *v = malloc(cnt * 3 * sizeof *v);
@@ -71,9 +74,12 @@ lx_status lx_plane_points(lx_ctx *ctx, const lx_plane *p, double **points, size_
     return LX_OK;
 }
 
+void lx_plane_points_free(double *points) { free(points); }
+
 lx_status lx_grid_stats_compute(lx_ctx *ctx, const double *E, size_t n, lx_grid_stats *out)
 {
-    if (!ctx || !E || !out || n == 0) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_grid_stats_compute: no values");
+    LX__NEED_CTX(ctx);
+    if (!E || !out || n == 0) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_grid_stats_compute: no values");
     double sum = 0, c = 0, mn = E[0], mx = E[0];
     for (size_t i = 0; i < n; i++) { /* Neumaier summation */
         double t = sum + E[i];
@@ -82,10 +88,25 @@ lx_status lx_grid_stats_compute(lx_ctx *ctx, const double *E, size_t n, lx_grid_
         if (E[i] < mn) mn = E[i];
         if (E[i] > mx) mx = E[i];
     }
-    out->avg = (sum + c) / (double)n;
-    out->min = mn;
-    out->max = mx;
-    out->u0 = out->avg > 0 ? mn / out->avg : NAN;
+    lx_grid_stats r = {0}; /* reserved included (ABI policy) */
+    r.avg = (sum + c) / (double)n;
+    if (!isfinite(r.avg) && isfinite(mn) && isfinite(mx)) {
+        /* values near the top of the double range: the sum again of E / 2^e (exact), then back */
+        int e = 0;
+        frexp(fmax(fabs(mn), fabs(mx)), &e);
+        e += 64; /* room for 2^64 values */
+        sum = c = 0;
+        for (size_t i = 0; i < n; i++) {
+            double v = ldexp(E[i], -e), t = sum + v;
+            c += fabs(sum) >= fabs(v) ? (sum - t) + v : (v - t) + sum;
+            sum = t;
+        }
+        r.avg = ldexp((sum + c) / (double)n, e);
+    }
+    r.min = mn;
+    r.max = mx;
+    r.u0 = r.avg > 0 ? mn / r.avg : NAN;
+    *out = r;
     return LX_OK;
 }
 
@@ -255,7 +276,7 @@ static double near_mean(void *arg, int n)
 
 /* Near field: the luminous area subdivided (2, 4, 8, ... cells per side, up to LX__NEAR_MAX) until
  * the Richardson-extrapolated illuminance changes by less than tol relative. */
-#define LX__NEAR_MAX 512
+#define LX__NEAR_MAX LX__NEAR_MAX_CELLS
 static double pair_near(const plum *p, lx_interp interp, const double *pt, const double *n, double tol,
                         unsigned long long *cells, unsigned long long *unconverged)
 {
@@ -385,21 +406,24 @@ lx_status lx__grid_opencl(lx_ctx *ctx, const plum *pl, size_t m, const float *ta
 #endif
 
 lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, const double *points, size_t n,
-                              const double *normals, int shared_normal, lx_grid_opts *opts, double *E_lx)
+                              const double *normals, int shared_normal, const lx_grid_opts *opts, double *E_lx)
 {
-    if (!ctx || (!lums && m) || !points || !normals || !E_lx)
+    LX__NEED_CTX(ctx);
+    if ((!lums && m) || !points || !normals || !E_lx)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_grid_illuminance: NULL argument");
     lx_grid_opts o;
     memset(&o, 0, sizeof o);
     if (opts) o = *opts;
+    lx_status st = lx__check_reserved(ctx, "grid options", o.reserved, sizeof o.reserved);
+    if (st) return st;
     double mf = o.maintenance_factor == 0 ? 1 : o.maintenance_factor;
     if (!(mf > 0) || mf > 1) return lx__error(ctx, LX_EINVAL, NULL, 0, "the maintenance factor must be in (0, 1] (got %g)", mf);
     if (o.interp != LX_INTERP_BILINEAR && o.interp != LX_INTERP_SMOOTH && o.interp != LX_INTERP_TABLE)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown interpolation %d", (int)o.interp);
     if (o.model != LX_MODEL_AUTO && o.model != LX_MODEL_POINT)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "grids use the point or auto model");
-    if (o.table_n < 0 || o.table_n == 1 || o.table_n > 16384)
-        return lx__error(ctx, LX_EINVAL, NULL, 0, "table rows must be 2 to 16384 (got %d; 0: 1024)", o.table_n);
+    if (o.table_n < 0 || o.table_n == 1 || o.table_n > LX__GRID_MAX_TABLE_ROWS)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "table rows must be 2 to %d (got %d; 0: 1024)", LX__GRID_MAX_TABLE_ROWS, o.table_n);
     double tol = o.nearfield_tol == 0 ? 1e-4 : o.nearfield_tol;
     if (!(tol >= 1e-12) || !(tol <= 0.1))
         return lx__error(ctx, LX_EINVAL, NULL, 0, "the near-field tolerance must be in [1e-12, 0.1] (got %g)", tol);
@@ -414,7 +438,6 @@ lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, c
     plum *pl = calloc(m ? m : 1, sizeof *pl);
     if (!pl) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     float **own = calloc(m ? m : 1, sizeof *own);
-    lx_status st = LX_OK;
     double *E = malloc((n ? n : 1) * sizeof *E);
     if (!own || !E) {
         st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
@@ -476,7 +499,7 @@ lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, c
         if (st) goto out;
         use_cl = be == LX_BACKEND_OPENCL;
     }
-    o.used = LX_BACKEND_CPU;
+    lx_backend used = LX_BACKEND_CPU;
 #if LX_OPENCL
     if (use_cl) {
         float *all = malloc(tables_n * sizeof *all);
@@ -489,7 +512,7 @@ lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, c
         st = lx__grid_opencl(ctx, pl, m, all, tables_n, points, n, normals, shared_normal, o.fp32, E);
         free(all);
         if (st == LX_OK) {
-            o.used = LX_BACKEND_OPENCL;
+            used = LX_BACKEND_OPENCL;
         } else if (!lx__backend_fallback(ctx, "grid", o.backend, st)) {
             goto out;
         } else {
@@ -517,9 +540,21 @@ lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, c
         if (m == 0) memset(E, 0, n * sizeof *E);
         else st = run_cpu(ctx, pl, m, points, n, normals, shared_normal, o.interp, o.model, tol, o.threads, E);
     }
+    for (size_t i = 0; st == LX_OK && i < n; i++)
+        if (!isfinite(E[i])) { /* never a NaN or an infinity handed on as an illuminance */
+            double peak = 0;
+            for (size_t k = 0; k < m; k++)
+                for (size_t j = 0; j < lums[k].lum->n_c * lums[k].lum->n_g; j++) peak = fmax(peak, fabs(lums[k].lum->full_cd[j]));
+            char mb[48];
+            lx__fmt_magnitude(mb, sizeof mb, peak);
+            st = lx__error(ctx, LX_ERANGE, NULL, 0,
+                           "illuminance at point %zu (%g, %g, %g m) is %s: intensities up to %s cd%s leave the range of the "
+                           "arithmetic", i + 1, points[3 * i], points[3 * i + 1], points[3 * i + 2], isnan(E[i]) ? "NaN" : "infinite",
+                           mb, o.interp == LX_INTERP_TABLE ? " (float tables: 3.4e38)" : "");
+        }
     if (st == LX_OK) {
         memcpy(E_lx, E, n * sizeof *E);
-        if (opts) opts->used = o.used;
+        lx__backend_used(ctx, used);
     }
 out:
     if (own)

@@ -104,32 +104,16 @@ static lx_status tilt_file(lx_ctx *ctx, const char *file, long line, const char 
         snprintf(path, sizeof path, "%.*s/%s", (int)(slash - file), file, name);
     else
         snprintf(path, sizeof path, "%s", name);
-    FILE *fp = NULL;
     struct stat sb; /* a TILT table is a file: not stdin, a device or a FIFO */
     if (stat(path, &sb) == 0 && !S_ISREG(sb.st_mode) && !S_ISDIR(sb.st_mode))
         return lx__error(ctx, LX_EIO, file, line, "TILT file '%s': not a regular file", path);
-    if (!strcmp(path, "-") || lx__open_read(ctx, path, &fp))
-        return lx__error(ctx, LX_EIO, file, line, "TILT file '%s': %s", path, strcmp(path, "-") ? lx_ctx_errmsg(ctx) : "not a file");
+    if (!strcmp(path, "-")) return lx__error(ctx, LX_EIO, file, line, "TILT file '%s': not a file", path);
     char *buf = NULL;
-    size_t len = 0, cap = 0;
-    for (;;) {
-        if (len == cap) {
-            cap = cap ? 2 * cap : 4096;
-            char *nb = realloc(buf, cap);
-            if (!nb) {
-                free(buf);
-                fclose(fp);
-                return lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
-            }
-            buf = nb;
-        }
-        size_t got = fread(buf + len, 1, cap - len, fp);
-        if (!got) break;
-        len += got;
-    }
-    fclose(fp);
+    size_t len = 0;
+    lx_status st = lx__read_all(ctx, path, LX_INPUT_LUMINAIRE, &buf, &len);
+    if (st) return lx__error(ctx, st, file, line, "TILT file '%s': %s", path, lx_ctx_errmsg(ctx));
     lx__lines it = {buf, buf + len, 0};
-    lx_status st = tokenize(ctx, path, &it, t);
+    st = tokenize(ctx, path, &it, t);
     free(buf);
     return st;
 }
@@ -142,7 +126,7 @@ static lx_status read_tilt(lx_ctx *ctx, const char *file, toks *t, long last, lx
     if (st) return st;
     if (g != 1 && g != 2 && g != 3)
         return lx__error(ctx, LX_EPARSE, file, tok_line(t, last), "TILT lamp-to-luminaire geometry must be 1, 2 or 3 (got %g)", g);
-    if ((st = take_count(ctx, file, t, last, "the number of TILT angles", 100000, &n))) return st;
+    if ((st = take_count(ctx, file, t, last, "the number of TILT angles", LX__IES_MAX_TILT_ANGLES, &n))) return st;
     if (t->n - t->pos < 2 * (size_t)n) /* the count against the numbers there, before allocating */
         return lx__error(ctx, LX_EPARSE, file, last, "the file ends before the end of the TILT table: %ld angles need "
                          "%ld numbers, the file has %zu (truncated table or a count that lies)", n, 2 * n, t->n - t->pos);
@@ -302,7 +286,7 @@ lx_status lx__ies_read(lx_ctx *ctx, const char *file, const char *text, size_t l
     }
     for (int i = 0; i < 3; i++)
         if ((st = take(ctx, file, &t, last, names2[i], &b[i]))) goto fail;
-    if (h[0] != floor(h[0]) || fabs(h[0]) < 1 || fabs(h[0]) > 1e6) {
+    if (h[0] != floor(h[0]) || fabs(h[0]) < 1 || fabs(h[0]) > LX__IES_MAX_LAMPS) {
         st = lx__error(ctx, LX_EPARSE, file, hline, "the number of lamps must be a whole number (got %g)", h[0]);
         goto fail;
     }
@@ -322,8 +306,9 @@ lx_status lx__ies_read(lx_ctx *ctx, const char *file, const char *text, size_t l
     }
     lum->multiplier = h[2];
     for (int i = 3; i <= 4; i++)
-        if (h[i] != floor(h[i]) || h[i] < 1 || h[i] > 100000) {
-            st = lx__error(ctx, LX_EPARSE, file, hline, "%s must be a whole number from 1 to 100000 (got %g)", names[i], h[i]);
+        if (h[i] != floor(h[i]) || h[i] < 1 || h[i] > LX__IES_MAX_ANGLES) {
+            st = lx__error(ctx, LX_EPARSE, file, hline, "%s must be a whole number from 1 to %d (got %g)", names[i],
+                           LX__IES_MAX_ANGLES, h[i]);
             goto fail;
         }
     lum->n_v = (size_t)h[3];

@@ -66,7 +66,9 @@ static void list(sbuf *b, const double *v, size_t n, size_t stride)
 
 lx_status lx_luminaire_write_ies(lx_ctx *ctx, const lx_luminaire *l, char **text, size_t *len)
 {
-    if (!ctx || !l || !text || !len || !l->cd) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_write_ies: NULL argument");
+    LX__NEED_CTX(ctx);
+    if (text) *text = NULL;
+    if (!l || !text || !len || !l->cd) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_write_ies: NULL argument");
     if (l->photometric_type != 1)
         return lx__error(ctx, LX_EUNSUPPORTED, l->file, 0, "only type C luminaires can be written");
     /* IES stores the planes 0, 0-90, 0-180, 90-270 or 0-360: EULUMDAT Isym 0 tables that stop

@@ -79,9 +79,9 @@ lx_status lx__ldt_read(lx_ctx *ctx, const char *file, const char *buf, size_t le
     if ((st = whole(ctx, &r, "Ityp (type indicator)", 0, 3, &ityp))) goto fail;
     if ((st = whole(ctx, &r, "Isym (symmetry indicator)", 0, 4, &isym))) goto fail;
     long isym_line = r.it.line;
-    if ((st = whole(ctx, &r, "Mc (number of C-planes)", 1, 3600, &mc))) goto fail;
+    if ((st = whole(ctx, &r, "Mc (number of C-planes)", 1, LX__LDT_MAX_C_PLANES, &mc))) goto fail;
     if ((st = num(ctx, &r, "Dc (C-plane step)", &dc))) goto fail;
-    if ((st = whole(ctx, &r, "Ng (number of gamma angles)", 2, 18001, &ng))) goto fail;
+    if ((st = whole(ctx, &r, "Ng (number of gamma angles)", 2, LX__LDT_MAX_GAMMA, &ng))) goto fail;
     if ((st = num(ctx, &r, "Dg (gamma step)", &dg))) goto fail;
     if ((st = text(ctx, &r, "the measurement report number", NULL))) goto fail;
     if ((st = text(ctx, &r, "the luminaire name", &l->description))) goto fail;
@@ -97,15 +97,15 @@ lx_status lx__ldt_read(lx_ctx *ctx, const char *file, const char *buf, size_t le
     if ((st = num(ctx, &r, "LORL (light output ratio)", &lorl))) goto fail;
     if ((st = num(ctx, &r, "the intensity conversion factor", &cfli))) goto fail;
     if ((st = num(ctx, &r, "the tilt during measurement", &tilt))) goto fail;
-    if ((st = whole(ctx, &r, "the number of lamp sets", 1, 20, &nsets))) goto fail;
+    if ((st = whole(ctx, &r, "the number of lamp sets", 1, LX__LDT_MAX_LAMP_SETS, &nsets))) goto fail;
     double flux1 = 0, watts1 = 0;
     long lamps1 = 0;
     for (long k = 0; k < nsets; k++) {
         double lamps, flux, w;
         if ((st = num(ctx, &r, "the number of lamps", &lamps))) goto fail;
-        if (lamps != floor(lamps) || lamps == 0 || fabs(lamps) > 1e6) {
+        if (lamps != floor(lamps) || lamps == 0 || fabs(lamps) > LX__LDT_MAX_LAMPS) {
             st = lx__error(ctx, LX_EPARSE, file, r.it.line, "the number of lamps must be a non-zero whole number of at most "
-                           "1e6 (got %g)", lamps);
+                           "%g (got %g)", LX__LDT_MAX_LAMPS, lamps);
             goto fail;
         }
         if ((st = text(ctx, &r, "the lamp type", NULL))) goto fail;

@@ -90,8 +90,9 @@ static int has_tilt_line(const char *text, size_t len)
 
 lx_status lx_luminaire_read_mem(lx_ctx *ctx, const char *name, const char *text, size_t len, lx_luminaire **out)
 {
+    LX__NEED_CTX(ctx);
     if (out) *out = NULL;
-    if (!ctx || !out || (!text && len)) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_read_mem: NULL argument");
+    if (!out || (!text && len)) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_read_mem: NULL argument");
     if (!name) name = "(memory)";
     if (len == 0) return lx__error(ctx, LX_EPARSE, name, 1, "empty file");
     /* LM-63 by its TILT= line, or by its version line (then the IES reader reports the missing TILT) */
@@ -104,11 +105,12 @@ lx_status lx_luminaire_read_mem(lx_ctx *ctx, const char *name, const char *text,
 
 lx_status lx_luminaire_read_file(lx_ctx *ctx, const char *path, lx_luminaire **out)
 {
+    LX__NEED_CTX(ctx);
     if (out) *out = NULL;
-    if (!ctx || !path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_read_file: NULL argument");
+    if (!path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_read_file: NULL argument");
     char *buf;
     size_t len;
-    lx_status st = lx__read_all(ctx, path, &buf, &len);
+    lx_status st = lx__read_all(ctx, path, LX_INPUT_LUMINAIRE, &buf, &len);
     if (st != LX_OK) return st;
     st = lx_luminaire_read_mem(ctx, path, buf, len, out);
     free(buf);
@@ -481,12 +483,37 @@ static double spread_angle(const lx_luminaire *l, double ca, double frac, double
 
 lx_status lx_luminaire_summary(lx_ctx *ctx, const lx_luminaire *l, lx_lum_summary *out)
 {
-    if (!ctx || !l || !out || !l->full_cd) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_summary: NULL argument");
+    LX__NEED_CTX(ctx);
+    if (!l || !out || !l->full_cd) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_summary: NULL argument");
     lx_lum_summary s;
-    double tf = lx_luminaire_tilt_factor(l, 0);
+    memset(&s, 0, sizeof s); /* reserved included (ABI policy) */
+    double tf = lx_luminaire_tilt_factor(l, 0), down = NAN;
     s.lumens = tf * integrate(l, -1e9, 1e9);
+    if (l->photometric_type == 1) down = tf * integrate(l, -1e9, 90);
+    double peak = 0;
+    for (size_t k = 0; k < l->n_c * l->n_g; k++) peak = fmax(peak, fabs(l->full_cd[k]));
+    if (!isfinite(s.lumens) && isfinite(peak)) {
+        /* candela near the top of the double range: the cell sums again on the table scaled by
+         * 2^-e (exact), then back, so a partial sum that overflowed does not make the flux overflow */
+        int e = 0;
+        frexp(peak, &e);
+        lx_luminaire scaled = *l;
+        double *cd = malloc(l->n_c * l->n_g * sizeof *cd);
+        if (!cd) return lx__error(ctx, LX_ENOMEM, l->file, 0, "out of memory");
+        for (size_t k = 0; k < l->n_c * l->n_g; k++) cd[k] = ldexp(l->full_cd[k], -e);
+        scaled.full_cd = cd;
+        s.lumens = ldexp(tf * integrate(&scaled, -1e9, 1e9), e);
+        if (l->photometric_type == 1) down = ldexp(tf * integrate(&scaled, -1e9, 90), e);
+        free(cd);
+    }
+    if (!isfinite(s.lumens)) {
+        char mb[48];
+        lx__fmt_magnitude(mb, sizeof mb, peak);
+        return lx__error(ctx, LX_ERANGE, l->file, 0, "integral overflows: candela values up to %s give lumens beyond the double range",
+                         mb);
+    }
     s.downward_fraction = NAN;
-    if (l->photometric_type == 1 && s.lumens > 0) s.downward_fraction = tf * integrate(l, -1e9, 90) / s.lumens;
+    if (l->photometric_type == 1 && s.lumens > 0) s.downward_fraction = down / s.lumens;
     s.max_intensity_cd = 0;
     s.peak_c_deg = s.peak_gamma_deg = 0;
     for (size_t i = 0; i < l->n_c; i++)
@@ -512,8 +539,13 @@ lx_status lx_luminaire_summary(lx_ctx *ctx, const lx_luminaire *l, lx_lum_summar
 
 lx_status lx_luminaire_from_model(lx_ctx *ctx, const lx_lum_model *m, lx_luminaire **out)
 {
+    LX__NEED_CTX(ctx);
     if (out) *out = NULL;
-    if (!ctx || !m || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_from_model: NULL argument");
+    if (!m || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_luminaire_from_model: NULL argument");
+    lx_status st0 = lx__check_reserved(ctx, "luminaire model", m->reserved, sizeof m->reserved);
+    if (st0) return st0;
+    if (m->kind != LX_LUM_MODEL_POINT && m->kind != LX_LUM_MODEL_WARN && m->kind != LX_LUM_MODEL_LAMBERT)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown luminaire model %d", (int)m->kind);
     if (!(m->flux_lm > 0) || !isfinite(m->flux_lm))
         return lx__error(ctx, LX_EINVAL, NULL, 0, "the model's flux must be positive and finite (got %g lm)", m->flux_lm);
     if (m->kind == LX_LUM_MODEL_WARN && (!(m->exponent >= 0) || !isfinite(m->exponent) || m->exponent > 1e6))

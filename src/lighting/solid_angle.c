@@ -7,6 +7,7 @@
 
 lx_status lx_solid_angle_cap(lx_ctx *ctx, double half_angle_rad, double *sr)
 {
+    LX__NEED_CTX(ctx);
     if (!sr) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_solid_angle_cap: NULL output");
     if (!(half_angle_rad >= 0 && half_angle_rad <= LX__PI))
         return lx__error(ctx, LX_EINVAL, NULL, 0, "cap half-angle must be between 0 and 180 deg (got %g rad)",
@@ -18,6 +19,7 @@ lx_status lx_solid_angle_cap(lx_ctx *ctx, double half_angle_rad, double *sr)
 
 lx_status lx_solid_angle_latlong_pixel(lx_ctx *ctx, int width, int height, int row, double *sr)
 {
+    LX__NEED_CTX(ctx);
     if (!sr) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_solid_angle_latlong_pixel: NULL output");
     if (width <= 0 || height <= 0 || row < 0 || row >= height)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "lat-long pixel row %d outside a %dx%d map", row, width, height);
@@ -45,6 +47,7 @@ static double signed_corner(double X, double Y, double d)
 
 lx_status lx_solid_angle_rect(lx_ctx *ctx, double x0, double x1, double y0, double y1, double distance_m, double *sr)
 {
+    LX__NEED_CTX(ctx);
     if (!sr) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_solid_angle_rect: NULL output");
     if (!(distance_m > 0) || !isfinite(distance_m))
         return lx__error(ctx, LX_EINVAL, NULL, 0, "distance must be positive and finite (got %g m)", distance_m);

@@ -22,6 +22,7 @@ static lx_status check_target(lx_ctx *ctx, double e, double incidence_rad, doubl
 lx_status lx_solve_distance(lx_ctx *ctx, double illuminance_lx, double intensity_cd, double incidence_rad,
                             double *distance_m)
 {
+    LX__NEED_CTX(ctx);
     double cb;
     lx_status st;
     if (!distance_m) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_solve_distance: NULL output");
@@ -36,6 +37,7 @@ lx_status lx_solve_distance(lx_ctx *ctx, double illuminance_lx, double intensity
 lx_status lx_solve_intensity(lx_ctx *ctx, double illuminance_lx, double distance_m, double incidence_rad,
                              double *intensity_cd)
 {
+    LX__NEED_CTX(ctx);
     double cb;
     lx_status st;
     if (!intensity_cd) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_solve_intensity: NULL output");
@@ -51,6 +53,7 @@ lx_status lx_solve_intensity(lx_ctx *ctx, double illuminance_lx, double distance
 lx_status lx_solve_flux(lx_ctx *ctx, double illuminance_lx, double distance_m, double incidence_rad,
                         double exponent, double angle_rad, double *flux_lm)
 {
+    LX__NEED_CTX(ctx);
     double i;
     lx_status st;
     if (!flux_lm) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_solve_flux: NULL output");

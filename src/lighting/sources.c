@@ -24,6 +24,7 @@ static lx_status check_finite(lx_ctx *ctx, const char *what, double v, int nonne
 lx_status lx_point_illuminance(lx_ctx *ctx, double intensity_cd, double distance_m, double incidence_rad,
                                double *illuminance_lx)
 {
+    LX__NEED_CTX(ctx);
     lx_status st;
     if (!illuminance_lx) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_point_illuminance: NULL output");
     if ((st = check_finite(ctx, "intensity", intensity_cd, 1)) != LX_OK) return st;
@@ -40,6 +41,7 @@ lx_status lx_point_illuminance(lx_ctx *ctx, double intensity_cd, double distance
 
 lx_status lx_point_intensity(lx_ctx *ctx, double flux_lm, double *intensity_cd)
 {
+    LX__NEED_CTX(ctx);
     lx_status st;
     if (!intensity_cd) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_point_intensity: NULL output");
     if ((st = check_finite(ctx, "flux", flux_lm, 1)) != LX_OK) return st;
@@ -68,6 +70,7 @@ double lx_warn_lobe(double exponent, double angle_rad)
 lx_status lx_warn_intensity(lx_ctx *ctx, double flux_lm, double exponent, double angle_rad, double *peak_cd,
                             double *intensity_cd)
 {
+    LX__NEED_CTX(ctx);
     lx_status st;
     if (!intensity_cd) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_warn_intensity: NULL output");
     if ((st = check_finite(ctx, "flux", flux_lm, 1)) != LX_OK) return st;
@@ -84,6 +87,7 @@ lx_status lx_warn_intensity(lx_ctx *ctx, double flux_lm, double exponent, double
 
 lx_status lx_warn_exponent_from_beam(lx_ctx *ctx, double beam_rad, double *exponent)
 {
+    LX__NEED_CTX(ctx);
     if (!exponent) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_warn_exponent_from_beam: NULL output");
     if (!(beam_rad > 0 && beam_rad < LX__PI))
         return lx__error(ctx, LX_EINVAL, NULL, 0, "beam angle must be between 0 and 180 deg (got %g deg)",
@@ -95,6 +99,7 @@ lx_status lx_warn_exponent_from_beam(lx_ctx *ctx, double beam_rad, double *expon
 
 lx_status lx_warn_beam_from_exponent(lx_ctx *ctx, double exponent, double *beam_rad)
 {
+    LX__NEED_CTX(ctx);
     if (!beam_rad) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_warn_beam_from_exponent: NULL output");
     if (!(exponent > 0) || !isfinite(exponent))
         return lx__error(ctx, LX_EINVAL, NULL, 0, "Warn exponent must be positive for a beam angle (got %g)", exponent);
@@ -112,6 +117,17 @@ static void finish(lx_source_result *r, lx_model model)
     r->point_error = r->exact_lx > 0 ? r->point_lx / r->exact_lx - 1 : NAN;
     r->model = model == LX_MODEL_AUTO ? (r->near_field ? LX_MODEL_EXACT : LX_MODEL_POINT) : model;
     r->illuminance_lx = r->model == LX_MODEL_EXACT ? r->exact_lx : r->point_lx;
+}
+
+/* An exact or point illuminance beyond the double range is an error naming it, never an
+ * infinity (or the NaN of its error ratio) handed on. */
+static lx_status check_result(lx_ctx *ctx, const lx_source_result *r, double luminance)
+{
+    const char *what = !isfinite(r->exact_lx) ? "the exact illuminance" : !isfinite(r->point_lx) ? "the point-model illuminance" : NULL;
+    if (!what) return LX_OK;
+    char mb[48];
+    lx__fmt_magnitude(mb, sizeof mb, luminance);
+    return lx__error(ctx, LX_ERANGE, NULL, 0, "%s overflows (luminance %s cd/m2)", what, mb);
 }
 
 static lx_status check_model(lx_ctx *ctx, lx_model model)
@@ -142,6 +158,7 @@ static double disk_factor(double R, double h, double r)
 lx_status lx_disk_illuminance(lx_ctx *ctx, double luminance_cd_m2, double radius_m, double height_m, double offset_m,
                               lx_model model, lx_source_result *out)
 {
+    LX__NEED_CTX(ctx);
     lx_status st;
     if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_disk_illuminance: NULL output");
     if ((st = check_finite(ctx, "luminance", luminance_cd_m2, 1)) != LX_OK) return st;
@@ -158,9 +175,14 @@ lx_status lx_disk_illuminance(lx_ctx *ctx, double luminance_cd_m2, double radius
     /* point: I(theta) = L pi R^2 cos theta at distance d, incidence theta: E = I cos theta / d^2 */
     double d2 = h * h + x * x;
     res.point_lx = luminance_cd_m2 * LX__PI * (R * R) * (h * h) / (d2 * d2);
+    /* L near the top of the double range: pi L overflows where the result need not; the
+     * luminance multiplies last then */
+    if (!isfinite(res.exact_lx)) res.exact_lx = luminance_cd_m2 * (LX__PI * disk_factor(R, h, x));
+    if (!isfinite(res.point_lx)) res.point_lx = luminance_cd_m2 * (LX__PI * (R * R) * (h * h) / (d2 * d2));
     res.distance_m = sqrt(d2) * s;
     res.largest_dimension_m = 2 * radius_m;
     finish(&res, model);
+    if ((st = check_result(ctx, &res, luminance_cd_m2)) != LX_OK) return st;
     *out = res;
     return LX_OK;
 }
@@ -250,6 +272,7 @@ static double outer_f(rect_q *q, double x)
 lx_status lx_rect_illuminance(lx_ctx *ctx, double luminance_cd_m2, double width_m, double length_m, double height_m,
                               double x_m, double y_m, lx_model model, lx_source_result *out)
 {
+    LX__NEED_CTX(ctx);
     lx_status st;
     if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_rect_illuminance: NULL output");
     if ((st = check_finite(ctx, "luminance", luminance_cd_m2, 1)) != LX_OK) return st;
@@ -293,15 +316,18 @@ lx_status lx_rect_illuminance(lx_ctx *ctx, double luminance_cd_m2, double width_
     res.exact_rel_error = fmin(res.exact_rel_error, 1.0);
     double d2 = h * h + x * x + y * y;
     res.point_lx = luminance_cd_m2 * a * b * (h * h) / (d2 * d2);
+    if (!isfinite(res.point_lx)) res.point_lx = luminance_cd_m2 * (a * b * (h * h) / (d2 * d2));
     res.distance_m = sqrt(d2) * s;
     res.largest_dimension_m = hypot(width_m, length_m);
     finish(&res, model);
+    if ((st = check_result(ctx, &res, luminance_cd_m2)) != LX_OK) return st;
     *out = res;
     return LX_OK;
 }
 
 lx_status lx_lambertian_luminance(lx_ctx *ctx, double reflectance, double illuminance_lx, double *luminance_cd_m2)
 {
+    LX__NEED_CTX(ctx);
     lx_status st;
     if (!luminance_cd_m2) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_lambertian_luminance: NULL output");
     if (!(reflectance >= 0 && reflectance <= 1))

@@ -141,6 +141,7 @@ static void normalise(const char *in, char *out, size_t cap)
 
 lx_status lx_unit_find(lx_ctx *ctx, const char *name, const lx_unit **out)
 {
+    LX__NEED_CTX(ctx);
     if (!name || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_unit_find: NULL argument");
     char buf[64];
     normalise(name, buf, sizeof buf);
@@ -169,6 +170,7 @@ lx_status lx_unit_find(lx_ctx *ctx, const char *name, const lx_unit **out)
 lx_status lx_quantity_parse(lx_ctx *ctx, const char *text, lx_quantity expect, const char *bare_unit,
                             double *si_value, lx_quantity *got)
 {
+    LX__NEED_CTX(ctx);
     if (!text || !si_value) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_quantity_parse: NULL argument");
     const char *s = text;
     while (*s == ' ' || *s == '\t') s++;
@@ -202,6 +204,7 @@ lx_status lx_quantity_parse(lx_ctx *ctx, const char *text, lx_quantity expect, c
 
 lx_status lx_unit_convert(lx_ctx *ctx, double value, const char *from, const char *to, double *out)
 {
+    LX__NEED_CTX(ctx);
     const lx_unit *a, *b;
     lx_status st;
     if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_unit_convert: NULL argument");
@@ -219,6 +222,7 @@ lx_status lx_unit_convert(lx_ctx *ctx, double value, const char *from, const cha
 
 lx_status lx_unit_format(lx_ctx *ctx, double si_value, const char *unit, char *buf, size_t cap)
 {
+    LX__NEED_CTX(ctx);
     const lx_unit *u;
     lx_status st;
     if (!buf || cap == 0) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_unit_format: no buffer");
@@ -237,6 +241,7 @@ lx_status lx_unit_format(lx_ctx *ctx, double si_value, const char *unit, char *b
 lx_status lx_radiometric_convert(lx_ctx *ctx, double value_si, lx_quantity q, double efficacy_lm_per_W,
                                  double *out_si, lx_quantity *out_q)
 {
+    LX__NEED_CTX(ctx);
     if (!out_si) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_radiometric_convert: NULL argument");
     lx_quantity c = lx_quantity_counterpart(q);
     if (c == LX_Q_NONE)

@@ -49,6 +49,7 @@ static void decade_label(char *buf, size_t n, int e)
 lx_status lx_png_error_time(lx_ctx *ctx, const char *path, const char *title, const char *x_title, const char *y_title,
                             size_t n, const lx_plot_point *pts, int n_series, const char *const *series_names)
 {
+    LX__NEED_CTX(ctx);
     if (!path || !pts || n == 0) return lx__error(ctx, LX_EINVAL, NULL, 0, "error-time plot: no points");
     double tmin = INFINITY, tmax = -INFINITY, emin = INFINITY, emax = -INFINITY;
     int any_zero = 0;

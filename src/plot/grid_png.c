@@ -57,6 +57,7 @@ static void tick_label(char *buf, size_t cap, double v, double step)
 lx_status lx_grid_write_png(lx_ctx *ctx, const char *path, const lx_plane *p, const double *E,
                             const lx_placement *lums, size_t m, const char *title)
 {
+    LX__NEED_CTX(ctx);
     if (!path || !p || !E || p->na < 1 || p->nb < 1) return lx__error(ctx, LX_EINVAL, NULL, 0, "grid plot: bad arguments");
     double wa = p->a1 - p->a0, wb = p->b1 - p->b0;
     if (!(wa >= 0 && wb >= 0)) return lx__error(ctx, LX_EINVAL, NULL, 0, "grid plot: empty area");

@@ -289,12 +289,14 @@ lx_status lx__png_falsecolor(lx_ctx *ctx, const char *path, int w, int h, const 
 lx_status lx_png_falsecolor(lx_ctx *ctx, const char *path, int w, int h, const double *values, double vmin,
                             double vmax, int log_scale, const char *legend_title)
 {
+    LX__NEED_CTX(ctx);
     if (!path) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_png_falsecolor: NULL path");
     return lx__png_falsecolor(ctx, path, w, h, values, vmin, vmax, log_scale, legend_title);
 }
 
 lx_status lx_png_preview(lx_ctx *ctx, const char *path, int n, const lx_envmap *const *maps, const char *const *labels)
 {
+    LX__NEED_CTX(ctx);
     if (!path || n < 1 || !maps) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_png_preview: nothing to draw");
     const int pw = 512, m = 10, lab = 18;
     int ph = 0;

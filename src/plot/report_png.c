@@ -482,6 +482,7 @@ static void panel_numbers(lx__canvas *c, const metrics *m, lx_observer obs, int 
 
 lx_status lx_spd_report_png(lx_ctx *ctx, const lx_spd *spd, lx_observer observer, const char *title, const char *path)
 {
+    LX__NEED_CTX(ctx);
     if (!spd || !path) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_spd_report_png: NULL argument");
     if (observer != LX_OBSERVER_2 && observer != LX_OBSERVER_10)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_spd_report_png: observer must be 2 or 10");

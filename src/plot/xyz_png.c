@@ -6,6 +6,7 @@
 
 lx_status lx_xyz_png_write(lx_ctx *ctx, const char *path, const lx_xyz_image *img)
 {
+    LX__NEED_CTX(ctx);
     if (!path || !img || !img->xyz) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_xyz_png_write: NULL argument");
     /* XYZ -> linear sRGB (IEC 61966-2-1); lx__canvas_tonemap does exposure, tone curve, encoding */
     static const double M[3][3] = {{3.2406, -1.5372, -0.4986}, {-0.9689, 1.8758, 0.0415}, {0.0557, -0.2040, 1.0570}};

@@ -12,6 +12,7 @@ static const double rec709_xy[8] = {0.64, 0.33, 0.30, 0.60, 0.15, 0.06, 0.3127, 
 
 lx_status lx_rgb_y_weights(lx_ctx *ctx, const double xy[8], double weights[3])
 {
+    LX__NEED_CTX(ctx);
     if (!xy || !weights) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_rgb_y_weights: NULL argument");
     /* columns: XYZ of each primary with Y = 1; solve M s = W (white with Y = 1); Y row = s */
     double M[3][3], W[3];
@@ -42,6 +43,7 @@ lx_status lx_rgb_y_weights(lx_ctx *ctx, const double xy[8], double weights[3])
 
 lx_status lx_envmap_create(lx_ctx *ctx, int width, int height, int channels, lx_envmap **out)
 {
+    LX__NEED_CTX(ctx);
     if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_envmap_create: NULL output");
     *out = NULL;
     if (width < 1 || height < 1 || (channels != 1 && channels != 3) || (double)width * height > 1e9)
@@ -146,6 +148,7 @@ double lx_envmap_y(const lx_envmap *map, const float *pixel)
 
 lx_status lx_envmap_luminance(lx_ctx *ctx, const lx_envmap *map, double *out)
 {
+    LX__NEED_CTX(ctx);
     if (!map || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_envmap_luminance: NULL argument");
     size_t n = (size_t)map->width * map->height;
     for (size_t p = 0; p < n; p++) out[p] = map->lum_per_unit * lx_envmap_y(map, map->data + p * map->channels);
@@ -154,7 +157,9 @@ lx_status lx_envmap_luminance(lx_ctx *ctx, const lx_envmap *map, double *out)
 
 lx_status lx_envmap_downsample(lx_ctx *ctx, const lx_envmap *in, int width, int height, lx_envmap **out)
 {
+    LX__NEED_CTX(ctx);
     if (!in || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_envmap_downsample: NULL argument");
+    *out = NULL;
     if (in->layout != LX_ENV_LATLONG) return lx__error(ctx, LX_EUNSUPPORTED, NULL, 0, "downsampling needs a lat-long map");
     if (width < 1 || height < 1 || in->width % width || in->height % height)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "downsample size %dx%d must divide the map's %dx%d", width, height,

@@ -31,6 +31,9 @@ const double lx__cube_frame[6][3][3] = {
 
 lx_status lx_envmap_create_cube(lx_ctx *ctx, int size, int channels, lx_envmap **out)
 {
+    LX__NEED_CTX(ctx);
+    if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_envmap_create_cube: NULL output");
+    *out = NULL;
     if (size < 1 || size > 1 << 14) return lx__error(ctx, LX_EINVAL, NULL, 0, "invalid cube face size %d", size);
     lx_status st = lx_envmap_create(ctx, size, 6 * size, channels, out);
     if (!st) (*out)->layout = LX_ENV_CUBE;

@@ -87,13 +87,20 @@ static lx_status exr_read(lx_ctx *ctx, const char *path, int allow_cube, lx_envm
     }
     long W = (long)disp.max.x - disp.min.x + 1, H = (long)disp.max.y - disp.min.y + 1;
     long dw_w = (long)dw.max.x - dw.min.x + 1, dw_h = (long)dw.max.y - dw.min.y + 1;
-    if (W < 1 || H < 1 || dw_w < 1 || dw_h < 1 || (double)W * H > 1e9 || (double)dw_w * dw_h > 1e9) {
+    if (W < 1 || H < 1 || dw_w < 1 || dw_h < 1) {
         st = lx__error(ctx, LX_EPARSE, path, 0, "invalid windows: display %ldx%ld, data %ldx%ld", W, H, dw_w, dw_h);
+        goto done;
+    }
+    if ((double)W * H > LX__EXR_MAX_PIXELS || (double)dw_w * dw_h > LX__EXR_MAX_PIXELS) {
+        char lim_s[48];
+        lx__fmt_magnitude(lim_s, sizeof lim_s, LX__EXR_MAX_PIXELS);
+        st = lx__error(ctx, LX_EPARSE, path, 0, "windows (display %ldx%ld, data %ldx%ld) over the limit of %s pixels", W, H,
+                       dw_w, dw_h, lim_s);
         goto done;
     }
     /* the windows are untrusted counts: before sizing buffers by them, check them against the file
      * (16 Mpixel, or 64 pixels per byte of file: beyond what real compression reaches on real maps) */
-    double fsize = (double)lx__exr_stream_size(&s), lim = 16777216.0 + 64.0 * (fsize > 0 ? fsize : 0);
+    double fsize = (double)lx__exr_stream_size(&s), lim = LX__EXR_PIXELS_FREE + LX__EXR_PIXELS_PER_BYTE * (fsize > 0 ? fsize : 0);
     if ((double)W * H > lim || (double)dw_w * dw_h > lim) {
         st = lx__error(ctx, LX_EPARSE, path, 0, "windows (display %ldx%ld, data %ldx%ld) too large for a file of %.0f bytes",
                        W, H, dw_w, dw_h, fsize);
@@ -154,15 +161,20 @@ done:
     return st;
 }
 
-lx_status lx_exr_read(lx_ctx *ctx, const char *path, lx_envmap **out) { return exr_read(ctx, path, 0, out); }
+lx_status lx_exr_read(lx_ctx *ctx, const char *path, lx_envmap **out) {
+    LX__NEED_CTX(ctx); return exr_read(ctx, path, 0, out); }
 
-lx_status lx_exr_read_any(lx_ctx *ctx, const char *path, lx_envmap **out) { return exr_read(ctx, path, 1, out); }
+lx_status lx_exr_read_any(lx_ctx *ctx, const char *path, lx_envmap **out) {
+    LX__NEED_CTX(ctx); return exr_read(ctx, path, 1, out); }
 
-lx_status lx_exr_write(lx_ctx *ctx, const char *path, const lx_envmap *map, const lx_exr_write_opts *opts)
+lx_status lx_envmap_write_exr(lx_ctx *ctx, const char *path, const lx_envmap *map, const lx_exr_write_opts *opts)
 {
-    if (!path || !map || !map->data) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_exr_write: NULL argument");
+    LX__NEED_CTX(ctx);
+    if (!path || !map || !map->data) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_envmap_write_exr: NULL argument");
     lx_exr_write_opts o = {0};
     if (opts) o = *opts;
+    lx_status st0 = lx__check_reserved(ctx, "EXR options", o.reserved, sizeof o.reserved);
+    if (st0) return st0;
     exr_compression_t comp = o.use_compression ? (exr_compression_t)o.compression : EXR_COMPRESSION_ZIP;
     if ((int)comp < 0 || comp >= EXR_COMPRESSION_LAST_TYPE)
         return lx__error(ctx, LX_EINVAL, path, 0, "unknown EXR compression %d", (int)comp);

@@ -32,10 +32,11 @@ static lx_status check_map(lx_ctx *ctx, const lx_envmap *map)
     return LX_OK;
 }
 
-static lx_status run_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n, const double *dirs, lx_irr_opts *o,
-                          double *out)
+/* The irradiance for n unit normals by o->method; *used: where the work ran. */
+static lx_status run_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n, const double *dirs, const lx_irr_opts *o,
+                          double *out, lx_backend *used)
 {
-    o->used = LX_BACKEND_CPU;
+    *used = LX_BACKEND_CPU;
     switch (o->method) {
     case LX_IRR_SH9: {
         lx_sh9 sh;
@@ -55,7 +56,7 @@ static lx_status run_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n, const dou
 #if LX_OPENCL
         if (b == LX_BACKEND_OPENCL) {
             st = lx__irr_brute_cl(ctx, map, n, dirs, out);
-            if (!st) o->used = LX_BACKEND_OPENCL;
+            if (!st) *used = LX_BACKEND_OPENCL;
             /* a failure under auto: the whole result again on the CPU (never a mix of devices) */
             if (!st || !lx__backend_fallback(ctx, "irradiance", o->backend, st)) return st;
         }
@@ -66,14 +67,16 @@ static lx_status run_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n, const dou
     return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown irradiance method %d", (int)o->method);
 }
 
-lx_status lx_irradiance_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const double *dirs, lx_irr_opts *opts,
-                             double *out)
+lx_status lx_irradiance_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const double *dirs,
+                             const lx_irr_opts *opts, double *out)
 {
+    LX__NEED_CTX(ctx);
     lx_status st = check_map(ctx, map);
     if (st) return st;
     if ((!dirs || !out) && n_dirs) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_irradiance_dirs: NULL argument");
-    lx_irr_opts local = {0};
-    lx_irr_opts *o = opts ? opts : &local;
+    const lx_irr_opts local = {0};
+    const lx_irr_opts *o = opts ? opts : &local;
+    if ((st = lx__check_reserved(ctx, "irradiance options", o->reserved, sizeof o->reserved))) return st;
     double *nd = malloc((n_dirs ? n_dirs : 1) * 3 * sizeof *nd);
     double *res = malloc((n_dirs ? n_dirs : 1) * map->channels * sizeof *res);
     if (!nd || !res) {
@@ -89,25 +92,32 @@ lx_status lx_irradiance_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, c
                            d[1], d[2]);
         for (int c = 0; c < 3; c++) nd[3 * k + c] = d[c] / len;
     }
-    if (!st) st = run_dirs(ctx, map, n_dirs, nd, o, res);
-    if (!st) memcpy(out, res, n_dirs * map->channels * sizeof *out);
+    lx_backend used = LX_BACKEND_CPU;
+    if (!st) st = run_dirs(ctx, map, n_dirs, nd, o, res, &used);
+    if (!st) {
+        memcpy(out, res, n_dirs * map->channels * sizeof *out);
+        lx__backend_used(ctx, used);
+    }
     free(nd);
     free(res);
     return st;
 }
 
-lx_status lx_irradiance_map(lx_ctx *ctx, const lx_envmap *map, int width, int height, lx_irr_opts *opts,
+lx_status lx_irradiance_map(lx_ctx *ctx, const lx_envmap *map, int width, int height, const lx_irr_opts *opts,
                             lx_envmap **out)
 {
-    lx_irr_opts local = {0};
-    lx_irr_opts *o = opts ? opts : &local;
+    LX__NEED_CTX(ctx);
+    if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_irradiance_map: NULL output");
+    *out = NULL;
+    const lx_irr_opts local = {0};
+    const lx_irr_opts *o = opts ? opts : &local;
+    lx_backend used = LX_BACKEND_CPU;
     /* SH9 on a lat-long map checks the pixels after the projection: a non-finite pixel makes the
      * coefficients non-finite, and only then is the map scanned for it (saves a pass) */
     int lazy = o->method == LX_IRR_SH9 && map && map->layout == LX_ENV_LATLONG;
     lx_status st = lazy ? check_shape(ctx, map) : check_map(ctx, map);
     if (st) return st;
-    if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_irradiance_map: NULL output");
-    *out = NULL;
+    if ((st = lx__check_reserved(ctx, "irradiance options", o->reserved, sizeof o->reserved))) return st;
     if (width == 0 && height == 0) {
         width = map->width;
         height = map->height;
@@ -126,7 +136,6 @@ lx_status lx_irradiance_map(lx_ctx *ctx, const lx_envmap *map, int width, int he
     m->lum_per_unit = map->lum_per_unit;
     if (o->method == LX_IRR_SH9 && map->layout == LX_ENV_LATLONG) {
         lx_sh9 sh;
-        o->used = LX_BACKEND_CPU;
         st = lx_sh9_project(ctx, map, &sh);
         for (int k = 0; k < 9 && !st; k++)
             for (int c = 0; c < map->channels && !st; c++)
@@ -141,12 +150,16 @@ lx_status lx_irradiance_map(lx_ctx *ctx, const lx_envmap *map, int width, int he
         if (!dirs || !res) st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for a %dx%d map", width, height);
         for (size_t k = 0; k < n && !st; k++)
             lx_envmap_texel_direction(m, (int)(k / width), (int)(k % width), dirs + 3 * k);
-        if (!st) st = run_dirs(ctx, map, n, dirs, o, res);
+        if (!st) st = run_dirs(ctx, map, n, dirs, o, res, &used);
         for (size_t k = 0; k < n * map->channels && !st; k++) m->data[k] = (float)res[k];
         free(dirs);
         free(res);
     }
-    if (st) lx_envmap_free(m);
-    else *out = m;
+    if (st) {
+        lx_envmap_free(m);
+    } else {
+        *out = m;
+        lx__backend_used(ctx, used);
+    }
     return st;
 }

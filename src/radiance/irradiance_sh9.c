@@ -141,6 +141,7 @@ static void proj_rows(void *arg, long j0, long j1, int t)
 
 lx_status lx_sh9_project(lx_ctx *ctx, const lx_envmap *map, lx_sh9 *out)
 {
+    LX__NEED_CTX(ctx);
     if (!map || !out || !map->data) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_sh9_project: NULL argument");
     if (map->layout == LX_ENV_CUBE) return lx__sh9_project_cube(ctx, map, out);
     int W = map->width;
@@ -187,6 +188,7 @@ lx_status lx_sh9_project(lx_ctx *ctx, const lx_envmap *map, lx_sh9 *out)
 
 lx_status lx_sh9_irradiance(lx_ctx *ctx, const lx_sh9 *sh, lx_sh9_window window, const double n[3], double *out)
 {
+    LX__NEED_CTX(ctx);
     if (!sh || !n || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_sh9_irradiance: NULL argument");
     double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     if (!(len > 0) || !isfinite(len)) return lx__error(ctx, LX_EINVAL, NULL, 0, "normal must be a non-zero finite vector");

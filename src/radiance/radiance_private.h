@@ -44,4 +44,18 @@ lx_status lx__irr_cube(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const d
  * (reflective), wavelength in nm; returns 0 on success, -1 when the name is not spectral. */
 int lx__spectral_channel(const char *name, int *kind, double *lambda_nm);
 
+/* Skies (sky.c, sky_perez.c, sky_map.c). */
+/* u = v / |v|, or LX_EINVAL naming `what` for a zero or non-finite vector. */
+lx_status lx__unit3(lx_ctx *ctx, const char *what, const double v[3], double u[3]);
+/* Gauss-Legendre nodes x and weights w on [-1, 1] (n <= 1024). */
+void lx__gauss_legendre(int n, double *x, double *w);
+/* The sky's unscaled relative luminance (gradation x indicatrix) towards unit dir; 0 below the horizon. */
+double lx__sky_rel(const lx_sky *s, const double dir[3]);
+/* Integral of rel max(0, n . w) d omega over the sky for unit n, with nodes-point rules x, w. */
+double lx__sky_integral(const lx_sky *s, const double n[3], int nodes, const double *x, const double *w);
+/* The horizontal integral of rel, converged to 1e-12 relative. */
+double lx__sky_horizontal_rel(const lx_sky *s);
+/* Sets zenith_cd_m2 and diffuse_horizontal_lx of a sky whose shape is set. */
+lx_status lx__sky_scale(lx_ctx *ctx, lx_sky *s, lx_sky_scale scale, double value);
+
 #endif /* LX_RADIANCE_PRIVATE_H */

@@ -143,15 +143,22 @@ static lx_status read_spectral(lx_ctx *ctx, const char *path, float **data, chan
         goto done;
     }
     long W = (long)dw.max.x - dw.min.x + 1, H = (long)dw.max.y - dw.min.y + 1;
-    if (W < 1 || H < 1 || (double)W * H * nl > 4e9) {
-        st = lx__error(ctx, LX_EPARSE, path, 0, "invalid or too large data window %ldx%ld x %d channels", W, H, nl);
+    if (W < 1 || H < 1) {
+        st = lx__error(ctx, LX_EPARSE, path, 0, "invalid data window %ldx%ld", W, H);
+        goto done;
+    }
+    if ((double)W * H * nl > LX__SPEXR_MAX_VALUES) {
+        char lim_s[48];
+        lx__fmt_magnitude(lim_s, sizeof lim_s, LX__SPEXR_MAX_VALUES);
+        st = lx__error(ctx, LX_EPARSE, path, 0, "data window %ldx%ld x %d channels over the limit of %s values", W, H, nl,
+                       lim_s);
         goto done;
     }
     /* the window is an untrusted count: check it against the file before sizing (and timing) the
      * work by it: 1M values, or 64 values per byte of file, beyond what compression reaches on real
      * spectra (a 855-byte file declaring 5.5 Mpixel of zeros took seconds to resample) */
     double fsize = fstat(s.fd, &sb) == 0 ? (double)sb.st_size : 0;
-    if ((double)W * H * nl > 1048576.0 + 64.0 * fsize) {
+    if ((double)W * H * nl > LX__SPEXR_VALUES_FREE + LX__SPEXR_VALUES_PER_BYTE * fsize) {
         st = lx__error(ctx, LX_EPARSE, path, 0, "data window %ldx%ld x %d channels too large for a file of %.0f bytes", W,
                        H, nl, fsize);
         goto done;
@@ -216,7 +223,7 @@ void lx_xyz_image_free(lx_xyz_image *img)
  * most, where the colour-matching functions are defined (0 outside, so nothing is lost), and is never
  * sized by untrusted channel names. */
 static lx_status nonuniform_weights(lx_ctx *ctx, const char *path, const double *lam, int nl, const lx_function *fns,
-                                    lx_batch_opts *opts, double **out)
+                                    const lx_batch_opts *opts, double **out)
 {
     double g0 = fmax(floor(lam[0]), 360.0), g1 = fmin(ceil(lam[nl - 1]), 830.0);
     if (g1 < g0) g0 = g1 = 360.0; /* no overlap: one sample, where every spectrum is 0 */
@@ -250,9 +257,10 @@ done:
     return st;
 }
 
-lx_status lx_spectral_exr_read_xyz(lx_ctx *ctx, const char *path, lx_observer observer, lx_batch_opts *opts,
+lx_status lx_spectral_exr_read_xyz(lx_ctx *ctx, const char *path, lx_observer observer, const lx_batch_opts *opts,
                                    lx_xyz_image **out)
 {
+    LX__NEED_CTX(ctx);
     if (!path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_spectral_exr_read_xyz: NULL argument");
     *out = NULL;
     if (observer != LX_OBSERVER_2 && observer != LX_OBSERVER_10)
@@ -321,9 +329,10 @@ done:
     return st;
 }
 
-lx_status lx_xyz_exr_write(lx_ctx *ctx, const char *path, const lx_xyz_image *img)
+lx_status lx_xyz_image_write_exr(lx_ctx *ctx, const char *path, const lx_xyz_image *img)
 {
-    if (!path || !img || !img->xyz) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_xyz_exr_write: NULL argument");
+    LX__NEED_CTX(ctx);
+    if (!path || !img || !img->xyz) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_xyz_image_write_exr: NULL argument");
     lx__exr_stream s = {.fd = -1};
     char *tmp = NULL;
     lx_status st = lx__exr_write_begin(ctx, path, &s, &tmp);

@@ -66,6 +66,8 @@ void lx_scene_free(lx_scene *sc)
     free(sc->rec);
     free(sc->sky_path);
     lx_envmap_free(sc->sky_map);
+    for (size_t i = 0; i < sc->n_obs; i++) free(sc->obs[i].name);
+    free(sc->obs);
     free(sc->title);
     free(sc->file);
     free(sc);
@@ -433,8 +435,8 @@ lx_status lx__scene_rec_key(lx_ctx *ctx, scene__rec_raw *r, const char *file, lo
         lx_status st = lx__scene_parse_vec(ctx, file, line, key, value, 2, 2, LX_Q_NONE, NULL, p, NULL);
         if (st != LX_OK) return st;
         for (int i = 0; i < 2; i++) {
-            if (!(p[i] >= 1 && p[i] <= 100000) || p[i] != floor(p[i]))
-                return lx__error(ctx, LX_EPARSE, file, line, "points: whole numbers from 1 to 100000");
+            if (!(p[i] >= 1 && p[i] <= LX__SCENE_MAX_POINTS_AXIS) || p[i] != floor(p[i]))
+                return lx__error(ctx, LX_EPARSE, file, line, "points: whole numbers from 1 to %d", LX__SCENE_MAX_POINTS_AXIS);
             r->points[i] = (long)p[i];
         }
         return LX_OK;
@@ -517,8 +519,9 @@ lx_status lx__scene_rec_finish(lx_ctx *ctx, lx_scene *sc, scene__rec_raw *r)
             if (r->has_points) cnt[k] = (size_t)r->points[k];
             else {
                 double c = floor((q[1] - q[0]) / r->spacing + 1e-9) + 1;
-                if (c > 100000) {
-                    st = lx__error(ctx, LX_EPARSE, f, ln, "receiver '%s': more than 100000 points along an axis", r->name);
+                if (c > LX__SCENE_MAX_POINTS_AXIS) {
+                    st = lx__error(ctx, LX_EPARSE, f, ln, "receiver '%s': more than %d points along an axis", r->name,
+                                   LX__SCENE_MAX_POINTS_AXIS);
                     goto out;
                 }
                 cnt[k] = (size_t)c;
@@ -527,8 +530,8 @@ lx_status lx__scene_rec_finish(lx_ctx *ctx, lx_scene *sc, scene__rec_raw *r)
         rc.na = cnt[0];
         rc.nb = cnt[1];
         rc.n = rc.na * rc.nb;
-        if (rc.n > 10000000) {
-            st = lx__error(ctx, LX_EPARSE, f, ln, "receiver '%s': more than 1e7 points", r->name);
+        if (rc.n > LX__SCENE_MAX_POINTS) {
+            st = lx__error(ctx, LX_EPARSE, f, ln, "receiver '%s': more than %d points", r->name, LX__SCENE_MAX_POINTS);
             goto out;
         }
         rc.points = malloc(3 * rc.n * sizeof *rc.points);
@@ -580,7 +583,9 @@ lx_status lx__scene_sky_key(lx_ctx *ctx, lx_scene *sc, const char *file, long li
         if (!strcmp(value, "uniform")) sc->sky = LX_SKY_UNIFORM;
         else if (!strcmp(value, "overcast")) sc->sky = LX_SKY_OVERCAST;
         else if (!strcmp(value, "map")) sc->sky = LX_SKY_MAP;
-        else return lx__error(ctx, LX_EPARSE, file, line, "type: unknown sky '%s' (uniform, overcast, map)", value);
+        else if (!strcmp(value, "cie")) sc->sky = LX_SKY_CIE;
+        else if (!strcmp(value, "perez")) sc->sky = LX_SKY_PEREZ;
+        else return lx__error(ctx, LX_EPARSE, file, line, "type: unknown sky '%s' (uniform, overcast, map, cie, perez)", value);
         return LX_OK;
     }
     if (!strcmp(key, "luminance")) {
@@ -618,13 +623,18 @@ lx_status lx__scene_sky_key(lx_ctx *ctx, lx_scene *sc, const char *file, long li
     if (!strcmp(key, "samples")) {
         double v;
         lx_status st = lx__scene_parse_vec(ctx, file, line, key, value, 1, 1, LX_Q_NONE, NULL, &v, NULL);
-        if (st == LX_OK && !(v >= 4 && v <= 100000 && v == floor(v)))
-            return lx__error(ctx, LX_EPARSE, file, line, "samples: a whole number from 4 to 100000");
+        if (st == LX_OK && !(v >= 4 && v <= LX__SCENE_MAX_SKY_SAMPLES && v == floor(v)))
+            return lx__error(ctx, LX_EPARSE, file, line, "samples: a whole number from 4 to %d", LX__SCENE_MAX_SKY_SAMPLES);
         if (st == LX_OK) sc->sky_samples = (int)v;
         return st;
     }
+    int known = 0;
+    lx_status st = lx__scene_sky_daylight_key(ctx, sc, file, line, key, value, &known);
+    if (known) return st;
     return lx__error(ctx, LX_EPARSE, file, line,
-                     "unknown key '%s' in [sky] (keys: type, luminance, file, scale, ground_reflectance, cct, samples)",
+                     "unknown key '%s' in [sky] (keys: type, luminance, file, scale, ground_reflectance, cct, samples; "
+                     "cie: number, luminance or illuminance; perez: direct_normal, diffuse_horizontal, day_of_year, "
+                     "precipitable_water)",
                      key);
 }
 
@@ -645,13 +655,13 @@ lx_status lx__scene_finish(lx_ctx *ctx, lx_scene *sc)
                 return lx__error(ctx, st, f, sc->sky_file_line, "file: %s", inner);
             }
         }
-        if (sc->sky != LX_SKY_MAP && !(sc->sky_luminance_cd_m2 > 0))
+        if ((sc->sky == LX_SKY_UNIFORM || sc->sky == LX_SKY_OVERCAST) && !(sc->sky_luminance_cd_m2 > 0))
             return lx__error(ctx, LX_EPARSE, f, sc->sky_line, "[sky]: missing 'luminance' (a %s sky needs one)",
                              sc->sky == LX_SKY_UNIFORM ? "uniform" : "overcast (zenith)");
     }
     if (sc->n_rec == 0) return lx__error(ctx, LX_EPARSE, sc->file, 0, "the scene has no [receiver NAME] section");
-    if (sc->n_lum == 0 && sc->sky == LX_SKY_NONE)
-        return lx__error(ctx, LX_EPARSE, sc->file, 0, "the scene has neither a luminaire nor a sky");
+    if (sc->n_lum == 0 && sc->sky == LX_SKY_NONE && !(sc->has_sun && sc->sun_normal_lx > 0))
+        return lx__error(ctx, LX_EPARSE, sc->file, 0, "the scene has neither a luminaire nor a sky (nor a sun)");
     if (sc->want_luminance) {
         size_t k = 0;
         while (k < sc->n_rec && !(sc->rec[k].reflectance >= 0)) k++;

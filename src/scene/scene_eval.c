@@ -115,7 +115,7 @@ static double near_E(lx_ctx *ctx, const lum_eval *le, const double q[3], const d
 {
     unsigned long long patches = 0;
     near_arg A = {ctx, le, q, n};
-    double x = lx__area_refine(near_mean, &A, le->l->radius_m > 0, tol, 512, &patches, NULL);
+    double x = lx__area_refine(near_mean, &A, le->l->radius_m > 0, tol, LX__NEAR_MAX_CELLS, &patches, NULL);
     ctx->counters.nearfield_pairs++;
     ctx->counters.nearfield_subdivisions += patches;
     return x > 0 ? x : 0;
@@ -181,7 +181,7 @@ static lx_status device_blocks(lx_ctx *ctx, const lx_scene *sc, const lx_scene_p
             double tilt = lx_luminaire_tilt_factor(L->lum, acos(fmax(-1.0, fmin(1.0, -L->aim[2]))));
             double k = tilt > 0 ? L->scale / tilt : 0;
             for (size_t i = 0; i < rc->n; i++) contrib[(g0 + i) * (nl + 1) + l] = E[i] * k;
-            ctx->counters.kernel_launches += o.used == LX_BACKEND_OPENCL;
+            ctx->counters.kernel_launches += lx_ctx_backend_used(ctx) == LX_BACKEND_OPENCL;
             ctx->counters.point_evaluations += rc->n;
             ctx->counters.goniometric_lookups += rc->n;
             d[l * sc->n_rec + r] = 1;
@@ -193,10 +193,43 @@ static lx_status device_blocks(lx_ctx *ctx, const lx_scene *sc, const lx_scene_p
     return LX_OK;
 }
 
+/* Every result that is defined must be a number: an infinity or NaN (fluxes, intensities or
+ * distances that leave the double range) is an error naming the receiver, its point and the
+ * luminaire, never a value handed on to be printed blank. */
+static lx_status check_finite(lx_ctx *ctx, const lx_scene *sc, const lx_scene_result *res, size_t nl, int spectral)
+{
+    for (size_t r = 0; r < sc->n_rec; r++) {
+        const lx_scene_receiver *rc = &sc->rec[r];
+        for (size_t g = res->first[r]; g < res->first[r + 1]; g++) {
+            const double *c = res->contrib_lx + g * (nl + 1), *q = rc->points + 3 * (g - res->first[r]);
+            const char *what = NULL, *who = NULL;
+            double v = 0;
+            for (size_t k = 0; k <= nl && !what; k++)
+                if (!isfinite(c[k])) what = "illuminance_lx", v = c[k], who = k < nl ? sc->lum[k].name : NULL;
+            if (!what && !isfinite(res->E_lx[g])) what = "illuminance_lx", v = res->E_lx[g];
+            if (!what && sc->want_luminance && rc->reflectance >= 0 && !isfinite(res->L_cd_m2[g]))
+                what = "luminance_cd_m2", v = res->L_cd_m2[g];
+            if (!what && spectral && res->E_lx[g] > 0 && !isfinite(res->melanopic_edi_lx[g]))
+                what = "melanopic_edi_lx", v = res->melanopic_edi_lx[g];
+            if (what)
+                return lx__error(ctx, LX_ERANGE, rc->file, rc->line,
+                                 "receiver '%s', point %zu (%g, %g, %g m): %s is %s%s%s%s: the fluxes, intensities or "
+                                 "distances leave the double range",
+                                 rc->name, g - res->first[r] + 1, q[0], q[1], q[2], what, isnan(v) ? "NaN" : "infinite",
+                                 who ? " from luminaire '" : "", who ? who : "", who ? "'" : "");
+        }
+    }
+    return LX_OK;
+}
+
 lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *plan, const lx_scene_eval_opts *opts,
                         lx_scene_result **out)
 {
-    if (!ctx || !sc || !plan || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_eval: NULL argument");
+    LX__NEED_CTX(ctx);
+    if (!sc || !plan || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_eval: NULL argument");
+    *out = NULL;
+    lx_status st0 = opts ? lx__check_reserved(ctx, "scene options", opts->reserved, sizeof opts->reserved) : LX_OK;
+    if (st0) return st0;
     long only = opts && opts->single ? (long)opts->index : -1;
     if (opts && opts->single && opts->index >= sc->n_lum)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_eval: no luminaire %zu", opts->index);
@@ -287,12 +320,14 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
         }
     }
     res->first[sc->n_rec] = g;
+    if ((st = check_finite(ctx, sc, res, nl, spectral)) != LX_OK) goto fail;
     free(ondev);
     lx__scene_sky_map_free(map);
     free(le);
     free(spec);
     counters_diff(&ctx->counters, &before, &res->work);
     res->seconds = now_s() - t0;
+    lx__backend_used(ctx, res->work.kernel_launches ? LX_BACKEND_OPENCL : LX_BACKEND_CPU);
     *out = res;
     return LX_OK;
 nomem:

@@ -74,7 +74,7 @@ void lx_scene_plan_free(lx_scene_plan *plan)
 static unsigned long long near_patches(double size, double d, double tol, int disk)
 {
     unsigned long long total = 0;
-    for (int n = 4; n <= 512; n *= 2) {
+    for (int n = 4; n <= LX__NEAR_MAX_CELLS; n *= 2) {
         total += (unsigned long long)n * (unsigned long long)n * (disk ? 2u : 1u);
         double h = size / (n * (d > 1e-9 ? d : 1e-9));
         if (n >= 16 && h * h * h * h < tol) break;
@@ -82,10 +82,13 @@ static unsigned long long near_patches(double size, double d, double tol, int di
     return total;
 }
 
-lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, int backend, lx_scene_plan **out)
+lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, lx_backend backend, lx_scene_plan **out)
 {
-    if (!ctx || !sc || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_plan_make: NULL argument");
+    LX__NEED_CTX(ctx);
+    if (!sc || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_plan_make: NULL argument");
     *out = NULL;
+    if (backend != LX_BACKEND_AUTO && backend != LX_BACKEND_CPU && backend != LX_BACKEND_OPENCL)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_plan_make: unknown backend %d", (int)backend);
     lx_scene_plan *p = calloc(1, sizeof *p);
     if (!p) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t r = 0; r < sc->n_rec; r++) p->n_points += sc->rec[r].n;
@@ -218,15 +221,18 @@ lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, int backend, lx_sc
         }
     }
     /* environment */
-    if (sc->sky == LX_SKY_NONE) {
+    if (sc->sky == LX_SKY_NONE && !(sc->has_sun && sc->sun_normal_lx > 0)) {
         FORCED_ON_NOTHING(LX_EFFECT_ENVIRONMENT, "[sky]");
         why(p, LX_EFFECT_ENVIRONMENT, 0, "no [sky]");
     } else if (F[LX_EFFECT_ENVIRONMENT] == LX_FORCE_OFF)
         why(p, LX_EFFECT_ENVIRONMENT, 0, "forced off in [effects]: the sky is ignored");
     else {
-        static const char *const sk[] = {"", "uniform", "CIE overcast", "EXR map"};
-        why(p, LX_EFFECT_ENVIRONMENT, 1, "%s sky, ground reflectance %g: one evaluation per receiver normal (%zu)",
-            sk[sc->sky], sc->ground_reflectance, p->n_normals);
+        static const char *const sk[] = {"no", "uniform", "CIE overcast", "EXR map", "CIE general", "Perez all-weather"};
+        char kind[64];
+        if (sc->sky == LX_SKY_CIE) snprintf(kind, sizeof kind, "CIE general (type %d)", sc->sky_cie_type);
+        else snprintf(kind, sizeof kind, "%s", sk[sc->sky]);
+        why(p, LX_EFFECT_ENVIRONMENT, 1, "%s sky%s, ground reflectance %g: one evaluation per receiver normal (%zu)",
+            kind, sc->has_sun && sc->sun_normal_lx > 0 ? " and the sun" : "", sc->ground_reflectance, p->n_normals);
         p->estimate.environment_evaluations = p->n_normals;
         if (sc->sky == LX_SKY_MAP) {
             /* the upper half of the map once for the horizontal (the ground term needs it), and
@@ -236,6 +242,9 @@ lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, int backend, lx_sc
             for (size_t r = 0; r < sc->n_rec; r++)
                 if (sc->rec[r].normal[2] != 1) p->estimate.environment_samples += half;
         }
+        if (sc->sky == LX_SKY_CIE || sc->sky == LX_SKY_PEREZ)
+            for (size_t r = 0; r < sc->n_rec; r++)
+                if (sc->rec[r].normal[2] != 1) p->estimate.environment_samples += 4ULL * 48 * 48;
         if (sc->sky == LX_SKY_OVERCAST)
             for (size_t r = 0; r < sc->n_rec; r++)
                 if (sc->rec[r].normal[2] != 1) {

@@ -50,6 +50,25 @@ lx_status lx__scene_rec_finish(lx_ctx *ctx, lx_scene *sc, scene__rec_raw *r);
 lx_status lx__scene_sky_key(lx_ctx *ctx, lx_scene *sc, const char *file, long line, const char *key,
                             const char *value);
 
+/* Daylight (scene_daylight.c): the [sky] keys of cie and perez skies (*known 0 when key is none
+ * of them), the raw [sun] keys, [observer NAME] sections, and the whole-scene checks that build
+ * the sun's direction (SPA) and the sky model. */
+typedef struct scene__sun_raw {
+    int has_dir, has_alt, has_az, has_date, has_time, has_tz, has_lat, has_lon, has_illum;
+    double dir[3], alt, az, tz, lat, lon, illum, elev, pressure, temp, delta_t;
+    int y, mo, d, h, mi;
+    double s;
+} scene__sun_raw;
+lx_status lx__scene_sky_daylight_key(lx_ctx *ctx, lx_scene *sc, const char *file, long line, const char *key,
+                                     const char *value, int *known);
+void lx__scene_sun_raw_init(scene__sun_raw *r);
+lx_status lx__scene_sun_key(lx_ctx *ctx, lx_scene *sc, scene__sun_raw *r, const char *file, long line, const char *key,
+                            const char *value);
+lx_status lx__scene_obs_open(lx_ctx *ctx, lx_scene *sc, const char *name, const char *file, long line);
+lx_status lx__scene_obs_key(lx_ctx *ctx, lx_scene *sc, const char *file, long line, const char *key, const char *value);
+lx_status lx__scene_obs_finish(lx_ctx *ctx, lx_scene *sc);
+lx_status lx__scene_daylight_finish(lx_ctx *ctx, lx_scene *sc, const scene__sun_raw *sun);
+
 /* A new empty scene (defaults set), its whole-scene checks, and a kept copy of a file name. */
 lx_scene *lx__scene_new(const char *file);
 lx_status lx__scene_finish(lx_ctx *ctx, lx_scene *sc);

@@ -13,9 +13,9 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#define MAX_DEPTH 16
+#define MAX_DEPTH LX__SCENE_MAX_DEPTH
 
-enum { SEC_NONE = 0, SEC_SCENE, SEC_LUM, SEC_REC, SEC_SKY, SEC_OUTPUT, SEC_EFFECTS };
+enum { SEC_NONE = 0, SEC_SCENE, SEC_LUM, SEC_REC, SEC_SKY, SEC_OUTPUT, SEC_EFFECTS, SEC_SUN, SEC_OBS };
 
 /* Keys given in the current section (duplicates are errors). */
 #define MAX_KEYS 32
@@ -25,7 +25,8 @@ typedef struct reader {
     int sec;
     char seen[MAX_KEYS][32];
     int nseen;
-    int sky_seen, output_seen, effects_seen, scene_seen;
+    int sky_seen, output_seen, effects_seen, scene_seen, sun_seen;
+    scene__sun_raw sun; /* the [sun] keys, checked when the scene ends */
     struct { dev_t dev; ino_t ino; int known; } stack[MAX_DEPTH]; /* files being read (include cycles) */
     const char *names[MAX_DEPTH];
     int depth;
@@ -79,8 +80,9 @@ static const char *unit_part(const char *s)
 lx_status lx__scene_parse_vec(lx_ctx *ctx, const char *file, long line, const char *key, const char *value,
                               int nmin, int nmax, lx_quantity q, const char *bare_unit, double *out, int *count)
 {
-    char buf[512];
-    if (strlen(value) >= sizeof buf) return lx__error(ctx, LX_EPARSE, file, line, "%s: value too long", key);
+    char buf[LX__SCENE_MAX_VALUE + 1];
+    if (strlen(value) >= sizeof buf)
+        return lx__error(ctx, LX_EPARSE, file, line, "%s: value too long (more than %d bytes)", key, LX__SCENE_MAX_VALUE);
     strcpy(buf, value);
     char *comp[8];
     int n = 0;
@@ -165,14 +167,15 @@ static lx_status open_section(reader *r, const char *file, long line, char *s, c
     char *name = sp, *ne = e;
     trim(&name, &ne);
     *ne = '\0';
-    static const char *const known[] = {"scene", "luminaire", "receiver", "sky", "output", "effects"};
+    static const char *const known[] = {"scene", "luminaire", "receiver", "sky", "output", "effects", "sun", "observer"};
     int k = 0;
-    while (k < 6 && strcmp(kind, known[k])) k++;
-    if (k == 6)
+    while (k < 8 && strcmp(kind, known[k])) k++;
+    if (k == 8)
         return lx__error(r->ctx, LX_EPARSE, file, line,
-                         "unknown section [%s] (sections: scene, luminaire NAME, receiver NAME, sky, output, effects)",
+                         "unknown section [%s] (sections: scene, luminaire NAME, receiver NAME, sky, sun, observer NAME, "
+                         "output, effects)",
                          kind);
-    int named = !strcmp(kind, "luminaire") || !strcmp(kind, "receiver");
+    int named = !strcmp(kind, "luminaire") || !strcmp(kind, "receiver") || !strcmp(kind, "observer");
     if (named && !*name)
         return lx__error(r->ctx, LX_EPARSE, file, line, "[%s] needs a name: [%s NAME]", kind, kind);
     if (!named && *name)
@@ -184,6 +187,8 @@ static lx_status open_section(reader *r, const char *file, long line, char *s, c
     else if (!strcmp(kind, "effects")) r->sec = SEC_EFFECTS, once = &r->effects_seen;
     else if (!strcmp(kind, "luminaire")) r->sec = SEC_LUM;
     else if (!strcmp(kind, "receiver")) r->sec = SEC_REC;
+    else if (!strcmp(kind, "sun")) r->sec = SEC_SUN, once = &r->sun_seen;
+    else if (!strcmp(kind, "observer")) r->sec = SEC_OBS;
     else
         return lx__error(r->ctx, LX_EPARSE, file, line,
                          "unknown section [%s] (sections: scene, luminaire NAME, receiver NAME, sky, output, effects)",
@@ -205,6 +210,8 @@ static lx_status open_section(reader *r, const char *file, long line, char *s, c
     if (r->sec == SEC_LUM) lx__scene_lum_raw_init(&r->lraw, name, file, line);
     if (r->sec == SEC_REC) lx__scene_rec_raw_init(&r->rraw, name, file, line);
     if (r->sec == SEC_SKY) r->sc->sky_line = line, r->sc->sky_file_at = file;
+    if (r->sec == SEC_SUN) r->sc->sun_line = line, r->sc->sun_file_at = file, r->sc->has_sun = 1;
+    if (r->sec == SEC_OBS) return lx__scene_obs_open(r->ctx, r->sc, name, file, line);
     return LX_OK;
 }
 
@@ -217,13 +224,19 @@ static lx_status do_include(reader *r, const char *file, long line, const char *
     if (!path) return lx__error(r->ctx, LX_ENOMEM, file, line, "out of memory");
     char *text = NULL;
     size_t len = 0;
-    lx_status st = lx__read_all(r->ctx, path, &text, &len);
+    lx_status st = lx__read_all(r->ctx, path, LX_INPUT_SCENE, &text, &len);
     if (st != LX_OK) { /* lx__read_all's reason, at the include line */
         char why[LX__ERRMSG_MAX];
         const char *m = lx_ctx_errmsg(r->ctx);
         size_t pl = strlen(path);
-        if (!strncmp(m, path, pl) && !strncmp(m + pl, ": ", 2)) m += pl + 2; /* the path is said once */
-        snprintf(why, sizeof why, "%s", m);
+        long at = lx_ctx_errline(r->ctx);
+        if (!strncmp(m, path, pl) && m[pl] == ':') { /* the path is said once, its line after the reason */
+            const char *q = m + pl;
+            if (at > 0) q += strspn(q + 1, "0123456789") + 1; /* "PATH:LINE: why" */
+            if (q[0] == ':' && q[1] == ' ') m = q + 2;
+        }
+        if (at > 0) snprintf(why, sizeof why, "%s (its line %ld)", m, at);
+        else snprintf(why, sizeof why, "%s", m);
         lx__error(r->ctx, st, file, line, "include: cannot read '%s': %s", path, why);
         free(path);
         return st;
@@ -263,6 +276,8 @@ static lx_status key_value(reader *r, const char *file, long line, const char *k
     case SEC_LUM: return lx__scene_lum_key(ctx, &r->lraw, file, line, key, value);
     case SEC_REC: return lx__scene_rec_key(ctx, &r->rraw, file, line, key, value);
     case SEC_SKY: return lx__scene_sky_key(ctx, sc, file, line, key, value);
+    case SEC_SUN: return lx__scene_sun_key(ctx, sc, &r->sun, file, line, key, value);
+    case SEC_OBS: return lx__scene_obs_key(ctx, sc, file, line, key, value);
     case SEC_OUTPUT: {
         int b = 0;
         if (!strcmp(key, "illuminance")) {
@@ -322,11 +337,11 @@ static lx_status read_file(reader *r, const char *path, const char *text, size_t
     if (len >= 3 && !memcmp(text, "\xEF\xBB\xBF", 3)) it.p += 3;
     while (st == LX_OK && lx__next_line(&it, &s, &e)) {
         long line = it.line;
-        char buf[1024];
+        char buf[LX__SCENE_MAX_LINE + 1];
         const char *hash = memchr(s, '#', (size_t)(e - s));
         if (hash) e = hash;
         if ((size_t)(e - s) >= sizeof buf) {
-            st = lx__error(ctx, LX_EPARSE, keep, line, "line too long");
+            st = lx__error(ctx, LX_EPARSE, keep, line, "line too long (more than %d bytes before any comment)", LX__SCENE_MAX_LINE);
             break;
         }
         memcpy(buf, s, (size_t)(e - s));
@@ -367,19 +382,23 @@ static lx_status read_file(reader *r, const char *path, const char *text, size_t
 
 lx_status lx_scene_read_mem(lx_ctx *ctx, const char *name, const char *text, size_t len, lx_scene **out)
 {
-    if (!ctx || !name || (!text && len) || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_read_mem: NULL argument");
+    LX__NEED_CTX(ctx);
+    if (!name || (!text && len) || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_read_mem: NULL argument");
     *out = NULL;
     reader r;
     memset(&r, 0, sizeof r);
     r.ctx = ctx;
     r.sc = lx__scene_new(name);
     if (!r.sc) return lx__error(ctx, LX_ENOMEM, name, 0, "out of memory");
+    lx__scene_sun_raw_init(&r.sun);
     lx_status st = read_file(&r, name, text ? text : "", len);
     if (st == LX_OK) st = close_section(&r);
     else {
         lx__scene_lum_raw_free(&r.lraw);
         lx__scene_rec_raw_free(&r.rraw);
     }
+    if (st == LX_OK) st = lx__scene_daylight_finish(ctx, r.sc, &r.sun);
+    if (st == LX_OK) st = lx__scene_obs_finish(ctx, r.sc);
     if (st == LX_OK) st = lx__scene_finish(ctx, r.sc);
     if (st != LX_OK) {
         lx_scene_free(r.sc);
@@ -391,11 +410,12 @@ lx_status lx_scene_read_mem(lx_ctx *ctx, const char *name, const char *text, siz
 
 lx_status lx_scene_read_file(lx_ctx *ctx, const char *path, lx_scene **out)
 {
-    if (!ctx || !path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_read_file: NULL argument");
+    LX__NEED_CTX(ctx);
+    if (!path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_read_file: NULL argument");
     *out = NULL;
     char *text = NULL;
     size_t len = 0;
-    lx_status st = lx__read_all(ctx, path, &text, &len); /* its errors name the file */
+    lx_status st = lx__read_all(ctx, path, LX_INPUT_SCENE, &text, &len); /* its errors name the file */
     if (st != LX_OK) return st;
     st = lx_scene_read_mem(ctx, path, text, len, out);
     free(text);

@@ -1,36 +1,13 @@
 /* scene_sky.c - sky and ground irradiance on a receiver of any orientation: a uniform sky (closed
  * form), the CIE standard overcast sky (closed form for horizontal receivers, Gauss-Legendre in
- * zenith angle otherwise) and an EXR lat-long radiance map (pixel sums); the ground below the
- * horizon is a uniform Lambertian surface of luminance rho E_h / pi. */
+ * zenith angle otherwise), an EXR lat-long radiance map (pixel sums), a CIE general or Perez sky
+ * (lx_sky_illuminance) and the sun (Evn max(0, n . s)); the ground below the horizon is a uniform
+ * Lambertian surface of luminance rho E_h / pi, E_h the sky's and the sun's horizontal illuminance. */
 #include "scene_private.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-
-/* Gauss-Legendre nodes and weights on [-1, 1] (n <= 100000), by Newton on P_n. */
-static void gauss_legendre(int n, double *x, double *w)
-{
-    for (int i = 0; i < (n + 1) / 2; i++) {
-        double z = cos(LX__PI * (i + 0.75) / (n + 0.5)), dp = 1;
-        for (int it = 0; it < 100; it++) {
-            double p0 = 1, p1 = z;
-            for (int k = 2; k <= n; k++) {
-                double p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
-                p0 = p1;
-                p1 = p2;
-            }
-            if (n == 1) p1 = z, p0 = 1;
-            dp = n * (z * p1 - p0) / (z * z - 1);
-            double dz = p1 / dp;
-            z -= dz;
-            if (fabs(dz) < 1e-16) break;
-        }
-        x[i] = -z;
-        x[n - 1 - i] = z;
-        w[i] = w[n - 1 - i] = 2 / ((1 - z * z) * dp * dp);
-    }
-}
 
 /* G(theta) = integral over azimuth of max(0, n . omega) for a receiver tilted by beta:
  * with a = cos(beta) cos(theta), b = sin(beta) sin(theta) >= 0, the integrand is a + b cos(phi). */
@@ -49,7 +26,7 @@ static double overcast_tilted(lx_ctx *ctx, double Lz, double beta, int nodes)
     double *x = malloc(2 * (size_t)nodes * sizeof *x);
     if (!x) return NAN;
     double *w = x + nodes;
-    gauss_legendre(nodes, x, w);
+    lx__gauss_legendre(nodes, x, w);
     double cut = fabs(LX__PI / 2 - beta), edges[3] = {0, cut, LX__PI / 2}, sum = 0;
     for (int piece = 0; piece < 2; piece++) {
         double t0 = edges[piece], t1 = edges[piece + 1], h = (t1 - t0) / 2;
@@ -146,7 +123,23 @@ lx_status lx__scene_sky_eval(lx_ctx *ctx, const lx_scene *sc, const void *map, c
         E_sky = cb == 1 ? E_h : map_sum(ctx, m, n);
         break;
     }
-    default: *E_lx = 0; return LX_OK;
+    case LX_SKY_CIE:
+    case LX_SKY_PEREZ: {
+        E_h = sc->sky_model.diffuse_horizontal_lx;
+        if (cb == 1) E_sky = E_h;
+        else {
+            lx_status st = lx_sky_illuminance(ctx, &sc->sky_model, n, 0, &E_sky);
+            if (st != LX_OK) return st;
+        }
+        break;
+    }
+    default: E_h = E_sky = 0; break;
+    }
+    /* the sun: a distant source of direct normal illuminance Evn above the horizon */
+    if (sc->has_sun && sc->sun_normal_lx > 0 && sc->sun_dir[2] > 0) {
+        double c = n[0] * sc->sun_dir[0] + n[1] * sc->sun_dir[1] + n[2] * sc->sun_dir[2];
+        E_sky += c > 0 ? sc->sun_normal_lx * c : 0;
+        E_h += sc->sun_normal_lx * sc->sun_dir[2];
     }
     /* the ground: uniform Lambertian luminance rho E_h / pi below the horizon, seen with the
      * view factor (1 - cos beta)/2 */

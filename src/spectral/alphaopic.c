@@ -4,6 +4,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 
 /* K_alpha,v^D65 in W/lm, CIE S 026:2018 Table 2 (alpha-opic ELR of D65); also in the provenance
@@ -18,11 +19,13 @@ double lx_alphaopic_d65_efficacy(lx_alphaopic_kind kind)
 
 lx_status lx_alphaopic_compute(lx_ctx *ctx, const lx_spd *spd, lx_method method, lx_alphaopic *out)
 {
+    LX__NEED_CTX(ctx);
     if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "alpha-opic: output is NULL");
     lx_status st = lx_spd_check(ctx, spd);
     if (st != LX_OK) return st;
     method = lx_method_resolve(spd, method);
     lx_alphaopic r;
+    memset(&r, 0, sizeof r); /* reserved included (ABI policy) */
     lx_spd w;
     for (int k = 0; k < 5; k++) {
         if ((st = lx_function_get(ctx, (lx_function)(LX_FN_ALPHA_SC + k), &w)) != LX_OK) return st;
@@ -41,8 +44,9 @@ lx_status lx_alphaopic_compute(lx_ctx *ctx, const lx_spd *spd, lx_method method,
     return LX_OK;
 }
 
-lx_status lx_alphaopic_batch(lx_ctx *ctx, const lx_batch *batch, lx_batch_opts *opts, double *out)
+lx_status lx_alphaopic_batch(lx_ctx *ctx, const lx_batch *batch, const lx_batch_opts *opts, double *out)
 {
+    LX__NEED_CTX(ctx);
     static const lx_function fns[6] = {LX_FN_ALPHA_SC, LX_FN_ALPHA_MC, LX_FN_ALPHA_LC,
                                        LX_FN_ALPHA_RH, LX_FN_ALPHA_MEL, LX_FN_YBAR_2};
     if (!batch || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "alpha-opic batch: NULL argument");

@@ -471,14 +471,16 @@ static lx_status check_batch(lx_ctx *ctx, const lx_batch *b, const lx_function *
 }
 
 lx_status lx_batch_integrate(lx_ctx *ctx, const lx_batch *b, const lx_function *fns, size_t k,
-                             lx_batch_opts *opts, double *out)
+                             const lx_batch_opts *opts, double *out)
 {
+    LX__NEED_CTX(ctx);
     lx_status st = check_batch(ctx, b, fns, k, out);
     if (st) return st;
-    lx_batch_opts defaults = {0};
+    const lx_batch_opts defaults = {0};
     if (!opts) opts = &defaults;
+    if ((st = lx__check_reserved(ctx, "batch options", opts->reserved, sizeof opts->reserved))) return st;
     if (b->n_spectra == 0 || k == 0) {
-        opts->used = LX_BACKEND_CPU;
+        lx__backend_used(ctx, LX_BACKEND_CPU);
         return LX_OK;
     }
     lx_backend be;
@@ -489,14 +491,14 @@ lx_status lx_batch_integrate(lx_ctx *ctx, const lx_batch *b, const lx_function *
     if (be == LX_BACKEND_OPENCL) {
         st = batch_opencl(ctx, b, fns, k, opts->chunk_spectra, out);
         if (st == LX_OK) {
-            opts->used = LX_BACKEND_OPENCL;
+            lx__backend_used(ctx, LX_BACKEND_OPENCL);
             return LX_OK;
         }
         if (!lx__backend_fallback(ctx, "batch", opts->backend, st)) return st;
     }
 #endif
     st = batch_cpu(ctx, b, fns, k, opts->threads, out);
-    if (!st) opts->used = LX_BACKEND_CPU;
+    if (!st) lx__backend_used(ctx, LX_BACKEND_CPU);
     return st;
 }
 
@@ -595,8 +597,9 @@ done:
 #endif
 
 lx_status lx_batch_resample(lx_ctx *ctx, size_t n_spectra, const double *lambda_nm, const double *value,
-                            const size_t *offset, const size_t *n_in, lx_batch *dst, lx_batch_opts *opts)
+                            const size_t *offset, const size_t *n_in, lx_batch *dst, const lx_batch_opts *opts)
 {
+    LX__NEED_CTX(ctx);
     if (!dst || (n_spectra && (!lambda_nm || !value || !offset || !n_in || !dst->values)))
         return lx__error(ctx, LX_EINVAL, NULL, 0, "resample: NULL argument");
     if (dst->n_lambda < 1 || !(dst->step_nm > 0) || (dst->row_stride && dst->row_stride < dst->n_lambda) ||
@@ -608,28 +611,30 @@ lx_status lx_batch_resample(lx_ctx *ctx, size_t n_spectra, const double *lambda_
             if (!(x[j] > x[j - 1]))
                 return lx__error(ctx, LX_EINVAL, NULL, 0, "resample: spectrum %zu: wavelengths not strictly increasing at sample %zu", i, j);
     }
-    lx_batch_opts defaults = {0};
+    const lx_batch_opts defaults = {0};
     if (!opts) opts = &defaults;
+    lx_status st = lx__check_reserved(ctx, "batch options", opts->reserved, sizeof opts->reserved);
+    if (st) return st;
     dst->n_spectra = n_spectra;
     if (n_spectra == 0) {
-        opts->used = LX_BACKEND_CPU;
+        lx__backend_used(ctx, LX_BACKEND_CPU);
         return LX_OK;
     }
     lx_backend be;
-    lx_status st = lx__backend_choose(ctx, "resample", opts->backend, (double)n_spectra * (double)dst->n_lambda,
+    st = lx__backend_choose(ctx, "resample", opts->backend, (double)n_spectra * (double)dst->n_lambda,
                                       LX_AUTO_COLD_SAMPLES, LX_AUTO_WARM_SAMPLES, &be);
     if (st) return st;
 #if LX_OPENCL
     if (be == LX_BACKEND_OPENCL) {
         st = resample_opencl(ctx, n_spectra, lambda_nm, value, offset, n_in, dst);
         if (st == LX_OK) {
-            opts->used = LX_BACKEND_OPENCL;
+            lx__backend_used(ctx, LX_BACKEND_OPENCL);
             return LX_OK;
         }
         if (!lx__backend_fallback(ctx, "resample", opts->backend, st)) return st;
     }
 #endif
     resample_cpu(n_spectra, lambda_nm, value, offset, n_in, dst);
-    opts->used = LX_BACKEND_CPU;
+    lx__backend_used(ctx, LX_BACKEND_CPU);
     return LX_OK;
 }

@@ -3,6 +3,7 @@
  * per spectrum on threads. */
 #include "spectral/spectral_private.h"
 
+#include <math.h>
 #include <stdlib.h>
 
 typedef struct job {
@@ -12,6 +13,15 @@ typedef struct job {
     lx_colorimetry *out;
     lx_status st[64];   /* per thread */
 } job;
+
+/* Value j of spectrum i, times 2^-e. */
+static double value_at(const lx_batch *b, size_t i, size_t j, int e)
+{
+    size_t stride = b->row_stride ? b->row_stride : b->n_lambda;
+    double v = b->dtype == LX_F32 ? (double)((const float *)b->values)[i * stride + j]
+                                  : ((const double *)b->values)[i * stride + j];
+    return e ? ldexp(v, -e) : v;
+}
 
 static double radiant_of(const lx_batch *b, size_t i)
 {
@@ -25,7 +35,17 @@ static double radiant_of(const lx_batch *b, size_t i)
         const double *v = (const double *)b->values + i * stride;
         for (size_t j = 0; j + 1 < b->n_lambda; j++) sum += v[j] + v[j + 1];
     }
-    return 0.5 * b->step_nm * sum; /* the trapezoid rule, as lx_spd_integrate_radiant */
+    double r = 0.5 * b->step_nm * sum; /* the trapezoid rule, as lx_spd_integrate_radiant */
+    if (isfinite(r) || !isinf(sum)) return r;
+    /* values near the top of the double range: the sum again scaled by 2^-e (exact), then back,
+     * so a partial sum that overflowed does not make the integral overflow */
+    double m = 0;
+    for (size_t j = 0; j < b->n_lambda; j++) m = fmax(m, fabs(value_at(b, i, j, 0)));
+    int e = 0;
+    frexp(m, &e);
+    sum = 0.0;
+    for (size_t j = 0; j + 1 < b->n_lambda; j++) sum += value_at(b, i, j, e) + value_at(b, i, j + 1, e);
+    return ldexp(0.5 * b->step_nm * sum, e);
 }
 
 /* Spectra [i0, i1) on thread t, with a context of its own (a context is one thread's). */
@@ -42,8 +62,10 @@ static void work(void *arg, long i0, long i1, int t)
     lx_ctx_destroy(ctx);
 }
 
-lx_status lx_batch_colorimetry(lx_ctx *ctx, const lx_batch *b, lx_observer obs, lx_batch_opts *opts, lx_colorimetry *out)
+lx_status lx_batch_colorimetry(lx_ctx *ctx, const lx_batch *b, lx_observer obs, const lx_batch_opts *opts,
+                               lx_colorimetry *out)
 {
+    LX__NEED_CTX(ctx);
     if (!b || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch and output are required");
     if (obs != LX_OBSERVER_2 && obs != LX_OBSERVER_10)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "observer must be 2 or 10 degrees, not %d", (int)obs);

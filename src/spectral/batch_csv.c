@@ -26,6 +26,21 @@ static int is_skip_line(const char *s, const char *e)
     return s == e || *s == '#';
 }
 
+/* The end of the line at s (its '\n', or end), or NULL when it is longer than LX__BATCH_LINE_MAX
+ * bytes (without its '\n'): the search never looks further than that. */
+const char *lx__csv_line_end(const char *s, const char *end)
+{
+    size_t room = (size_t)(end - s);
+    const char *nl = memchr(s, '\n', room > LX__BATCH_LINE_MAX ? LX__BATCH_LINE_MAX + 1 : room);
+    return nl ? nl : room > LX__BATCH_LINE_MAX ? NULL : end;
+}
+
+lx_status lx__csv_line_too_long(lx_ctx *ctx, const char *file, long line)
+{
+    return lx__error(ctx, LX_EPARSE, file, line, "line longer than %zu MB, the longest line of a batch CSV file",
+                     LX__BATCH_LINE_MAX >> 20);
+}
+
 static void *count_part(void *arg)
 {
     part *p = arg;
@@ -286,8 +301,8 @@ lx_status lx__csv_read_header(lx_ctx *ctx, const char *file, const char *text, s
     long line = 1;
     const char *hs = NULL, *he = NULL;
     while (s < end) { /* the header: the first line that is not blank or a comment */
-        const char *nl = memchr(s, '\n', (size_t)(end - s));
-        const char *le = nl ? nl : end;
+        const char *le = lx__csv_line_end(s, end), *nl = le && le < end ? le : NULL;
+        if (!le) return lx__csv_line_too_long(ctx, file, line);
         if (!is_skip_line(s, le)) {
             hs = s;
             he = le > s && le[-1] == '\r' ? le - 1 : le;
@@ -358,8 +373,10 @@ lx_status lx__csv_read_header(lx_ctx *ctx, const char *file, const char *text, s
 lx_status lx_batch_table_read_mem(lx_ctx *ctx, const char *file, const char *text, size_t len, lx_dtype dtype,
                                   int threads, lx_batch_table **out)
 {
+    LX__NEED_CTX(ctx);
     if (!text || !out) return lx__error(ctx, LX_EINVAL, file, 0, "batch csv: NULL argument");
     *out = NULL;
+    if (dtype != LX_F32 && dtype != LX_F64) return lx__error(ctx, LX_EINVAL, file, 0, "batch csv: unknown dtype");
     csv_header H;
     lx_status hst = lx__csv_read_header(ctx, file, text, len, &H);
     if (hst) return hst;
@@ -453,43 +470,37 @@ typedef struct text_file {
     char *buf;   /* read, or NULL */
 } text_file;
 
-static lx_status text_open(lx_ctx *ctx, const char *path, text_file *tf)
+static void text_close(text_file *tf);
+
+/* Regular files are mapped: whole (lx_batch_table_read, `whole` = 1) within the spectrum-file
+ * size limit, streamed at any size. Standard input, pipes, FIFOs and devices are read by
+ * lx__read_all under that limit, so memory stays bounded whatever they deliver. */
+static lx_status text_open(lx_ctx *ctx, const char *path, int whole, text_file *tf)
 {
     memset(tf, 0, sizeof *tf);
-    FILE *f = NULL;
-    lx_status ost = lx__open_read(ctx, path, &f);
-    if (ost) return ost;
     struct stat sb;
-    int have_stat = f != stdin && fstat(fileno(f), &sb) == 0;
-    if (have_stat && S_ISREG(sb.st_mode) && sb.st_size > 0) {
-        void *m = mmap(NULL, (size_t)sb.st_size, PROT_READ, MAP_PRIVATE, fileno(f), 0);
+    if (strcmp(path, "-") != 0 && stat(path, &sb) == 0 && S_ISREG(sb.st_mode) && sb.st_size > 0) {
+        lx_status st = whole ? lx__input_size_check(ctx, path, LX_INPUT_SPECTRUM, (unsigned long long)sb.st_size) : LX_OK;
+        FILE *f = NULL;
+        if (!st) st = lx__open_read(ctx, path, &f);
+        if (st) return st;
+        void *m = fstat(fileno(f), &sb) == 0 && sb.st_size > 0
+                      ? mmap(NULL, (size_t)sb.st_size, PROT_READ, MAP_PRIVATE, fileno(f), 0)
+                      : MAP_FAILED;
+        fclose(f);
         if (m != MAP_FAILED) {
             posix_madvise(m, (size_t)sb.st_size, POSIX_MADV_SEQUENTIAL);
-            fclose(f);
             tf->map = m;
             tf->text = m;
             tf->len = (size_t)sb.st_size;
-            return LX_OK;
+            if ((st = lx__text_check(ctx, path, tf->text, tf->len))) text_close(tf);
+            return st;
         }
     }
-    size_t cap = have_stat && sb.st_size > 0 ? (size_t)sb.st_size + 1 : 1 << 20;
-    size_t len = 0, got;
-    char *buf = malloc(cap);
-    while (buf && (got = fread(buf + len, 1, cap - len, f)) > 0) {
-        len += got;
-        if (len == cap) {
-            char *b = realloc(buf, cap *= 2);
-            if (!b) free(buf);
-            buf = b;
-        }
-    }
-    int rerr = ferror(f);
-    if (f != stdin) fclose(f);
-    if (!buf) return lx__error(ctx, LX_ENOMEM, path, 0, "out of memory reading the file");
-    if (rerr) {
-        free(buf);
-        return lx__error(ctx, LX_EIO, path, 0, "read error");
-    }
+    char *buf = NULL;
+    size_t len = 0;
+    lx_status st = lx__read_all(ctx, path, LX_INPUT_SPECTRUM, &buf, &len);
+    if (st) return st;
     tf->buf = buf;
     tf->text = buf;
     tf->len = len;
@@ -504,9 +515,11 @@ static void text_close(text_file *tf)
 
 lx_status lx_batch_table_read(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads, lx_batch_table **out)
 {
+    LX__NEED_CTX(ctx);
     if (!path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch csv: NULL argument");
+    *out = NULL;
     text_file tf;
-    lx_status st = text_open(ctx, path, &tf);
+    lx_status st = text_open(ctx, path, 1, &tf);
     if (st) return st;
     st = lx_batch_table_read_mem(ctx, path, tf.text, tf.len, dtype, threads, out);
     text_close(&tf);

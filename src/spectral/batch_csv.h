@@ -37,6 +37,11 @@ typedef struct lx__csv_header {
     double start, step;
 } lx__csv_header;
 
+/* The end of the line at s (its '\n', or end), or NULL when it is longer than LX__BATCH_LINE_MAX
+ * bytes (without its '\n'): the search never looks further than that. */
+const char *lx__csv_line_end(const char *s, const char *end);
+/* The LX_EPARSE of a line longer than LX__BATCH_LINE_MAX, naming file and line. */
+lx_status lx__csv_line_too_long(lx_ctx *ctx, const char *file, long line);
 /* Reads the header from text[0, len) (errors name file and line). */
 lx_status lx__csv_read_header(lx_ctx *ctx, const char *file, const char *text, size_t len, lx__csv_header *H);
 /* Parses the rows of part p (pass 2): values, names, rows_done, lines_done, or err_line and err. */

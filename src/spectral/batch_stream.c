@@ -71,6 +71,7 @@ typedef struct source {
     size_t carry_len, carry_cap;
     unsigned long long off;     /* read mode: input offset of the next round's first byte */
     int eof;
+    int too_long;               /* read mode: the carried line is longer than LX__BATCH_LINE_MAX */
 } source;
 
 static lx_status source_open(lx_ctx *ctx, const char *path, const lx_batch_stream *cb, source *src)
@@ -93,7 +94,7 @@ static lx_status source_open(lx_ctx *ctx, const char *path, const lx_batch_strea
             fclose(f);
             src->map = m;
             src->map_len = src->total = (unsigned long long)sb.st_size;
-            return LX_OK;
+            return lx__text_check(ctx, path, src->map, src->map_len); /* binary data: refused at once */
         }
         src->total = (unsigned long long)sb.st_size;
     }
@@ -191,8 +192,22 @@ static lx_status source_fill(lx_ctx *ctx, const char *path, source *src, sset *S
             *len = whole;
             return LX_OK;
         }
-        /* a line longer than the round: read on */
+        /* a line longer than the round: read on, up to the longest line a batch file may hold
+         * (then the header is left to lx__csv_read_header, a row is refused once the rows before
+         * it are emitted) */
+        if (n > LX__BATCH_LINE_MAX + 1) {
+            if (need_header) {
+                memset(S->buf + n, 0, PAD);
+                *len = n;
+                return LX_OK;
+            }
+            src->too_long = 1;
+            src->carry_len = 0;
+            *len = 0;
+            return LX_OK;
+        }
         want = 2 * (n > want ? n : want);
+        if (want > LX__BATCH_LINE_MAX + 2) want = LX__BATCH_LINE_MAX + 2;
         src->carry_len = 0;
         size_t keep = n;
         n = 0;
@@ -210,14 +225,28 @@ static lx_status source_fill(lx_ctx *ctx, const char *path, source *src, sset *S
  * readable text; off0: the input offset of `base`. Returns where it stopped. */
 static const char *cut_parts(lx_ctx *ctx, const char *path, sset *S, const char *pos, const char *end, const char *lim,
                              const char *base, unsigned long long off0, int max_parts, const lx_batch_table *tmpl,
-                             const lx__csv_header *H, lx_status *st)
+                             const lx__csv_header *H, const char **too_long, lx_status *st)
 {
     size_t n = tmpl->batch.n_lambda, es = tmpl->batch.dtype == LX_F32 ? sizeof(float) : sizeof(double);
-    while (pos < end && S->count < max_parts) {
+    const char *set_start = pos;
+    /* a set holds about max_parts parts' worth of text, however long its lines */
+    while (pos < end && S->count < max_parts && (size_t)(pos - set_start) < (size_t)max_parts * PART_BYTES) {
         spart *q = &S->q[S->count];
         const char *pe = (size_t)(end - pos) > PART_BYTES ? pos + PART_BYTES : end;
-        const char *nl = pe < end ? memchr(pe, '\n', (size_t)(end - pe)) : NULL;
-        pe = pe < end ? (nl ? nl + 1 : end) : end;
+        if (pe < end) { /* the end of the line at the cut: the only line of the part that can be long */
+            const char *nl = lx__csv_line_end(pe, end), *ls = NULL;
+            if (!nl || (size_t)(nl - pos) > LX__BATCH_LINE_MAX) {
+                for (ls = pe; ls > pos && ls[-1] != '\n'; ls--) continue;
+                if (nl && (size_t)(nl - ls) <= LX__BATCH_LINE_MAX) ls = NULL;
+            }
+            if (ls) { /* the rows before it are parsed and emitted; then the error */
+                *too_long = ls;
+                pe = ls;
+            } else {
+                pe = nl < end ? nl + 1 : end;
+            }
+        }
+        if (pe == pos) break;
         /* a row takes at least 2 n - 1 bytes (n one-character values and their separators) */
         size_t cap = (size_t)(pe - pos) / (2 * n - 1 + (n == 1)) + 1;
         if (cap > q->cap) {
@@ -242,6 +271,7 @@ static const char *cut_parts(lx_ctx *ctx, const char *path, sset *S, const char 
         q->end_off = off0 + (unsigned long long)(pe - base);
         pos = pe;
         S->count++;
+        if (*too_long) break;
     }
     return pos;
 }
@@ -263,17 +293,37 @@ static lx_status emit_set(const lx_batch_stream *cb, sset *P, size_t *row0, unsi
     return st;
 }
 
+/* Read mode: the whole lines [p, p + n) the round did not take go back before the carried text. */
+static int source_unread(source *src, const char *p, size_t n)
+{
+    if (!n) return 0;
+    if (src->carry_cap < n + src->carry_len) {
+        char *c = realloc(src->carry, n + src->carry_len);
+        if (!c) return -1;
+        src->carry = c, src->carry_cap = n + src->carry_len;
+    }
+    memmove(src->carry + n, src->carry, src->carry_len);
+    memcpy(src->carry, p, n);
+    src->carry_len += n;
+    return 0;
+}
+
 lx_status lx_batch_table_stream_ex(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads, const lx_batch_stream *cb)
 {
+    LX__NEED_CTX(ctx);
     if (!path || !cb || !cb->emit) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch csv: NULL argument");
     if (dtype != LX_F32 && dtype != LX_F64) return lx__error(ctx, LX_EINVAL, path, 0, "batch csv: unknown dtype");
+    lx_status st = lx__check_reserved(ctx, "batch stream callbacks", cb->reserved, sizeof cb->reserved);
+    if (st) return st;
     int T = lx__threads(threads, 0);
     if (T > MAX_PARTS) T = MAX_PARTS;
     int max_parts = PARTS_PER_THREAD * T < MAX_PARTS ? PARTS_PER_THREAD * T : MAX_PARTS;
     size_t round_bytes = (size_t)max_parts * PART_BYTES;
     source src;
-    lx_status st = source_open(ctx, path, cb, &src);
-    if (st) return st;
+    if ((st = source_open(ctx, path, cb, &src))) {
+        source_close(&src);
+        return st;
+    }
     sset *sets = calloc(2, sizeof *sets);
     if (!sets) {
         source_close(&src);
@@ -282,12 +332,13 @@ lx_status lx_batch_table_stream_ex(lx_ctx *ctx, const char *path, lx_dtype dtype
     sets[0].cb = sets[1].cb = cb;
     /* the header: from the map, or from the first round's buffer */
     lx__csv_header H;
-    const char *pos = NULL, *end = NULL;
+    const char *pos = NULL, *end = NULL, *too_long = NULL;
     size_t len = 0;
     if (src.map) {
         st = lx__csv_read_header(ctx, path, src.map, src.map_len, &H);
         pos = H.body, end = src.map + src.map_len;
-    } else if (!(st = source_fill(ctx, path, &src, &sets[0], round_bytes, 1, &len))) {
+    } else if (!(st = source_fill(ctx, path, &src, &sets[0], round_bytes, 1, &len)) &&
+               !(st = lx__text_check(ctx, path, sets[0].buf, len))) {
         st = lx__csv_read_header(ctx, path, sets[0].buf, len, &H);
         pos = H.body, end = sets[0].buf + len;
         src.off = len;
@@ -303,8 +354,8 @@ lx_status lx_batch_table_stream_ex(lx_ctx *ctx, const char *path, lx_dtype dtype
         S->count = 0;
         S->first_line = next_line;
         if (src.map) {
-            pos = cut_parts(ctx, path, S, pos, end, end, src.map, 0, max_parts, &tmpl, &H, &st);
-        } else {
+            if (!too_long) pos = cut_parts(ctx, path, S, pos, end, end, src.map, 0, max_parts, &tmpl, &H, &too_long, &st);
+        } else if (!too_long && !src.too_long) {
             unsigned long long off = 0;
             if (!first) { /* the next round of text into this set's buffer */
                 off = src.off;
@@ -312,29 +363,17 @@ lx_status lx_batch_table_stream_ex(lx_ctx *ctx, const char *path, lx_dtype dtype
                 if (!(src.eof && !src.carry_len) && (st = source_fill(ctx, path, &src, S, round_bytes, 0, &len))) break;
                 pos = end = S->buf;
                 if (len) end = S->buf + len;
-                src.off += len;
             }
-            if (len) pos = cut_parts(ctx, path, S, pos, end, end + PAD, S->buf, off, max_parts, &tmpl, &H, &st);
-            /* read mode takes the whole buffer in one round: parts grow past PART_BYTES if needed */
-            if (!st && pos < end) {
-                S->q[S->count - 1].p.e = end;
-                S->q[S->count - 1].end_off = src.off;
-                size_t cap = (size_t)(end - S->q[S->count - 1].p.s) / (2 * H.n - 1 + (H.n == 1)) + 1;
-                spart *q = &S->q[S->count - 1];
-                if (cap > q->cap) {
-                    size_t es = dtype == LX_F32 ? sizeof(float) : sizeof(double);
-                    free(q->p.values);
-                    q->p.values = malloc(cap * H.n * es);
-                    q->cap = q->p.values ? cap : 0;
-                    if (!q->p.values) st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory for a chunk of %zu spectra", cap);
-                }
-                q->p.rows_cap = cap;
-                pos = end;
-            }
+            if (len) pos = cut_parts(ctx, path, S, pos, end, end + PAD, S->buf, off, max_parts, &tmpl, &H, &too_long, &st);
+            /* the lines this round did not take (a set's text is bounded) go back to the input */
+            if (!st && !too_long && pos < end && source_unread(&src, pos, (size_t)(end - pos)))
+                st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
+            src.off = off + (unsigned long long)(pos - S->buf);
+            if (first) src.off = (unsigned long long)(pos - S->buf);
         }
         first = 0;
         if (st) break;
-        int more = src.map ? pos < end : !(src.eof && !src.carry_len); /* input left for later rounds */
+        int more = too_long || src.too_long ? 0 : src.map ? pos < end : !(src.eof && !src.carry_len);
         if (S->count == 0 && !have_prev && !more) break;
         lx__team team = {.started = 0};
         atomic_store(&S->next, 0);
@@ -342,7 +381,8 @@ lx_status lx_batch_table_stream_ex(lx_ctx *ctx, const char *path, lx_dtype dtype
         /* meanwhile: the last round, in file order, on this thread */
         if (have_prev) {
             st = emit_set(cb, P, &row0, src.total);
-            if (src.map && S->count) source_release(&src, (size_t)(S->q[0].p.s - src.map));
+            /* its text is no longer needed: resident memory stays a few rounds, not the file */
+            if (src.map) source_release(&src, (size_t)((S->count ? S->q[0].p.s : pos) - src.map));
             have_prev = 0;
         }
         lx__team_join(&team);
@@ -358,6 +398,8 @@ lx_status lx_batch_table_stream_ex(lx_ctx *ctx, const char *path, lx_dtype dtype
         have_prev = S->count > 0;
         cur ^= 1;
     }
+    /* a line beyond LX__BATCH_LINE_MAX: refused once every row before it was emitted */
+    if (!st && (too_long || src.too_long)) st = lx__csv_line_too_long(ctx, path, next_line);
     for (int k = 0; k < 2; k++) {
         for (int i = 0; i < MAX_PARTS; i++) {
             spart *q = &sets[k].q[i];
@@ -389,6 +431,7 @@ static lx_status plain_emit(void *user, const lx_batch_table *part, size_t row0,
 lx_status lx_batch_table_stream(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads, lx_batch_chunk_fn fn,
                                 void *user)
 {
+    LX__NEED_CTX(ctx);
     if (!path || !fn) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch csv: NULL argument");
     plain p = {fn, user};
     lx_batch_stream cb = {.user = &p, .emit = plain_emit};
@@ -420,10 +463,14 @@ static lx_status integ_chunk(void *user, const lx_batch_table *chunk, size_t row
     return lx_batch_integrate(I->ctx, &chunk->batch, I->fns, I->k, &o, I->out + row0 * I->k);
 }
 
+void lx_batch_results_free(double *results) { free(results); }
+
 lx_status lx_batch_table_integrate_file(lx_ctx *ctx, const char *path, const lx_function *fns, size_t k, int threads,
                                         double **out, size_t *n_spectra)
 {
+    LX__NEED_CTX(ctx);
     if (!path || !fns || !k || !out || !n_spectra) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch csv: NULL argument");
+    *out = NULL;
     integ I = {ctx, fns, k, 0, 0, NULL};
     /* double values: the same numbers strtod gives, summed in double */
     lx_status st = lx_batch_table_stream(ctx, path, LX_F64, threads, integ_chunk, &I);

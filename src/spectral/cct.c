@@ -94,7 +94,10 @@ static void planck_uv_ds3(const cmf3 *c, const double *c2_l, const double *inv_l
 lx_status lx__planck_uv_ds3(lx_observer obs, size_t n, const double *T, double (*out)[8])
 {
     cmf3 c;
-    lx_status st = get_cmf(NULL, obs, &c);
+    lx_ctx *tmp = NULL; /* the views of the embedded CMFs need a context (for errors only) */
+    lx_status st = lx_ctx_create(&tmp);
+    if (st == LX_OK) st = get_cmf(tmp, obs, &c);
+    lx_ctx_destroy(tmp);
     if (st != LX_OK) return st;
     double *c2_l = malloc(2 * c.y.n * sizeof *c2_l), *inv_l5 = c2_l ? c2_l + c.y.n : NULL;
     if (!c2_l) return LX_ENOMEM;
@@ -157,6 +160,7 @@ static lx_status locus(lx_ctx *ctx, lx_observer obs, lx__locus **out, cmf3 *c)
 
 lx_status lx_planck_uv(lx_ctx *ctx, lx_observer obs, double T, double *u, double *v)
 {
+    LX__NEED_CTX(ctx);
     cmf3 c;
     lx_status st = get_cmf(ctx, obs, &c);
     if (st != LX_OK) return st;
@@ -215,6 +219,7 @@ static double hermite_guess(const lx__locus *L, int k, double u, double v)
 
 lx_status lx_cct_from_uv(lx_ctx *ctx, lx_observer obs, double u, double v, double *cct_K, double *duv)
 {
+    LX__NEED_CTX(ctx);
     if (cct_K) *cct_K = NAN;
     if (duv) *duv = NAN;
     if (!isfinite(u) || !isfinite(v)) return lx__error(ctx, LX_ERANGE, NULL, 0, "chromaticity is not finite");
@@ -295,6 +300,7 @@ lx_status lx_cct_from_uv(lx_ctx *ctx, lx_observer obs, double u, double v, doubl
 
 lx_status lx_cct_from_xy(lx_ctx *ctx, lx_observer obs, double x, double y, double *cct_K, double *duv)
 {
+    LX__NEED_CTX(ctx);
     double d = -2 * x + 12 * y + 3;
     if (!(d != 0) || !isfinite(d)) {
         if (cct_K) *cct_K = NAN;

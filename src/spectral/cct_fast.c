@@ -136,6 +136,7 @@ int lx__cct_fast(lx_observer obs, double u, double v, double *cct_K, double *duv
 lx_status lx_cct_from_uv_batch(lx_ctx *ctx, lx_observer obs, size_t n, const double *u, const double *v,
                                double *cct_K, double *duv)
 {
+    LX__NEED_CTX(ctx);
     if (obs != LX_OBSERVER_2 && obs != LX_OBSERVER_10)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "observer must be 2 or 10 degrees, not %d", (int)obs);
     if (n && (!u || !v || !cct_K || !duv)) return lx__error(ctx, LX_EINVAL, NULL, 0, "cct batch: NULL argument");

@@ -6,6 +6,8 @@
 #include <string.h>
 
 
+static lx_status overflow_check(lx_ctx *ctx, const lx_colorimetry *r, double max_abs);
+
 /* The CCT columns of r from its u', v': by the fast table (cct_fast.c) when fast and the answer is
  * clear of the validity edges (|Duv| 0.05, 1000 K, 100000 K: there the two solvers' last bits could
  * disagree, so the exact one decides), else by the exact solver. An invalid fast answer is final:
@@ -48,21 +50,30 @@ static void cct_columns(lx_ctx *ctx, lx_observer obs, lx_colorimetry *r, int fas
 lx_status lx__colorimetry_derive(lx_ctx *ctx, lx_observer obs, const double xyz[3], double vprime, double radiant,
                                  int fast, lx_colorimetry *out)
 {
+    LX__NEED_CTX(ctx);
     if (!out || !xyz) return lx__error(ctx, LX_EINVAL, NULL, 0, "integrals and output are required");
     if (obs != LX_OBSERVER_2 && obs != LX_OBSERVER_10)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "observer must be 2 or 10 degrees, not %d", (int)obs);
     double km = obs == LX_OBSERVER_2 ? LX__KM_2 : LX__KM_10;
     lx_colorimetry r;
+    memset(&r, 0, sizeof r); /* reserved included (ABI policy) */
     r.method = out->method;
     r.X = km * xyz[0];
     r.Y = km * xyz[1];
     r.Z = km * xyz[2];
-    double s = r.X + r.Y + r.Z;
-    double d = r.X + 15 * r.Y + 3 * r.Z;
-    r.x = s != 0 ? r.X / s : NAN;
-    r.y = s != 0 ? r.Y / s : NAN;
-    r.u_prime = d != 0 ? 4 * r.X / d : NAN;
-    r.v_prime = d != 0 ? 9 * r.Y / d : NAN;
+    /* chromaticities of finite X, Y, Z near the top of the range: their sums scaled by a power
+     * of two (exact; ratios unchanged), so they do not overflow */
+    double X = r.X, Y = r.Y, Z = r.Z, s = X + Y + Z, d = X + 15 * Y + 3 * Z;
+    if ((!isfinite(s) || !isfinite(d)) && isfinite(X) && isfinite(Y) && isfinite(Z)) {
+        int e = 0;
+        frexp(fmax(fabs(X), fmax(fabs(Y), fabs(Z))), &e);
+        X = ldexp(X, -e - 4), Y = ldexp(Y, -e - 4), Z = ldexp(Z, -e - 4);
+        s = X + Y + Z, d = X + 15 * Y + 3 * Z;
+    }
+    r.x = s != 0 ? X / s : NAN;
+    r.y = s != 0 ? Y / s : NAN;
+    r.u_prime = d != 0 ? 4 * X / d : NAN;
+    r.v_prime = d != 0 ? 9 * Y / d : NAN;
     r.radiant = radiant;
     r.ler_lm_per_W = radiant != 0 ? r.Y / radiant : NAN;
     r.scotopic_Y = LX__KM_SCOT * vprime;
@@ -82,6 +93,7 @@ lx_status lx_colorimetry_from_integrals(lx_ctx *ctx, lx_observer obs, const doub
 
 lx_status lx_spd_colorimetry(lx_ctx *ctx, const lx_spd *spd, lx_observer obs, lx_method method, lx_colorimetry *out)
 {
+    LX__NEED_CTX(ctx);
     if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "output is NULL");
     if (obs != LX_OBSERVER_2 && obs != LX_OBSERVER_10)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "observer must be 2 or 10 degrees, not %d", (int)obs);
@@ -90,18 +102,69 @@ lx_status lx_spd_colorimetry(lx_ctx *ctx, const lx_spd *spd, lx_observer obs, lx
     method = lx_method_resolve(spd, method);
     lx_function f0 = obs == LX_OBSERVER_2 ? LX_FN_XBAR_2 : LX_FN_XBAR_10;
     double xyz[3], scot, radiant;
-    for (int k = 0; k < 3; k++) {
+    static const char *const name[] = {"X", "Y", "Z", "scotopic_Y", "radiant"};
+    for (int k = 0; k < 5 && st == LX_OK; k++) {
         lx_spd w;
-        if ((st = lx_function_get(ctx, f0 + k, &w)) != LX_OK) return st;
-        if ((st = lx_spd_integrate(ctx, spd, &w, method, &xyz[k])) != LX_OK) return st;
+        if (k < 4 && (st = lx_function_get(ctx, k < 3 ? f0 + k : LX_FN_VPRIME, &w)) != LX_OK) return st;
+        st = k < 3 ? lx_spd_integrate(ctx, spd, &w, method, &xyz[k])
+             : k == 3 ? lx_spd_integrate(ctx, spd, &w, method, &scot)
+                      : lx_spd_integrate_radiant(ctx, spd, method, &radiant);
+        if (st == LX_ERANGE) { /* an integral beyond the double range: say which quantity */
+            char mb[48];
+            lx__fmt_magnitude(mb, sizeof mb, lx__spd_max_abs(spd));
+            return lx__error(ctx, st, NULL, 0, "integral overflows: values up to %s give %s beyond the double range", mb, name[k]);
+        }
     }
-    lx_spd vp;
-    if ((st = lx_function_get(ctx, LX_FN_VPRIME, &vp)) != LX_OK) return st;
-    if ((st = lx_spd_integrate(ctx, spd, &vp, method, &scot)) != LX_OK) return st;
-    if ((st = lx_spd_integrate_radiant(ctx, spd, method, &radiant)) != LX_OK) return st;
+    if (st != LX_OK) return st;
     lx_colorimetry r;
     r.method = method;
     st = lx_colorimetry_from_integrals(ctx, obs, xyz, scot, radiant, &r);
-    if (st == LX_OK) *out = r;
+    if (st == LX_OK && (st = overflow_check(ctx, &r, lx__spd_max_abs(spd))) == LX_OK) *out = r;
     return st;
+}
+
+/* LX_ERANGE when an integral (times Km) left the double range. */
+static lx_status overflow_check(lx_ctx *ctx, const lx_colorimetry *r, double max_abs)
+{
+    const struct {
+        const char *name;
+        double v;
+    } q[] = {{"X", r->X}, {"Y", r->Y}, {"Z", r->Z}, {"scotopic_Y", r->scotopic_Y}, {"radiant", r->radiant}};
+    for (size_t i = 0; i < sizeof q / sizeof *q; i++)
+        if (!isfinite(q[i].v)) {
+            if (!isfinite(max_abs))
+                return lx__error(ctx, LX_ERANGE, NULL, 0, "integral overflows: %s is beyond the double range", q[i].name);
+            char mb[48];
+            lx__fmt_magnitude(mb, sizeof mb, max_abs);
+            return lx__error(ctx, LX_ERANGE, NULL, 0, "integral overflows: values up to %s give %s beyond the double range", mb,
+                             q[i].name);
+        }
+    return LX_OK;
+}
+
+lx_status lx_colorimetry_check(lx_ctx *ctx, const lx_colorimetry *r, double max_abs)
+{
+    LX__NEED_CTX(ctx);
+    if (!r) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_colorimetry_check: NULL result");
+    lx_status st = overflow_check(ctx, r, max_abs);
+    if (st != LX_OK) return st;
+    /* the always-defined quantities: a NaN here is reported with its name and its cause */
+    double sum = r->X + r->Y + r->Z;
+    const struct {
+        const char *name;
+        double v;
+        const char *why;
+    } q[] = {
+        {"x", r->x, sum == 0 ? "X + Y + Z = 0 (no luminous content)" : NULL},
+        {"y", r->y, sum == 0 ? "X + Y + Z = 0 (no luminous content)" : NULL},
+        {"u_prime", r->u_prime, "X + 15 Y + 3 Z = 0"},
+        {"v_prime", r->v_prime, "X + 15 Y + 3 Z = 0"},
+        {"ler_lm_per_W", r->ler_lm_per_W, r->radiant == 0 ? "the radiant integral is 0" : NULL},
+        {"sp_ratio", r->sp_ratio, r->Y == 0 ? "Y = 0" : NULL},
+    };
+    for (size_t i = 0; i < sizeof q / sizeof *q; i++)
+        if (!isfinite(q[i].v))
+            return lx__error(ctx, LX_ERANGE, NULL, 0, "%s is undefined (%s): %s", q[i].name, isnan(q[i].v) ? "NaN" : "infinite",
+                             q[i].why ? q[i].why : "not finite in double arithmetic");
+    return LX_OK;
 }

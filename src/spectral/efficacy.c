@@ -6,6 +6,7 @@
 
 lx_status lx_efficacy_from_spd_file(lx_ctx *ctx, const char *path, double *ler_lm_per_W)
 {
+    LX__NEED_CTX(ctx);
     if (!path || !ler_lm_per_W) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_efficacy_from_spd_file: NULL argument");
     lx_spd_set *set = NULL;
     lx_status st = lx_spd_read_file(ctx, path, &set);

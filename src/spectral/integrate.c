@@ -1,8 +1,12 @@
 /* integrate.c - integration of a sampled spectrum against a weighting function: the CIE 015
- * summation, the exact integral of two piecewise-linear functions, and 1 nm resampling. */
+ * summation, the exact integral of two piecewise-linear functions, and 1 nm resampling; values
+ * near the top of the double range are integrated scaled by a power of two (exact). */
 #include "spectral/spectral_private.h"
 
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 /* Uniform step of a spectrum (0 when not uniform): every step equal within 1e-9 relative. */
 static double uniform_step(const lx_spd *s)
@@ -32,6 +36,7 @@ lx_method lx_method_resolve(const lx_spd *spd, lx_method method)
 
 lx_status lx_spd_check(lx_ctx *ctx, const lx_spd *s)
 {
+    LX__NEED_CTX(ctx);
     if (!s || !s->lambda_nm || !s->value) return lx__error(ctx, LX_EINVAL, NULL, 0, "spectrum is NULL");
     const char *name = s->name ? s->name : "spectrum";
     if (s->n < 2) return lx__error(ctx, LX_EINVAL, NULL, 0, "%s: needs at least 2 samples, has %zu", name, s->n);
@@ -95,13 +100,68 @@ static double exact_product(const lx_spd *a, const lx_spd *b)
     return sum + comp;
 }
 
+double lx__spd_max_abs(const lx_spd *spd)
+{
+    double m = 0;
+    for (size_t i = 0; i < spd->n; i++)
+        if (fabs(spd->value[i]) > m) m = fabs(spd->value[i]);
+    return m;
+}
+
+/* Calls integral(ctx, spd, arg, out) and, when the result leaves the double range although every
+ * value is finite, again on the values scaled by 2^-e (e: the exponent of the largest; exact) and
+ * scales the result back: an intermediate product or partial sum that overflowed does not make the
+ * integral overflow. LX_ERANGE "integral overflows: values up to M" when the integral itself does. */
+static lx_status integrate_scaled(lx_ctx *ctx, const lx_spd *spd, const void *arg,
+                                  lx_status (*integral)(lx_ctx *, const lx_spd *, const void *, double *), double *out)
+{
+    lx_status st = integral(ctx, spd, arg, out);
+    if (st != LX_OK || isfinite(*out)) return st;
+    double m = lx__spd_max_abs(spd), r = NAN;
+    int e = 0;
+    frexp(m, &e);
+    double *v = malloc(spd->n * sizeof *v);
+    if (!v) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    for (size_t i = 0; i < spd->n; i++) v[i] = ldexp(spd->value[i], -e);
+    lx_spd scaled = *spd;
+    scaled.value = v;
+    st = integral(ctx, &scaled, arg, &r);
+    free(v);
+    if (st != LX_OK) return st;
+    r = ldexp(r, e);
+    if (!isfinite(r)) {
+        char mb[48];
+        lx__fmt_magnitude(mb, sizeof mb, m);
+        return lx__error(ctx, LX_ERANGE, NULL, 0, "integral overflows: values up to %s", mb);
+    }
+    *out = r;
+    return LX_OK;
+}
+
+typedef struct weighted_arg {
+    const lx_spd *w;
+    lx_method method; /* resolved */
+} weighted_arg;
+
+static lx_status weighted(lx_ctx *ctx, const lx_spd *spd, const void *arg, double *out);
+
 lx_status lx_spd_integrate(lx_ctx *ctx, const lx_spd *spd, const lx_spd *w, lx_method method, double *out)
 {
+    LX__NEED_CTX(ctx);
     lx_status st = lx_spd_check(ctx, spd);
     if (st == LX_OK) st = lx_spd_check(ctx, w);
     if (st != LX_OK) return st;
     if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "output is NULL");
-    method = lx_method_resolve(spd, method);
+    weighted_arg a = {w, lx_method_resolve(spd, method)};
+    return integrate_scaled(ctx, spd, &a, weighted, out);
+}
+
+/* The integral of spd x w by the method of arg (a weighted_arg). */
+static lx_status weighted(lx_ctx *ctx, const lx_spd *spd, const void *arg, double *out)
+{
+    const weighted_arg *a = arg;
+    const lx_spd *w = a->w;
+    lx_method method = a->method;
     double sum = 0.0;
     if (method == LX_METHOD_EXACT) {
         sum = exact_product(spd, w);
@@ -130,8 +190,11 @@ lx_status lx_spd_integrate(lx_ctx *ctx, const lx_spd *spd, const lx_spd *w, lx_m
     return LX_OK;
 }
 
+static lx_status trapezoid(lx_ctx *ctx, const lx_spd *spd, const void *arg, double *out);
+
 lx_status lx_spd_integrate_radiant(lx_ctx *ctx, const lx_spd *spd, lx_method method, double *out)
 {
+    LX__NEED_CTX(ctx);
     /* The radiant integral is a property of the spectrum, not of a weighting: whatever the
      * method, it is the exact integral of the piecewise-linear spectrum (the trapezoid rule).
      * A CIE 015 sum would count the end samples a full step wide (405 W instead of 400 W for
@@ -141,6 +204,13 @@ lx_status lx_spd_integrate_radiant(lx_ctx *ctx, const lx_spd *spd, lx_method met
     if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "output is NULL");
     if ((int)method < LX_METHOD_AUTO || method > LX_METHOD_LINEAR1NM)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown integration method %d", (int)method);
+    return integrate_scaled(ctx, spd, NULL, trapezoid, out);
+}
+
+/* The exact integral of the piecewise-linear spectrum (arg unused). */
+static lx_status trapezoid(lx_ctx *ctx, const lx_spd *spd, const void *arg, double *out)
+{
+    (void)ctx, (void)arg;
     double sum = 0.0, comp = 0.0;
     for (size_t i = 0; i + 1 < spd->n; i++) {
         double term = 0.5 * (spd->lambda_nm[i + 1] - spd->lambda_nm[i]) * (spd->value[i] + spd->value[i + 1]);

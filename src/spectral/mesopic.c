@@ -23,6 +23,7 @@ static double m_of(double lmes)
 
 lx_status lx_mesopic_luminance(lx_ctx *ctx, double lp, double ls, double *lmes_out, double *m_out)
 {
+    LX__NEED_CTX(ctx);
     if (!isfinite(lp) || !isfinite(ls) || lp < 0 || ls < 0)
         return lx__error(ctx, LX_EINVAL, NULL, 0,
                          "mesopic: photopic (%g) and scotopic (%g) luminances must be finite and >= 0", lp, ls);

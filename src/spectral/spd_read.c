@@ -437,8 +437,9 @@ done:
 
 lx_status lx_spd_read_mem(lx_ctx *ctx, const char *name, const char *text, size_t len, lx_spd_set **out)
 {
+    LX__NEED_CTX(ctx);
     if (out) *out = NULL;
-    if (!ctx || !out || (!text && len)) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_spd_read_mem: NULL argument");
+    if (!out || (!text && len)) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_spd_read_mem: NULL argument");
     const char *file = name ? name : "(memory)";
     if (len >= 2 && ((unsigned char)text[0] == 0xFF && (unsigned char)text[1] == 0xFE))
         return lx__error(ctx, LX_EPARSE, file, 1, "UTF-16 text is not supported; save the file as UTF-8");
@@ -462,13 +463,30 @@ lx_status lx_spd_read_mem(lx_ctx *ctx, const char *name, const char *text, size_
 
 lx_status lx_spd_read_file(lx_ctx *ctx, const char *path, lx_spd_set **out)
 {
+    LX__NEED_CTX(ctx);
     if (out) *out = NULL;
-    if (!ctx || !path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_spd_read_file: NULL argument");
+    if (!path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_spd_read_file: NULL argument");
     char *buf;
     size_t len;
-    lx_status st = lx__read_all(ctx, path, &buf, &len);
+    lx_status st = lx__read_all(ctx, path, LX_INPUT_SPECTRUM, &buf, &len);
     if (st != LX_OK) return st;
     st = lx_spd_read_mem(ctx, path, buf, len, out);
+    free(buf);
+    return st;
+}
+
+lx_status lx_spd_read_stream(lx_ctx *ctx, const char *name, FILE *in, const char *prefix, size_t prefix_len,
+                             lx_spd_set **out)
+{
+    LX__NEED_CTX(ctx);
+    if (out) *out = NULL;
+    if (!in || !out || (!prefix && prefix_len)) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_spd_read_stream: NULL argument");
+    const char *file = name ? name : "(stream)";
+    char *buf;
+    size_t len;
+    lx_status st = lx__read_stream(ctx, file, LX_INPUT_SPECTRUM, in, prefix, prefix_len, &buf, &len);
+    if (st != LX_OK) return st;
+    st = lx_spd_read_mem(ctx, file, buf, len, out);
     free(buf);
     return st;
 }

@@ -14,6 +14,9 @@ lx_status lx__spd_set_build(lx_ctx *ctx, const char *file, size_t nlam, const do
                             const double *val, size_t ss, size_t ks, char *const *names,
                             const long *lines, lx_spd_set **out);
 
+/* The largest |value| of spd. */
+double lx__spd_max_abs(const lx_spd *spd);
+
 /* CGATS / Argyll spectral files (cgats.c): detection by content, and the reader. */
 int lx__cgats_detect(const char *text, size_t len);
 lx_status lx__cgats_read(lx_ctx *ctx, const char *file, const char *text, size_t len, lx_spd_set **out);

@@ -32,6 +32,7 @@ double lx_illuminant_a(double lambda_nm)
 
 lx_status lx_daylight_xy(lx_ctx *ctx, double T, double *x, double *y)
 {
+    LX__NEED_CTX(ctx);
     if (!(T >= 4000.0 && T <= 25000.0))
         return lx__error(ctx, LX_ERANGE, NULL, 0, "CIE daylight is defined for 4000 K to 25000 K, not %g K", T);
     double t1 = 1.0 / T, t2 = t1 * t1, t3 = t2 * t1;
@@ -44,6 +45,7 @@ lx_status lx_daylight_xy(lx_ctx *ctx, double T, double *x, double *y)
 
 lx_status lx_daylight(lx_ctx *ctx, double T, size_t n, const double *lambda_nm, double *value)
 {
+    LX__NEED_CTX(ctx);
     double xd, yd;
     lx_status st = lx_daylight_xy(ctx, T, &xd, &yd);
     if (st != LX_OK) return st;

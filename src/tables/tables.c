@@ -57,6 +57,7 @@ static const struct {
 
 lx_status lx_function_get(lx_ctx *ctx, lx_function fn, lx_spd *out)
 {
+    LX__NEED_CTX(ctx);
     if (!out || (int)fn < 0 || fn >= LX_FN_COUNT) return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown weighting function %d", (int)fn);
     const lx__table *t = lx__table_find(fn_source[fn].table);
     if (lx__table_view(t, lx__table_col(t, fn_source[fn].col), out) != 0)
@@ -69,6 +70,7 @@ static const char *const illum_tables[] = {"cie_illuminants_a_d", "cie_illuminan
 
 lx_status lx_illuminant_get(lx_ctx *ctx, const char *name, lx_spd *out)
 {
+    LX__NEED_CTX(ctx);
     if (!name || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "illuminant name and output are required");
     for (size_t i = 0; i < sizeof illum_tables / sizeof *illum_tables; i++) {
         const lx__table *t = lx__table_find(illum_tables[i]);

@@ -6,6 +6,7 @@
 
 lx_status lx_tcs_get(lx_ctx *ctx, int index, lx_spd *out)
 {
+    LX__NEED_CTX(ctx);
     if (!out || index < 1 || index > 14) return lx__error(ctx, LX_EINVAL, NULL, 0, "test colour sample %d: give 1 to 14", index);
     const lx__table *t = lx__table_find("cie13_3_tcs");
     if (!t) return lx__error(ctx, LX_EINVAL, NULL, 0, "embedded table cie13_3_tcs missing");

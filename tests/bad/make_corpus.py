@@ -152,4 +152,12 @@ furnace = open("../../samples/envmaps/furnace.exr", "rb").read()
 w("exr/exr_truncated_header.exr", furnace[:60])
 w("exr/exr_truncated_data.exr", furnace[:len(furnace) - 40])
 reg = "../fuzz/regressions/exr"
-w("exr/exr_windows_lie.exr", open(os.path.join(reg, sorted(os.listdir(reg))[0]), "rb").read())
+# the fuzzer's 414-byte file declaring a 16777280 x 32 display window (named: the folder grows)
+w("exr/exr_windows_lie.exr", open(os.path.join(reg, "oom-2d81a3b639d5c85ea7d89213e45fd9c69ce1ef73"), "rb").read())
+# windows of 100000 x 100000 pixels (1e10, 40 GB of RGB float) in a file of a few hundred bytes:
+# refused before anything is allocated (the 1e9-pixel bound of src/core/limits.h)
+def set_box(data, name, xmax, ymax):
+    key = name.encode() + b"\0box2i\0"
+    at = data.index(key) + len(key) + 4
+    return data[:at] + (0).to_bytes(4, "little") * 2 + xmax.to_bytes(4, "little") + ymax.to_bytes(4, "little") + data[at + 16:]
+w("exr/exr_window_1e10.exr", set_box(set_box(furnace, "dataWindow", 99999, 99999), "displayWindow", 99999, 99999))

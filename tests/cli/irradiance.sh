@@ -54,7 +54,7 @@ expect_rc 2 "malformed EXR: exit 2"
 run irradiance --help
 expect_out_match 'example' "help has an example"
 # cube maps: samples/envmaps/cube_px.exr is an 8 x 48 OpenEXR cube map (envmap cube), radiance 1 on
-# the file's +X face and 0 elsewhere (written by lx_envmap_create_cube + lx_exr_write). The +X face
+# the file's +X face and 0 elsewhere (written by lx_envmap_create_cube + lx_envmap_write_exr). The +X face
 # looks towards luxcalc's +y (README "cube maps"): E(+y) = its projected solid angle sqrt(2) acos(1/3)
 for m in brute fast; do
   run irradiance $M/cube_px.exr --normal 0,1,0 --method $m --format csv

@@ -17,6 +17,14 @@ run_stdin() { # run_stdin FILE ARGS...: feeds FILE on standard input
 ok() { echo "ok $1"; }
 notok() { echo "not ok $1: $2"; }
 skip() { echo "skip $1: $2"; } # a check this machine cannot make: counted as skipped, never passed
+# opencl_state: "device" (OpenCL built in and at least one device), "none" (built in, no device) or
+# "off" (a build with LX_OPENCL=0), from `luxcalc devices`
+opencl_state() {
+  "$LUXCALC" devices --format csv >"$T/devices" 2>"$T/devices.err"
+  if grep -q 'built with LX_OPENCL=0' "$T/devices.err"; then echo off
+  elif awk 'END { exit !(NR > 1) }' "$T/devices"; then echo device
+  else echo none; fi
+}
 expect_rc() { if [ "$rc" -eq "$1" ]; then ok "$2"; else notok "$2" "exit $rc, expected $1; stderr: $err"; fi; }
 expect_out_match() { if printf '%s\n' "$out" | grep -Eq -- "$1"; then ok "$2"; else notok "$2" "stdout does not match /$1/: $out"; fi; }
 expect_err_match() { if printf '%s\n' "$err" | grep -Eq -- "$1"; then ok "$2"; else notok "$2" "stderr does not match /$1/: $err"; fi; }

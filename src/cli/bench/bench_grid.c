@@ -31,13 +31,11 @@ static double time_grid(lx_ctx *ctx, const lx_placement *pl, size_t m, const dou
                         lx_grid_opts o, double *E, int reps, int *used)
 {
     double t[16];
-    lx_grid_opts w = o;
-    if (lx_grid_illuminance(ctx, pl, m, pts, n, nz, 1, &w, E)) return NAN;
-    *used = w.used;
+    if (lx_grid_illuminance(ctx, pl, m, pts, n, nz, 1, &o, E)) return NAN;
+    *used = lx_ctx_backend_used(ctx);
     for (int r = 0; r < reps; r++) {
-        lx_grid_opts x = o;
         double t0 = now_s();
-        if (lx_grid_illuminance(ctx, pl, m, pts, n, nz, 1, &x, E)) return NAN;
+        if (lx_grid_illuminance(ctx, pl, m, pts, n, nz, 1, &o, E)) return NAN;
         t[r] = now_s() - t0;
     }
     qsort(t, (size_t)reps, sizeof t[0], cmp_d);

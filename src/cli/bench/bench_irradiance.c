@@ -119,7 +119,7 @@ int cli_bench_irradiance(FILE *out)
         if (!m) break;
         char path[256];
         snprintf(path, sizeof path, "%s/sky.exr", tmp);
-        lx_exr_write(ctx, path, m, NULL);
+        lx_envmap_write_exr(ctx, path, m, NULL);
         double t[5], tread, tsh9, tfast, tbrute = NAN;
         for (int k = 0; k < 5; k++) {
             double t0 = now_s();

@@ -136,7 +136,7 @@ int cli_bench_metrics(FILE *o)
     lx_batch b = {n, NLAM, 0, 380.0, 5.0, LX_F64, v};
     static const char *const bname[3] = {"CPU", "OpenCL, first call: start-up and kernel build", "OpenCL, warm"};
     for (int be = 0; res && be < 3; be++) {
-        lx_batch_opts opt = {be ? LX_BACKEND_OPENCL : LX_BACKEND_CPU, 0, 0, LX_BACKEND_AUTO};
+        lx_batch_opts opt = {.backend = be ? LX_BACKEND_OPENCL : LX_BACKEND_CPU};
         double t0 = now_s();
         lx_status st = lx_alphaopic_batch(ctx, &b, &opt, res);
         double t = now_s() - t0;

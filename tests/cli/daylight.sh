@@ -1,0 +1,120 @@
+# daylight.sh - CLI cases for `luxcalc sky`, daylight scenes ([sky] cie/perez, [sun]), UGR at
+# observers (`scene --glare`) and `luxcalc ugr`.
+. tests/cli/lib.sh
+PI=3.141592653589793
+
+# a uniform CIE sky (type 5) written as EXR: the map's horizontal illuminance is pi Lz
+run sky --type cie --number 5 --zenith-luminance 1000cd/m2 --sun-altitude 30deg --sun-azimuth 180deg \
+    --size 256x128 -o "$T/s5.exr" --format csv
+expect_rc 0 "sky type 5 writes an EXR"
+expect_field 1 diffuse_horizontal_lx 3141.592653589793 1e-6 "type 5: Dv = pi Lz"
+run irradiance "$T/s5.exr" --normal 0,0,1 --method fast --format csv
+expect_field 1 illuminance_lx 3141.5927 0.05 "irradiance reads the sky map as luminance: E = pi Lz"
+run irradiance "$T/s5.exr" --normal 1,0,0 --method fast --format csv
+expect_field 1 illuminance_lx 1570.796 2 "vertical under the uniform sky: pi Lz / 2 (pixels cut by the horizon of n)"
+
+# the CIE clear sky with the sun by date (SPA): the map carries the sky and the sun
+run sky --type cie --number 12 --zenith-luminance 6000cd/m2 --date 2003-10-17 --time 12:30:30 --timezone -7 \
+    --latitude 39.742476deg --longitude -105.1786deg --sun-illuminance 80000lx --size 512x256 -o "$T/s12.exr" --format csv
+expect_rc 0 "sky type 12 with the sun by date"
+expect_field 1 sun_altitude_deg 39.888 0.01 "SPA sun altitude (90 - 50.112 at 1013 mbar / 15 C)"
+eg=$(printf '%s\n' "$out" | awk -F, 'NR==2{print $7}')
+run irradiance "$T/s12.exr" --normal 0,0,1 --method fast --format csv
+expect_field 1 illuminance_lx "$eg" "$(awk -v e="$eg" 'BEGIN{print e*2e-3}')" "map E_h = Dv + Evn sin(altitude) within 0.2 %"
+
+# Perez from irradiance
+run sky --type perez --direct-normal 600W/m2 --diffuse-horizontal 150W/m2 --sun-altitude 35deg --sun-azimuth 180deg \
+    --day-of-year 172 --format csv
+expect_rc 0 "perez sky"
+expect_field 1 diffuse_horizontal_lx 21022.329669493913 1e-6 "perez Dv (tests/ref/perez_ref.py)"
+expect_field 1 sun_normal_lx 58156.639908585057 1e-6 "perez Evn (tests/ref/perez_ref.py)"
+run sky --type cie --number 12 --zenith-luminance 1000cd/m2
+expect_rc 1 "no sun is a usage error"
+run sky --type cie --number 16 --zenith-luminance 1000cd/m2 --sun-altitude 30deg --sun-azimuth 0deg
+expect_rc 1 "sky number 16 is refused"
+
+# a scene: CIE sky 12 and the sun; the sun on a south-facing wall adds Evn cos
+cat > "$T/day.scene" <<'SC'
+[sky]
+type = cie
+number = 12
+luminance = 6000 cd/m2
+[sun]
+altitude = 30 deg
+azimuth = 180 deg
+illuminance = 80000 lx
+[receiver roof]
+type = point
+position = 0, 0, 0 m
+[receiver south]
+type = point
+position = 0, 0, 0 m
+normal = 0, -1, 0
+[receiver north]
+type = point
+position = 0, 0, 0 m
+normal = 0, 1, 0
+SC
+run scene "$T/day.scene" --format csv
+expect_rc 0 "daylight scene"
+run sky --type cie --number 12 --zenith-luminance 6000cd/m2 --sun-altitude 30deg --sun-azimuth 180deg --format csv
+dv=$(printf '%s\n' "$out" | awk -F, 'NR==2{print $5}')
+run scene "$T/day.scene" --format csv
+expect_field 1 illuminance_lx "$(awk -v d="$dv" 'BEGIN{printf "%.17g", d + 40000}')" 1e-6 "roof: Dv + Evn sin 30"
+s=$(printf '%s\n' "$out" | awk -F, 'NR==3{print $5}'); n=$(printf '%s\n' "$out" | awk -F, 'NR==4{print $5}')
+if awk -v s="$s" -v n="$n" -v dv="$dv" 'BEGIN{d=s-n-80000*cos(3.141592653589793/6); exit !(d > 0 && d < dv)}'; then
+  ok "south wall gets the sun (Evn cos 30) and the brighter half of the sky"
+else notok "south wall gets the sun" "south $s north $n"; fi
+run scene "$T/day.scene" --explain
+expect_out_match 'environment +on +CIE general \(type 12\) sky and the sun' "explain names the sky and the sun"
+
+# errors name the file and line
+printf '[sky]\ntype = cie\nluminance = 100 cd/m2\n[receiver r]\ntype = point\nposition = 0,0,0 m\n' > "$T/bad1.scene"
+run scene "$T/bad1.scene"
+expect_rc 2 "cie sky without number"
+expect_err_match "bad1.scene:1: \[sky\]: a cie sky needs 'number'" "names [sky]'s line"
+printf '[sky]\ntype = cie\nnumber = 12\nluminance = 100 cd/m2\n[receiver r]\ntype = point\nposition = 0,0,0 m\n' > "$T/bad2.scene"
+run scene "$T/bad2.scene"
+expect_err_match "depends on the sun's position" "sun-dependent type without [sun]"
+printf '[sun]\ndate = 2024-13-01\ntime = 12:00\ntimezone = 1\nlatitude = 50 deg\nlongitude = 8 deg\nilluminance = 1 lx\n[receiver r]\ntype = point\nposition = 0,0,0 m\n' > "$T/bad3.scene"
+run scene "$T/bad3.scene"
+expect_rc 2 "a bad date"
+expect_err_match "bad3.scene:1: \[sun\]: sun position: month" "names the field"
+
+# UGR at an observer
+cat > "$T/glare.scene" <<'SC'
+[luminaire p1]
+type = rect
+position = 0, 3, 2.8 m
+luminance = 4000 cd/m2
+width = 0.6 m
+length = 0.6 m
+[receiver r]
+type = point
+position = 0, 0, 0 m
+[observer eye]
+position = 0, 0, 1.2 m
+view = 0, 1, 0
+background_luminance = 30 cd/m2
+SC
+run scene "$T/glare.scene" --glare --format csv
+expect_rc 0 "scene --glare"
+expect_out_match '^observer,luminaire,luminance_cd_m2,solid_angle_sr,sigma_deg,tau_deg,position_index,term,background_cd_m2,ugr' "glare csv header"
+# by hand: d^2 = 9 + 2.56, omega = 0.36 (1.6 / d) / d^2, sigma = acos(3 / d), tau = 0
+expect_field 1 solid_angle_sr "$(awk 'BEGIN{d2=11.56; d=sqrt(d2); printf "%.17g", 0.36*1.6/d/d2}')" 1e-12 "omega = A cos / d^2"
+expect_field 1 ugr "$(awk 'BEGIN{d2=11.56; d=sqrt(d2); w=0.36*1.6/d/d2; s=atan2(1.6,3)*180/3.141592653589793;
+  p=exp((35.2-1.22)*1e-3*s + 21e-5*s*s); printf "%.17g", 8*log(0.25/30*16e6*w/(p*p))/log(10)}')" 1e-9 "UGR by hand"
+
+# luxcalc ugr on a real EULUMDAT file (../shared; skipped when absent)
+if [ -f "${LX_SHARED_DIR:-../shared}/ies/ldt/avad_srl_isym4.ldt" ]; then
+  run ugr "${LX_SHARED_DIR:-../shared}/ies/ldt/avad_srl_isym4.ldt" --format csv
+  expect_rc 0 "ugr table"
+  expect_out_match '^x_H,y_H,cross_70_50_20,' "ugr csv header"
+  expect_field 11 cross_70_50_20 20.6 0.3 "4H x 8H, 70/50/20 crosswise (eulumdat-ugr 1.0.2: 20.6)"
+  rows=$(printf '%s\n' "$out" | wc -l)
+  if [ "$rows" -eq 20 ]; then ok "19 rooms"; else notok "19 rooms" "$rows lines"; fi
+else
+  skip "ugr table" "../shared/ies/ldt not present"
+fi
+run ugr
+expect_rc 1 "ugr without a file"

@@ -1,0 +1,1042 @@
+/* test_api.c - the conventions the public header (src/luxcalc.h) states for every function, checked
+ * function by function: a NULL context is LX_EINVAL and nothing is read or written (outputs keep
+ * their sentinels, no file appears, no callback runs); the functions that accept a NULL context do
+ * what the header says; every context-taking function of the header has its case here (the header
+ * is read at run time, so a new function cannot skip the rule); creating functions set *out to NULL
+ * when they fail; options with non-zero reserved space are refused; results write their reserved
+ * space as zero; the header's version macros equal lx_version(). */
+#include "lx_test.h"
+
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+/* ---- fixtures: valid arguments, made with a real context ---- */
+
+static lx_ctx *C;           /* the real context the fixtures were made with */
+static lx_spd D65;          /* a view of the embedded D65 table */
+static lx_luminaire *LUM;   /* a 1000 lm isotropic model */
+static lx_envmap *MAP;      /* 8 x 4, one channel, 1.0 everywhere */
+static lx_scene *SCENE;     /* tests/data/scenes/point.scene from memory */
+static lx_scene_plan *PLAN;
+static char DIR_[64];       /* a temporary directory for the writers */
+static const char *SPD_FILE = "samples/spd/cie_illuminants.csv";
+static const char *IES_FILE = "samples/ies/point_isotropic_1000lm.ies";
+static const char *EXR_FILE = "samples/envmaps/furnace.exr";
+static const char *BATCH_FILE = "samples/spd/led_batch.csv";
+static const char *SCENE_TEXT = "[luminaire lamp]\ntype = point\nposition = 0 m, 0 m, 2 m\nintensity = 400 cd\n"
+                                "[receiver floor]\ntype = point\nposition = 0 m, 0 m, 0 m\n";
+static const char *SPD_TEXT = "wavelength,a\n500,1\n600,2\n";
+static const double SENT = 12345.678; /* what outputs hold before a call that must not write them */
+static void *const PSENT = (void *)&SENT;
+
+static int setup(void **state)
+{
+    (void)state;
+    if (lx_ctx_create(&C)) return -1;
+    lx_lum_model m = {.kind = LX_LUM_MODEL_POINT, .flux_lm = 1000};
+    if (lx_illuminant_get(C, "D65", &D65) || lx_luminaire_from_model(C, &m, &LUM) ||
+        lx_envmap_create(C, 8, 4, 1, &MAP) ||
+        lx_scene_read_mem(C, "tests/data/scenes/api.scene", SCENE_TEXT, strlen(SCENE_TEXT), &SCENE) ||
+        lx_scene_plan_make(C, SCENE, LX_BACKEND_CPU, &PLAN)) {
+        fprintf(stderr, "fixtures: %s\n", lx_ctx_errmsg(C));
+        return -1;
+    }
+    for (int i = 0; i < 32; i++) MAP->data[i] = 1.0f;
+    snprintf(DIR_, sizeof DIR_, "%s/lxapiXXXXXX", getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp");
+    return mkdtemp(DIR_) ? 0 : -1;
+}
+
+static int teardown(void **state)
+{
+    (void)state;
+    lx_scene_plan_free(PLAN);
+    lx_scene_free(SCENE);
+    lx_envmap_free(MAP);
+    lx_luminaire_free(LUM);
+    lx_ctx_destroy(C);
+    rmdir(DIR_);
+    return 0;
+}
+
+/* a path in the temporary directory that must not exist after the call */
+static const char *out_path(const char *name)
+{
+    static char p[128];
+    snprintf(p, sizeof p, "%s/%s", DIR_, name);
+    return p;
+}
+static void assert_absent(const char *path) { assert_int_not_equal(access(path, F_OK), 0); }
+
+#define NUL LX_EINVAL
+#define EXPECT_EINVAL(call) assert_int_equal((call), NUL)
+
+/* ---- the cases: one per context-taking function of the header ---- */
+
+static void t_lx_ctx_create(void) { EXPECT_EINVAL(lx_ctx_create(NULL)); } /* its NULL is the out pointer */
+static void t_lx_ctx_destroy(void) { lx_ctx_destroy(NULL); }              /* accepts NULL */
+static void t_lx_ctx_errmsg(void) { assert_string_equal(lx_ctx_errmsg(NULL), ""); }
+static void t_lx_ctx_errfile(void) { assert_null(lx_ctx_errfile(NULL)); }
+static void t_lx_ctx_errline(void) { assert_int_equal(lx_ctx_errline(NULL), 0); }
+static void t_lx_ctx_set_log(void) { lx_ctx_set_log(NULL, NULL, NULL, LX_LOG_DEBUG); } /* a no-op */
+static void t_lx_ctx_backend_used(void) { assert_int_equal(lx_ctx_backend_used(NULL), LX_BACKEND_AUTO); }
+static void t_lx_cl_ready(void) { assert_int_equal(lx_cl_ready(NULL), 0); }
+static void t_lx_ctx_counters(void)
+{
+    lx_counters c;
+    memset(&c, 0xab, sizeof c);
+    lx_ctx_counters(NULL, &c);
+    lx_counters z;
+    memset(&z, 0, sizeof z);
+    assert_memory_equal(&c, &z, sizeof c);
+}
+static void t_lx_ctx_counters_reset(void) { lx_ctx_counters_reset(NULL); }
+
+static void t_lx_backend_parse(void)
+{
+    lx_backend b = (lx_backend)77;
+    EXPECT_EINVAL(lx_backend_parse(NULL, "cpu", &b));
+    assert_int_equal(b, 77);
+}
+static void t_lx_simd_parse(void)
+{
+    lx_simd s = (lx_simd)77;
+    EXPECT_EINVAL(lx_simd_parse(NULL, "scalar", &s));
+    assert_int_equal(s, 77);
+}
+static void t_lx_cl_select(void) { EXPECT_EINVAL(lx_cl_select(NULL, -1, -1, LX_CL_AUTO)); }
+static void t_lx_cl_borrow(void) { EXPECT_EINVAL(lx_cl_borrow(NULL, PSENT, PSENT)); } /* never dereferenced */
+static void t_lx_cl_devices(void)
+{
+    lx_cl_device_info *d = PSENT;
+    size_t n = 77;
+    EXPECT_EINVAL(lx_cl_devices(NULL, &d, &n));
+    assert_ptr_equal(d, PSENT);
+    assert_int_equal(n, 77);
+}
+static void t_lx_cl_info(void)
+{
+    lx_cl_device_info i;
+    memset(&i, 0x5a, sizeof i);
+    lx_cl_device_info j = i;
+    EXPECT_EINVAL(lx_cl_info(NULL, &i));
+    assert_memory_equal(&i, &j, sizeof i);
+}
+
+static void t_lx_function_get(void)
+{
+    lx_spd s = {.n = 77};
+    EXPECT_EINVAL(lx_function_get(NULL, LX_FN_YBAR_2, &s));
+    assert_int_equal(s.n, 77);
+}
+static void t_lx_illuminant_get(void)
+{
+    lx_spd s = {.n = 77};
+    EXPECT_EINVAL(lx_illuminant_get(NULL, "D65", &s));
+    assert_int_equal(s.n, 77);
+}
+static void t_lx_tcs_get(void)
+{
+    lx_spd s = {.n = 77};
+    EXPECT_EINVAL(lx_tcs_get(NULL, 1, &s));
+    assert_int_equal(s.n, 77);
+}
+static void t_lx_daylight(void)
+{
+    double l[2] = {500, 600}, v[2] = {SENT, SENT};
+    EXPECT_EINVAL(lx_daylight(NULL, 6500, 2, l, v));
+    assert_true(v[0] == SENT && v[1] == SENT);
+}
+static void t_lx_daylight_xy(void)
+{
+    double x = SENT, y = SENT;
+    EXPECT_EINVAL(lx_daylight_xy(NULL, 6500, &x, &y));
+    assert_true(x == SENT && y == SENT);
+}
+
+static void t_lx_spd_read_file(void)
+{
+    lx_spd_set *s = PSENT;
+    EXPECT_EINVAL(lx_spd_read_file(NULL, SPD_FILE, &s));
+    assert_ptr_equal(s, PSENT);
+}
+static void t_lx_spd_read_mem(void)
+{
+    lx_spd_set *s = PSENT;
+    EXPECT_EINVAL(lx_spd_read_mem(NULL, "a.csv", SPD_TEXT, strlen(SPD_TEXT), &s));
+    assert_ptr_equal(s, PSENT);
+}
+static void t_lx_spd_read_stream(void)
+{
+    lx_spd_set *s = PSENT;
+    EXPECT_EINVAL(lx_spd_read_stream(NULL, "-", stdin, NULL, 0, &s));
+    assert_ptr_equal(s, PSENT);
+}
+static void t_lx_file_open(void)
+{
+    FILE *f = PSENT;
+    EXPECT_EINVAL(lx_file_open(NULL, BATCH_FILE, &f));
+    assert_ptr_equal(f, PSENT);
+}
+static void t_lx_cct_from_uv_batch(void)
+{
+    double u = 0.1978, v = 0.3122, t = -1, d = -1;
+    EXPECT_EINVAL(lx_cct_from_uv_batch(NULL, LX_OBSERVER_2, 1, &u, &v, &t, &d));
+    assert_true(t == -1 && d == -1);
+}
+static void t_lx_spd_check(void) { EXPECT_EINVAL(lx_spd_check(NULL, &D65)); }
+static void t_lx_spd_integrate(void)
+{
+    double v = SENT;
+    EXPECT_EINVAL(lx_spd_integrate(NULL, &D65, &D65, LX_METHOD_AUTO, &v));
+    assert_true(v == SENT);
+}
+static void t_lx_spd_integrate_radiant(void)
+{
+    double v = SENT;
+    EXPECT_EINVAL(lx_spd_integrate_radiant(NULL, &D65, LX_METHOD_AUTO, &v));
+    assert_true(v == SENT);
+}
+static void t_lx_spd_colorimetry(void) /* it segfaulted before 0.2.0 */
+{
+    lx_colorimetry c = {.X = SENT};
+    EXPECT_EINVAL(lx_spd_colorimetry(NULL, &D65, LX_OBSERVER_2, LX_METHOD_AUTO, &c));
+    assert_true(c.X == SENT);
+}
+static void t_lx_colorimetry_from_integrals(void)
+{
+    double xyz[3] = {1, 1, 1};
+    lx_colorimetry c = {.X = SENT};
+    EXPECT_EINVAL(lx_colorimetry_from_integrals(NULL, LX_OBSERVER_2, xyz, 1, 1, &c));
+    assert_true(c.X == SENT);
+}
+static void t_lx_cct_from_uv(void)
+{
+    double t = SENT, d = SENT;
+    EXPECT_EINVAL(lx_cct_from_uv(NULL, LX_OBSERVER_2, 0.1978, 0.3122, &t, &d));
+    assert_true(t == SENT && d == SENT);
+}
+static void t_lx_cct_from_xy(void)
+{
+    double t = SENT, d = SENT;
+    EXPECT_EINVAL(lx_cct_from_xy(NULL, LX_OBSERVER_2, 0.3127, 0.3290, &t, &d));
+    assert_true(t == SENT && d == SENT);
+}
+static void t_lx_planck_uv(void)
+{
+    double u = SENT, v = SENT;
+    EXPECT_EINVAL(lx_planck_uv(NULL, LX_OBSERVER_2, 3000, &u, &v));
+    assert_true(u == SENT && v == SENT);
+}
+
+/* a 2 x 3 batch on 500, 510, 520 nm */
+static const double BV[6] = {1, 2, 3, 4, 5, 6};
+static const lx_batch BATCH = {.n_spectra = 2, .n_lambda = 3, .start_nm = 500, .step_nm = 10, .dtype = LX_F64, .values = BV};
+static const lx_function FNS[2] = {LX_FN_YBAR_2, LX_FN_VPRIME};
+
+static void t_lx_batch_integrate(void)
+{
+    double out[4] = {SENT, SENT, SENT, SENT};
+    lx_batch_opts o = {.backend = LX_BACKEND_CPU};
+    EXPECT_EINVAL(lx_batch_integrate(NULL, &BATCH, FNS, 2, &o, out));
+    assert_true(out[0] == SENT && out[3] == SENT);
+}
+static void t_lx_batch_table_read(void)
+{
+    lx_batch_table *t = PSENT;
+    EXPECT_EINVAL(lx_batch_table_read(NULL, BATCH_FILE, LX_F64, 1, &t));
+    assert_ptr_equal(t, PSENT);
+}
+static void t_lx_batch_table_read_mem(void)
+{
+    const char *txt = "id,500,510\na,1,2\n";
+    lx_batch_table *t = PSENT;
+    EXPECT_EINVAL(lx_batch_table_read_mem(NULL, "m.csv", txt, strlen(txt), LX_F64, 1, &t));
+    assert_ptr_equal(t, PSENT);
+}
+static lx_status count_chunk(void *user, const lx_batch_table *chunk, size_t row0)
+{
+    (void)chunk, (void)row0;
+    ++*(int *)user;
+    return LX_OK;
+}
+static void t_lx_batch_table_stream(void)
+{
+    int calls = 0;
+    EXPECT_EINVAL(lx_batch_table_stream(NULL, BATCH_FILE, LX_F64, 1, count_chunk, &calls));
+    assert_int_equal(calls, 0);
+}
+static lx_status emit_count(void *user, const lx_batch_table *chunk, size_t row0, void *state)
+{
+    (void)chunk, (void)row0, (void)state;
+    ++*(int *)user;
+    return LX_OK;
+}
+static void t_lx_batch_table_stream_ex(void)
+{
+    int calls = 0;
+    lx_batch_stream cb = {.user = &calls, .emit = emit_count};
+    EXPECT_EINVAL(lx_batch_table_stream_ex(NULL, BATCH_FILE, LX_F64, 1, &cb));
+    assert_int_equal(calls, 0);
+}
+static void t_lx_batch_table_integrate_file(void)
+{
+    double *r = PSENT;
+    size_t n = 77;
+    EXPECT_EINVAL(lx_batch_table_integrate_file(NULL, BATCH_FILE, FNS, 2, 1, &r, &n));
+    assert_ptr_equal(r, PSENT);
+    assert_int_equal(n, 77);
+}
+static void t_lx_batch_resample(void)
+{
+    const double lam[3] = {500, 510, 520}, val[3] = {1, 2, 3};
+    const size_t off[1] = {0}, nin[1] = {3};
+    double dv[3] = {SENT, SENT, SENT};
+    lx_batch dst = {.n_spectra = 77, .n_lambda = 3, .start_nm = 500, .step_nm = 10, .dtype = LX_F64, .values = dv};
+    EXPECT_EINVAL(lx_batch_resample(NULL, 1, lam, val, off, nin, &dst, NULL));
+    assert_true(dv[0] == SENT && dst.n_spectra == 77);
+}
+static void t_lx_batch_colorimetry(void)
+{
+    lx_colorimetry c[2] = {{.X = SENT}, {.X = SENT}};
+    EXPECT_EINVAL(lx_batch_colorimetry(NULL, &BATCH, LX_OBSERVER_2, NULL, c));
+    assert_true(c[0].X == SENT && c[1].X == SENT);
+}
+static void t_lx_alphaopic_compute(void)
+{
+    lx_alphaopic a = {.illuminance = SENT};
+    EXPECT_EINVAL(lx_alphaopic_compute(NULL, &D65, LX_METHOD_AUTO, &a));
+    assert_true(a.illuminance == SENT);
+}
+static void t_lx_alphaopic_batch(void)
+{
+    double out[12];
+    for (int i = 0; i < 12; i++) out[i] = SENT;
+    EXPECT_EINVAL(lx_alphaopic_batch(NULL, &BATCH, NULL, out));
+    assert_true(out[0] == SENT && out[11] == SENT);
+}
+static void t_lx_mesopic_luminance(void)
+{
+    double l = SENT, m = SENT;
+    EXPECT_EINVAL(lx_mesopic_luminance(NULL, 1, 1, &l, &m));
+    assert_true(l == SENT && m == SENT);
+}
+static void t_lx_efficacy_from_spd_file(void)
+{
+    double k = SENT;
+    EXPECT_EINVAL(lx_efficacy_from_spd_file(NULL, "samples/spd/laser_532nm.csv", &k));
+    assert_true(k == SENT);
+}
+static void t_lx_cri_compute(void)
+{
+    lx_cri r = {.ra = SENT};
+    EXPECT_EINVAL(lx_cri_compute(NULL, &D65, &r));
+    assert_true(r.ra == SENT);
+}
+static void t_lx_tm30_compute(void)
+{
+    static lx_tm30 t;
+    t.rf = SENT;
+    EXPECT_EINVAL(lx_tm30_compute(NULL, &D65, &t));
+    assert_true(t.rf == SENT);
+}
+
+static void t_lx_unit_find(void)
+{
+    const lx_unit *u = PSENT;
+    EXPECT_EINVAL(lx_unit_find(NULL, "lx", &u));
+    assert_ptr_equal(u, PSENT);
+}
+static void t_lx_quantity_parse(void)
+{
+    double v = SENT;
+    lx_quantity q = (lx_quantity)77;
+    EXPECT_EINVAL(lx_quantity_parse(NULL, "46 fc", LX_Q_ILLUMINANCE, NULL, &v, &q));
+    assert_true(v == SENT && q == 77);
+}
+static void t_lx_unit_convert(void)
+{
+    double v = SENT;
+    EXPECT_EINVAL(lx_unit_convert(NULL, 1, "fc", "lx", &v));
+    assert_true(v == SENT);
+}
+static void t_lx_unit_format(void)
+{
+    char buf[32] = "untouched";
+    EXPECT_EINVAL(lx_unit_format(NULL, 1, "lx", buf, sizeof buf));
+    assert_string_equal(buf, "untouched");
+}
+static void t_lx_radiometric_convert(void)
+{
+    double v = SENT;
+    lx_quantity q = (lx_quantity)77;
+    EXPECT_EINVAL(lx_radiometric_convert(NULL, 1, LX_Q_RADIANT_FLUX, 683, &v, &q));
+    assert_true(v == SENT && q == 77);
+}
+
+/* sources, inverse problems, solid angles: one double output each */
+#define ONE_OUT(name, ...)                                                                                   \
+    static void t_##name(void)                                                                               \
+    {                                                                                                        \
+        double v = SENT;                                                                                     \
+        EXPECT_EINVAL(name(NULL, __VA_ARGS__, &v));                                                          \
+        assert_true(v == SENT);                                                                              \
+    }
+ONE_OUT(lx_point_illuminance, 100, 2, 0)
+ONE_OUT(lx_point_intensity, 1000)
+ONE_OUT(lx_warn_exponent_from_beam, 0.5)
+ONE_OUT(lx_warn_beam_from_exponent, 10)
+ONE_OUT(lx_lambertian_luminance, 0.5, 100)
+ONE_OUT(lx_solve_distance, 100, 400, 0)
+ONE_OUT(lx_solve_intensity, 100, 2, 0)
+ONE_OUT(lx_solve_flux, 100, 2, 0, 10, 0)
+ONE_OUT(lx_solid_angle_cap, 0.5)
+ONE_OUT(lx_solid_angle_latlong_pixel, 8, 4, 1)
+ONE_OUT(lx_solid_angle_rect, -1, 1, -1, 1, 2)
+static void t_lx_warn_intensity(void)
+{
+    double p = SENT, i = SENT;
+    EXPECT_EINVAL(lx_warn_intensity(NULL, 1000, 10, 0.1, &p, &i));
+    assert_true(p == SENT && i == SENT);
+}
+static void t_lx_disk_illuminance(void)
+{
+    lx_source_result r = {.illuminance_lx = SENT};
+    EXPECT_EINVAL(lx_disk_illuminance(NULL, 1000, 0.5, 1, 0, LX_MODEL_AUTO, &r));
+    assert_true(r.illuminance_lx == SENT);
+}
+static void t_lx_rect_illuminance(void)
+{
+    lx_source_result r = {.illuminance_lx = SENT};
+    EXPECT_EINVAL(lx_rect_illuminance(NULL, 1000, 1, 2, 2, 0, 0, LX_MODEL_AUTO, &r));
+    assert_true(r.illuminance_lx == SENT);
+}
+
+static void t_lx_luminaire_read_file(void)
+{
+    lx_luminaire *l = PSENT;
+    EXPECT_EINVAL(lx_luminaire_read_file(NULL, IES_FILE, &l));
+    assert_ptr_equal(l, PSENT);
+}
+static void t_lx_luminaire_read_mem(void)
+{
+    const char *txt = "IESNA:LM-63-2002\nTILT=NONE\n1 -1 1 3 1 1 2 0 0 0\n1 1 0\n0 90 180\n0\n1 1 1\n";
+    lx_luminaire *l = PSENT;
+    EXPECT_EINVAL(lx_luminaire_read_mem(NULL, "m.ies", txt, strlen(txt), &l));
+    assert_ptr_equal(l, PSENT);
+}
+static void t_lx_luminaire_summary(void)
+{
+    lx_lum_summary s = {.lumens = SENT};
+    EXPECT_EINVAL(lx_luminaire_summary(NULL, LUM, &s));
+    assert_true(s.lumens == SENT);
+}
+static void t_lx_luminaire_from_model(void)
+{
+    lx_lum_model m = {.kind = LX_LUM_MODEL_POINT, .flux_lm = 1000};
+    lx_luminaire *l = PSENT;
+    EXPECT_EINVAL(lx_luminaire_from_model(NULL, &m, &l));
+    assert_ptr_equal(l, PSENT);
+}
+static void t_lx_luminaire_write_ies(void)
+{
+    char *t = PSENT;
+    size_t n = 77;
+    EXPECT_EINVAL(lx_luminaire_write_ies(NULL, LUM, &t, &n));
+    assert_ptr_equal(t, PSENT);
+    assert_int_equal(n, 77);
+}
+static void t_lx_plane_axis(void)
+{
+    lx_plane p = {.na = 77};
+    EXPECT_EINVAL(lx_plane_axis(NULL, 'z', 0, 0, 1, 0, 1, 0.5, 0, 0, &p));
+    assert_int_equal(p.na, 77);
+}
+static const lx_plane PLANE = {.u = {1, 0, 0}, .v = {0, 1, 0}, .a1 = 1, .b1 = 1, .na = 2, .nb = 2, .normal = {0, 0, 1}};
+static void t_lx_grid_illuminance(void)
+{
+    lx_placement pl = {.lum = NULL, .pos_m = {0, 0, 2}, .aim = {0, 0, -1}};
+    pl.lum = LUM;
+    const double pts[3] = {0, 0, 0}, up[3] = {0, 0, 1};
+    double E = SENT;
+    EXPECT_EINVAL(lx_grid_illuminance(NULL, &pl, 1, pts, 1, up, 1, NULL, &E));
+    assert_true(E == SENT);
+}
+static void t_lx_plane_points(void)
+{
+    double *p = PSENT;
+    size_t n = 77;
+    EXPECT_EINVAL(lx_plane_points(NULL, &PLANE, &p, &n));
+    assert_ptr_equal(p, PSENT);
+    assert_int_equal(n, 77);
+}
+static void t_lx_grid_stats_compute(void)
+{
+    const double E[2] = {1, 2};
+    lx_grid_stats s = {.avg = SENT};
+    EXPECT_EINVAL(lx_grid_stats_compute(NULL, E, 2, &s));
+    assert_true(s.avg == SENT);
+}
+
+static void t_lx_envmap_create_cube(void)
+{
+    lx_envmap *m = PSENT;
+    EXPECT_EINVAL(lx_envmap_create_cube(NULL, 4, 1, &m));
+    assert_ptr_equal(m, PSENT);
+}
+static void t_lx_envmap_create(void)
+{
+    lx_envmap *m = PSENT;
+    EXPECT_EINVAL(lx_envmap_create(NULL, 8, 4, 1, &m));
+    assert_ptr_equal(m, PSENT);
+}
+static void t_lx_envmap_luminance(void)
+{
+    double L[32];
+    for (int i = 0; i < 32; i++) L[i] = SENT;
+    EXPECT_EINVAL(lx_envmap_luminance(NULL, MAP, L));
+    assert_true(L[0] == SENT && L[31] == SENT);
+}
+static void t_lx_envmap_downsample(void)
+{
+    lx_envmap *m = PSENT;
+    EXPECT_EINVAL(lx_envmap_downsample(NULL, MAP, 4, 2, &m));
+    assert_ptr_equal(m, PSENT);
+}
+static void t_lx_rgb_y_weights(void)
+{
+    const double xy[8] = {0.64, 0.33, 0.30, 0.60, 0.15, 0.06, 0.3127, 0.3290};
+    double w[3] = {SENT, SENT, SENT};
+    EXPECT_EINVAL(lx_rgb_y_weights(NULL, xy, w));
+    assert_true(w[0] == SENT && w[2] == SENT);
+}
+static void t_lx_exr_read(void)
+{
+    lx_envmap *m = PSENT;
+    EXPECT_EINVAL(lx_exr_read(NULL, EXR_FILE, &m));
+    assert_ptr_equal(m, PSENT);
+}
+static void t_lx_exr_read_any(void)
+{
+    lx_envmap *m = PSENT;
+    EXPECT_EINVAL(lx_exr_read_any(NULL, EXR_FILE, &m));
+    assert_ptr_equal(m, PSENT);
+}
+static void t_lx_envmap_write_exr(void)
+{
+    const char *p = out_path("map.exr");
+    EXPECT_EINVAL(lx_envmap_write_exr(NULL, p, MAP, NULL));
+    assert_absent(p);
+}
+static void t_lx_sh9_project(void)
+{
+    lx_sh9 sh = {.channels = 77};
+    EXPECT_EINVAL(lx_sh9_project(NULL, MAP, &sh));
+    assert_int_equal(sh.channels, 77);
+}
+static void t_lx_sh9_irradiance(void)
+{
+    lx_sh9 sh = {.channels = 1, .c = {{1}}};
+    const double n[3] = {0, 0, 1};
+    double E = SENT;
+    EXPECT_EINVAL(lx_sh9_irradiance(NULL, &sh, LX_SH9_WINDOW_NONE, n, &E));
+    assert_true(E == SENT);
+}
+static void t_lx_irradiance_dirs(void)
+{
+    const double n[3] = {0, 0, 1};
+    double E = SENT;
+    EXPECT_EINVAL(lx_irradiance_dirs(NULL, MAP, 1, n, NULL, &E));
+    assert_true(E == SENT);
+}
+static void t_lx_irradiance_map(void)
+{
+    lx_envmap *m = PSENT;
+    EXPECT_EINVAL(lx_irradiance_map(NULL, MAP, 0, 0, NULL, &m));
+    assert_ptr_equal(m, PSENT);
+}
+static void t_lx_spectral_exr_read_xyz(void)
+{
+    lx_xyz_image *i = PSENT;
+    EXPECT_EINVAL(lx_spectral_exr_read_xyz(NULL, EXR_FILE, LX_OBSERVER_2, NULL, &i));
+    assert_ptr_equal(i, PSENT);
+}
+/* a one-pixel image, as lx_spectral_exr_read_xyz makes them (the writers only read it) */
+static double IMG_XYZ[3] = {95.047, 100, 108.883}, IMG_LAM[2] = {500, 600};
+static const lx_xyz_image IMG = {.width = 1, .height = 1, .xyz = IMG_XYZ, .n_lambda = 2, .lambda_nm = IMG_LAM};
+static void t_lx_xyz_image_write_exr(void)
+{
+    const char *p = out_path("xyz.exr");
+    EXPECT_EINVAL(lx_xyz_image_write_exr(NULL, p, &IMG));
+    assert_absent(p);
+}
+
+static void t_lx_scene_read_file(void)
+{
+    lx_scene *s = PSENT;
+    EXPECT_EINVAL(lx_scene_read_file(NULL, "tests/data/scenes/point.scene", &s));
+    assert_ptr_equal(s, PSENT);
+}
+static void t_lx_scene_read_mem(void)
+{
+    lx_scene *s = PSENT;
+    EXPECT_EINVAL(lx_scene_read_mem(NULL, "m.scene", SCENE_TEXT, strlen(SCENE_TEXT), &s));
+    assert_ptr_equal(s, PSENT);
+}
+static void t_lx_scene_plan_make(void)
+{
+    lx_scene_plan *p = PSENT;
+    EXPECT_EINVAL(lx_scene_plan_make(NULL, SCENE, LX_BACKEND_CPU, &p));
+    assert_ptr_equal(p, PSENT);
+}
+static void t_lx_scene_eval(void)
+{
+    lx_scene_result *r = PSENT;
+    EXPECT_EINVAL(lx_scene_eval(NULL, SCENE, PLAN, NULL, &r));
+    assert_ptr_equal(r, PSENT);
+}
+
+/* plots: nothing may appear at the path */
+static void t_lx_png_falsecolor(void)
+{
+    const char *p = out_path("f.png");
+    const double v[4] = {1, 2, 3, 4};
+    EXPECT_EINVAL(lx_png_falsecolor(NULL, p, 2, 2, v, NAN, NAN, 0, "lx"));
+    assert_absent(p);
+}
+static void t_lx_png_preview(void)
+{
+    const char *p = out_path("p.png");
+    const lx_envmap *maps[1] = {MAP};
+    EXPECT_EINVAL(lx_png_preview(NULL, p, 1, maps, NULL));
+    assert_absent(p);
+}
+static void t_lx_spd_report_png(void)
+{
+    const char *p = out_path("r.png");
+    EXPECT_EINVAL(lx_spd_report_png(NULL, &D65, LX_OBSERVER_2, "D65", p));
+    assert_absent(p);
+}
+static void t_lx_xyz_png_write(void)
+{
+    const char *p = out_path("x.png");
+    EXPECT_EINVAL(lx_xyz_png_write(NULL, p, &IMG));
+    assert_absent(p);
+}
+static void t_lx_grid_write_png(void)
+{
+    const char *p = out_path("g.png");
+    const double E[4] = {1, 2, 3, 4};
+    EXPECT_EINVAL(lx_grid_write_png(NULL, p, &PLANE, E, NULL, 0, "grid"));
+    assert_absent(p);
+}
+static void t_lx_png_error_time(void)
+{
+    const char *p = out_path("e.png");
+    const lx_plot_point pts[2] = {{1e-3, 1e-6, "A", 0}, {1e-2, 1e-9, "B", 0}};
+    const char *names[1] = {"s"};
+    EXPECT_EINVAL(lx_png_error_time(NULL, p, "t", "x", "y", 2, pts, 1, names));
+    assert_absent(p);
+}
+
+/* input limits, checks of results */
+static void t_lx_ctx_set_input_limit(void) { EXPECT_EINVAL(lx_ctx_set_input_limit(NULL, LX_INPUT_SPECTRUM, 1 << 20)); }
+static void t_lx_ctx_input_limit(void) /* accepts NULL: the default */
+{
+    assert_int_equal(lx_ctx_input_limit(NULL, LX_INPUT_SPECTRUM), (size_t)256 << 20);
+}
+static void t_lx_colorimetry_check(void)
+{
+    lx_colorimetry r;
+    memset(&r, 0, sizeof r);
+    EXPECT_EINVAL(lx_colorimetry_check(NULL, &r, 0));
+}
+
+/* glare, skies and the sun: outputs keep their sentinels */
+static void t_lx_ugr(void)
+{
+    const double L[1] = {1e4}, w[1] = {1e-3}, p[1] = {1};
+    double terms[1] = {SENT}, u = SENT;
+    EXPECT_EINVAL(lx_ugr(NULL, 10, 1, L, w, p, terms, &u));
+    assert_true(u == SENT && terms[0] == SENT);
+}
+static void t_lx_ugr_table_compute(void)
+{
+    lx_ugr_table *t = malloc(sizeof *t);
+    memset(t, 0xab, sizeof *t);
+    lx_ugr_table ref = *t;
+    EXPECT_EINVAL(lx_ugr_table_compute(NULL, LUM, t));
+    assert_memory_equal(t, &ref, sizeof ref);
+    free(t);
+}
+static void t_lx_sky_cie(void)
+{
+    const double sun[3] = {0, 0.5, 0.8};
+    lx_sky s, ref;
+    memset(&s, 0xab, sizeof s);
+    ref = s;
+    EXPECT_EINVAL(lx_sky_cie(NULL, 12, sun, LX_SKY_BY_ZENITH, 5000, &s));
+    assert_memory_equal(&s, &ref, sizeof s);
+}
+static void t_lx_sky_cie_params(void)
+{
+    double p[5] = {SENT, SENT, SENT, SENT, SENT};
+    EXPECT_EINVAL(lx_sky_cie_params(NULL, 12, p));
+    assert_true(p[0] == SENT && p[4] == SENT);
+}
+static void t_lx_sky_perez(void)
+{
+    lx_perez_input in = {.sun_dir = {0, 0.5, 0.8}, .direct_normal_W_m2 = 500, .diffuse_horizontal_W_m2 = 100,
+                         .day_of_year = 172};
+    lx_sky s, ref;
+    memset(&s, 0xab, sizeof s);
+    ref = s;
+    EXPECT_EINVAL(lx_sky_perez(NULL, &in, &s));
+    assert_memory_equal(&s, &ref, sizeof s);
+}
+static void t_lx_sky_illuminance(void)
+{
+    lx_sky s;
+    const double sun[3] = {0, 0.5, 0.8}, up[3] = {0, 0, 1};
+    lx_assert_ok(C, lx_sky_cie(C, 5, sun, LX_SKY_BY_ZENITH, 1000, &s));
+    double E = SENT;
+    EXPECT_EINVAL(lx_sky_illuminance(NULL, &s, up, 0, &E));
+    assert_true(E == SENT);
+}
+static void t_lx_sun_spa(void)
+{
+    lx_sun_input in = {.year = 2003, .month = 10, .day = 17, .hour = 12, .minute = 30, .second = 30,
+                       .timezone_h = -7, .delta_t_s = 67, .latitude_deg = 39.742476, .longitude_deg = -105.1786,
+                       .elevation_m = 1830.14, .pressure_mbar = 820, .temperature_C = 11, .refraction_deg = 0.5667};
+    lx_sun_position pos, ref;
+    memset(&pos, 0xab, sizeof pos);
+    ref = pos;
+    EXPECT_EINVAL(lx_sun_spa(NULL, &in, &pos));
+    assert_memory_equal(&pos, &ref, sizeof pos);
+}
+static void t_lx_sky_map(void)
+{
+    lx_sky s;
+    const double sun[3] = {0, 0.5, 0.8};
+    lx_assert_ok(C, lx_sky_cie(C, 5, sun, LX_SKY_BY_ZENITH, 1000, &s));
+    lx_envmap *m = PSENT;
+    EXPECT_EINVAL(lx_sky_map(NULL, &s, NULL, &m));
+    assert_ptr_equal(m, PSENT);
+}
+static void t_lx_scene_glare_eval(void)
+{
+    lx_scene_glare *g = PSENT;
+    EXPECT_EINVAL(lx_scene_glare_eval(NULL, SCENE, &g));
+    assert_ptr_equal(g, PSENT);
+}
+
+#define CASE(f) {#f, t_##f}
+static const struct api_case {
+    const char *name;
+    void (*run)(void);
+} CASES[] = {
+    CASE(lx_ctx_set_input_limit), CASE(lx_ctx_input_limit), CASE(lx_colorimetry_check), CASE(lx_ugr),
+    CASE(lx_ugr_table_compute), CASE(lx_sky_cie), CASE(lx_sky_cie_params), CASE(lx_sky_perez), CASE(lx_sky_illuminance),
+    CASE(lx_sun_spa), CASE(lx_sky_map), CASE(lx_scene_glare_eval),
+    CASE(lx_ctx_create), CASE(lx_ctx_destroy), CASE(lx_ctx_errmsg), CASE(lx_ctx_errfile), CASE(lx_ctx_errline),
+    CASE(lx_ctx_set_log), CASE(lx_ctx_backend_used), CASE(lx_cl_ready), CASE(lx_ctx_counters),
+    CASE(lx_ctx_counters_reset), CASE(lx_backend_parse), CASE(lx_simd_parse), CASE(lx_cl_select), CASE(lx_cl_borrow),
+    CASE(lx_cl_devices), CASE(lx_cl_info), CASE(lx_function_get), CASE(lx_illuminant_get), CASE(lx_tcs_get),
+    CASE(lx_daylight), CASE(lx_daylight_xy), CASE(lx_spd_read_file), CASE(lx_spd_read_mem), CASE(lx_spd_read_stream),
+    CASE(lx_file_open), CASE(lx_cct_from_uv_batch), CASE(lx_batch_table_stream_ex), CASE(lx_spd_check),
+    CASE(lx_spd_integrate), CASE(lx_spd_integrate_radiant), CASE(lx_spd_colorimetry),
+    CASE(lx_colorimetry_from_integrals), CASE(lx_cct_from_uv), CASE(lx_cct_from_xy), CASE(lx_planck_uv),
+    CASE(lx_batch_integrate), CASE(lx_batch_table_read), CASE(lx_batch_table_read_mem), CASE(lx_batch_table_stream),
+    CASE(lx_batch_table_integrate_file), CASE(lx_batch_resample), CASE(lx_batch_colorimetry),
+    CASE(lx_alphaopic_compute), CASE(lx_alphaopic_batch), CASE(lx_mesopic_luminance),
+    CASE(lx_efficacy_from_spd_file), CASE(lx_cri_compute), CASE(lx_tm30_compute), CASE(lx_unit_find),
+    CASE(lx_quantity_parse), CASE(lx_unit_convert), CASE(lx_unit_format), CASE(lx_radiometric_convert),
+    CASE(lx_point_illuminance), CASE(lx_point_intensity), CASE(lx_warn_intensity), CASE(lx_warn_exponent_from_beam),
+    CASE(lx_warn_beam_from_exponent), CASE(lx_disk_illuminance), CASE(lx_rect_illuminance),
+    CASE(lx_lambertian_luminance), CASE(lx_solve_distance), CASE(lx_solve_intensity), CASE(lx_solve_flux),
+    CASE(lx_solid_angle_cap), CASE(lx_solid_angle_latlong_pixel), CASE(lx_solid_angle_rect),
+    CASE(lx_luminaire_read_file), CASE(lx_luminaire_read_mem), CASE(lx_luminaire_summary),
+    CASE(lx_luminaire_from_model), CASE(lx_luminaire_write_ies), CASE(lx_plane_axis), CASE(lx_grid_illuminance),
+    CASE(lx_plane_points), CASE(lx_grid_stats_compute), CASE(lx_envmap_create_cube), CASE(lx_envmap_create),
+    CASE(lx_envmap_luminance), CASE(lx_envmap_downsample), CASE(lx_rgb_y_weights), CASE(lx_exr_read),
+    CASE(lx_exr_read_any), CASE(lx_envmap_write_exr), CASE(lx_sh9_project), CASE(lx_sh9_irradiance),
+    CASE(lx_irradiance_dirs), CASE(lx_irradiance_map), CASE(lx_spectral_exr_read_xyz), CASE(lx_xyz_image_write_exr),
+    CASE(lx_scene_read_file), CASE(lx_scene_read_mem), CASE(lx_scene_plan_make), CASE(lx_scene_eval),
+    CASE(lx_png_falsecolor), CASE(lx_png_preview), CASE(lx_spd_report_png), CASE(lx_xyz_png_write),
+    CASE(lx_grid_write_png), CASE(lx_png_error_time),
+};
+#define NCASES (sizeof CASES / sizeof CASES[0])
+
+static void null_context_everywhere(void **state)
+{
+    (void)state;
+    for (size_t i = 0; i < NCASES; i++) {
+        print_message("%s(NULL, ...)\n", CASES[i].name);
+        CASES[i].run();
+    }
+}
+
+/* Every LX_API function of the header whose first parameter is a context has a case above. */
+static void every_context_function_has_a_case(void **state)
+{
+    (void)state;
+    FILE *f = fopen("src/luxcalc.h", "rb");
+    if (!f) {
+        print_message("src/luxcalc.h not found from the working directory: skipped\n");
+        skip();
+    }
+    static char text[1 << 20];
+    size_t len = fread(text, 1, sizeof text - 1, f);
+    fclose(f);
+    text[len] = 0;
+    int missing = 0, seen = 0;
+    for (const char *p = strstr(text, "\nLX_API "); p; p = strstr(p + 1, "\nLX_API ")) {
+        const char *paren = strchr(p, '('), *semi = strchr(p, ';');
+        if (!paren || !semi || semi < paren) continue;
+        const char *e = paren;
+        while (e > p && e[-1] == ' ') e--;
+        const char *b = e;
+        while (b > p && (b[-1] == '_' || (b[-1] >= 'a' && b[-1] <= 'z') || (b[-1] >= '0' && b[-1] <= '9'))) b--;
+        char name[96];
+        snprintf(name, sizeof name, "%.*s", (int)(e - b), b);
+        const char *comma = strpbrk(paren, ",)");
+        char first[128];
+        snprintf(first, sizeof first, "%.*s", (int)(comma - paren - 1), paren + 1);
+        if (!strstr(first, "lx_ctx")) continue;
+        seen++;
+        size_t i = 0;
+        while (i < NCASES && strcmp(CASES[i].name, name)) i++;
+        if (i == NCASES) {
+            print_error("%s takes a context but has no NULL-context case in tests/test_api.c\n", name);
+            missing++;
+        }
+    }
+    print_message("%d context-taking functions in the header, %zu cases\n", seen, NCASES);
+    assert_true(seen >= 90);
+    assert_int_equal(missing, 0);
+}
+
+/* LX_VERSION_* of the header equal what the library reports, and the string is MAJOR.MINOR.PATCH. */
+static void version_macros_match_the_library(void **state)
+{
+    (void)state;
+    char want[64];
+    snprintf(want, sizeof want, "%d.%d.%d", LX_VERSION_MAJOR, LX_VERSION_MINOR, LX_VERSION_PATCH);
+    assert_string_equal(LX_VERSION_STRING, want);
+    assert_string_equal(lx_version(), want);
+    int a = -1, b = -1, c = -1, n = -1;
+    assert_int_equal(sscanf(lx_version(), "%d.%d.%d%n", &a, &b, &c, &n), 3);
+    assert_int_equal((size_t)n, strlen(lx_version()));
+    assert_int_equal(a, LX_VERSION_MAJOR);
+    assert_int_equal(b, LX_VERSION_MINOR);
+    assert_int_equal(c, LX_VERSION_PATCH);
+}
+
+/* ABI policy: an option struct with non-zero reserved space is refused by every function that reads one. */
+static void nonzero_reserved_options_refused(void **state)
+{
+    lx_ctx *ctx = *state;
+    double out[4];
+    lx_batch_opts bo = {.backend = LX_BACKEND_CPU};
+    bo.reserved[3] = 1;
+    EXPECT_EINVAL(lx_batch_integrate(ctx, &BATCH, FNS, 2, &bo, out));
+    assert_non_null(strstr(lx_ctx_errmsg(ctx), "reserved"));
+    lx_colorimetry cc[2];
+    EXPECT_EINVAL(lx_batch_colorimetry(ctx, &BATCH, LX_OBSERVER_2, &bo, cc));
+    EXPECT_EINVAL(lx_alphaopic_batch(ctx, &BATCH, &bo, out));
+    const double lam[3] = {500, 510, 520}, val[3] = {1, 2, 3};
+    const size_t off[1] = {0}, nin[1] = {3};
+    double dv[3];
+    lx_batch dst = {.n_lambda = 3, .start_nm = 500, .step_nm = 10, .dtype = LX_F64, .values = dv};
+    EXPECT_EINVAL(lx_batch_resample(ctx, 1, lam, val, off, nin, &dst, &bo));
+
+    lx_grid_opts go = {.model = LX_MODEL_POINT};
+    go.reserved[0] = 1;
+    lx_placement pl = {.pos_m = {0, 0, 2}, .aim = {0, 0, -1}};
+    pl.lum = LUM;
+    const double pts[3] = {0, 0, 0}, up[3] = {0, 0, 1};
+    EXPECT_EINVAL(lx_grid_illuminance(ctx, &pl, 1, pts, 1, up, 1, &go, out));
+
+    lx_irr_opts io = {.method = LX_IRR_SH9};
+    io.reserved[1] = -1;
+    EXPECT_EINVAL(lx_irradiance_dirs(ctx, MAP, 1, up, &io, out));
+    lx_envmap *m = PSENT;
+    EXPECT_EINVAL(lx_irradiance_map(ctx, MAP, 0, 0, &io, &m));
+    assert_null(m);
+
+    lx_exr_write_opts eo = {0};
+    eo.reserved[2] = 7;
+    const char *p = out_path("reserved.exr");
+    EXPECT_EINVAL(lx_envmap_write_exr(ctx, p, MAP, &eo));
+    assert_absent(p);
+
+    lx_scene_eval_opts so = {0};
+    so.reserved[0] = 1;
+    lx_scene_result *r = PSENT;
+    EXPECT_EINVAL(lx_scene_eval(ctx, SCENE, PLAN, &so, &r));
+    assert_null(r);
+
+    lx_lum_model lm = {.kind = LX_LUM_MODEL_POINT, .flux_lm = 1000};
+    lm.reserved[0] = 1;
+    lx_luminaire *l = PSENT;
+    EXPECT_EINVAL(lx_luminaire_from_model(ctx, &lm, &l));
+    assert_null(l);
+}
+
+/* ABI policy: results are written whole, their reserved space as zero (whatever the caller left there). */
+static void results_write_reserved_as_zero(void **state)
+{
+    lx_ctx *ctx = *state;
+    static const long long zero[4];
+#define DIRTY(x) memset(&(x), 0xcd, sizeof(x))
+#define ZERO_RESERVED(x) assert_memory_equal((x).reserved, zero, sizeof zero)
+    lx_colorimetry c;
+    DIRTY(c);
+    lx_assert_ok(ctx, lx_spd_colorimetry(ctx, &D65, LX_OBSERVER_2, LX_METHOD_AUTO, &c));
+    ZERO_RESERVED(c);
+    lx_colorimetry cb[2];
+    DIRTY(cb);
+    lx_assert_ok(ctx, lx_batch_colorimetry(ctx, &BATCH, LX_OBSERVER_2, NULL, cb));
+    ZERO_RESERVED(cb[0]);
+    ZERO_RESERVED(cb[1]);
+    lx_cri cri;
+    DIRTY(cri);
+    lx_assert_ok(ctx, lx_cri_compute(ctx, &D65, &cri));
+    ZERO_RESERVED(cri);
+    static lx_tm30 tm;
+    DIRTY(tm);
+    lx_assert_ok(ctx, lx_tm30_compute(ctx, &D65, &tm));
+    ZERO_RESERVED(tm);
+    lx_alphaopic ao;
+    DIRTY(ao);
+    lx_assert_ok(ctx, lx_alphaopic_compute(ctx, &D65, LX_METHOD_AUTO, &ao));
+    ZERO_RESERVED(ao);
+    lx_source_result sr;
+    DIRTY(sr);
+    lx_assert_ok(ctx, lx_disk_illuminance(ctx, 1000, 0.5, 1, 0, LX_MODEL_AUTO, &sr));
+    ZERO_RESERVED(sr);
+    DIRTY(sr);
+    lx_assert_ok(ctx, lx_rect_illuminance(ctx, 1000, 1, 2, 2, 0, 0, LX_MODEL_AUTO, &sr));
+    ZERO_RESERVED(sr);
+    lx_lum_summary ls;
+    DIRTY(ls);
+    lx_assert_ok(ctx, lx_luminaire_summary(ctx, LUM, &ls));
+    ZERO_RESERVED(ls);
+    lx_grid_stats gs;
+    DIRTY(gs);
+    const double E[2] = {1, 3};
+    lx_assert_ok(ctx, lx_grid_stats_compute(ctx, E, 2, &gs));
+    ZERO_RESERVED(gs);
+    lx_counters k;
+    DIRTY(k);
+    lx_ctx_counters(ctx, &k);
+    ZERO_RESERVED(k);
+    for (size_t i = 0; i < SCENE->n_lum; i++) ZERO_RESERVED(SCENE->lum[i]);
+    for (size_t i = 0; i < SCENE->n_rec; i++) ZERO_RESERVED(SCENE->rec[i]);
+    lx_cl_device_info *d = NULL;
+    size_t n = 0;
+    lx_assert_ok(ctx, lx_cl_devices(ctx, &d, &n));
+    for (size_t i = 0; i < n; i++) ZERO_RESERVED(d[i]);
+    lx_cl_devices_free(d);
+}
+
+/* Creating functions set *out to NULL when they fail (here: on an argument they refuse). */
+static void failed_creators_leave_null(void **state)
+{
+    lx_ctx *ctx = *state;
+    lx_spd_set *s = PSENT;
+    assert_int_equal(lx_spd_read_file(ctx, "/nonexistent/x.csv", &s), LX_EIO);
+    assert_null(s);
+    s = PSENT;
+    assert_int_equal(lx_spd_read_mem(ctx, "bad.csv", "x\n", 2, &s), LX_EPARSE);
+    assert_null(s);
+    lx_batch_table *t = PSENT;
+    assert_int_equal(lx_batch_table_read(ctx, "/nonexistent/x.csv", LX_F64, 1, &t), LX_EIO);
+    assert_null(t);
+    t = PSENT;
+    EXPECT_EINVAL(lx_batch_table_read_mem(ctx, "m.csv", "id,500\na,1\n", 11, (lx_dtype)9, 1, &t));
+    assert_null(t);
+    double *r = PSENT;
+    size_t nr = 0;
+    assert_int_equal(lx_batch_table_integrate_file(ctx, "/nonexistent/x.csv", FNS, 2, 1, &r, &nr), LX_EIO);
+    assert_null(r);
+    lx_luminaire *l = PSENT;
+    assert_int_equal(lx_luminaire_read_file(ctx, "/nonexistent/x.ies", &l), LX_EIO);
+    assert_null(l);
+    l = PSENT;
+    lx_lum_model bad = {.kind = (lx_lum_model_kind)9, .flux_lm = 1000};
+    EXPECT_EINVAL(lx_luminaire_from_model(ctx, &bad, &l));
+    assert_null(l);
+    char *text = PSENT;
+    size_t len = 0;
+    lx_luminaire nocd;
+    memset(&nocd, 0, sizeof nocd);
+    EXPECT_EINVAL(lx_luminaire_write_ies(ctx, &nocd, &text, &len));
+    assert_null(text);
+    double *pts = PSENT;
+    size_t np = 0;
+    lx_plane empty = PLANE;
+    empty.na = 0;
+    EXPECT_EINVAL(lx_plane_points(ctx, &empty, &pts, &np));
+    assert_null(pts);
+    lx_envmap *m = PSENT;
+    EXPECT_EINVAL(lx_envmap_create(ctx, 0, 4, 1, &m));
+    assert_null(m);
+    m = PSENT;
+    EXPECT_EINVAL(lx_envmap_create_cube(ctx, 0, 1, &m));
+    assert_null(m);
+    m = PSENT;
+    EXPECT_EINVAL(lx_envmap_downsample(ctx, MAP, 3, 4, &m));
+    assert_null(m);
+    m = PSENT;
+    assert_int_equal(lx_exr_read(ctx, "/nonexistent/x.exr", &m), LX_EIO);
+    assert_null(m);
+    m = PSENT;
+    EXPECT_EINVAL(lx_irradiance_map(ctx, MAP, 3, 0, NULL, &m));
+    assert_null(m);
+    lx_xyz_image *img = PSENT;
+    assert_int_equal(lx_spectral_exr_read_xyz(ctx, "/nonexistent/x.exr", LX_OBSERVER_2, NULL, &img), LX_EIO);
+    assert_null(img);
+    lx_scene *sc = PSENT;
+    assert_int_equal(lx_scene_read_file(ctx, "/nonexistent/x.scene", &sc), LX_EIO);
+    assert_null(sc);
+    lx_scene_plan *p = PSENT;
+    EXPECT_EINVAL(lx_scene_plan_make(ctx, SCENE, (lx_backend)9, &p));
+    assert_null(p);
+    lx_scene_result *res = PSENT;
+    lx_scene_eval_opts one = {.single = 1, .index = 99};
+    EXPECT_EINVAL(lx_scene_eval(ctx, SCENE, PLAN, &one, &res));
+    assert_null(res);
+}
+
+/* The free functions accept NULL (and the objects' free functions too). */
+static void free_functions_accept_null(void **state)
+{
+    (void)state;
+    lx_text_free(NULL);
+    lx_cl_devices_free(NULL);
+    lx_batch_results_free(NULL);
+    lx_plane_points_free(NULL);
+    lx_spd_set_free(NULL);
+    lx_batch_table_free(NULL);
+    lx_luminaire_free(NULL);
+    lx_envmap_free(NULL);
+    lx_xyz_image_free(NULL);
+    lx_scene_free(NULL);
+    lx_scene_plan_free(NULL);
+    lx_scene_result_free(NULL);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(null_context_everywhere),
+        cmocka_unit_test(every_context_function_has_a_case),
+        cmocka_unit_test(version_macros_match_the_library),
+        cmocka_unit_test_setup_teardown(nonzero_reserved_options_refused, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(results_write_reserved_as_zero, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(failed_creators_leave_null, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test(free_functions_accept_null),
+    };
+    return cmocka_run_group_tests(tests, setup, teardown);
+}
