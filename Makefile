@@ -165,7 +165,7 @@ demo: deps
 
 bench: deps
 	@$(MAKE) --no-print-directory all
-	@POCL_CACHE_DIR=$(CURDIR)/$(BUILD)/pocl-cache $(CLI) bench
+	@POCL_CACHE_DIR=$(CURDIR)/$(BUILD)/pocl-cache $(CLI) bench --dir samples/bench
 
 asan: deps
 	@LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 \

@@ -26,9 +26,11 @@ static lx_status get_cmf(lx_ctx *ctx, lx_observer obs, cmf3 *c)
     return st;
 }
 
-/* uv of the Planckian radiator at T and, when du/dv are non-NULL, their derivatives in T. The
- * spectrum is scaled by exp(c2/(lambda_ref T)) so it neither under- nor overflows at any T. */
-static void planck_uv(const cmf3 *c, double T, double *u, double *v, double *du, double *dv)
+/* uv of the Planckian radiator at T and, when du/dv are non-NULL, their derivatives in T, from
+ * every `stride`-th wavelength of the CMFs (1: the exact sums; the solver's guide table takes 5,
+ * good to 1e-6 in uv, as the table only brackets the root and starts the search). The spectrum is
+ * scaled by exp(c2/(lambda_ref T)) so it neither under- nor overflows at any T. */
+static void planck_uv_every(const cmf3 *c, size_t stride, double T, double *u, double *v, double *du, double *dv)
 {
     double X = 0, Y = 0, Z = 0, dX = 0, dY = 0, dZ = 0;
     /* scale by exp(c2 / (lambda_last T)) so the longest wavelength has factor 1: no underflow */
@@ -37,7 +39,7 @@ static void planck_uv(const cmf3 *c, double T, double *u, double *v, double *du,
      * (xref < 58) and 1 - exp(-x) keeps full precision while x > 0.01 (eps / x < 3e-14). */
     int fast = T >= 300.0;
     double exref = fast ? exp(xref) : 0.0;
-    for (size_t i = 0; i < c->y.n; i++) {
+    for (size_t i = 0; i < c->y.n; i += stride) {
         double l = c->y.lambda_nm[i];
         double x = LX__C2_NM_K / (l * T);
         double l5 = l * l * l * l * l;
@@ -57,6 +59,11 @@ static void planck_uv(const cmf3 *c, double T, double *u, double *v, double *du,
     *v = 6 * Y / D;
     if (du) *du = 4 * (dX * D - X * dD) / (D * D);
     if (dv) *dv = 6 * (dY * D - Y * dD) / (D * D);
+}
+
+static void planck_uv(const cmf3 *c, double T, double *u, double *v, double *du, double *dv)
+{
+    planck_uv_every(c, 1, T, u, v, du, dv);
 }
 
 /* The same uv with their first three derivatives in s = ln T, for the fast solver's table
@@ -149,7 +156,7 @@ static lx_status locus(lx_ctx *ctx, lx_observer obs, lx__locus **out, cmf3 *c)
         double *du = L->u + 2 * L->n, *dv = L->u + 3 * L->n;
         for (int k = 0; k < L->n; k++) {
             double T = exp(L->logt0 + k * L->dlogt);
-            planck_uv(c, T, &L->u[k], &L->v[k], &du[k], &dv[k]);
+            planck_uv_every(c, 5, T, &L->u[k], &L->v[k], &du[k], &dv[k]); /* a guide: the solve is exact */
             du[k] *= T, dv[k] *= T;
         }
         L->ready = 1;
