@@ -34,7 +34,7 @@ static void human(char *buf, size_t cap, double b)
     static const char *u[] = {"B", "kB", "MB", "GB", "TB"};
     int k = 0;
     while (b >= 1000 && k < 4) b /= 1000, k++;
-    snprintf(buf, cap, b >= 100 || k == 0 ? "%.0f %s" : b >= 10 ? "%.1f %s" : "%.2f %s", b, u[k]);
+    snprintf(buf, cap, b >= 99.95 || k == 0 ? "%.0f %s" : b >= 9.995 ? "%.1f %s" : "%.2f %s", b, u[k]);
 }
 
 static void draw_bytes(void)
@@ -91,21 +91,11 @@ static void draw(void)
     fflush(stderr);
 }
 
-void cli_progress_start_bytes(unsigned long long total, const char *label)
+static void start(size_t total, const char *label, int bytes)
 {
     P.on = 0;
-    if (cli_quiet || !isatty(STDERR_FILENO)) return;
-    cli_progress_start(1, label);
-    P.bytes = 1;
-    P.total = (size_t)total;
-    P.done = 0;
-}
-
-void cli_progress_start(size_t total, const char *label)
-{
-    P.on = 0;
-    P.bytes = 0;
-    if (total == 0 || cli_quiet || !isatty(STDERR_FILENO)) return;
+    P.bytes = bytes;
+    if ((total == 0 && !bytes) || cli_quiet || !isatty(STDERR_FILENO)) return;
     const char *nc = getenv("NO_COLOR");
     P.colour = !(nc && *nc);
     P.total = total;
@@ -118,6 +108,11 @@ void cli_progress_start(size_t total, const char *label)
     P.on = 1;
     draw();
 }
+
+void cli_progress_start_bytes(unsigned long long total, const char *label) { start((size_t)total, label, 1); }
+
+void cli_progress_start(size_t total, const char *label) { start(total, label, 0); }
+
 
 void cli_progress_update(size_t done)
 {
