@@ -191,7 +191,8 @@ __attribute__((target(LX_AVX2_LINE))) static inline int convert2(const char *q, 
                                           10, 11, 12, 13, 14, 15);
     __m256i x = _mm256_inserti128_si256(_mm256_castsi128_si256(_mm_loadu_si128((const __m128i *)(const void *)(q + s0))),
                                         _mm_loadu_si128((const __m128i *)(const void *)(q + s1)), 1);
-    if (real < 2) x = _mm256_blend_epi32(x, _mm256_set1_epi8('0'), real < 1 ? 0xFF : 0xF0);
+    if (real < 1) x = _mm256_set1_epi8('0');
+    else if (real < 2) x = _mm256_blend_epi32(x, _mm256_set1_epi8('0'), 0xF0);
     __m256i Lv = _mm256_inserti128_si256(_mm256_castsi128_si256(_mm_set1_epi8((char)L0)), _mm_set1_epi8((char)L1), 1);
     __m256i valid = _mm256_cmpgt_epi8(Lv, iota);
     __m256i d = _mm256_sub_epi8(x, _mm256_set1_epi8('0'));
