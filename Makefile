@@ -16,10 +16,13 @@ ALL_CFLAGS = $(WARN) $(CFLAGS) -fPIC -fvisibility=hidden
 EXR_PC = $(shell pkg-config --silence-errors --libs OpenEXR)
 EXR_CFLAGS = $(or $(shell pkg-config --silence-errors --cflags-only-I OpenEXR),-I/usr/include/OpenEXR)
 EXR_LIB = $(or $(filter -lOpenEXRCore%,$(EXR_PC)),-lOpenEXRCore)
-ALL_CPPFLAGS = $(CPPFLAGS) -D_POSIX_C_SOURCE=200809L -Isrc -I$(BUILD)/gen $(EXR_CFLAGS) \
+# cairo draws the plots (PNG through its own writer, text in DejaVu Sans through fontconfig)
+CAIRO_CFLAGS := $(or $(shell pkg-config --silence-errors --cflags cairo),-I/usr/include/cairo)
+CAIRO_LIB := $(or $(shell pkg-config --silence-errors --libs cairo),-lcairo)
+ALL_CPPFLAGS = $(CPPFLAGS) -D_POSIX_C_SOURCE=200809L -Isrc -I$(BUILD)/gen $(EXR_CFLAGS) $(CAIRO_CFLAGS) \
   -DLX_OPENCL=$(LX_OPENCL) -DCL_TARGET_OPENCL_VERSION=120
-LIBS = -lpng16 $(EXR_LIB) -lm -lpthread
-PKGS := libopenexr-dev libpng-dev libcmocka-dev pkg-config
+LIBS = $(CAIRO_LIB) $(EXR_LIB) -lm -lpthread
+PKGS := libopenexr-dev libcairo2-dev fonts-dejavu-core libcmocka-dev pkg-config
 ifeq ($(LX_OPENCL),1)
 LIBS += -lOpenCL
 PKGS += pocl-opencl-icd ocl-icd-opencl-dev opencl-headers

@@ -90,9 +90,9 @@ LX_API const char *lx_version(void);
  *   2. core      Backends, SIMD paths and OpenCL devices
  *   3. tables    Spectra as views; embedded tables: weighting functions, illuminants, test colour samples
  *   4. spectral  Spectra: reading, integration, colorimetry
- *   5. spectral  Correlated colour temperature
+ *   5. spectral  Correlated colour temperature; LED binning
  *   6. spectral  Batches: many spectra on one grid, CSV files end to end
- *   7. spectral  Photobiology: alpha-opic and mesopic quantities, efficacy of a file
+ *   7. spectral  Photobiology: alpha-opic and mesopic quantities, PAR, IEC 62471 hazards, efficacy of a file
  *   8. colour    Colour rendering: CIE 13.3 CRI, CIE 224 / TM-30
  *   9. lighting  Units and quantities
  *  10. lighting  Sources, inverse problems and solid angles
@@ -100,7 +100,7 @@ LX_API const char *lx_version(void);
  *  12. radiance  Environment maps, OpenEXR and irradiance; daylight skies and the sun
  *  13. radiance  Spectral OpenEXR images
  *  14. scene     Scenes: files, the planner, evaluation and work counters
- *  15. plot      Plots (PNG, written atomically)
+ *  15. plot      Plots (PNG with cairo, written atomically)
  */
 
 /* ============================================================================================ */
@@ -115,7 +115,10 @@ typedef enum lx_status {
     LX_ENOMEM = 4,       /* out of memory */
     LX_ERANGE = 5,       /* the quantity is undefined for this input (e.g. CCT far off the locus) */
     LX_EUNSUPPORTED = 6, /* not supported by this build or for this input */
-    LX_EDEVICE = 7       /* an OpenCL runtime or device error; the message names the call and code */
+    LX_EDEVICE = 7,      /* an OpenCL runtime or device error; the message names the call and code */
+    LX_EWRITE = 8        /* writing an output failed part-way (disk full, I/O error, a closed stream):
+                          * the message names the file and the system's reason; nothing is left
+                          * half-written (a path that cannot be created at all is LX_EIO) */
 } lx_status;
 
 /** Static text for a status code ("invalid argument", ...; "unknown status" for another value).
@@ -309,6 +312,13 @@ typedef enum lx_function {
     LX_FN_VPRIME,                                    /* CIE 1951 scotopic V'(lambda), 380-780 nm */
     LX_FN_ALPHA_SC, LX_FN_ALPHA_MC, LX_FN_ALPHA_LC,  /* CIE S 026 alpha-opic action spectra, */
     LX_FN_ALPHA_RH, LX_FN_ALPHA_MEL,                 /* 380-780 nm at 1 nm, peak 1 */
+    LX_FN_PHOTON_PAR,   /* photons per joule in umol/J (lambda / (h c N_A)), 400-700 nm (ANSI/ASABE S640) */
+    LX_FN_PHOTON_EPAR,  /* the same over 400-750 nm (extended PAR) */
+    LX_FN_YPF_MCCREE,   /* umol/J times McCree's 1972 relative quantum efficiency, 350-725 nm (1 nm) */
+    LX_FN_HAZARD_BLUE,  /* IEC 62471 blue-light hazard B(lambda), 300-700 nm */
+    LX_FN_HAZARD_THERMAL, /* IEC 62471 retinal thermal hazard R(lambda), 380-1400 nm */
+    LX_FN_HAZARD_ACTINIC, /* IEC 62471 actinic UV hazard S_UV(lambda), 200-400 nm */
+    LX_FN_UVA,          /* 1 over 315-400 nm (unweighted UV-A of IEC 62471) */
     LX_FN_COUNT
 } lx_function;
 
@@ -356,14 +366,64 @@ LX_API lx_status lx_tcs_get(lx_ctx *ctx, int index, lx_spd *out);
 /* 4. Spectra: reading, integration, colorimetry (src/spectral) */
 /* ============================================================================================ */
 
+/** One field of a file's own header as the instrument or its software wrote it (key and value
+ * trimmed; value "" when the line has none). An array struct of lx_spd_set (ABI policy: reserved
+ * is written as zero). */
+typedef struct lx_spd_field {
+    char *key;
+    char *value;
+    long line;
+    long long reserved[2]; /* zero: room for later fields */
+} lx_spd_field;
+
+/** A data row the reader left out (lx_spd_read_opts.skip_bad_rows): its line and why. An array
+ * struct of lx_spd_set (reserved written as zero). */
+typedef struct lx_spd_skipped {
+    long line;
+    char *why;
+    long long reserved[2]; /* zero: room for later fields */
+} lx_spd_skipped;
+
 /** Spectra read from one file. Owns every array and string it points to; made by lx_spd_read_file
- * or lx_spd_read_mem, freed with lx_spd_set_free. */
+ * or lx_spd_read_mem (and their _opts forms), freed with lx_spd_set_free. The fields after `line`
+ * describe what the reader found. */
 typedef struct lx_spd_set {
     char *file;    /* the path given to the reader ("-" for standard input) */
     size_t count;  /* number of spectra */
     lx_spd *spd;   /* count spectra */
     long *line;    /* for each spectrum, the line of the file it starts on (rows layout) or its header line */
+    const char *format;       /* the layout read: one of lx_spd_formats() (static storage) */
+    size_t nfields;           /* the instrument's own header fields, in file order */
+    lx_spd_field *fields;
+    const char *unit;         /* the values' unit when the file states it or its format fixes it, after
+                               * conversion ("W/m2/nm", "W/nm", "W/sr/m2/nm", "W/sr/nm"); NULL: not known */
+    double unit_scale;        /* the factor the reader applied to the file's values to reach unit (1e-3 for
+                               * mW/m2/nm, 0.01 for uW/cm2/nm); 1 when unit is NULL */
+    const char *unit_source;  /* what the unit was taken from ("UPRtek export: mW/m2/nm"; static storage) */
+    double wavelength_scale;  /* the factor applied to the file's wavelengths to reach nm (1000 for
+                               * micrometres, 0.1 for angstrom), else 1 */
+    size_t nskipped;          /* rows left out with skip_bad_rows */
+    lx_spd_skipped *skipped;
 } lx_spd_set;
+
+/** Options of lx_spd_read_file_opts / lx_spd_read_mem_opts (zero-initialise for the defaults of
+ * lx_spd_read_file; ABI policy: reserved stays zero). */
+typedef struct lx_spd_read_opts {
+    const char *format;          /* NULL or "auto": detected from the content; else a name of lx_spd_formats() */
+    long skip_lines;             /* physical lines to ignore at the start (messages still count them) */
+    const char *columns;         /* "WL,VALUE[,VALUE...]": header names or 1-based numbers of the columns
+                                  * layout's wavelength and value columns; NULL: every column */
+    const char *wavelength_unit; /* "nm", "um" (also "µm") or "A" (also "Å"); NULL: from the wavelength
+                                  * column's header, else micrometres when every wavelength is below 10 */
+    int skip_bad_rows;           /* 1: a malformed data row is left out and recorded in set->skipped
+                                  * instead of failing the file (at least 2 good rows must remain) */
+    long long reserved[4];       /* zero: room for later options */
+} lx_spd_read_opts;
+
+/** The layouts lx_spd_read_file reads, NULL-terminated (static storage): "columns", "rows",
+ * "cgats", "oceanview" (OceanView and SpectraSuite), "sekonic", "uprtek" (UPRtek and LI-COR
+ * LI-180), "tm27" (IES TM-27 XML), "avantes" (AvaSoft), "spectrawiz" (StellarNet). Thread-safe. */
+LX_API const char *const *lx_spd_formats(void);
 
 /** Reads spectra from a text file ("-" is standard input): columns (wavelength in nm, value...) or
  * rows (a header of wavelengths, one spectrum per row), separators , ; tab or spaces, '#' comments,
@@ -378,12 +438,50 @@ LX_API lx_status lx_spd_read_file(lx_ctx *ctx, const char *path, lx_spd_set **ou
 LX_API lx_status lx_spd_read_mem(lx_ctx *ctx, const char *name, const char *text, size_t len,
                                  lx_spd_set **out);
 
-/** The same for an open stream (a pipe; not closed) whose first prefix_len bytes at prefix the
- * caller already read from it (prefix may be NULL when none): the rest is read as
+/** lx_spd_read_file and lx_spd_read_mem with options (opts may be NULL: the defaults). Besides the
+ * layouts of lx_spd_read_file they read the exports of spectrometer software (lx_spd_formats,
+ * recognised by content, never by file name), keep the file's header fields in set->fields,
+ * convert wavelengths to nm and, where the format fixes the values' unit, the values to W-based
+ * units (set->unit). Logs at LX_LOG_INFO how the units were found and at LX_LOG_WARN a spectrum
+ * with no overlap with 360-830 nm. Errors: as lx_spd_read_file; LX_EINVAL for a bad option (an
+ * unknown format or wavelength unit, a column --columns cannot find, negative skip_lines,
+ * non-zero reserved). */
+LX_API lx_status lx_spd_read_file_opts(lx_ctx *ctx, const char *path, const lx_spd_read_opts *opts,
+                                       lx_spd_set **out);
+LX_API lx_status lx_spd_read_mem_opts(lx_ctx *ctx, const char *name, const char *text, size_t len,
+                                      const lx_spd_read_opts *opts, lx_spd_set **out);
+
+/** The value of header field `key` of a set (exact match, the first one), or NULL (also for a NULL
+ * set or key). The string lives as long as the set. Thread-safe. */
+LX_API const char *lx_spd_set_field(const lx_spd_set *set, const char *key);
+
+/** The results an instrument wrote into its export beside the spectrum (Sekonic, UPRtek, LI-COR),
+ * as its firmware computed them; NaN where the file has no such field. A result struct (ABI
+ * policy: reserved is written as zero). */
+typedef struct lx_vendor_results {
+    double cct_K, duv;
+    double illuminance_lx;      /* Sekonic "Illuminance [lx]", UPRtek / LI-COR "LUX" */
+    double X, Y, Z, x, y, u_prime, v_prime;
+    double cri_ra, cri_r[15];   /* CIE 13.3 Ra, R1..R15 */
+    double tm30_rf, tm30_rg;
+    double ppfd_umol_m2_s;      /* photosynthetic photon flux density */
+    double irradiance_W_m2;     /* UPRtek / LI-COR "IRR" */
+    double peak_nm;             /* peak wavelength */
+    int count;                  /* how many of the fields above the file holds */
+    long long reserved[4];      /* zero: room for later results */
+} lx_vendor_results;
+
+/** The instrument's own results from set->fields (by the names each format gives them) into *out;
+ * out->count is 0 for formats that carry none. Errors: LX_EINVAL (NULL set or out). */
+LX_API lx_status lx_spd_set_vendor(lx_ctx *ctx, const lx_spd_set *set, lx_vendor_results *out);
+
+/** lx_spd_read_file_opts for an open stream (a pipe; not closed) whose first prefix_len bytes at
+ * prefix the caller already read from it (prefix may be NULL when none): the rest is read as
  * lx_spd_read_file reads "-", under the spectrum size limit (the prefix counted), binary data
- * refused; name is used in messages and as set->file. Errors: those of lx_spd_read_file. */
+ * refused; name is used in messages and as set->file; opts may be NULL. Errors: those of
+ * lx_spd_read_file_opts. */
 LX_API lx_status lx_spd_read_stream(lx_ctx *ctx, const char *name, FILE *in, const char *prefix, size_t prefix_len,
-                                    lx_spd_set **out);
+                                    const lx_spd_read_opts *opts, lx_spd_set **out);
 
 /** Frees a set. Accepts NULL. */
 LX_API void lx_spd_set_free(lx_spd_set *set);
@@ -461,7 +559,7 @@ LX_API lx_status lx_colorimetry_from_integrals(lx_ctx *ctx, lx_observer observer
 LX_API lx_status lx_colorimetry_check(lx_ctx *ctx, const lx_colorimetry *r, double max_abs);
 
 /* ============================================================================================ */
-/* 5. Correlated colour temperature (src/spectral) */
+/* 5. Correlated colour temperature; LED binning (src/spectral) */
 /* ============================================================================================ */
 
 /** CCT (K) and Duv from CIE 1960 (u, v), solved exactly on the Planckian locus computed with the
@@ -490,6 +588,28 @@ LX_API lx_status lx_cct_from_uv_batch(lx_ctx *ctx, lx_observer observer, size_t 
 /** CIE 1960 u, v (either may be NULL) of the Planckian radiator at T_K with the observer's CMFs.
  * Errors: LX_EINVAL (an unknown observer, T_K not positive and finite). */
 LX_API lx_status lx_planck_uv(lx_ctx *ctx, lx_observer observer, double T_K, double *u, double *v);
+
+/* ---- LED binning: ANSI C78.377-2017 and MacAdam steps ---- */
+
+/** Where a white light's chromaticity falls (CIE 1931 2 deg). A result struct (ABI policy: reserved
+ * is written as zero). */
+typedef struct lx_binning {
+    int ansi_K;             /* nominal CCT (2200 ... 6500 K) of the ANSI C78.377-2017 category holding the
+                             * point (|CCT - target| <= CCT tolerance and |Duv - target Duv| <= 0.006); 0: none */
+    double ansi_duv_offset; /* Duv minus that category's target Duv (NaN when none) */
+    int flex_K;             /* the flexible-CCT rule of C78.377 (2700-6500 K in 100 K steps, targets and
+                             * tolerances from its formulas): the nearest nominal CCT holding the point; 0: none */
+    double flex_duv_offset; /* Duv minus the target Duv of flex_K (NaN when none) */
+    double sdcm;            /* MacAdam steps (standard deviations of colour matching) to the nearest
+                             * IEC 60081 colour centre (NaN for a NaN chromaticity) */
+    int sdcm_centre_K;      /* that centre: 6500, 5000, 4000, 3500, 3000 or 2700 (IEC 60081 F6500 ... F2700) */
+    long long reserved[4];  /* zero: room for later results */
+} lx_binning;
+
+/** Bins one chromaticity: x, y (CIE 1931) with its CCT and Duv (lx_cct_from_xy, 2 deg; NaN CCT or
+ * Duv: no ANSI category) into *out. Tables: src/data/ansi_c78377_categories.csv and
+ * iec60081_sdcm_centres.csv. Errors: LX_EINVAL (NULL out). */
+LX_API lx_status lx_binning_compute(lx_ctx *ctx, double x, double y, double cct_K, double duv, lx_binning *out);
 
 /* ============================================================================================ */
 /* 6. Batches: many spectra on one grid, CSV files end to end (src/spectral) */
@@ -635,8 +755,16 @@ LX_API lx_status lx_batch_resample(lx_ctx *ctx, size_t n_spectra, const double *
 LX_API lx_status lx_batch_colorimetry(lx_ctx *ctx, const lx_batch *batch, lx_observer observer,
                                       const lx_batch_opts *opts, lx_colorimetry *out);
 
+/** Bins every spectrum of a batch (lx_binning_compute, section 5) into out (n_spectra entries):
+ * X, Y, Z by lx_batch_integrate (cie15 rule), CCT and Duv from the cubic Hermite interpolant of the
+ * Planckian locus table that lx_cct_from_uv starts from, without its exact solve (within 0.02 K and
+ * 1e-8 in Duv of it over 1500-10000 K and Duv -0.02..0.02; tests/test_binning.c). A spectrum whose
+ * CCT cannot be found gets ansi_K = flex_K = 0. opts may be NULL. Errors: LX_EINVAL (NULL batch or
+ * out, a batch grid lx_batch_integrate refuses), those of lx_batch_integrate. */
+LX_API lx_status lx_binning_batch(lx_ctx *ctx, const lx_batch *batch, const lx_batch_opts *opts, lx_binning *out);
+
 /* ============================================================================================ */
-/* 7. Photobiology: alpha-opic and mesopic quantities, efficacy of a file (src/spectral) */
+/* 7. Photobiology: alpha-opic and mesopic quantities, PAR, IEC 62471 hazards, efficacy of a file (src/spectral) */
 /* ============================================================================================ */
 
 /** The five CIE S 026 photoreceptors, in the order of every alpha-opic array. */
@@ -685,6 +813,103 @@ LX_API lx_status lx_alphaopic_batch(lx_ctx *ctx, const lx_batch *batch, const lx
  * Errors: LX_EINVAL (negative or non-finite input). */
 LX_API lx_status lx_mesopic_luminance(lx_ctx *ctx, double photopic_cd_m2, double scotopic_cd_m2,
                                       double *mesopic_cd_m2, double *m_out);
+
+/* ---- plant lighting: PAR (ANSI/ASABE S640) ---- */
+
+/** Photosynthetically active radiation of one spectrum. Units follow the spectrum: W/m2/nm gives
+ * umol s-1 m-2 (PPFD), W/nm umol s-1 (PPF), W/sr/m2/nm umol s-1 sr-1 m-2; relative values the same
+ * arithmetic. A quantity whose band the spectrum covers less than LX_COVERAGE_MIN of (weighted,
+ * see lx_hazard) is NaN ("not covered"). A result struct (ABI policy: reserved written as zero). */
+typedef struct lx_par {
+    double ppfd;        /* photon flux 400-700 nm (ANSI/ASABE S640 PPFD / PPF) */
+    double epar;        /* photon flux 400-750 nm (extended PAR, ePAR) */
+    double ypf;         /* yield photon flux: photons weighted by McCree's (1972) relative quantum
+                         * efficiency of field-grown plants, 350-725 nm */
+    double photon_efficacy_umol_J; /* ppfd / radiant integral of the whole spectrum (umol per J of radiant
+                         * energy; per electrical joule only if the radiant power is the input power) */
+    long long reserved[4]; /* zero: room for later results */
+} lx_par;
+
+/** Below this fraction of a weighting function's integral inside the spectrum's wavelength range
+ * a PAR or hazard quantity is "not covered" (NaN), never 0. */
+#define LX_COVERAGE_MIN 0.95
+
+/** PAR of one spectrum with the integration method of lx_spd_integrate into *out. Errors:
+ * LX_EINVAL (an invalid view or method, NULL out). */
+LX_API lx_status lx_par_compute(lx_ctx *ctx, const lx_spd *spd, lx_method method, lx_par *out);
+
+/** The same for a batch (cie15 rule on the batch grid; one lx_batch_integrate of 3 functions) into
+ * out (n_spectra entries). opts may be NULL. Errors: LX_EINVAL (NULL batch or out, fewer than 2
+ * samples), those of lx_batch_integrate. */
+LX_API lx_status lx_par_batch(lx_ctx *ctx, const lx_batch *batch, const lx_batch_opts *opts, lx_par *out);
+
+/** Daily light integral in mol m-2 d-1 of a PPFD (umol s-1 m-2) held for photoperiod_h hours:
+ * ppfd * 3600 * h / 1e6. NaN for a negative or non-finite photoperiod. Thread-safe. */
+LX_API double lx_par_dli(double ppfd_umol_m2_s, double photoperiod_h);
+
+/* ---- photobiological safety: IEC 62471:2006 / CIE S 009:2002 ---- */
+
+/** The weighted quantities of IEC 62471, in the order of lx_hazard arrays. */
+typedef enum lx_hazard_kind {
+    LX_HZ_BLUE = 0,    /* blue-light hazard: integral S B(lambda), 300-700 nm (L_B or E_B) */
+    LX_HZ_THERMAL = 1, /* retinal thermal: integral S R(lambda), 380-1400 nm (L_R) */
+    LX_HZ_ACTINIC = 2, /* actinic UV, skin and eye: integral S S_UV(lambda), 200-400 nm (E_S) */
+    LX_HZ_UVA = 3,     /* near UV, eye: integral S over 315-400 nm unweighted (E_UVA) */
+    LX_HZ_COUNT = 4
+} lx_hazard_kind;
+
+/** IEC 62471 weighted quantities of one spectrum. Units follow the spectrum (W/sr/m2/nm: radiance
+ * L in W m-2 sr-1; W/m2/nm: irradiance E in W m-2). coverage[k] is the fraction of the weighting
+ * function's integral over its band that lies inside the spectrum's wavelength range; value[k]
+ * is NaN ("not covered") when coverage[k] < LX_COVERAGE_MIN. A result struct (ABI policy). */
+typedef struct lx_hazard {
+    double value[LX_HZ_COUNT];
+    double coverage[LX_HZ_COUNT];
+    long long reserved[4]; /* zero: room for later results */
+} lx_hazard;
+
+/** IEC 62471 weighted quantities of one spectrum (integration method of lx_spd_integrate) into
+ * *out. Errors: LX_EINVAL (an invalid view or method, NULL out). */
+LX_API lx_status lx_hazard_compute(lx_ctx *ctx, const lx_spd *spd, lx_method method, lx_hazard *out);
+
+/** The same for a batch (cie15 rule; one lx_batch_integrate of 4 functions) into out (n_spectra
+ * entries). opts may be NULL. Errors: as lx_par_batch. */
+LX_API lx_status lx_hazard_batch(lx_ctx *ctx, const lx_batch *batch, const lx_batch_opts *opts, lx_hazard *out);
+
+/** IEC 62471 risk groups. */
+typedef enum lx_risk_group {
+    LX_RISK_NONE = -1,  /* not evaluated (not covered, not applicable to the geometry) */
+    LX_RISK_EXEMPT = 0,
+    LX_RISK_1 = 1,      /* low risk */
+    LX_RISK_2 = 2,      /* moderate risk */
+    LX_RISK_3 = 3       /* high risk */
+} lx_risk_group;
+
+/** The risk group of each criterion and the worst of them (group: LX_RISK_NONE when none could be
+ * evaluated; a criterion that is not covered could raise it). A result struct (ABI policy). */
+typedef struct lx_hazard_risk {
+    lx_risk_group group;
+    lx_risk_group criterion[LX_HZ_COUNT];
+    long long reserved[4]; /* zero: room for later results */
+} lx_hazard_risk;
+
+/** Risk groups from the emission limits of IEC 62471:2006 Table 6.1 (continuous-wave lamps;
+ * src/data/iec62471_limits.csv) into *out. radiance 1: h holds radiances (W/sr/m2/nm input): L_B,
+ * and L_R when alpha_rad > 0 (the source's angular subtense, clamped to 0.0017-0.1 rad).
+ * radiance 0: irradiances (W/m2/nm): E_S, E_UVA and the small-source blue-light E_B (for sources
+ * subtending less than 0.011 rad). Errors: LX_EINVAL (NULL h or out). */
+LX_API lx_status lx_hazard_risk_group(lx_ctx *ctx, const lx_hazard *h, int radiance, double alpha_rad,
+                                      lx_hazard_risk *out);
+
+/** "exempt", "RG1", "RG2", "RG3", or "" for LX_RISK_NONE (static storage). Thread-safe. */
+LX_API const char *lx_risk_group_name(lx_risk_group g);
+
+/** PAR (par), IEC 62471 quantities (hz) and LED binning (bin, as lx_binning_batch) of every spectrum
+ * of a batch in one pass over its values: one lx_batch_integrate of all the weighting functions
+ * asked for, then the derived values on opts->threads threads. Each output (n_spectra entries)
+ * may be NULL, not all three. opts may be NULL. Errors: as lx_par_batch. */
+LX_API lx_status lx_lab_batch(lx_ctx *ctx, const lx_batch *batch, const lx_batch_opts *opts, lx_par *par,
+                              lx_hazard *hz, lx_binning *bin);
 
 /** The luminous efficacy of radiation (lm/W, 2 deg observer, auto method) of the single
  * spectrum in a file read with lx_spd_read_file (efficacy.c). Errors: those of lx_spd_read_file;
@@ -821,7 +1046,8 @@ LX_API lx_status lx_radiometric_convert(lx_ctx *ctx, double value_si, lx_quantit
 /* ============================================================================================ */
 
 /* Sources (sources.c). Distances in m, angles in rad, luminance in cd/m2. Errors of every function
- * here: LX_EINVAL for a distance or size that is zero, negative or not finite (never infinity), a
+ * here: LX_EINVAL for a distance or size that is zero, negative or not finite (never infinity;
+ * except the height of a receiver over a disk or rectangle, where 0 is the coplanar limit), a
  * flux, intensity or luminance that is negative or not finite, a NULL output; LX_ERANGE when the
  * result overflows. Receivers facing away get 0 (not an error). */
 
@@ -843,6 +1069,13 @@ LX_API lx_status lx_warn_intensity(lx_ctx *ctx, double flux_lm, double exponent,
  * Thread-safe. */
 LX_API double lx_warn_lobe(double exponent, double angle_rad);
 
+/** The flux of a Warn spotlight (flux F, exponent S >= 0) within the cone of half-angle a about
+ * its axis (0 to pi): F (1 - cos^(S+1) a) for a < pi/2, F beyond; *fraction the same over F.
+ * Either output may be NULL (not both). Accurate for small a and large S (expm1, log1p). Errors:
+ * LX_EINVAL (a half-angle outside 0 to pi, a negative exponent or flux, both outputs NULL). */
+LX_API lx_status lx_warn_cone_flux(lx_ctx *ctx, double flux_lm, double exponent, double half_angle_rad,
+                                   double *cone_flux_lm, double *fraction);
+
 /** Warn exponent whose full beam angle (where I = I_peak / 2) is beam_rad, and back. Errors:
  * LX_EINVAL (a beam angle outside (0, pi), an exponent that is not positive). */
 LX_API lx_status lx_warn_exponent_from_beam(lx_ctx *ctx, double beam_rad, double *exponent);
@@ -850,9 +1083,13 @@ LX_API lx_status lx_warn_beam_from_exponent(lx_ctx *ctx, double exponent, double
 
 /** Which model an extended source is evaluated with. */
 typedef enum lx_model {
-    LX_MODEL_AUTO = 0,  /* exact when distance < 5 x the source's largest dimension, else point */
+    LX_MODEL_AUTO = 0,  /* disk, rect: the closed form (exact whenever one exists); grids and scenes:
+                         * the point model where its estimated error meets the tolerance, else the
+                         * luminous area integrated (README "Accuracy by default") */
     LX_MODEL_POINT = 1, /* point source at the centre, I(theta) = L A cos(theta) */
-    LX_MODEL_EXACT = 2  /* closed-form configuration factor, E = pi L F */
+    LX_MODEL_EXACT = 2, /* closed-form configuration factor, E = pi L F */
+    LX_MODEL_AREA = 3   /* grids: every pair integrated over the luminous opening (to nearfield_tol);
+                         * disk, rect: the same as EXACT */
 } lx_model;
 
 /** The illuminance of an extended Lambertian source on a parallel receiver. */
@@ -865,16 +1102,19 @@ typedef struct lx_source_result {
                                   * adaptive quadrature: its estimate) */
     double distance_m;           /* centre of the source to the receiver */
     double largest_dimension_m;  /* disk: diameter; rectangle: diagonal */
-    int near_field;              /* 1 when distance_m < 5 x largest_dimension_m */
-    lx_model model;              /* LX_MODEL_POINT or LX_MODEL_EXACT, never AUTO */
+    int near_field;              /* 1 when the point model errs by more than 1e-4 relative (the grids'
+                                  * default near-field tolerance), or is undefined */
+    lx_model model;              /* LX_MODEL_POINT or LX_MODEL_EXACT (what AUTO and AREA give), never AUTO */
     long long reserved[4];       /* zero: room for later results (ABI policy) */
 } lx_source_result;
 
 /** Lambertian disk of luminance L and radius R; receiver parallel to it at height h, offset r
  * from the axis. Exact: configuration factor of a parallel differential element to a disk,
  * F = (1/2)[1 - (h^2 + r^2 - R^2) / sqrt((h^2 + r^2 + R^2)^2 - 4 r^2 R^2)], rewritten so no
- * subtraction cancels (see sources.c). Point: E = L pi R^2 h^2 / (h^2 + r^2)^2. Errors: as above,
- * and LX_EINVAL for an unknown model or an offset that is not finite. */
+ * subtraction cancels (see sources.c). Point: E = L pi R^2 h^2 / (h^2 + r^2)^2. AUTO reports the
+ * exact value (the point model is beside it). h = 0 is the coplanar limit h -> 0+: pi L on the
+ * disk, pi L / 2 on its rim, 0 outside (the point model is then 0, NaN at the centre). Errors: as
+ * above, and LX_EINVAL for an unknown model or an offset that is not finite. */
 LX_API lx_status lx_disk_illuminance(lx_ctx *ctx, double luminance_cd_m2, double radius_m,
                                      double height_m, double offset_m, lx_model model,
                                      lx_source_result *out);
@@ -882,8 +1122,9 @@ LX_API lx_status lx_disk_illuminance(lx_ctx *ctx, double luminance_cd_m2, double
 /** Lambertian rectangle width a (along x) x length b (along y) of luminance L; receiver parallel
  * at height h, its foot at (x, y) from the rectangle's centre (a corner is (a/2, b/2)). Exact: the
  * corner configuration factor (Howell's catalogue, case B-3) superposed over four corner
- * rectangles with signs. Point: E = L a b h^2 / (h^2 + x^2 + y^2)^2. Errors: as above, and
- * LX_EINVAL for an unknown model or x, y not finite. */
+ * rectangles with signs. Point: E = L a b h^2 / (h^2 + x^2 + y^2)^2. AUTO reports the exact value.
+ * h = 0 is the coplanar limit: pi L inside, pi L / 2 on an edge, pi L / 4 at a corner, 0 outside.
+ * Errors: as above, and LX_EINVAL for an unknown model or x, y not finite. */
 LX_API lx_status lx_rect_illuminance(lx_ctx *ctx, double luminance_cd_m2, double width_m,
                                      double length_m, double height_m, double x_m, double y_m,
                                      lx_model model, lx_source_result *out);
@@ -993,13 +1234,16 @@ typedef struct lx_luminaire {
     double ballast_lamp_factor;/* LM-63 <= 1995: applied; 2002: future use, ignored; 2019: NaN */
     int file_generation_type;  /* LM-63-2019 only (the field older versions call ballast-lamp factor), else 0 */
     double input_watts;
-    double width_m, length_m, height_m; /* luminous opening: width along C0-C180, length along
-                                * C90-C270 (negative IES values: circular, see lx_luminaire_size) */
+    double width_m, length_m, height_m; /* luminous opening as LM-63 and EULUMDAT define it: width
+                                * along the C90-C270 plane, length along C0-C180; negative width and
+                                * length (IES) mean a circle of that diameter (EULUMDAT width 0 is read so) */
     int tilt_include;          /* 1 when a TILT= table was given (INCLUDE or a file) */
     int tilt_geometry;         /* lamp-to-luminaire geometry 1, 2 or 3 */
     size_t n_tilt;
     double *tilt_deg, *tilt_factor;
     char *manufacturer, *catalog, *description; /* [MANUFAC], [LUMCAT], [LUMINAIRE] (or LDT lines); may be "" */
+    char *test, *testlab, *issuedate, *lamp; /* [TEST], [TESTLAB], [ISSUEDATE], [LAMP]; EULUMDAT: the
+                                * measurement report number and the date/user line; NULL when absent */
 } lx_luminaire;
 
 /** Reads an IES LM-63 file (1986, 1991, 1995, 2002, 2019) or EULUMDAT file ("-" is stdin),
@@ -1066,7 +1310,7 @@ typedef struct lx_lum_model {
     lx_lum_model_kind kind;
     double flux_lm;           /* > 0 */
     double exponent;          /* Warn S >= 0 */
-    double width_m, length_m; /* luminous opening (0: a point); width along C0 */
+    double width_m, length_m; /* luminous opening (0: a point); width along C90-C270, length along C0-C180 */
     double step_deg;          /* gamma step of the table (0: 1 deg for point/Lambert, finer for narrow spots) */
     const char *catalog;      /* [LUMCAT] text (NULL: a description of the model), copied */
     long long reserved[4];    /* zero: room for later options (ABI policy) */
@@ -1114,12 +1358,25 @@ typedef struct lx_plane {
 LX_API lx_status lx_plane_axis(lx_ctx *ctx, char axis, double level_m, double a0, double a1, double b0,
                                double b1, double spacing_m, size_t na, size_t nb, lx_plane *out);
 
+/** The same area as calculation cells, as EN 12464-1 and DIALux lay out a grid: with a spacing,
+ * ceil((A1 - A0) / S) cells along A (at least one; each (A1 - A0) / n <= S) and likewise along B,
+ * or na x nb cells; one point at the centre of each cell, so the outer points lie half a cell
+ * inside the area's edges. The plane's a0 .. b1 are the outer points' coordinates. */
+LX_API lx_status lx_plane_cells(lx_ctx *ctx, char axis, double level_m, double a0, double a1, double b0,
+                                double b1, double spacing_m, size_t na, size_t nb, lx_plane *out);
+
 /** Options of lx_grid_illuminance (zero-initialise for defaults; ABI policy: reserved stays zero).
  * The backend that did the work is lx_ctx_backend_used(ctx) afterwards. */
 typedef struct lx_grid_opts {
-    lx_model model;           /* LX_MODEL_POINT (default 0 = AUTO: where the point is closer than
-                               * 5 x the opening's largest dimension, integrate over the luminous
-                               * area to nearfield_tol; ctx counters nearfield_pairs/_subdivisions) */
+    lx_model model;           /* default 0 = AUTO: each pair of a luminaire with a luminous opening
+                               * and a point is probed (13 point evaluations over the opening estimate
+                               * the point model's error); the point model is kept where the summed
+                               * estimates at the point stay within nearfield_tol / 2 of its
+                               * illuminance, else the opening is integrated to nearfield_tol (and
+                               * where the probes cannot vouch: a beam cut-off or the receiver's
+                               * horizon across the opening, or closer than its size). POINT: every
+                               * luminaire a point; AREA: every pair integrated. ctx counters
+                               * nearfield_probes, nearfield_pairs, nearfield_subdivisions */
     lx_interp interp;         /* default bilinear */
     double maintenance_factor;/* 0 means 1 */
     lx_backend backend;       /* OpenCL runs LX_INTERP_TABLE only; AUTO (also LX_BACKEND) picks it
@@ -1127,8 +1384,9 @@ typedef struct lx_grid_opts {
     int threads;              /* CPU threads; 0 = every online core */
     int table_n;              /* LX_INTERP_TABLE: rows per hemisphere, 2 to 16384 (0: 1024) */
     int fp32;                 /* OpenCL: 1 computes in float (else double where the device has it) */
-    double nearfield_tol;     /* AUTO: relative change of the Richardson-extrapolated area sum at
-                               * which refinement stops (0: 1e-4; 1e-12 to 0.1) */
+    double nearfield_tol;     /* the relative tolerance of each point's illuminance (0: 1e-4; 1e-12
+                               * to 0.1): the point model's budget (AUTO) and the convergence of the
+                               * Richardson-extrapolated area sums */
     long long reserved[4];    /* zero: room for later options */
 } lx_grid_opts;
 
@@ -1238,6 +1496,10 @@ typedef struct lx_envmap {
     lx_envmap_units units;  /* RADIANCE or LUMINANCE (never AUTO once read) */
     double lum_per_unit;    /* cd/m2 per unit of Y: efficacy (RADIANCE) or whiteLuminance / 1 (LUMINANCE) */
     int layout;             /* lx_envmap_layout: LATLONG (0, what lx_envmap_create makes) or CUBE */
+    int irradiance;         /* 1: the values are irradiance E(n) per normal (W/m2 for RADIANCE
+                             * units; lum_per_unit x Y is then an illuminance in lx): the maps
+                             * lx_irradiance_map makes, kept through lx_exr_write / lx_exr_read
+                             * (string attribute luxcalcQuantity = "irradiance"); 0: radiance */
 } lx_envmap;
 
 /** Map layouts. A CUBE map is the OpenEXR cube layout: width N, height 6 N, six N x N faces stacked
@@ -1354,11 +1616,18 @@ LX_API lx_status lx_envmap_write_exr(lx_ctx *ctx, const char *path, const lx_env
 
 /* Irradiance from radiance (irradiance*.c): E(n) = integral L(omega) max(0, n . omega) d omega. */
 
-/** Irradiance methods (see README "radiance"). */
+/** Irradiance methods (see README "radiance"). FAST and BRUTE are exact for the piecewise-constant
+ * map (every pixel's integral of max(0, n . w) in closed form, the pixels the horizon of n crosses
+ * included); SH9 is an approximation. Zero (the options' default, kept for the ABI) is SH9; the CLI
+ * defaults to AUTO. */
 typedef enum lx_irr_method {
-    LX_IRR_SH9 = 0,   /* 9 spherical-harmonic coefficients, exact per-pixel basis integrals */
-    LX_IRR_BRUTE = 1, /* every input pixel for every output: sum L_p max(0, n . m_p) (OpenCL or CPU) */
-    LX_IRR_FAST = 2   /* the same sum as BRUTE, by per-row prefix sums: O(rows) per output */
+    LX_IRR_SH9 = 0,   /* 9 spherical-harmonic coefficients, exact per-pixel basis integrals; approximate:
+                       * rings around small bright sources (3/32 of their power) and can go negative */
+    LX_IRR_BRUTE = 1, /* exact, every input pixel for every output (OpenCL or CPU) */
+    LX_IRR_FAST = 2,  /* exact, the same integral as BRUTE: per-row prefix sums for the wholly lit
+                       * pixels, the crossed ones in closed form: O(rows + crossed pixels) per output */
+    LX_IRR_AUTO = 3   /* FAST, unless its estimated cost for the job is above 10 x SH9's (large
+                       * output maps): then SH9 (lx_ctx_irradiance_method says which ran) */
 } lx_irr_method;
 
 /** SH9 windows applied to bands l = 0, 1, 2. */
@@ -1377,6 +1646,19 @@ typedef struct lx_irr_opts {
     int threads;             /* CPU threads; 0 = every online core */
     long long reserved[4];   /* zero: room for later options */
 } lx_irr_opts;
+
+/** The irradiance method that ran in the last successful lx_irradiance_dirs or lx_irradiance_map on
+ * this context (LX_IRR_AUTO resolved to FAST or SH9; LX_IRR_AUTO before any), and in
+ * *fast_cost_ratio (may be NULL) AUTO's estimate of FAST's cost over SH9's for that job. NULL
+ * context: LX_IRR_AUTO and NaN. */
+LX_API lx_irr_method lx_ctx_irradiance_method(const lx_ctx *ctx, double *fast_cost_ratio);
+
+/** How concentrated a map's power is: of the integral of its luminance (Y) over the sphere,
+ * *fraction is carried by the brightest pixels whose solid angles add up to at most max_sr, and
+ * *pixels is how many they are (the basis of SH9's warning: its error reaches 3/32 of a small
+ * source's power). A map without light gives 0 and 0. */
+LX_API lx_status lx_envmap_concentration(lx_ctx *ctx, const lx_envmap *map, double max_sr, double *fraction,
+                                         size_t *pixels);
 
 /** Spherical-harmonic coefficients L_lm of a map (l <= 2, index l^2 + l + m, real orthonormal
  * basis of Ramamoorthi and Hanrahan 2001), per channel, in the map's unit. A value (ABI policy:
@@ -1397,17 +1679,19 @@ LX_API lx_status lx_sh9_project(lx_ctx *ctx, const lx_envmap *map, lx_sh9 *out);
 LX_API lx_status lx_sh9_irradiance(lx_ctx *ctx, const lx_sh9 *sh, lx_sh9_window window, const double n[3], double *out);
 
 /** Irradiance for n_dirs normals (3 doubles each) into out (n_dirs * map->channels doubles, the
- * caller's, in the map's unit times sr: W/m2 for RADIANCE maps). opts may be NULL (SH9). Errors:
- * LX_EINVAL (an invalid map, a non-finite pixel, a zero or non-finite normal, an unknown method),
- * LX_EUNSUPPORTED and LX_EDEVICE as for lx_batch_integrate (BRUTE with OPENCL asked). */
+ * caller's, in the map's unit times sr: W/m2 for RADIANCE maps). opts may be NULL (SH9, the zero
+ * value; the CLI passes LX_IRR_AUTO). The method that ran is lx_ctx_irradiance_method(ctx) after
+ * the call. Errors: LX_EINVAL (an invalid map, a non-finite pixel, a zero or non-finite normal, an
+ * unknown method), LX_EUNSUPPORTED and LX_EDEVICE as for lx_batch_integrate (BRUTE with OPENCL
+ * asked). */
 LX_API lx_status lx_irradiance_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const double *dirs,
                                     const lx_irr_opts *opts, double *out);
 
 /** Irradiance environment map: E at the pixel centre directions of a width x height map in the
  * input's layout (the input's size when both are 0; a cube input needs height = 6 width). *out is a
  * new map with the input's channels, weights and units, which the caller frees with lx_envmap_free
- * (NULL on failure). opts may be NULL (SH9). Errors: as lx_irradiance_dirs, and LX_EINVAL for a
- * size that does not fit the layout. */
+ * (NULL on failure). opts may be NULL (SH9, the zero value; the CLI passes LX_IRR_AUTO). Errors: as
+ * lx_irradiance_dirs, and LX_EINVAL for a size that does not fit the layout. */
 LX_API lx_status lx_irradiance_map(lx_ctx *ctx, const lx_envmap *map, int width, int height,
                                    const lx_irr_opts *opts, lx_envmap **out);
 
@@ -1596,7 +1880,10 @@ typedef struct lx_counters {
     unsigned long long environment_samples;    /* numerical sky samples (quadrature nodes, map pixels) */
     unsigned long long spectra_integrated;     /* spectrum integrations (colorimetry, alpha-opic: one each per source) */
     unsigned long long kernel_launches;        /* OpenCL batches run by scene evaluation (each >= 1 kernel launch) */
-    unsigned long long reserved[4];            /* zero: room for later counters (ABI policy) */
+    unsigned long long nearfield_probes;       /* pairs whose point-model error was estimated (13 point
+                                                * evaluations each: the near-field decision) */
+    unsigned long long closed_form_evaluations;/* disk and rectangle luminaires evaluated in closed form */
+    unsigned long long reserved[2];            /* zero: room for later counters (ABI policy) */
 } lx_counters;
 
 /** Copies the context's counters into *out (zeros for a NULL ctx; nothing for a NULL out). */
@@ -1647,7 +1934,9 @@ typedef struct lx_scene_luminaire {
     double exponent;          /* spot: Warn S */
     double luminance_cd_m2;   /* disk, rect */
     double radius_m;          /* disk */
-    double width_m, length_m; /* rect, and the luminous opening of a file luminaire (0: a point) */
+    double width_m, length_m; /* rect: width along local x (C0), length along local y; file: the
+                               * luminous opening as in lx_luminaire (width along C90-C270, length
+                               * along C0-C180; 0: a point) */
     double scale;             /* file: candela multiplier applied to the table (flux / table lumens),
                                * times the file's TILT factor at the tilt of aim from the nadir */
     char *lum_path;           /* file: the photometric file (resolved against the scene file) */
@@ -1755,6 +2044,24 @@ LX_API lx_status lx_scene_read_mem(lx_ctx *ctx, const char *name, const char *te
 /** Frees a scene. Accepts NULL. */
 LX_API void lx_scene_free(lx_scene *scene);
 
+/** Why a luminaire-receiver pair takes its path (lx_scene_plan.near_why). */
+typedef enum lx_near_why {
+    LX_NEAR_NONE = 0,    /* point model: the luminaire has no luminous area */
+    LX_NEAR_WITHIN,      /* point model: its estimated error fits the point's share of the tolerance */
+    LX_NEAR_ZERO,        /* point model: the receiver faces away from the whole opening (both give 0) */
+    LX_NEAR_OVER,        /* integrated: the point model's estimated error exceeds the tolerance */
+    LX_NEAR_UNSURE,      /* integrated: the probes cannot vouch (a beam cut-off or the receiver's horizon
+                          * across the opening, or the receiver closer than the opening's size) */
+    LX_NEAR_CLOSED,      /* a disk or rectangle in closed form (exact) */
+    LX_NEAR_NO_CLOSED,   /* integrated: a disk or rectangle without the receiver's cosine (no closed form) */
+    LX_NEAR_FORCED_ON,   /* integrated: near_field forced on in [effects] */
+    LX_NEAR_FORCED_OFF,  /* point model: near_field forced off in [effects] */
+    LX_NEAR_WHY_COUNT
+} lx_near_why;
+
+/** A short name for a decision ("point: within tolerance", ...; static storage; NULL for a bad value). */
+LX_API const char *lx_near_why_name(lx_near_why why);
+
 /** The planner's decision; made by lx_scene_plan_make, freed with lx_scene_plan_free (a struct only
  * the library allocates). */
 typedef struct lx_scene_plan {
@@ -1764,13 +2071,20 @@ typedef struct lx_scene_plan {
     size_t n_points;                  /* receiver points over all receivers */
     size_t n_pairs;                   /* luminaire x receiver-point pairs */
     size_t n_near;                    /* pairs that take the near-field path */
-    unsigned char *near;              /* n_lum x n_points (luminaire-major): 1 = near-field path; owned */
+    unsigned char *near;              /* n_lum x n_points (luminaire-major): 0 = point model, 1 = the
+                                       * luminous area integrated (patches), 2 = a disk or rectangle in
+                                       * closed form; owned */
     size_t n_normals;                 /* distinct receiver normals (sky evaluations) */
     lx_counters estimate;             /* the work the plan expects */
     lx_backend backend;               /* OPENCL when some grid work runs on a device, else CPU */
     unsigned char *device;            /* n_lum x n_rec: 1 = this IES luminaire's work on this grid (all
                                        * far field) runs as one lx_grid_illuminance OpenCL batch; owned */
     int device_required;              /* 1 when asked for explicitly: a device failure is then an error */
+    /* appended (ABI policy: a library-allocated struct grows at its end) */
+    double *near_err;                 /* n_lum x n_points: the point model's estimated error relative to
+                                       * the point's illuminance (NaN where it was not estimated); owned */
+    unsigned char *near_why;          /* n_lum x n_points: an lx_near_why; owned */
+    lx_counters planning;             /* the work the planner did itself (the near-field probes) */
 } lx_scene_plan;
 
 /** Plans a scene: which effects, and which pairs take the near-field path. backend: AUTO lets
@@ -1840,62 +2154,143 @@ LX_API lx_status lx_scene_glare_eval(lx_ctx *ctx, const lx_scene *scene, lx_scen
 LX_API void lx_scene_glare_free(lx_scene_glare *glare);
 
 /* ============================================================================================ */
-/* 15. Plots (PNG, written atomically) (src/plot) */
+/* 15. Plots (PNG with cairo, written atomically) (src/plot) */
 /* ============================================================================================ */
 
-/* PNG pictures of maps (png_plot.c). Both write atomically (temporary file + rename). */
+/* Every writer below draws with cairo (text in DejaVu Sans, through fontconfig) and writes an
+ * 8-bit RGB PNG atomically: a temporary file beside path, renamed into place only on success, so
+ * nothing is left at path on failure (a path that exists and is not a regular file, such as
+ * /dev/null, is written directly). Errors: LX_EINVAL (bad arguments), LX_EIO (path cannot be
+ * created: a missing directory), LX_EWRITE (writing failed part-way: a full disk; the message
+ * has the system's reason), LX_ENOMEM. Labels are placed where they overlap no other label.
+ * Thread-safe for distinct contexts. */
 
-/** A false-colour PNG of w x h values (row-major; NaN drawn grey) with a colour legend titled
- * legend_title, on a linear or log10 scale between vmin and vmax (NaN: the data's range). Small
- * maps are enlarged to at least 512 pixels wide. The palette runs dark violet - blue - cyan -
- * green - yellow - orange - red, the look of Radiance falsecolor. */
-LX_API lx_status lx_png_falsecolor(lx_ctx *ctx, const char *path, int w, int h, const double *values, double vmin,
-                                   double vmax, int log_scale, const char *legend_title);
+/** Colour scales of the false-colour plots. */
+typedef enum lx_plot_scale {
+    LX_PLOT_SCALE_AUTO = 0,  /* the plot's own choice (log for maps, by dynamic range for grids) */
+    LX_PLOT_SCALE_LOG = 1,   /* log10, ticks at decades */
+    LX_PLOT_SCALE_LINEAR = 2 /* linear, ticks at round 1-2-5 values */
+} lx_plot_scale;
+
+/** Options of lx_falsecolor_write_png (zero-initialise for defaults). */
+typedef struct lx_falsecolor_opts {
+    lx_plot_scale scale;   /* AUTO: log */
+    double lo, hi;         /* the colour range when hi > lo (log: lo <= 0 leaves the bottom
+                            * automatic); otherwise automatic: log from the decade at or below
+                            * the 1st percentile of the positive values (at most 6 decades below
+                            * the top, at least 2) to the decade at or above the largest; linear
+                            * from 0 (or a round value below a minimum under -5 % of the largest)
+                            * to the round value above the largest. Values below the range take
+                            * its lowest colour. */
+    const char *quantity;  /* the legend's quantity ("luminance"; NULL: none) */
+    const char *unit;      /* its unit ("cd/m²"; NULL: none) */
+    const char *title;     /* the heading (NULL: none); a line of min / median / max follows it */
+    long long reserved[4]; /* zero: room for later options (ABI policy) */
+} lx_falsecolor_opts;
+
+/** A false-colour PNG of w x h values (row-major, row 0 at the top; NaN drawn grey) in the look of
+ * Radiance falsecolor: the palette dark violet - blue - cyan - green - yellow - orange - red, a
+ * colour bar with decade (log) or round (linear) ticks and the unit. Maps narrower than 512
+ * pixels are enlarged by a whole factor (each value a block). */
+LX_API lx_status lx_falsecolor_write_png(lx_ctx *ctx, const char *path, int w, int h, const double *values,
+                                         const lx_falsecolor_opts *opts);
 
 /** Tone-mapped previews of n maps side by side (each panel 512 pixels wide, its own exposure:
  * median luminance to 0.18, Reinhard x/(1+x), sRGB), each labelled with labels[k] (may be NULL). */
-LX_API lx_status lx_png_preview(lx_ctx *ctx, const char *path, int n, const lx_envmap *const *maps,
-                                const char *const *labels);
+LX_API lx_status lx_envmap_preview_write_png(lx_ctx *ctx, const char *path, int n, const lx_envmap *const *maps,
+                                             const char *const *labels);
 
-/** One-page PNG report of one spectrum (report_png.c), written atomically (temporary file +
- * rename; nothing is left at path on failure): the SPD with the area under it in the colour of
- * each wavelength (approximate sRGB), the colour of the light as a normalised sRGB swatch, the
- * CIE xy diagram of the observer (spectral locus, Planckian locus with isotemperature ticks at
- * Duv +-0.02, the point), CIE 13.3 Ra and R1-R14 bars with values, the TM-30 colour vector
- * graphic, and x, y, CCT, Duv, Ra, R9, Rf, Rg and melanopic DER. A metric that is undefined for
- * the spectrum (lx_cri_compute or lx_tm30_compute refuse) is shown with its reason instead.
- * title: the heading (NULL: spd->name). 1100 x 800 pixels. Errors: those of lx_spd_check and
- * lx_spd_colorimetry, LX_EIO (path not writable), LX_ENOMEM. Thread-safe for distinct contexts. */
-LX_API lx_status lx_spd_report_png(lx_ctx *ctx, const lx_spd *spd, lx_observer observer, const char *title,
-                                   const char *path);
+/** The preview of an irradiance computation: the radiance map tone-mapped on the left, the
+ * irradiance map as illuminance (lum_per_unit x Y, lx) in false colour on the right (scale LOG or
+ * AUTO: decade ticks; LINEAR: round ticks), with its legend and its minimum, median and maximum;
+ * label (may be NULL) names the method. Both maps in the same layout (lat-long or cube). */
+LX_API lx_status lx_irradiance_write_png(lx_ctx *ctx, const char *path, const lx_envmap *radiance,
+                                         const lx_envmap *irradiance, const char *label, lx_plot_scale scale);
 
-/** Writes an sRGB preview PNG (XYZ -> linear sRGB, exposure from the median luminance, Reinhard
- * tone curve), enlarged to at least 256 pixels wide, atomically. */
-LX_API lx_status lx_xyz_png_write(lx_ctx *ctx, const char *path, const lx_xyz_image *img);
+/** Chromaticity diagrams of the spectrum report. */
+typedef enum lx_diagram { LX_DIAGRAM_XY = 0 /* CIE 1931 x, y */, LX_DIAGRAM_UV = 1 /* CIE 1976 u', v' */ } lx_diagram;
 
-/** Writes a false-colour PNG of the illuminance E (na x nb values of the plane, A fastest, as
- * lx_plane_points orders them): a colour legend in lux, iso-lux contour lines at round levels,
- * the positions of the m luminaires (projected on the plane, those inside its area) and axis
- * ticks in metres; title (may be NULL) on top. Written atomically (temporary file + rename). */
-LX_API lx_status lx_grid_write_png(lx_ctx *ctx, const char *path, const lx_plane *plane, const double *E,
-                                   const lx_placement *lums, size_t m, const char *title);
+/** Options of lx_spd_report_write_png (zero-initialise for defaults). */
+typedef struct lx_report_opts {
+    lx_observer observer;  /* of the colorimetry and the diagram (0: LX_OBSERVER_2) */
+    const char *unit;      /* what the values are, as `luxcalc spd --unit` takes them: "W/nm" (Y in
+                            * lm), "W/m2/nm" (lx), "W/sr/m2/nm" (cd/m²), "W/sr/nm" (cd), NULL or
+                            * "relative" (Y without a unit); LX_EINVAL for others */
+    lx_diagram diagram;    /* the chromaticity diagram */
+    const char *title;     /* the heading (NULL: spd->name) */
+    long long reserved[4]; /* zero: room for later options (ABI policy) */
+} lx_report_opts;
+
+/** One-page PNG report of one spectrum (1200 x 860 pixels): the SPD with its unit and the area
+ * under it in the colour of each wavelength (approximate sRGB); the headline numbers (absolute Y
+ * in lm, lx, cd/m² or cd per the unit, radiant power, x, y, u', v', CCT, Duv, Ra, R9, Rf, Rg,
+ * melanopic DER, efficacy); the colour of the light as a normalised sRGB swatch; the CIE 1931 xy
+ * or 1976 u'v' diagram (spectral locus, Planckian locus, isotemperature lines labelled where the
+ * labels collide with nothing, the point); CIE 13.3 Ra and R1-R14 bars with their values; the
+ * TM-30 colour vector graphic with its 16 hue bins. A metric that is undefined for the spectrum
+ * (lx_cri_compute or lx_tm30_compute refuse) is shown with its reason instead. Errors: those of
+ * lx_spd_check and lx_spd_colorimetry, and the writers' above. */
+LX_API lx_status lx_spd_report_write_png(lx_ctx *ctx, const lx_spd *spd, const lx_report_opts *opts,
+                                         const char *path);
+
+/** Writes an sRGB preview PNG of an XYZ image (XYZ -> linear sRGB, exposure from the median
+ * luminance, Reinhard tone curve), enlarged to at least 256 pixels wide. */
+LX_API lx_status lx_xyz_image_write_png(lx_ctx *ctx, const char *path, const lx_xyz_image *img);
+
+/** A luminaire marked on an isolux plot: where it is, where its nadir points, its name. */
+typedef struct lx_plot_mark {
+    double pos_m[3];
+    double aim[3];          /* any length > 0; (0, 0, 0): not drawn */
+    const char *name;       /* drawn beside the mark where it fits (NULL: none) */
+} lx_plot_mark;
+
+/** Backgrounds of isolux plots. */
+typedef enum lx_isolux_background {
+    LX_ISOLUX_FALSECOLOR = 0, /* false colour under dark contour lines */
+    LX_ISOLUX_WHITE = 1       /* white, contour lines in the colours of their levels */
+} lx_isolux_background;
+
+/** Options of lx_grid_write_png (zero-initialise for defaults). */
+typedef struct lx_isolux_opts {
+    lx_isolux_background background;
+    lx_plot_scale scale;          /* AUTO: log where E_max / E_min > 20, else linear */
+    const lx_plot_mark *marks;    /* the luminaires (marks outside the area are left out) */
+    size_t n_marks;
+    const char *source;           /* the file the light comes from; its base name goes in the title */
+    const char *surface;          /* the calculation surface's name ("desk"; NULL: none) */
+    const char *caption;          /* a line under the title (a scene's title; NULL: none) */
+    double area_m[4];             /* A0, A1, B0, B1 of the area drawn when A1 > A0 or B1 > B0 (the
+                                   * calculation area around cell-centre points); else the points' extent */
+    int imperial;                 /* 1: fc and ft instead of lx and m */
+    long long reserved[4];        /* zero: room for later options (ABI policy) */
+} lx_isolux_opts;
+
+/** An isolux plot of the illuminance E on a plane (na x nb values, A fastest, as lx_plane_points
+ * orders them), the way DIALux and AGi32 print a calculation surface: the plane in false colour
+ * (or white) under contour lines at round levels of a 1-2-5 series, each labelled in lx on its
+ * line; the luminaires' positions (projected along the plane's normal) with their aim; axes in
+ * metres with round ticks; a legend with round (or decade) ticks and the unit; the plane and the
+ * source file's base name in the title; and a statistics box: E_avg, E_min, E_max, U0 = E_min /
+ * E_avg and E_min / E_max (4 significant digits, U0 3 decimals). opts may be NULL. */
+LX_API lx_status lx_grid_write_png(lx_ctx *ctx, const char *path, const lx_plane *plane, const double *E_lx,
+                                   const lx_isolux_opts *opts);
 
 /** One point of an error-against-time plot: a method's time (s) and error (any unit > 0; 0 or
- * less is drawn on the bottom edge, marked "=0"), its label and series (marker shape and colour). */
+ * less is drawn on the bottom edge, marked "= 0"), its label and series (marker shape and colour). */
 typedef struct lx_plot_point {
     double time_s;
     double error;
-    const char *label;   /* drawn beside the marker (upper case; may be NULL) */
+    const char *label;   /* drawn beside the marker where it collides with nothing, else joined
+                          * to it by a leader line (may be NULL) */
     int series;          /* 0 .. n_series - 1 */
 } lx_plot_point;
 
 /** A log-log scatter plot as PNG: error (vertical, log10) against time (horizontal, log10), one
  * marker and label per point, a legend of the series names, axis titles and a title (all may be
- * NULL). Written atomically (temporary file + rename). LX_EINVAL for n = 0 or a point whose time
- * is not positive and finite. Thread-safe for distinct contexts. */
-LX_API lx_status lx_png_error_time(lx_ctx *ctx, const char *path, const char *title, const char *x_title,
-                                   const char *y_title, size_t n, const lx_plot_point *pts, int n_series,
-                                   const char *const *series_names);
+ * NULL). LX_EINVAL for n = 0 or a point whose time is not positive and finite. */
+LX_API lx_status lx_error_time_write_png(lx_ctx *ctx, const char *path, const char *title, const char *x_title,
+                                         const char *y_title, size_t n, const lx_plot_point *pts, int n_series,
+                                         const char *const *series_names);
 
 #ifdef __cplusplus
 }

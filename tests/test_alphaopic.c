@@ -1,6 +1,7 @@
 /* test_alphaopic.c - CIE S 026:2018 alpha-opic quantities: the D65 efficacies that define EDI,
  * the melanopic DER of illuminant A, closed forms for EDI/DER, and the batch path. */
 #include "lx_test.h"
+#include "line_spectrum.h"
 
 /* D65 melanopic ELR 1.3262 mW/lm (CIE S 026:2018 Table 2, K_mel,v^D65, the definition of EDI), and
  * the four others (0.8173, 1.4558, 1.6289, 1.4497 mW/lm), computed from the embedded D65 (5 nm)
@@ -94,11 +95,34 @@ static void test_batch(void **state)
     }
 }
 
+/* The line spectrum of tests/line_spectrum.h: the alpha-opic irradiances integrate it exactly
+ * (the same integration as the headline colorimetry). Reference: the five integrals of the spectrum
+ * times the CIE S 026 action spectra (linear between their 1 nm nodes, 380-780 nm, zero outside)
+ * computed in numpy 2.4.6 on the 0.01 nm grid of 380-780 nm that holds every breakpoint, each
+ * interval's product of two linear functions integrated in closed form: sc 0.786769274339645,
+ * mc 1.25529876869724, lc 1.35072180271254, rh 0.991206944522524, mel 0.79144855806746 W/m2 (per
+ * W/m2/nm input); moved by 0.3 nm: mel 0.791789112044904. (Resampled to 1 nm the lines between
+ * nodes would be lost: test_cri.c.) */
+static void test_line_spectrum(void **state)
+{
+    lx_ctx *ctx = *state;
+    static const double ref[5] = {0.786769274339645, 1.25529876869724, 1.35072180271254, 0.991206944522524, 0.79144855806746};
+    double lam[LINE_MAX_SAMPLES], val[LINE_MAX_SAMPLES];
+    lx_spd s;
+    line_spectrum(0, lam, val, &s);
+    lx_alphaopic a;
+    lx_assert_ok(ctx, lx_alphaopic_compute(ctx, &s, LX_METHOD_AUTO, &a));
+    for (int k = 0; k < 5; k++) lx_assert_near(a.irradiance[k], ref[k], 0, 1e-12);
+    line_spectrum(0.3, lam, val, &s);
+    lx_assert_ok(ctx, lx_alphaopic_compute(ctx, &s, LX_METHOD_AUTO, &a));
+    lx_assert_near(a.irradiance[LX_AO_MEL], 0.791789112044904, 0, 1e-12);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_d65_efficacy), cmocka_unit_test(test_illuminant_a),
-        cmocka_unit_test(test_flat), cmocka_unit_test(test_batch),
+        cmocka_unit_test(test_flat), cmocka_unit_test(test_batch), cmocka_unit_test(test_line_spectrum),
     };
     return cmocka_run_group_tests(tests, lx_test_ctx_setup, lx_test_ctx_teardown);
 }

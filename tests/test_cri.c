@@ -1,7 +1,9 @@
 /* test_cri.c - CIE 13.3-1995 colour rendering index: the CIE's published Ra of FL1-FL12,
- * colour-science 0.4.7 values, the identity Ra = 100 for a source equal to its reference, and
- * the refusals (far off the locus, beyond CIE daylight, truncated or empty spectra). */
+ * colour-science 0.4.7 values, the identity Ra = 100 for a source equal to its reference, a line
+ * spectrum integrated exactly against a 0.01 nm reference, and the refusals (far off the locus,
+ * beyond CIE daylight, truncated or empty spectra). */
 #include "lx_test.h"
+#include "line_spectrum.h"
 
 #include <string.h>
 
@@ -176,6 +178,54 @@ static void test_scale_and_step(void **state)
     lx_assert_near(c1.ra, c5.ra, 1e-3, 0);
 }
 
+/* A line spectrum (tests/line_spectrum.h: Hg lines of 0.2 nm on a flat continuum) integrated
+ * exactly, as the headline colorimetry does, not resampled to 1 nm (which weighted each sub-nm line
+ * by where it fell between the nodes). References: tests/reference/cri_fine_grid.py, the CIE 13.3
+ * procedure on a 0.01 nm grid written apart from luxcalc (numpy 2.4.6, scipy 1.17.1): CCT
+ * 8084.138657 K, Ra 45.833487, R9 -75.254241; the lines moved by +0.3 nm: CCT 8078.751497 K,
+ * Ra 45.889127, R9 -75.444279. */
+static void test_line_spectrum(void **state)
+{
+    lx_ctx *ctx = *state;
+    double lam[LINE_MAX_SAMPLES], val[LINE_MAX_SAMPLES], lam2[LINE_MAX_SAMPLES], val2[LINE_MAX_SAMPLES];
+    lx_spd s, sh;
+    line_spectrum(0, lam, val, &s);
+    line_spectrum(0.3, lam2, val2, &sh);
+    lx_cri c, d;
+    lx_assert_ok(ctx, lx_cri_compute(ctx, &s, &c));
+    lx_assert_ok(ctx, lx_cri_compute(ctx, &sh, &d));
+    print_message("Hg lines: CCT %.4f K Ra %.4f R9 %.4f; moved 0.3 nm: CCT %.4f K Ra %.4f R9 %.4f\n", c.cct_K, c.ra, c.r[8],
+                  d.cct_K, d.ra, d.r[8]);
+    lx_assert_near(c.cct_K, 8084.138657, 1e-3, 0);
+    lx_assert_near(d.cct_K, 8078.751497, 1e-3, 0);
+    lx_assert_near(c.ra, 45.833487, 1e-4, 0);
+    lx_assert_near(c.r[8], -75.254241, 1e-4, 0);
+    lx_assert_near(d.ra, 45.889127, 1e-4, 0);
+    lx_assert_near(d.r[8], -75.444279, 1e-4, 0);
+    /* the criterion: moving every line by 0.3 nm moves Ra by less than 0.1 */
+    assert_true(fabs(d.ra - c.ra) < 0.1);
+    /* the reference's CCT is the CCT luxcalc prints for the spectrum (the same exact integrals) */
+    lx_colorimetry col;
+    lx_assert_ok(ctx, lx_spd_colorimetry(ctx, &s, LX_OBSERVER_2, LX_METHOD_AUTO, &col));
+    lx_assert_near(c.cct_K, col.cct_K, 0, 1e-9);
+    /* what 1 nm resampling makes of it (the headline's linear1nm method does just that): a line
+     * between two nodes is seen at a fraction of its power, so moving the lines by 0.3 nm moves u'v'
+     * by 0.12 (exactly: 6.5e-4), and this spectrum's CRI is refused outright (Duv 0.073 > 0.05 at
+     * 1 nm; 0.020 exactly) */
+    lx_colorimetry a1, b1, b0;
+    lx_assert_ok(ctx, lx_spd_colorimetry(ctx, &s, LX_OBSERVER_2, LX_METHOD_LINEAR1NM, &a1));
+    lx_assert_ok(ctx, lx_spd_colorimetry(ctx, &sh, LX_OBSERVER_2, LX_METHOD_LINEAR1NM, &b1));
+    lx_assert_ok(ctx, lx_spd_colorimetry(ctx, &sh, LX_OBSERVER_2, LX_METHOD_AUTO, &b0));
+    double ue = hypot(col.u_prime - b0.u_prime, col.v_prime - b0.v_prime), u1 = hypot(a1.u_prime - b1.u_prime, a1.v_prime - b1.v_prime);
+    print_message("moving the lines 0.3 nm moves u'v' by %.2e exactly, by %.2e after resampling to 1 nm\n", ue, u1);
+    assert_true(ue < 2e-3 && u1 > 10 * ue);
+    double l1[471], v1[471];
+    lx_spd r1;
+    line_spectrum_1nm(&s, l1, v1, &r1);
+    lx_cri e;
+    assert_int_equal(lx_cri_compute(ctx, &r1, &e), LX_ERANGE);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -183,6 +233,7 @@ int main(void)
         cmocka_unit_test(test_a_d65),         cmocka_unit_test(test_narrow_band),
         cmocka_unit_test(test_blackbody_range), cmocka_unit_test(test_off_locus),
         cmocka_unit_test(test_truncated),     cmocka_unit_test(test_scale_and_step),
+        cmocka_unit_test(test_line_spectrum),
     };
     return cmocka_run_group_tests(tests, lx_test_ctx_setup, lx_test_ctx_teardown);
 }

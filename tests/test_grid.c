@@ -153,7 +153,8 @@ static void test_near_field(void **state)
     lx_ctx *ctx = *state;
     static const double ratio[5] = {0.1, 0.5, 1, 2, 4.9};
     const double F = 1000, W = 1, Lr = 0.6, D = 0.8;
-    lx_lum_model m = {.kind = LX_LUM_MODEL_LAMBERT, .flux_lm = F, .width_m = W, .length_m = Lr, .step_deg = 0.25};
+    /* LM-63 axes: the length (W, along x here) lies along C0-C180, the width (Lr) along C90-C270 */
+    lx_lum_model m = {.kind = LX_LUM_MODEL_LAMBERT, .flux_lm = F, .width_m = Lr, .length_m = W, .step_deg = 0.25};
     lx_luminaire *rect = NULL, *disk = disk_lum(ctx, D, F);
     lx_assert_ok(ctx, lx_luminaire_from_model(ctx, &m, &rect));
     double nz[3] = {0, 0, 1}, worst = 0;

@@ -49,8 +49,8 @@ static void test_isym_all(void **state)
     assert_int_equal(full->symmetry, LX_SYM_NONE);
     /* cd = cd/klm x 2000 lm / 1000 */
     lx_assert_near(lx_luminaire_intensity(full, LX_INTERP_BILINEAR, 60 * DEG, 0), 2 * ref(60, 0), 0, 1e-13);
-    lx_assert_near(full->width_m, 0.6, 0, 1e-15);  /* 600 mm luminous length (C0-C180) */
-    lx_assert_near(full->length_m, 0.3, 0, 1e-15); /* 300 mm luminous width */
+    lx_assert_near(full->length_m, 0.6, 0, 1e-15); /* 600 mm luminous length, along C0-C180 */
+    lx_assert_near(full->width_m, 0.3, 0, 1e-15);  /* 300 mm luminous width, along C90-C270 */
     lx_assert_near(full->stated_lumens, 2000 * 0.8, 0, 1e-12); /* lamps x LORL 80 % */
     static const lx_lum_symmetry want[5] = {LX_SYM_NONE, LX_SYM_AXIAL, LX_SYM_C0_C180, LX_SYM_C90_C270, LX_SYM_QUADRANT};
     for (int isym = 2; isym <= 4; isym++) {

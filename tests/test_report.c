@@ -1,31 +1,14 @@
 /* test_report.c - the geometry and colours of the spectrum report (report_png.c): the spectral
  * locus, isotemperature lines, the TM-30 vector graphic normalisation, sRGB conversion, the
- * Fichet et al. channel names, and the report PNG itself (size, swatch, atomic failure). */
-#include "lx_test.h"
+ * Fichet et al. channel names, and the report PNG read back: its size, labels that hold text and
+ * never overlap, the headline numbers against CIE 015 (D65 chromaticity), the unit of Y, the
+ * isotherm and bar labels, the u'v' diagram, a laser's undefined CRI with its reason, and atomic
+ * failure. */
+#include "plot_test.h"
 
-#include <png.h>
-#include <string.h>
 #include <unistd.h>
 
-#include "plot/plot_private.h"
 #include "radiance/radiance_private.h"
-
-static unsigned char *read_png(const char *path, int *w, int *h)
-{
-    png_image img;
-    memset(&img, 0, sizeof img);
-    img.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&img, path)) return NULL;
-    img.format = PNG_FORMAT_RGB;
-    unsigned char *buf = malloc(PNG_IMAGE_SIZE(img));
-    if (!buf || !png_image_finish_read(&img, NULL, buf, 0, NULL)) {
-        free(buf);
-        return NULL;
-    }
-    *w = (int)img.width;
-    *h = (int)img.height;
-    return buf;
-}
 
 static void spectral_locus(void **state)
 {
@@ -122,29 +105,76 @@ static void report_png(void **state)
     snprintf(path, sizeof path, "%s/d65.png", dir);
     lx_spd d65;
     lx_assert_ok(ctx, lx_illuminant_get(ctx, "D65", &d65));
-    lx_assert_ok(ctx, lx_spd_report_png(ctx, &d65, LX_OBSERVER_2, "D65", path));
-    int w = 0, h = 0;
-    unsigned char *img = read_png(path, &w, &h);
-    assert_non_null(img);
-    assert_int_equal(w, 1100), assert_int_equal(h, 800);
-    /* the swatch (990..1069, 556..635) of D65 is white: D65 is the sRGB white point (IEC 61966-2-1) */
-    const unsigned char *p = img + ((size_t)596 * w + 1030) * 3;
-    assert_true(p[0] >= 254 && p[1] >= 254 && p[2] >= 254);
-    free(img);
-    unlink(path);
-    /* illuminant A (2856 K) is orange-white: red > green > blue */
+    lx_report_opts o = {.unit = "W/m2/nm", .title = "D65"};
+    lx__layout L = {0};
+    lx_assert_ok(ctx, lx__report_png(ctx, &d65, &o, path, &L));
+    test_png png;
+    test_png_read(path, &png);
+    assert_int_equal(png.w, 1200), assert_int_equal(png.h, 880);
+    test_labels_ok(&png, &L);
+    /* the chromaticity of D65 (CIE 015:2018 Table 3: x 0.31272, y 0.32903) to 5 decimals */
+    const lx__label *xy = test_find(&L, LX__TEXT_STATS, "0.3127");
+    assert_non_null(xy);
+    double x = strtod(xy->text, NULL), y = strtod(strchr(xy->text, ',') + 1, NULL);
+    lx_assert_near(x, 0.31272, 2e-5, 0), lx_assert_near(y, 0.32903, 2e-5, 0);
+    assert_non_null(strstr(xy->text, ", ")), assert_int_equal((int)(strchr(xy->text, ',') - xy->text), 7);
+    /* Y of an irradiance spectrum is an illuminance in lx; the SPD axis carries the unit */
+    assert_non_null(test_find(&L, LX__TEXT_STATS, "illuminance"));
+    assert_non_null(test_find(&L, LX__TEXT_STATS, " lx"));
+    assert_non_null(test_find(&L, LX__TEXT_STATS, " W/m\u00b2"));
+    assert_non_null(test_find(&L, LX__TEXT_AXIS, "W/(m\u00b2 nm)"));
+    assert_non_null(test_find(&L, LX__TEXT_AXIS, "wavelength (nm)"));
+    /* CCT to 0.1 K, Duv to 1e-5 */
+    const lx__label *cct = test_find(&L, LX__TEXT_STATS, " K");
+    assert_non_null(cct);
+    assert_non_null(strchr(cct->text, '.')), assert_int_equal((int)strlen(strchr(cct->text, '.')), 4); /* ".N K" */
+    /* at least two isotherms labelled (the others where they would collide), the 15 bars named */
+    int iso = 0;
+    for (size_t i = 0; i < L.n_label; i++) iso += L.label[i].role == LX__TEXT_LABEL && strstr(L.label[i].text, "0 K") != NULL;
+    assert_true(iso >= 2);
+    assert_non_null(test_find(&L, LX__TEXT_TICK, "Ra"));
+    assert_non_null(test_find(&L, LX__TEXT_TICK, "R14"));
+    assert_non_null(test_find(&L, LX__TEXT_TITLE, "Rf"));
+    assert_non_null(test_find(&L, LX__TEXT_TITLE, "CIE 1931 xy"));
+    /* the swatch of D65 is white: D65 is the sRGB white point (IEC 61966-2-1) */
+    const lx__label *sw = test_find(&L, LX__TEXT_NOTE, "colour of the light");
+    assert_non_null(sw);
+    unsigned char c[3];
+    test_px(&png, (int)sw->box.x0 + 40, (int)sw->box.y1 + 50, c);
+    assert_true(c[0] >= 254 && c[1] >= 254 && c[2] >= 254);
+    test_png_free(&png);
+    lx__layout_free(&L);
+    /* the u'v' diagram; illuminant A (2856 K) is orange-white: red > green > blue */
     lx_spd a;
     lx_assert_ok(ctx, lx_illuminant_get(ctx, "A", &a));
-    lx_assert_ok(ctx, lx_spd_report_png(ctx, &a, LX_OBSERVER_2, NULL, path));
-    img = read_png(path, &w, &h);
-    assert_non_null(img);
-    p = img + ((size_t)596 * w + 1030) * 3;
-    assert_true(p[0] == 255 && p[1] < p[0] && p[2] < p[1]);
-    free(img);
+    o = (lx_report_opts){.diagram = LX_DIAGRAM_UV};
+    lx_assert_ok(ctx, lx__report_png(ctx, &a, &o, path, &L));
+    test_png_read(path, &png);
+    test_labels_ok(&png, &L);
+    assert_non_null(test_find(&L, LX__TEXT_TITLE, "CIE 1976 u\u2032v\u2032"));
+    assert_non_null(test_find(&L, LX__TEXT_AXIS, "u\u2032"));
+    assert_non_null(test_find(&L, LX__TEXT_STATS, "Y (relative)"));
+    sw = test_find(&L, LX__TEXT_NOTE, "colour of the light");
+    test_px(&png, (int)sw->box.x0 + 40, (int)sw->box.y1 + 50, c);
+    assert_true(c[0] == 255 && c[1] < c[0] && c[2] < c[1]);
+    test_png_free(&png);
+    lx__layout_free(&L);
+    /* a 532 nm laser: CRI is undefined; its reason is shown */
+    double wl[3] = {531, 532, 533}, val[3] = {0, 1, 0};
+    lx_spd las = {.lambda_nm = wl, .value = val, .n = 3, .name = "laser"};
+    lx_assert_ok(ctx, lx__report_png(ctx, &las, NULL, path, &L));
+    test_png_read(path, &png);
+    test_labels_ok(&png, &L);
+    assert_non_null(test_find(&L, LX__TEXT_TITLE, "not defined"));
+    assert_non_null(test_find(&L, LX__TEXT_NOTE, "Duv"));
+    test_png_free(&png);
+    lx__layout_free(&L);
     unlink(path);
-    /* unwritable place: LX_EIO and nothing left behind */
+    /* a bad unit, and an unwritable place: errors, nothing left behind */
+    o = (lx_report_opts){.unit = "W/ft2"};
+    assert_int_equal(lx_spd_report_write_png(ctx, &d65, &o, path), LX_EINVAL);
     snprintf(path, sizeof path, "%s/missing/d65.png", dir);
-    assert_int_equal(lx_spd_report_png(ctx, &d65, LX_OBSERVER_2, NULL, path), LX_EIO);
+    assert_int_equal(lx_spd_report_write_png(ctx, &d65, NULL, path), LX_EIO);
     assert_int_equal(access(path, F_OK), -1);
     rmdir(dir);
 }

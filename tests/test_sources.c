@@ -104,6 +104,50 @@ static void test_warn_flux_recovered(void **state)
     }
 }
 
+/* The flux within a cone: 2 pi int_0^A I(t) sin t dt by 20-point Gauss-Legendre on 400 panels
+ * against the closed form F (1 - cos^(S+1) A) of lx_warn_cone_flux; and its ends. */
+static void test_warn_cone(void **state)
+{
+    lx_ctx *ctx = *state;
+    const double S[] = {0, 1, 28.8938, 1000};
+    const double A[] = {1 * DEG, 12.5 * DEG, 45 * DEG, 89.9 * DEG};
+    for (size_t k = 0; k < 4; k++)
+        for (size_t j = 0; j < 4; j++) {
+            double sum = 0, peak, I;
+            for (int p = 0; p < 400; p++) {
+                double c = A[j] * (p + 0.5) / 400, h = 0.5 * A[j] / 400;
+                for (int i = 0; i < 10; i++)
+                    for (int sgn = -1; sgn <= 1; sgn += 2) {
+                        double t = c + sgn * h * gl_x[i];
+                        lx_assert_ok(ctx, lx_warn_intensity(ctx, 800, S[k], t, &peak, &I));
+                        sum += gl_w[i] * h * I * sin(t);
+                    }
+            }
+            double cf, fr;
+            lx_assert_ok(ctx, lx_warn_cone_flux(ctx, 800, S[k], A[j], &cf, &fr));
+            lx_assert_near(cf, 2 * PI * sum, 1e-12, 1e-11);
+            lx_assert_near(fr, cf / 800, 0, 1e-15);
+        }
+    double cf, fr;
+    /* S = 1 (Lambertian) at 60 deg: 1 - cos^2 = 3/4; S = 0 (uniform hemisphere): 1 - cos A */
+    lx_assert_ok(ctx, lx_warn_cone_flux(ctx, 800, 1, 60 * DEG, &cf, &fr));
+    lx_assert_near(fr, 0.75, 0, 1e-15);
+    lx_assert_ok(ctx, lx_warn_cone_flux(ctx, 800, 0, 60 * DEG, &cf, &fr));
+    lx_assert_near(fr, 0.5, 0, 1e-15);
+    /* the whole lobe from 90 deg on; nothing in a cone of 0 */
+    lx_assert_ok(ctx, lx_warn_cone_flux(ctx, 800, 5, 120 * DEG, &cf, &fr));
+    lx_assert_near(cf, 800, 0, 0);
+    lx_assert_ok(ctx, lx_warn_cone_flux(ctx, 800, 5, 0, &cf, &fr));
+    assert_true(fr == 0);
+    /* a tiny cone of a huge exponent, S = 1e6, A = 1e-3 rad: cos A rounds away 2e-10 of ln cos A,
+     * so the closed form needs log1p(-2 sin^2(A/2)) */
+    lx_assert_ok(ctx, lx_warn_cone_flux(ctx, 1, 1e6, 1e-3, &cf, &fr));
+    double A2 = 1e-6; /* ln cos A = -A^2/2 - A^4/12 - A^6/45 - ... (the series, exact to 1e-30 here) */
+    lx_assert_near(fr, -expm1(-(1e6 + 1) * (A2 / 2 + A2 * A2 / 12 + A2 * A2 * A2 / 45)), 0, 1e-14);
+    assert_int_equal(lx_warn_cone_flux(ctx, 800, 5, -0.1, &cf, &fr), LX_EINVAL);
+    assert_int_equal(lx_warn_cone_flux(ctx, 800, -1, 0.1, &cf, &fr), LX_EINVAL);
+}
+
 static void test_warn_extremes(void **state)
 {
     lx_ctx *ctx = *state;
@@ -163,14 +207,22 @@ static void test_disk_closed_form(void **state)
     /* point model error at h = 5 D on axis: point/exact - 1 = (R^2 + h^2)/h^2 - 1 = R^2/h^2 = 1/100 */
     lx_assert_ok(ctx, lx_disk_illuminance(ctx, 1000, 0.5, 5, 0, LX_MODEL_AUTO, &r));
     lx_assert_near(r.point_error, 0.01, 0, 1e-13);
-    assert_int_equal(r.near_field, 0); /* exactly 5 x the diameter is not under it */
-    assert_int_equal(r.model, LX_MODEL_POINT);
+    assert_int_equal(r.near_field, 1); /* the point model misses 1e-4 */
     lx_assert_near(r.largest_dimension_m, 1, 0, 0);
-    /* auto under five times: exact */
-    lx_assert_ok(ctx, lx_disk_illuminance(ctx, 1000, 0.5, 4.9, 0, LX_MODEL_AUTO, &r));
-    assert_int_equal(r.near_field, 1);
-    assert_int_equal(r.model, LX_MODEL_EXACT);
-    lx_assert_near(r.illuminance_lx, r.exact_lx, 0, 0);
+    /* auto is exact at any distance (the closed form costs what the point model costs): at 5, 10
+     * and 1000 diameters; the point model is one flag away with its error beside it */
+    static const double hs[3] = {5, 10, 1000};
+    for (int k = 0; k < 3; k++) {
+        lx_assert_ok(ctx, lx_disk_illuminance(ctx, 1000, 0.5, hs[k], 0, LX_MODEL_AUTO, &r));
+        assert_int_equal(r.model, LX_MODEL_EXACT);
+        lx_assert_near(r.illuminance_lx, 1000 * PI * 0.25 / (0.25 + hs[k] * hs[k]), 0, 1e-14);
+        assert_int_equal(r.near_field, hs[k] < 50); /* R^2 / h^2 > 1e-4 */
+        lx_source_result p;
+        lx_assert_ok(ctx, lx_disk_illuminance(ctx, 1000, 0.5, hs[k], 0, LX_MODEL_POINT, &p));
+        assert_int_equal(p.model, LX_MODEL_POINT);
+        lx_assert_near(p.illuminance_lx, 1000 * PI * 0.25 / (hs[k] * hs[k]), 0, 1e-14);
+        lx_assert_near(p.point_error, 0.25 / (hs[k] * hs[k]), 1e-15, 1e-12);
+    }
 }
 
 static void test_disk_references(void **state)
@@ -220,9 +272,23 @@ static void test_disk_limits(void **state)
         lx_assert_near(r.point_error, 1 / (hr[i] * hr[i]), 1e-15, 1e-9); /* ratio - 1: a few ulp of 1 */
         if (hr[i] >= 1e7) lx_assert_near(r.exact_lx, r.point_lx, 0, 1e-12); /* physical error 1e-14 */
     }
-    /* distance 1e-6 .. 1e6 m and invalid input */
-    assert_int_equal(lx_disk_illuminance(ctx, 1, 0.5, 0, 0, LX_MODEL_EXACT, &r), LX_EINVAL);
+    /* h = 0 is the coplanar limit of those: pi L on the disk, pi L / 2 on its rim, 0 outside */
+    lx_assert_ok(ctx, lx_disk_illuminance(ctx, 1000, 0.5, 0, 0.2, LX_MODEL_AUTO, &r));
+    lx_assert_near(r.illuminance_lx, 1000 * PI, 0, 1e-15);
+    lx_assert_near(r.point_error, -1, 0, 0); /* the point model gives 0 there */
+    lx_assert_ok(ctx, lx_disk_illuminance(ctx, 1000, 0.5, 0, 0.5, LX_MODEL_AUTO, &r));
+    lx_assert_near(r.illuminance_lx, 1000 * PI / 2, 0, 1e-15);
+    lx_assert_ok(ctx, lx_disk_illuminance(ctx, 1000, 0.5, 0, 0.7, LX_MODEL_AUTO, &r));
+    assert_true(r.illuminance_lx == 0);
+    lx_assert_ok(ctx, lx_disk_illuminance(ctx, 1000, 0.5, 0, 0, LX_MODEL_AUTO, &r));
+    assert_true(isnan(r.point_lx)); /* the point model is undefined at its own centre */
+    /* ... and the limit of small heights: at 1e-12 m, within 1e-12 */
+    lx_source_result s;
+    lx_assert_ok(ctx, lx_disk_illuminance(ctx, 1000, 0.5, 1e-12, 0.5, LX_MODEL_EXACT, &s));
+    lx_assert_near(s.exact_lx, 1000 * PI / 2, 0, 1e-9);
+    /* invalid input */
     assert_int_equal(lx_disk_illuminance(ctx, 1, 0.5, -1, 0, LX_MODEL_EXACT, &r), LX_EINVAL);
+    assert_int_equal(lx_disk_illuminance(ctx, 1, 0.5, NAN, 0, LX_MODEL_EXACT, &r), LX_EINVAL);
     assert_int_equal(lx_disk_illuminance(ctx, 1, 0, 1, 0, LX_MODEL_EXACT, &r), LX_EINVAL);
     assert_int_equal(lx_disk_illuminance(ctx, -1, 1, 1, 0, LX_MODEL_EXACT, &r), LX_EINVAL);
 }
@@ -244,10 +310,24 @@ static void test_rect_closed_form(void **state)
     lx_assert_near(r.exact_lx, 1000 * PI, 0, 1e-8);
     lx_assert_ok(ctx, lx_rect_illuminance(ctx, 1000, 1, 2, 1e-12, 0.5, 1, LX_MODEL_EXACT, &r));
     lx_assert_near(r.exact_lx, 1000 * PI / 4, 0, 1e-11);
-    /* the five-times rule uses the diagonal: sqrt(2) for the unit square */
-    lx_assert_ok(ctx, lx_rect_illuminance(ctx, 1, 1, 1, 7, 0, 0, LX_MODEL_AUTO, &r));
-    assert_int_equal(r.near_field, 1); /* 7 < 5 sqrt 2 = 7.07 */
+    /* auto is exact at any distance; near_field says the point model misses 1e-4 */
+    lx_assert_ok(ctx, lx_rect_illuminance(ctx, 1, 1, 1, 50, 0, 0, LX_MODEL_AUTO, &r));
     assert_int_equal(r.model, LX_MODEL_EXACT);
+    lx_assert_near(r.illuminance_lx, r.exact_lx, 0, 0);
+    /* the unit square's point error is about (1/3)(a/h)^2 (1.3325 % at 5 sides, above): 1.3e-4 at
+     * 50 sides, 6.8e-5 at 70 */
+    assert_int_equal(r.near_field, 1);
+    lx_assert_ok(ctx, lx_rect_illuminance(ctx, 1, 1, 1, 70, 0, 0, LX_MODEL_AUTO, &r));
+    assert_int_equal(r.near_field, 0);
+    /* h = 0: the coplanar limit, pi L inside, pi L / 2 on an edge, pi L / 4 at a corner, 0 outside */
+    lx_assert_ok(ctx, lx_rect_illuminance(ctx, 1000, 1, 2, 0, 0.1, 0.2, LX_MODEL_AUTO, &r));
+    lx_assert_near(r.illuminance_lx, 1000 * PI, 0, 1e-15);
+    lx_assert_ok(ctx, lx_rect_illuminance(ctx, 1000, 1, 2, 0, 0.5, 0.2, LX_MODEL_AUTO, &r));
+    lx_assert_near(r.illuminance_lx, 500 * PI, 0, 1e-15);
+    lx_assert_ok(ctx, lx_rect_illuminance(ctx, 1000, 1, 2, 0, 0.5, 1, LX_MODEL_AUTO, &r));
+    lx_assert_near(r.illuminance_lx, 250 * PI, 0, 1e-15);
+    lx_assert_ok(ctx, lx_rect_illuminance(ctx, 1000, 1, 2, 0, 0.6, 0, LX_MODEL_AUTO, &r));
+    assert_true(r.illuminance_lx == 0);
 }
 
 static void test_rect_references(void **state)
@@ -274,7 +354,7 @@ static void test_rect_references(void **state)
     /* h >> size: matches the point model to 1e-12 (physical error (a^2+b^2)/(6 h^2) ~ 3e-13 here) */
     lx_assert_ok(ctx, lx_rect_illuminance(ctx, 1, 1, 1, 1e6, 0, 0, LX_MODEL_EXACT, &r));
     lx_assert_near(r.exact_lx, r.point_lx, 0, 1e-12);
-    assert_int_equal(lx_rect_illuminance(ctx, 1, 1, 1, 0, 0, 0, LX_MODEL_EXACT, &r), LX_EINVAL);
+    assert_int_equal(lx_rect_illuminance(ctx, 1, 1, 1, -1e-3, 0, 0, LX_MODEL_EXACT, &r), LX_EINVAL);
     assert_int_equal(lx_rect_illuminance(ctx, 1, 1, -1, 1, 0, 0, LX_MODEL_EXACT, &r), LX_EINVAL);
 }
 
@@ -322,6 +402,7 @@ int main(void)
         cmocka_unit_test(test_point_closed_form),  cmocka_unit_test(test_point_distances),
         cmocka_unit_test(test_point_grazing_backfacing), cmocka_unit_test(test_warn_flux_recovered),
         cmocka_unit_test(test_warn_extremes),      cmocka_unit_test(test_warn_beam),
+        cmocka_unit_test(test_warn_cone),
         cmocka_unit_test(test_disk_closed_form),   cmocka_unit_test(test_disk_references),
         cmocka_unit_test(test_disk_limits),        cmocka_unit_test(test_rect_closed_form),
         cmocka_unit_test(test_rect_references),    cmocka_unit_test(test_lambertian_reflector),

@@ -1,6 +1,7 @@
 /* test_tm30.c - CIE 224:2017 Rf and ANSI/IES TM-30 Rf, Rg and hue-bin values against colour-science
  * 0.4.7 (colour.quality.colour_fidelity_index_ANSIIESTM3018), identities and the CES table. */
 #include "lx_test.h"
+#include "line_spectrum.h"
 
 #include <string.h>
 
@@ -134,11 +135,35 @@ static void test_grid_1nm_5nm(void **state)
     lx_assert_near(t1.rf, t5.rf, 0.3, 0);
 }
 
+/* The line spectrum of tests/line_spectrum.h integrated exactly (not resampled to 1 nm).
+ * Reference: tests/reference/tm30_fine_grid.py, CIE 224 on a 0.01 nm grid (numpy 2.4.6, scipy
+ * 1.17.1, colour-science 0.4.7's CIECAM02 / CAM02-UCS): CCT 8084.137960 K, Rf 51.299267, Rg
+ * 80.329920; the lines moved by +0.3 nm: Rf 51.160568, Rg 80.244537. */
+static void test_line_spectrum(void **state)
+{
+    lx_ctx *ctx = *state;
+    double lam[LINE_MAX_SAMPLES], val[LINE_MAX_SAMPLES], lam2[LINE_MAX_SAMPLES], val2[LINE_MAX_SAMPLES];
+    lx_spd s, sh;
+    line_spectrum(0, lam, val, &s);
+    line_spectrum(0.3, lam2, val2, &sh);
+    lx_tm30 *a = malloc(sizeof *a), *b = malloc(sizeof *b);
+    lx_assert_ok(ctx, lx_tm30_compute(ctx, &s, a));
+    lx_assert_ok(ctx, lx_tm30_compute(ctx, &sh, b));
+    print_message("Hg lines: CCT %.4f K Rf %.4f Rg %.4f; moved 0.3 nm: Rf %.4f Rg %.4f\n", a->cct_K, a->rf, a->rg, b->rf, b->rg);
+    lx_assert_near(a->cct_K, 8084.137960, 1e-3, 0);
+    lx_assert_near(a->rf, 51.299267, 1e-4, 0);
+    lx_assert_near(a->rg, 80.329920, 1e-4, 0);
+    lx_assert_near(b->rf, 51.160568, 1e-4, 0);
+    lx_assert_near(b->rg, 80.244537, 1e-4, 0);
+    free(a);
+    free(b);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_fl2),      cmocka_unit_test(test_more_sources), cmocka_unit_test(test_identity),
-        cmocka_unit_test(test_refusals), cmocka_unit_test(test_grid_1nm_5nm),
+        cmocka_unit_test(test_refusals), cmocka_unit_test(test_grid_1nm_5nm), cmocka_unit_test(test_line_spectrum),
     };
     return cmocka_run_group_tests(tests, lx_test_ctx_setup, lx_test_ctx_teardown);
 }

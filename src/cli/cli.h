@@ -49,10 +49,49 @@ void cli_log(void *user, lx_log_level level, const char *msg);
 lx_ctx *cli_ctx(const char *cmd);
 
 /* ---- output formats ---- */
-typedef enum cli_format { CLI_FMT_TABLE = 0, CLI_FMT_CSV, CLI_FMT_JSON } cli_format;
+typedef enum cli_format { CLI_FMT_TABLE = 0, CLI_FMT_CSV, CLI_FMT_JSON, CLI_FMT_TSV } cli_format;
 
-/* Parses "table", "csv" or "json"; returns -1 for anything else. */
+/* Parses "table", "csv", "tsv" or "json"; returns -1 for anything else. */
 int cli_format_parse(const char *s);
+
+/* ---- the output options of every command (format.c) ---- */
+/* --precision N: significant digits of every number in the table format (0: each quantity's own:
+ * x, y 5 decimals, CCT 0.1 K, Duv 1e-5, CRI and TM-30 0.1, lx/cd/lm/cd/m2 4 significant
+ * digits, U0 3 decimals, lengths and angles to 1e-3; csv, tsv and json always round-trip). */
+extern int cli_precision;
+/* Takes --precision N and --units metric|imperial|UNIT[,UNIT...] (imperial: fc, ft, fL; a unit
+ * name sets its quantity's output unit, e.g. cd/ft2) out of argv (argv[0] is the command);
+ * a --units value that names no unit is left for the command. Returns 0 or CLI_USAGE (printed). */
+int cli_output_options(const char *cmd, int *argc, char **argv);
+/* "--distance 2 m" as two arguments: an option followed by a number and then a unit name becomes
+ * the option and "2 m" (what the unit parser reads), as the documentation writes it. */
+void cli_join_units(int *argc, char **argv);
+/* 1 when illuminance goes out in fc and lengths in ft (the plots follow). */
+int cli_imperial(void);
+/* The luminance output unit ("cd/m2", "fL", ...) and the factor from cd/m2 into it. */
+const char *cli_luminance_unit(double *scale);
+/* A column as it goes out: its name with the unit suffix of the output unit ("illuminance_fc"),
+ * that unit, and the factor from the column's own unit. */
+typedef struct cli_column {
+    char name[128];
+    char unit[32];
+    double scale;
+} cli_column;
+void cli_column_out(const char *name, const char *unit, cli_column *out);
+/* A number of the column in the table format (rounded to the digits its quantity keeps). */
+void cli_number_text(char *buf, size_t cap, const cli_column *col, double v);
+/* For getopt_long's '?' (unknown) and ':' (a value missing; short options start with ':'): prints
+ * "luxcalc CMD: unknown option '--x' (see luxcalc CMD --help)" or "luxcalc CMD: option '--x'
+ * needs a value (see ...)" for the option just read; returns CLI_USAGE. */
+int cli_bad_option(const char *cmd, char **argv, int c);
+/* At start: when standard output is closed, fd 1 is held by a scratch file so that no file the
+ * run opens becomes standard output. */
+void cli_stdout_guard(void);
+/* At the end of a command: standard output flushed; a write error (full disk, closed stdout) is
+ * reported once as "luxcalc: CMD: stdout: REASON" and gives CLI_RUNTIME, else 0. */
+int cli_stdout_check(const char *cmd);
+/* Reports a failed write of path (NULL: stdout) with errno err once; returns CLI_RUNTIME. */
+int cli_write_failed(const char *cmd, const char *path, int err);
 
 /* A result table: named columns (with an optional unit shown in the table format), rows of
  * numbers or strings. NaN numbers print as empty (csv), null (json), "-" (table). */
@@ -72,11 +111,22 @@ void cli_table_free(cli_table *t);
  * write error. For rows a command writes itself (cli_csv_field, lx_double_format), which it then
  * counts with cli_table_count_written. */
 int cli_table_header(cli_table *t, cli_format fmt, FILE *out);
+/* 1 when the table's csv is its first n columns as they are (no unit scaling, no column left
+ * out) and nothing more: a command writing rows itself may then write those n cells. */
+int cli_table_plain_csv(cli_table *t, int n);
 void cli_table_count_written(cli_table *t, size_t rows);
 /* One csv cell of len bytes at s into dst (room for 2 len + 2), quoted as cli_table quotes it
  * (when it holds , " CR or LF; quotes doubled). Returns the end of what it wrote. */
 char *cli_csv_field(char *dst, const char *s, size_t len);
 int cli_table_rows(const cli_table *t); /* rows added so far, written or not */
+/* A cell holding JSON text, written as it is in json (never NULL: "null" for none). */
+void cli_table_json(cli_table *t, const char *json);
+/* Marks column col as written in json only (csv and table leave it out). */
+void cli_table_json_only(cli_table *t, int col);
+/* Replaces the units shown in the table format for rows written from now on (flush first). */
+void cli_table_set_units(cli_table *t, const char *const *units);
+/* Writes s as a JSON string (quoted, escaped). */
+void cli_json_string(FILE *out, const char *s);
 
 /* Prints a double in the shortest form that reads back exactly (lx_double_format). */
 void cli_print_exact(FILE *out, double v);
@@ -89,8 +139,10 @@ typedef struct cli_output {
     char *tmp;  /* temporary path */
 } cli_output;
 int cli_output_open(cli_output *o, const char *path, const char *cmd);
-/* Flushes, fsyncs and renames into place (ok = 1) or removes the temporary file (ok = 0).
- * Returns 0 on success. */
+/* Flushes, fsyncs and renames into place (ok = 1) or removes the temporary file (ok = 0). A
+ * failed write ("No space left on device", a closed stdout) is reported as "luxcalc: CMD: FILE:
+ * REASON" and returns CLI_RUNTIME (nothing half-written stays at FILE); else 0. A path that exists
+ * and is not a regular file (/dev/null, a FIFO) is written directly. */
 int cli_output_close(cli_output *o, int ok, const char *cmd);
 
 /* ---- option helpers ---- */

@@ -1,5 +1,5 @@
 /* cmd_area.c - `luxcalc disk` and `luxcalc rect`: Lambertian area sources on a parallel receiver,
- * exact (configuration factor) and point model, with the five-times rule (--model). */
+ * exact (configuration factor) by default, the point model beside it with its error (--model). */
 #include "lighting.h"
 
 #include <getopt.h>
@@ -13,17 +13,19 @@ static const char disk_help[] =
     "Lambertian disk of luminance L; receiver parallel to it at height h, offset r from the axis.\n"
     "Exact: E = pi L F with the configuration factor of a parallel element to a disk (stable form);\n"
     "point model: E = L pi R^2 h^2 / (h^2 + r^2)^2. point_error = point/exact - 1.\n"
+    "--distance 0 is the coplanar limit: pi L on the disk, pi L / 2 on its rim, 0 outside.\n"
     "\n"
     "  --luminance L     cd/m2 (nit, fL, lambert; W/sr/m2 with --efficacy or --spd)\n"
     "  --radius R        m (bare number: m)\n"
-    "  --distance h      height above the disk's plane, > 0\n"
+    "  --distance h      height above the disk's plane, >= 0\n"
     "  --offset r        distance from the axis (default 0)\n"
-    "  --model M         auto (default: exact when the distance is under 5 x the diameter, else\n"
-    "                    point), point or exact: which one illuminance_lx reports\n"
+    "  --model M         auto (default) or exact: illuminance_lx is the exact value (it costs what\n"
+    "                    the point model costs); point: the point model (its error stays beside it)\n"
     "  --efficacy K, --spd FILE   efficacy for radiometric input\n"
     "  --format F        table (default), csv or json;   -o FILE  write to FILE\n"
     "\n"
-    "csv columns: illuminance_lx,point_illuminance_lx,point_error,exact_illuminance_lx,model,near_field\n"
+    "csv columns: illuminance_lx,point_illuminance_lx,point_error,exact_illuminance_lx,model,near_field,\n"
+    "distance_m (near_field: 1 when the point model errs by more than 1e-4)\n"
     "\n"
     "example: a 1 m round ceiling panel of 1000 cd/m2, desk 1 m below, on axis:\n"
     "  luxcalc disk --luminance 1000cd/m2 --radius 0.5m --distance 1m   # 628.3185 lx\n";
@@ -36,18 +38,20 @@ static const char rect_help[] =
     "through a corner or the centre (default centre), or at X,Y metres from the centre along the\n"
     "width and the length. Exact: E = pi L F, F the corner configuration factor (Howell's catalogue\n"
     "B-3) summed over corner rectangles (adaptive quadrature when the receiver is outside);\n"
-    "point model: E = L a b h^2 / d^4. point_error = point/exact - 1.\n"
+    "point model: E = L a b h^2 / d^4. point_error = point/exact - 1. --distance 0 is the\n"
+    "coplanar limit: pi L inside, pi L / 2 on an edge, pi L / 4 at a corner, 0 outside.\n"
     "\n"
     "  --luminance L     cd/m2 (nit, fL, lambert; W/sr/m2 with --efficacy or --spd)\n"
     "  --width a, --length b   sides (bare number: m)\n"
-    "  --distance h      height above the rectangle's plane, > 0\n"
+    "  --distance h      height above the rectangle's plane, >= 0\n"
     "  --at P            corner, centre (or center), or X,Y (bare numbers in m)\n"
-    "  --model M         auto (default: exact when the distance is under 5 x the diagonal, else\n"
-    "                    point), point or exact\n"
+    "  --model M         auto (default) or exact: illuminance_lx is the exact value; point: the\n"
+    "                    point model (its error stays beside it)\n"
     "  --efficacy K, --spd FILE   efficacy for radiometric input\n"
     "  --format F        table (default), csv or json;   -o FILE  write to FILE\n"
     "\n"
-    "csv columns: illuminance_lx,point_illuminance_lx,point_error,exact_illuminance_lx,model,near_field\n"
+    "csv columns: illuminance_lx,point_illuminance_lx,point_error,exact_illuminance_lx,model,near_field,\n"
+    "distance_m (near_field: 1 when the point model errs by more than 1e-4)\n"
     "\n"
     "example: a 0.6 m x 1.2 m panel of 3000 cd/m2, a work plane 2 m below its centre:\n"
     "  luxcalc rect --luminance 3000cd/m2 --width 0.6m --length 1.2m --distance 2m --at centre\n";
@@ -93,8 +97,8 @@ static int run(int argc, char **argv, int is_rect)
     const char *cmd = co.cmd;
     const char *lum = NULL, *rad = NULL, *wid = NULL, *len = NULL, *dist = NULL, *off = "0", *at = "centre";
     lx_model model = LX_MODEL_AUTO;
-    int c, rc;
-    while ((c = getopt_long(argc, argv, LT_SHORTOPTS, opts, NULL)) != -1) {
+    int c, rc, li = -1;
+    while ((c = getopt_long(argc, argv, LT_SHORTOPTS, opts, &li)) != -1) {
         int wrong = 0;
         switch (c) {
         case 'L': lum = optarg; break;
@@ -110,7 +114,12 @@ static int run(int argc, char **argv, int is_rect)
         default:
             if ((rc = lt_common_opt(&co, c, argv)) != LT_NEXT) return rc;
         }
-        if (wrong) return lt_bad_option(&co, argv);
+        if (wrong) {
+            fprintf(stderr, "luxcalc %s: option '--%s' applies to %s only (see luxcalc %s --help)\n", cmd,
+                    li >= 0 ? opts[li].name : "?", is_rect ? "disk" : "rect", cmd);
+            return CLI_USAGE;
+        }
+        li = -1;
     }
     if (lt_no_operands(&co, argc, argv)) return CLI_USAGE;
     if (!lum || !dist || (is_rect ? (!wid || !len) : !rad)) {

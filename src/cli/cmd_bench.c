@@ -24,6 +24,8 @@ int cli_bench_grid(FILE *out); /* bench_grid.c */
 static int bench_grid(bench_ctx *b) { return cli_bench_grid(b->out); }
 int cli_bench_metrics(FILE *out); /* bench_metrics.c */
 static int bench_metrics(bench_ctx *b) { return cli_bench_metrics(b->out); }
+int cli_bench_lab(FILE *out); /* bench_lab.c */
+static int bench_lab(bench_ctx *b) { return cli_bench_lab(b->out); }
 
 int cli_bench_irradiance(FILE *out); /* bench_irradiance.c */
 static int bench_irradiance(bench_ctx *b) { return cli_bench_irradiance(b->out); }
@@ -36,6 +38,7 @@ static const struct {
 } topics[] = {
     {"spd", bench_spd, "batch spectra -> XYZ V': in memory vs read bandwidth, CSV end to end vs peers"},
     {"metrics", bench_metrics, "CRI, TM-30 and alpha-opic per second over 1e5 spectra vs colour-science, luxpy"},
+    {"lab", bench_lab, "PAR, IEC 62471 hazards and LED binning of 2.5e5 spectra on the batch path (goal 1e6/s)"},
     {"grid", bench_grid, "illuminance grid: 1e6 points x 10 luminaires, CPU and OpenCL vs numpy"},
     /* ---- bench topics (one line each: irradiance, grid, accuracy) ---- */
     {"accuracy", bench_accuracy, "error against a reference vs time of every method: spectra, radiance fields, lighting"},
@@ -118,7 +121,7 @@ int cmd_bench(int argc, char **argv)
     const char *outpath = NULL, *dir = NULL;
     int c;
     optind = 1;
-    while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":o:h", opts, NULL)) != -1) {
         switch (c) {
         case 's': {
             b.nsizes = 0;
@@ -140,7 +143,7 @@ int cmd_bench(int argc, char **argv)
             printf("\ntopics:\n");
             for (int i = 0; topics[i].name; i++) printf("  %-12s %s\n", topics[i].name, topics[i].summary);
             return CLI_OK;
-        default: return CLI_USAGE;
+        default: return cli_bad_option("bench", argv, c);
         }
     }
     for (int i = optind; i < argc; i++) {

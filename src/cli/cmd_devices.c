@@ -28,7 +28,7 @@ int cmd_devices(int argc, char **argv)
     const char *cmd = "devices", *outpath = NULL;
     int fmt = CLI_FMT_TABLE, c;
     optind = 1;
-    while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":o:h", opts, NULL)) != -1) {
         switch (c) {
         case 'f':
             if ((fmt = cli_format_parse(optarg)) < 0)
@@ -36,7 +36,7 @@ int cmd_devices(int argc, char **argv)
             break;
         case 'o': outpath = optarg; break;
         case 'h': cli_print_help(help); return CLI_OK;
-        default: return CLI_USAGE;
+        default: return cli_bad_option("devices", argv, c);
         }
     }
     if (optind < argc) return cli_error(cmd, "unexpected argument '%s'", argv[optind]), CLI_USAGE;

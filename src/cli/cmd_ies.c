@@ -17,19 +17,23 @@ static const char help[] =
     "rated_lumens (the header's lamp lumens, or the stated luminaire lumens for absolute photometry),\n"
     "stated_lumens (the luminaire flux the file states: [_ABSOLUTELUMENS], EULUMDAT lamps x LORL),\n"
     "lumens_diff (lumens / stated_lumens - 1), photometric_type, planes, angles, the C90-C270 beam\n"
-    "and field angles, downward_fraction, width_m, length_m, height_m.\n"
+    "and field angles, downward_fraction, the opening's shape (point, rectangle, round, ...), its\n"
+    "width_m, length_m, height_m and diameter_m (round openings), lor (relative photometry: lumens /\n"
+    "lamp lumens), input_watts, efficacy_lm_per_W (lumens / input watts), manufacturer, catalog.\n"
     "lumens is the exact integral over the sphere of the bilinear interpolant of the table. Beam and\n"
     "field angles: full angles to 50 % and 10 % of the peak in the C0-C180 plane.\n"
     "\n"
     "options:\n"
     "  --format table|csv|json   output format (default table)\n"
     "  -o FILE                   write the results to FILE (atomically)\n"
-    "  --write OUT.ies           write LM-63-2002: the one FILE converted, or the --model\n"
+    "  --write OUT.ies           write LM-63-2002: the one FILE converted (its test, laboratory,\n"
+    "                            date, lamp and catalogue fields kept), or the --model\n"
     "  --model point|warn|lambert  isotropic point, Warn spot (I = (S+1)F/2pi cos^S), Lambertian panel\n"
     "  --flux F                  model flux (default unit lm)\n"
     "  --exponent S              Warn exponent (or --beam ANGLE: full 50 % beam angle)\n"
     "  --beam ANGLE              Warn beam angle (e.g. 30deg)\n"
-    "  --width W, --length L     luminous opening in m (width along C0)\n"
+    "  --width W, --length L     luminous opening in m (LM-63: width along C90-C270, length\n"
+    "                            along C0-C180)\n"
     "  --step ANGLE              gamma step of the written table (default 1deg, finer for spots)\n"
     "  --catalog TEXT            the [LUMCAT] text of the written file\n"
     "\n"
@@ -54,6 +58,90 @@ static int write_ies(lx_ctx *ctx, const lx_luminaire *l, const char *path)
     return CLI_OK;
 }
 
+/* The luminous opening's shape from the signs of its dimensions (LM-63-2019 Table 1: negative
+ * values are round: width = length < 0 a circle of that diameter, unequal an ellipse; with a
+ * height a vertical cylinder, all three equal and negative a sphere; EULUMDAT writes a round
+ * area as its diameter and a width of 0). */
+static const char *opening(const lx_luminaire *l, double *diameter)
+{
+    double w = l->width_m, len = l->length_m, h = l->height_m;
+    *diameter = NAN;
+    if (w == 0 && len == 0 && h == 0) return "point";
+    if (l->format == LX_LUM_EULUMDAT && (w == 0) != (len == 0) && w >= 0 && len >= 0) /* EULUMDAT: width 0 is round */
+        return *diameter = w > len ? w : len, h > 0 ? "vertical cylinder" : "round";
+    if (w >= 0 && len >= 0) return h > 0 ? "box" : "rectangle";
+    if (w < 0 && len < 0) {
+        if (w == len && h < 0 && h == w) return *diameter = -w, "sphere";
+        if (w == len) return *diameter = -w, h > 0 ? "vertical cylinder" : "round";
+        return h > 0 ? "elliptical cylinder" : "ellipse";
+    }
+    return "other";
+}
+
+/* the summary of every FILE (argv[first] ...): one row each, a bad file reported and skipped */
+static int summaries(lx_ctx *ctx, int first, int argc, char **argv, cli_format fmt, const char *outpath)
+{
+    int rc = CLI_OK;
+    static const char *const names[] = {"file", "format", "lumens", "max_intensity_cd", "beam_angle_deg", "field_angle_deg",
+                                        "symmetry", "rated_lumens", "stated_lumens", "lumens_diff", "photometric_type",
+                                        "planes", "angles", "beam_angle_c90_deg", "field_angle_c90_deg",
+                                        "downward_fraction", "shape", "width_m", "length_m", "height_m", "diameter_m",
+                                        "lor", "input_watts", "efficacy_lm_per_W", "manufacturer", "catalog"};
+    static const char *const units[] = {NULL, NULL, "lm", "cd", "deg", "deg", NULL, "lm", "lm", NULL, NULL, NULL, NULL,
+                                        "deg", "deg", NULL, NULL, "m", "m", "m", "m", NULL, "W", "lm/W", NULL, NULL};
+    cli_table *t = cli_table_new(26, names, units);
+    if (!t) return cli_error("ies", "out of memory"), CLI_RUNTIME;
+    for (int i = first; i < argc; i++) {
+        lx_luminaire *l = NULL;
+        lx_lum_summary s;
+        lx_status st = lx_luminaire_read_file(ctx, argv[i], &l);
+        if (!st) st = lx_luminaire_summary(ctx, l, &s);
+        if (st) {
+            int r = cli_fail("ies", ctx, st);
+            if (r > rc) rc = r;
+            lx_luminaire_free(l);
+            continue;
+        }
+        double rated = isfinite(l->lamp_lumens) ? l->lamp_lumens : l->stated_lumens;
+        cli_table_str(t, argv[i]);
+        cli_table_str(t, lx_lum_format_name(l->format));
+        cli_table_num(t, s.lumens);
+        cli_table_num(t, s.max_intensity_cd);
+        cli_table_num(t, s.beam_angle_deg);
+        cli_table_num(t, s.field_angle_deg);
+        cli_table_str(t, lx_lum_symmetry_name(l->symmetry));
+        cli_table_num(t, rated);
+        cli_table_num(t, l->stated_lumens);
+        cli_table_num(t, isfinite(l->stated_lumens) ? s.lumens / l->stated_lumens - 1 : NAN);
+        cli_table_str(t, l->photometric_type == 1 ? "C" : "B");
+        cli_table_int(t, (long long)l->n_h);
+        cli_table_int(t, (long long)l->n_v);
+        cli_table_num(t, s.beam_angle_c90_deg);
+        cli_table_num(t, s.field_angle_c90_deg);
+        cli_table_num(t, s.downward_fraction);
+        double dia = NAN;
+        cli_table_str(t, opening(l, &dia));
+        cli_table_num(t, isfinite(dia) ? dia : fabs(l->width_m)); /* round: its diameter both ways */
+        cli_table_num(t, isfinite(dia) ? dia : fabs(l->length_m));
+        cli_table_num(t, fabs(l->height_m));
+        cli_table_num(t, dia);
+        /* the light output ratio of relative photometry: the luminaire's flux over its lamps' */
+        cli_table_num(t, !l->absolute && rated > 0 ? s.lumens / rated : NAN);
+        double watts = l->input_watts > 0 ? l->input_watts : NAN;
+        cli_table_num(t, watts);
+        cli_table_num(t, s.lumens / watts);
+        cli_table_str(t, l->manufacturer ? l->manufacturer : "");
+        cli_table_str(t, l->catalog ? l->catalog : "");
+        lx_luminaire_free(l);
+    }
+    if (cli_table_rows(t) > 0) {
+        int r = lt_write("ies", t, fmt, outpath);
+        if (r > rc) rc = r;
+    }
+    cli_table_free(t);
+    return rc;
+}
+
 int cmd_ies(int argc, char **argv)
 {
     static const struct option opts[] = {
@@ -71,7 +159,7 @@ int cmd_ies(int argc, char **argv)
     lx_lum_model m = {0};
     int c;
     optind = 1;
-    while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":o:h", opts, NULL)) != -1) {
         switch (c) {
         case 'f':
             if (lt_format("ies", optarg, &fmt)) return CLI_USAGE;
@@ -87,8 +175,13 @@ int cmd_ies(int argc, char **argv)
         case 's': step_t = optarg; break;
         case 'c': m.catalog = optarg; break;
         case 'h': cli_print_help(help); return CLI_OK;
-        default: return CLI_USAGE;
+        default: return cli_bad_option("ies", argv, c);
         }
+    }
+    if (write) { /* the writer writes IES LM-63-2002 only: a .ldt name would hold the wrong format */
+        size_t wl = strlen(write);
+        if (wl >= 4 && (!strcmp(write + wl - 4, ".ldt") || !strcmp(write + wl - 4, ".LDT")))
+            return cli_error("ies", "%s: --write writes IES LM-63-2002, not EULUMDAT: name the file .ies", write), CLI_USAGE;
     }
     lx_ctx *ctx = cli_ctx("ies");
     if (!ctx) return CLI_RUNTIME;
@@ -173,55 +266,7 @@ int cmd_ies(int argc, char **argv)
         lx_luminaire_free(l);
         goto done;
     }
-    static const char *const names[] = {"file", "format", "lumens", "max_intensity_cd", "beam_angle_deg", "field_angle_deg",
-                                        "symmetry", "rated_lumens", "stated_lumens", "lumens_diff", "photometric_type",
-                                        "planes", "angles", "beam_angle_c90_deg", "field_angle_c90_deg",
-                                        "downward_fraction", "width_m", "length_m", "height_m"};
-    static const char *const units[] = {NULL, NULL, "lm", "cd", "deg", "deg", NULL, "lm", "lm", NULL, NULL, NULL, NULL,
-                                        "deg", "deg", NULL, "m", "m", "m"};
-    cli_table *t = cli_table_new(19, names, units);
-    if (!t) {
-        rc = CLI_RUNTIME;
-        goto done;
-    }
-    for (int i = optind; i < argc; i++) {
-        lx_luminaire *l = NULL;
-        lx_lum_summary s;
-        lx_status st = lx_luminaire_read_file(ctx, argv[i], &l);
-        if (!st) st = lx_luminaire_summary(ctx, l, &s);
-        if (st) {
-            int r = cli_fail("ies", ctx, st);
-            if (r > rc) rc = r;
-            lx_luminaire_free(l);
-            continue;
-        }
-        double rated = isfinite(l->lamp_lumens) ? l->lamp_lumens : l->stated_lumens;
-        cli_table_str(t, argv[i]);
-        cli_table_str(t, lx_lum_format_name(l->format));
-        cli_table_num(t, s.lumens);
-        cli_table_num(t, s.max_intensity_cd);
-        cli_table_num(t, s.beam_angle_deg);
-        cli_table_num(t, s.field_angle_deg);
-        cli_table_str(t, lx_lum_symmetry_name(l->symmetry));
-        cli_table_num(t, rated);
-        cli_table_num(t, l->stated_lumens);
-        cli_table_num(t, isfinite(l->stated_lumens) ? s.lumens / l->stated_lumens - 1 : NAN);
-        cli_table_str(t, l->photometric_type == 1 ? "C" : "B");
-        cli_table_int(t, (long long)l->n_h);
-        cli_table_int(t, (long long)l->n_v);
-        cli_table_num(t, s.beam_angle_c90_deg);
-        cli_table_num(t, s.field_angle_c90_deg);
-        cli_table_num(t, s.downward_fraction);
-        cli_table_num(t, l->width_m);
-        cli_table_num(t, l->length_m);
-        cli_table_num(t, l->height_m);
-        lx_luminaire_free(l);
-    }
-    if (cli_table_rows(t) > 0) {
-        int r = lt_write("ies", t, fmt, outpath);
-        if (r > rc) rc = r;
-    }
-    cli_table_free(t);
+    rc = summaries(ctx, optind, argc, argv, fmt, outpath);
 done:
     lx_ctx_destroy(ctx);
     return rc;

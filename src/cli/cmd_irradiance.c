@@ -9,7 +9,7 @@
 #include <time.h>
 
 static const char help[] =
-    "usage: luxcalc irradiance IN.exr -o OUT.exr [--method sh9|brute|fast] [--size WxH] [--png FILE]\n"
+    "usage: luxcalc irradiance IN.exr -o OUT.exr [--method auto|fast|sh9|brute] [--size WxH] [--png FILE]\n"
     "       luxcalc irradiance IN.exr --normal X,Y,Z [--method M] [--format table|csv|json]\n"
     "\n"
     "IN is a lat-long radiance map (+z up, theta from +z, phi from +x towards +y, row 0 at theta = 0)\n"
@@ -18,18 +18,23 @@ static const char help[] =
     "OUT holds E(n) = integral L(w) max(0, n.w) dw for the normal n of each pixel centre, in the\n"
     "layout of IN.\n"
     "\n"
-    "  --method M       sh9 (default): 9 spherical harmonics, fast, rings around a sun (error up to\n"
-    "                   3/32 of the source's integral L dw);\n"
-    "                   brute: every input pixel for every output pixel, sum L_p max(0, n.m_p) with\n"
-    "                   m_p the exact first moment of the pixel (OpenCL or CPU);\n"
-    "                   fast: the same sum as brute by per-row prefix sums, O(rows) per output\n"
+    "  --method M       auto (default): fast, unless that would cost more than 10 x sh9 for this\n"
+    "                   job (large output maps): then sh9, and a note on stderr says so;\n"
+    "                   fast: exact (every pixel's integral of max(0, n.w), the pixels the horizon\n"
+    "                   of n crosses in closed form), per-row prefix sums: O(rows) per output;\n"
+    "                   sh9: 9 spherical harmonics, approximate: rings around a sun (error up to\n"
+    "                   3/32 of the source's integral L dw) and can go negative; warns when it does\n"
+    "                   or when a small source holds much of the map's power;\n"
+    "                   brute: exact, every input pixel for every output pixel (OpenCL or CPU)\n"
     "  --size WxH       output size (default: the input's; brute/fast cost grows with it); for a\n"
     "                   cube map N x 6N (faces of N x N)\n"
     "  --window W       sh9 window: none (default) or nonneg (1, 6/7, 32/35: never negative)\n"
     "  --backend B      brute only: auto, cpu or opencl (also LX_BACKEND)\n"
     "  --threads N      CPU threads (default: all cores)\n"
     "  --half           write OUT with half channels (default float; ZIP compression)\n"
-    "  --png FILE       tone-mapped preview of input and output side by side\n"
+    "  --png FILE       a preview: the input tone-mapped beside the output as illuminance (lx) in\n"
+    "                   false colour with its legend\n"
+    "  --scale S        the preview's scale: log (default, decade ticks) or linear (round ticks)\n"
     "  --normal X,Y,Z   print one row for this normal instead of writing a map\n"
     "  --units U        auto (default: luminance when the file has whiteLuminance), radiance\n"
     "                   (W/sr/m2 per channel) or luminance (cd/m2)\n"
@@ -45,6 +50,38 @@ static const char help[] =
     "  luxcalc irradiance samples/envmaps/sky_sun.exr --normal 0,0,1 --method fast --format csv\n";
 
 int cli_envmap_units(const char *cmd, lx_envmap *m, const char *units, const char *eff); /* shared with luminance-map */
+
+/* After SH9: a warning when the result is negative (neg_min < 0: the most negative illuminance,
+ * n_neg of n_out outputs) or when a small source holds much of the map's power (10 % or more in
+ * pixels covering at most 0.1 % of the sphere: SH9's error reaches 3/32 of that source's power);
+ * and, when auto chose SH9, a note that says so. Nothing when -q. */
+static void sh9_notes(lx_ctx *ctx, const char *cmd, const lx_envmap *m, const lx_irr_opts *io, double neg_min, size_t n_neg,
+                      size_t n_out)
+{
+    double ratio;
+    if (cli_quiet || lx_ctx_irradiance_method(ctx, &ratio) != LX_IRR_SH9) return;
+    if (io->method == LX_IRR_AUTO)
+        cli_error(cmd, "note: SH9 (approximate) for this map: the exact method (--method fast) would cost about %.0f "
+                       "times as much here",
+                  ratio);
+    if (neg_min < 0) {
+        if (n_out == 1)
+            cli_error(cmd, "warning: SH9 gives a negative illuminance (%.6g lx): its ringing around a small bright "
+                           "source; the exact value (--method fast) is >= 0",
+                      neg_min);
+        else
+            cli_error(cmd, "warning: SH9 gives %zu of %zu outputs a negative illuminance (down to %.6g lx): its ringing "
+                           "around a small bright source; --method fast is exact",
+                      n_neg, n_out, neg_min);
+    }
+    double frac = 0, sphere = 4 * 3.14159265358979323846;
+    size_t px = 0;
+    if (lx_envmap_concentration(ctx, m, 1e-3 * sphere, &frac, &px) == LX_OK && frac >= 0.1)
+        cli_error(cmd, "warning: SH9 is approximate and this map has a dominant small source: %.1f %% of its power is in "
+                       "%zu pixel%s (at most 0.1 %% of the sphere); SH9 can err by up to 3/32 of that source's power "
+                       "(--method fast is exact)",
+                  100 * frac, px, px == 1 ? "" : "s");
+}
 
 int cli_envmap_units(const char *cmd, lx_envmap *m, const char *units, const char *eff)
 {
@@ -97,21 +134,24 @@ int cmd_irradiance(int argc, char **argv)
         {"window", required_argument, 0, 'W'}, {"backend", required_argument, 0, 'b'},
         {"threads", required_argument, 0, 't'}, {"half", no_argument, 0, 'H'},
         {"png", required_argument, 0, 'p'},   {"normal", required_argument, 0, 'n'},
+        {"scale", required_argument, 0, 'S'},
         {"units", required_argument, 0, 'u'}, {"efficacy", required_argument, 0, 'K'},
         {"format", required_argument, 0, 'f'}, {"output", required_argument, 0, 'o'},
         {"help", no_argument, 0, 'h'},        {0, 0, 0, 0}};
     const char *cmd = "irradiance", *out = NULL, *png = NULL, *normal = NULL, *units = NULL, *eff = NULL;
-    lx_irr_opts io = {0};
+    lx_irr_opts io = {.method = LX_IRR_AUTO};
     int W = 0, H = 0, half = 0, c, fmt = CLI_FMT_TABLE;
+    lx_plot_scale scale = LX_PLOT_SCALE_LOG;
     optind = 1;
     opterr = 0;
-    while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":o:h", opts, NULL)) != -1) {
         switch (c) {
         case 'm':
             if (!strcmp(optarg, "sh9")) io.method = LX_IRR_SH9;
             else if (!strcmp(optarg, "brute")) io.method = LX_IRR_BRUTE;
             else if (!strcmp(optarg, "fast")) io.method = LX_IRR_FAST;
-            else return cli_error(cmd, "--method: '%s' is not sh9, brute or fast", optarg), CLI_USAGE;
+            else if (!strcmp(optarg, "auto")) io.method = LX_IRR_AUTO;
+            else return cli_error(cmd, "--method: '%s' is not auto, fast, sh9 or brute", optarg), CLI_USAGE;
             break;
         case 's':
             if (parse_size(optarg, &W, &H)) return cli_error(cmd, "--size: '%s' is not WxH", optarg), CLI_USAGE;
@@ -138,6 +178,11 @@ int cmd_irradiance(int argc, char **argv)
         }
         case 'H': half = 1; break;
         case 'p': png = optarg; break;
+        case 'S':
+            if (!strcmp(optarg, "log")) scale = LX_PLOT_SCALE_LOG;
+            else if (!strcmp(optarg, "linear")) scale = LX_PLOT_SCALE_LINEAR;
+            else return cli_error(cmd, "--scale: '%s' is not log or linear", optarg), CLI_USAGE;
+            break;
         case 'n': normal = optarg; break;
         case 'u': units = optarg; break;
         case 'K': eff = optarg; break;
@@ -147,7 +192,7 @@ int cmd_irradiance(int argc, char **argv)
             break;
         case 'o': out = optarg; break;
         case 'h': cli_print_help(help); return CLI_OK;
-        default: return cli_error(cmd, "bad option '%s' (see luxcalc irradiance --help)", argv[optind - 1]), CLI_USAGE;
+        default: return cli_bad_option(cmd, argv, c);
         }
     }
     if (optind + 1 != argc) return cli_error(cmd, "give exactly one input map (see --help)"), CLI_USAGE;
@@ -162,13 +207,19 @@ int cmd_irradiance(int argc, char **argv)
             return cli_error(cmd, "--normal: '%s' is not a non-zero vector X,Y,Z", normal), CLI_USAGE;
     } else if (!out) {
         return cli_error(cmd, "-o OUT.exr is required (or --normal X,Y,Z)"), CLI_USAGE;
+    } else {
+        size_t ol = strlen(out); /* OUT is OpenEXR: never EXR bytes under a picture's name */
+        static const char *const pics[] = {".png", ".PNG", ".jpg", ".jpeg", ".JPG", ".tif", ".tiff", ".hdr"};
+        for (size_t k = 0; k < sizeof pics / sizeof *pics; k++)
+            if (ol >= strlen(pics[k]) && !strcmp(out + ol - strlen(pics[k]), pics[k]))
+                return cli_error(cmd, "-o %s: OUT is written as OpenEXR; name it .exr (a picture: --png FILE)", out), CLI_USAGE;
     }
     lx_ctx *ctx = cli_ctx(cmd);
     if (!ctx) return CLI_RUNTIME;
     lx_envmap *m = NULL, *e = NULL;
     lx_status st = lx_exr_read_any(ctx, in, &m);
     int rc = st ? cli_fail(cmd, ctx, st) : cli_envmap_units(cmd, m, units, eff);
-    static const char *mname[3] = {"sh9", "brute", "fast"};
+    static const char *mname[4] = {"sh9", "brute", "fast", "auto"};
     if (!rc && normal) {
         double E[3];
         st = lx_irradiance_dirs(ctx, m, 1, n, &io, E);
@@ -182,23 +233,24 @@ int cmd_irradiance(int argc, char **argv)
             for (int k = 0; k < 3; k++) cli_table_num(t, n[k] / l);
             cli_table_num(t, Y);
             cli_table_num(t, Y * m->lum_per_unit);
-            cli_table_str(t, mname[io.method]);
+            cli_table_str(t, mname[lx_ctx_irradiance_method(ctx, NULL)]);
             if (m->channels == 3)
                 for (int k = 0; k < 3; k++) cli_table_num(t, E[k]);
             cli_output o;
             if (cli_output_open(&o, out, cmd)) rc = CLI_INPUT;
             else {
                 int bad = cli_table_write(t, (cli_format)fmt, o.fp, 0);
-                if (cli_output_close(&o, !bad, cmd) || bad) rc = CLI_INPUT;
+                if (cli_output_close(&o, !bad, cmd) || bad) rc = CLI_RUNTIME;
             }
             cli_table_free(t);
+            sh9_notes(ctx, cmd, m, &io, Y < 0 ? Y * m->lum_per_unit : 0, Y < 0, 1);
         }
     } else if (!rc && m->layout == LX_ENV_CUBE && W && H != 6 * W) {
         cli_error(cmd, "--size: %dx%d: the input is a cube map, give N x 6N", W, H);
         rc = CLI_USAGE;
     } else if (!rc) {
-        if (io.method != LX_IRR_SH9 && W == 0 && (double)m->width * m->height * m->width * m->height > 4e10 &&
-            io.method == LX_IRR_BRUTE && io.backend != LX_BACKEND_OPENCL)
+        if (W == 0 && (double)m->width * m->height * m->width * m->height > 4e10 && io.method == LX_IRR_BRUTE &&
+            io.backend != LX_BACKEND_OPENCL)
             cli_error(cmd, "warning: brute force %dx%d -> %dx%d is %.2g pixel pairs; consider --size or --method fast",
                       m->width, m->height, m->width, m->height, (double)m->width * m->height * m->width * m->height);
         struct timespec t0, t1;
@@ -207,16 +259,24 @@ int cmd_irradiance(int argc, char **argv)
         clock_gettime(CLOCK_MONOTONIC, &t1);
         lx_exr_write_opts wo = {.half = half};
         if (!st) st = lx_envmap_write_exr(ctx, out, e, &wo);
+        lx_irr_method ran = lx_ctx_irradiance_method(ctx, NULL);
+        if (!st && ran == LX_IRR_SH9) {
+            size_t n_out = (size_t)e->width * e->height, n_neg = 0;
+            double neg = 0;
+            for (size_t k = 0; k < n_out; k++) {
+                double v[3] = {0, 0, 0};
+                for (int c = 0; c < e->channels; c++) v[c] = e->data[k * e->channels + c];
+                double y = y_of(e, v) * e->lum_per_unit;
+                if (y < 0) n_neg++, neg = y < neg ? y : neg;
+            }
+            sh9_notes(ctx, cmd, m, &io, neg, n_neg, n_out);
+        }
         if (!st && png) {
-            const lx_envmap *maps[2] = {m, e};
-            char lab[64];
-            snprintf(lab, sizeof lab, "IRRADIANCE (%s)", mname[io.method]);
-            const char *labels[2] = {"RADIANCE (INPUT)", lab};
-            st = lx_png_preview(ctx, png, 2, maps, labels);
+            st = lx_irradiance_write_png(ctx, png, m, e, mname[ran], scale);
         }
         if (st) rc = cli_fail(cmd, ctx, st);
         else if (cli_verbose)
-            fprintf(stderr, "luxcalc: irradiance: %s %dx%d -> %dx%d in %.3f s (%s)\n", mname[io.method], m->width,
+            fprintf(stderr, "luxcalc: irradiance: %s %dx%d -> %dx%d in %.3f s (%s)\n", mname[ran], m->width,
                     m->height, e->width, e->height, (t1.tv_sec - t0.tv_sec) + 1e-9 * (t1.tv_nsec - t0.tv_nsec),
                     lx_ctx_backend_used(ctx) == LX_BACKEND_OPENCL ? "opencl" : "cpu");
     }

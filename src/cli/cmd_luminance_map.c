@@ -13,12 +13,14 @@ static const char help[] =
     "Per-pixel luminance L = k (wR R + wG G + wB B): weights from the file's chromaticities, else\n"
     "Rec.709/sRGB (0.2126, 0.7152, 0.0722 with D65); k = whiteLuminance when the file has it\n"
     "(values are then relative luminance), else the efficacy (179 lm/W) for W/sr/m2 radiance.\n"
-    "Prints min, max, mean and median over the pixels (cd/m2), and with --png draws the map in\n"
-    "false colour with a legend.\n"
+    "Prints min, max, mean and median over the pixels (cd/m2; lx for an irradiance map that luxcalc\n"
+    "irradiance wrote: its values are illuminances), and with --png draws the map in false colour,\n"
+    "the look of Radiance falsecolor: a log scale with decade ticks (a flat map keeps two decades)\n"
+    "or a linear one with round ticks, and the unit on the legend.\n"
     "\n"
     "  --png FILE       false-colour PNG with a legend (atomic)\n"
     "  --scale S        log (default) or linear\n"
-    "  --range MIN:MAX  legend range in cd/m2 (default: the map's; log needs MIN > 0)\n"
+    "  --range MIN:MAX  legend range in cd/m2 (lx) (default: the map's; log needs MIN > 0)\n"
     "  --units U        auto (default), radiance or luminance (see luxcalc irradiance --help)\n"
     "  --efficacy K     lm/W for radiance maps (default 179)\n"
     "  --format F       table (default), csv or json\n"
@@ -51,7 +53,7 @@ int cmd_luminance_map(int argc, char **argv)
     double vmin = NAN, vmax = NAN;
     optind = 1;
     opterr = 0;
-    while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":o:h", opts, NULL)) != -1) {
         switch (c) {
         case 'p': png = optarg; break;
         case 's':
@@ -75,7 +77,7 @@ int cmd_luminance_map(int argc, char **argv)
             break;
         case 'o': out = optarg; break;
         case 'h': cli_print_help(help); return CLI_OK;
-        default: return cli_error(cmd, "bad option '%s' (see luxcalc luminance-map --help)", argv[optind - 1]), CLI_USAGE;
+        default: return cli_bad_option(cmd, argv, c);
         }
     }
     if (optind + 1 != argc) return cli_error(cmd, "give exactly one input map (see --help)"), CLI_USAGE;
@@ -106,7 +108,9 @@ int cmd_luminance_map(int argc, char **argv)
             qsort(sorted, n, sizeof *sorted, cmp_double);
             double med = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
             static const char *const names[] = {"min", "max", "mean", "median", "mean_sr_weighted", "width", "height", "file"};
-            static const char *const unit_s[] = {"cd/m2", "cd/m2", "cd/m2", "cd/m2", "cd/m2", "px", "px", ""};
+            /* an irradiance map (luxcalc irradiance -o) holds illuminance per normal, in lx */
+            const char *u = m->irradiance ? "lx" : "cd/m2";
+            const char *unit_s[] = {u, u, u, u, u, "px", "px", ""};
             cli_table *t = cli_table_new(8, names, unit_s);
             cli_table_num(t, sorted[0]);
             cli_table_num(t, sorted[n - 1]);
@@ -117,8 +121,21 @@ int cmd_luminance_map(int argc, char **argv)
             cli_table_int(t, m->height);
             cli_table_str(t, in);
             if (png) {
-                st = lx_png_falsecolor(ctx, png, m->width, m->height, lum, vmin, vmax, log_scale,
-                                       log_scale ? "LUMINANCE CD/M2 (LOG)" : "LUMINANCE CD/M2");
+                const char *base = strrchr(in, '/');
+                char title[300], unit[32];
+                snprintf(title, sizeof title, "%s \u2014 %s", m->irradiance ? "Illuminance of each normal" : "Luminance",
+                         base ? base + 1 : in);
+                cli_column col; /* the output unit (--units imperial: fc, fL) */
+                cli_column_out("v", u, &col);
+                for (size_t p = 0; col.scale != 1 && p < n; p++) lum[p] *= col.scale;
+                if (!strcmp(col.unit, "cd/m2")) snprintf(unit, sizeof unit, "cd/m\u00b2");
+                else if (!strcmp(col.unit, "cd/ft2")) snprintf(unit, sizeof unit, "cd/ft\u00b2");
+                else snprintf(unit, sizeof unit, "%s", col.unit);
+                lx_falsecolor_opts fo = {.scale = log_scale ? LX_PLOT_SCALE_LOG : LX_PLOT_SCALE_LINEAR,
+                                         .lo = isnan(vmin) ? 0 : vmin * col.scale, .hi = isnan(vmax) ? 0 : vmax * col.scale,
+                                         .quantity = m->irradiance ? "illuminance" : "luminance", .unit = unit,
+                                         .title = title};
+                st = lx_falsecolor_write_png(ctx, png, m->width, m->height, lum, &fo);
                 if (st) rc = cli_fail(cmd, ctx, st);
             }
             if (!rc) {
@@ -126,7 +143,7 @@ int cmd_luminance_map(int argc, char **argv)
                 if (cli_output_open(&o, out, cmd)) rc = CLI_INPUT;
                 else {
                     int bad = cli_table_write(t, (cli_format)fmt, o.fp, 0);
-                    if (cli_output_close(&o, !bad, cmd) || bad) rc = CLI_INPUT;
+                    if (cli_output_close(&o, !bad, cmd) || bad) rc = CLI_RUNTIME;
                 }
             }
             cli_table_free(t);

@@ -71,7 +71,7 @@ int cmd_point(int argc, char **argv)
     if (!rc) {
         static const char *const names[] = {"flux_lm", "intensity_cd", "illuminance_lx", "distance_m", "angle_deg"};
         static const char *const units[] = {"lm", "cd", "lx", "m", "deg"};
-        const double vals[] = {f, i, e, d, a / LT_DEG};
+        const double vals[] = {f, i, e, lt_echo(d), lt_echo(a / LT_DEG)};
         rc = lt_emit_nums(&co, 5, names, units, vals);
     }
     lx_ctx_destroy(ctx);

@@ -63,7 +63,7 @@ static int run(int argc, char **argv, int daylight)
     double T = NAN, a = daylight ? 300 : 360, b = 830, step = daylight ? 5 : 1;
     int fmt = CLI_FMT_CSV, c;
     optind = 1;
-    while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":o:h", opts, NULL)) != -1) {
         switch (c) {
         case 't':
             if (parse_kelvin(optarg, &T) || !(T > 0))
@@ -81,7 +81,7 @@ static int run(int argc, char **argv, int daylight)
             break;
         case 'o': outpath = optarg; break;
         case 'h': cli_print_help(help); return CLI_OK;
-        default: fprintf(stderr, "%s", help); return CLI_USAGE;
+        default: return cli_bad_option(cmd, argv, c);
         }
     }
     if (isnan(T)) return cli_error(cmd, "%s is required", daylight ? "--cct" : "--temperature"), CLI_USAGE;
@@ -108,7 +108,7 @@ static int run(int argc, char **argv, int daylight)
         if (cli_output_open(&o, outpath, cmd) != 0) rc = CLI_INPUT;
         else {
             int ok = cli_table_write(t, (cli_format)fmt, o.fp, 1) == 0;
-            if (cli_output_close(&o, ok, cmd) != 0 || !ok) rc = CLI_INPUT;
+            if (cli_output_close(&o, ok, cmd) != 0 || !ok) rc = CLI_RUNTIME;
         }
         cli_table_free(t);
     }

@@ -1,7 +1,8 @@
 /* cmd_scene.c - `luxcalc scene FILE [--explain]`: reads a scene, plans which effects it needs,
  * evaluates it and prints the receivers' results, or (--explain) the plan with its reasons and
  * the estimated and measured work. */
-#include "cli.h"
+#include "grid.h"
+#include "spd_report.h"
 
 #include <getopt.h>
 #include <math.h>
@@ -19,13 +20,15 @@ static const char help[] =
     "  --explain         print the plan: each effect on or off with its reason, the pairs that take\n"
     "                    the near-field path, the estimated and the measured work (json: an object\n"
     "                    with \"effects\", \"reasons\", \"forced\", \"pairs\", \"estimated\", \"measured\")\n"
-    "  --contributions   csv/json: one more column per luminaire (E_NAME_lx) and the sky (E_sky_lx)\n"
+    "  --contributions   one more column per luminaire (E_NAME_lx; table: E_NAME_avg_lx, the mean over\n"
+    "                    the receiver) and, with a sky, the sky (E_sky_lx)\n"
     "  --glare           UGR (CIE 117) at each [observer]: one row per luminaire that counts with its\n"
     "                    luminance, solid angle, position index and term L^2 w / p^2, and the UGR\n"
     "  --format F        table (default: a summary per receiver), csv or json (one row per point)\n"
     "  -o FILE           write to FILE (atomically)\n"
-    "  --png DIR         also draw every grid receiver's illuminance as a false-colour PNG:\n"
-    "                    DIR/SCENE_RECEIVER.png (SCENE: the file name without its extension)\n"
+    "  --png DIR         also draw every grid receiver as an isolux plot (contours, luminaires,\n"
+    "                    legend, statistics): DIR/SCENE_RECEIVER.png (SCENE: the file name without\n"
+    "                    its extension; DIR is created when missing)\n"
     "  --backend B       auto (default, also LX_BACKEND), cpu or opencl: where the far-field work of\n"
     "                    IES luminaires on grids runs (auto: OpenCL from 1e7 evaluations)\n"
     "\n"
@@ -39,15 +42,23 @@ static const char help[] =
 static const char *const counter_names[] = {
     "point_evaluations",      "spot_evaluations",    "goniometric_lookups",
     "nearfield_pairs",        "nearfield_subdivisions", "environment_evaluations",
-    "environment_samples",    "spectra_integrated",  "kernel_launches"};
-#define N_COUNTERS 9
+    "environment_samples",    "spectra_integrated",  "kernel_launches",
+    "nearfield_probes",       "closed_form_evaluations"};
+#define N_COUNTERS 11
 
 static unsigned long long counter(const lx_counters *c, int i)
 {
     const unsigned long long v[N_COUNTERS] = {c->point_evaluations,     c->spot_evaluations,    c->goniometric_lookups,
                                               c->nearfield_pairs,       c->nearfield_subdivisions, c->environment_evaluations,
-                                              c->environment_samples,   c->spectra_integrated,  c->kernel_launches};
+                                              c->environment_samples,   c->spectra_integrated,  c->kernel_launches,
+                                              c->nearfield_probes,      c->closed_form_evaluations};
     return v[i];
+}
+
+/* The measured work: the evaluation's, plus the planner's own (its near-field probes). */
+static unsigned long long measured(const lx_scene_plan *p, const lx_scene_result *res, int i)
+{
+    return counter(&res->work, i) + counter(&p->planning, i);
 }
 
 static void json_string(FILE *f, const char *s)
@@ -67,8 +78,68 @@ static size_t near_points(const lx_scene *sc, const lx_scene_plan *p, size_t l, 
 {
     size_t g0 = 0, k = 0;
     for (size_t i = 0; i < r; i++) g0 += sc->rec[i].n;
-    for (size_t i = 0; i < sc->rec[r].n; i++) k += p->near[l * p->n_points + g0 + i];
+    for (size_t i = 0; i < sc->rec[r].n; i++) k += p->near[l * p->n_points + g0 + i] != 0;
     return k;
+}
+
+/* The decision of every pair of a luminaire with a luminous area: where, the point model's
+ * estimated error relative to the point's illuminance, and the path. Text: at most
+ * MAX_PAIR_LINES lines (json has them all). */
+#define MAX_PAIR_LINES 2000
+static void text_pairs(FILE *f, const lx_scene *sc, const lx_scene_plan *p)
+{
+    size_t shown = 0, total = 0;
+    int header = 0;
+    for (size_t l = 0; l < sc->n_lum; l++) {
+        size_t g = 0;
+        for (size_t r = 0; r < sc->n_rec; r++)
+            for (size_t i = 0; i < sc->rec[r].n; i++, g++) {
+                size_t at = l * p->n_points + g;
+                if (p->near_why[at] == LX_NEAR_NONE) continue;
+                total++;
+                if (shown >= MAX_PAIR_LINES) continue;
+                if (!header) {
+                    fprintf(f, "\nnear-field decisions (tolerance %g; estimate: the point model's error relative to "
+                               "the point's illuminance):\n  %-12s %-12s %6s %10s %10s %10s %12s  %s\n",
+                            sc->nearfield_tol, "luminaire", "receiver", "point", "x_m", "y_m", "z_m", "estimate", "decision");
+                    header = 1;
+                }
+                const double *q = sc->rec[r].points + 3 * i;
+                char est[32] = "-";
+                if (!isnan(p->near_err[at])) snprintf(est, sizeof est, "%.3g", p->near_err[at]);
+                fprintf(f, "  %-12s %-12s %6zu %10.4g %10.4g %10.4g %12s  %s\n", sc->lum[l].name, sc->rec[r].name, i + 1,
+                        q[0], q[1], q[2], est, lx_near_why_name((lx_near_why)p->near_why[at]));
+                shown++;
+            }
+    }
+    if (total > shown) fprintf(f, "  ... %zu more pairs (all of them: --explain --format json)\n", total - shown);
+}
+
+static void json_pairs(FILE *f, const lx_scene *sc, const lx_scene_plan *p)
+{
+    static const char *const path[3] = {"point", "area", "closed_form"};
+    fputs("  \"near_field_decisions\": [", f);
+    int first = 1;
+    for (size_t l = 0; l < sc->n_lum; l++) {
+        size_t g = 0;
+        for (size_t r = 0; r < sc->n_rec; r++)
+            for (size_t i = 0; i < sc->rec[r].n; i++, g++) {
+                size_t at = l * p->n_points + g;
+                if (p->near_why[at] == LX_NEAR_NONE) continue;
+                fputs(first ? "\n    {\"luminaire\": " : ",\n    {\"luminaire\": ", f);
+                json_string(f, sc->lum[l].name);
+                fputs(", \"receiver\": ", f);
+                json_string(f, sc->rec[r].name);
+                fprintf(f, ", \"point\": %zu, \"estimate\": ", i + 1);
+                if (isfinite(p->near_err[at])) cli_print_exact(f, p->near_err[at]);
+                else fputs("null", f);
+                fprintf(f, ", \"path\": \"%s\", \"why\": ", path[p->near[at] < 3 ? p->near[at] : 0]);
+                json_string(f, lx_near_why_name((lx_near_why)p->near_why[at]));
+                fputc('}', f);
+                first = 0;
+            }
+    }
+    fputs(first ? "],\n" : "\n  ],\n", f);
 }
 
 static void explain(FILE *f, const lx_scene *sc, const lx_scene_plan *p, const lx_scene_result *res, cli_format fmt)
@@ -102,11 +173,13 @@ static void explain(FILE *f, const lx_scene *sc, const lx_scene_plan *p, const l
             }
         fputs(first ? "]},\n" : "\n  ]},\n", f);
         for (int pass = 0; pass < 2; pass++) {
-            const lx_counters *c = pass ? &res->work : &p->estimate;
             fprintf(f, "  \"%s\": {", pass ? "measured" : "estimated");
-            for (int i = 0; i < N_COUNTERS; i++) fprintf(f, "%s\"%s\": %llu", i ? ", " : "", counter_names[i], counter(c, i));
+            for (int i = 0; i < N_COUNTERS; i++)
+                fprintf(f, "%s\"%s\": %llu", i ? ", " : "", counter_names[i],
+                        pass ? measured(p, res, i) : counter(&p->estimate, i));
             fputs("},\n", f);
         }
+        json_pairs(f, sc, p);
         fputs("  \"seconds\": ", f);
         cli_print_exact(f, res->seconds);
         fputs("\n}\n", f);
@@ -134,9 +207,10 @@ static void explain(FILE *f, const lx_scene *sc, const lx_scene_plan *p, const l
             size_t k = near_points(sc, p, l, r);
             if (k) fprintf(f, "  %s -> %s: %zu of %zu points near field\n", sc->lum[l].name, sc->rec[r].name, k, sc->rec[r].n);
         }
+    text_pairs(f, sc, p);
     fprintf(f, "\nwork:%*s %14s %14s\n", 19, "", "estimated", "measured");
     for (int i = 0; i < N_COUNTERS; i++)
-        fprintf(f, "  %-22s %14llu %14llu\n", counter_names[i], counter(&p->estimate, i), counter(&res->work, i));
+        fprintf(f, "  %-23s %14llu %14llu\n", counter_names[i], counter(&p->estimate, i), measured(p, res, i));
     fprintf(f, "  %-22s %14s %14.3g\n", "seconds", "", res->seconds);
 }
 
@@ -149,7 +223,7 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
     if (!names) return NULL;
     char **units = names + cap;
 #define COL(n, u) (names[nn] = strdup(n), units[nn] = strdup(u), nn++)
-    int table = fmt == CLI_FMT_TABLE;
+    int table = fmt == CLI_FMT_TABLE, sky = sc->sky != LX_SKY_NONE;
     COL("receiver", "");
     if (table) {
         COL("points", "");
@@ -157,9 +231,18 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
         COL("illuminance_min_lx", "lx");
         COL("illuminance_max_lx", "lx");
         COL("uniformity_u0", "");
+        COL("uniformity_min_max", "");
         if (sc->want_luminance) COL("luminance_avg_cd_m2", "cd/m2");
         if (sc->want_cct) COL("cct_avg_K", "K");
         if (sc->want_melanopic) COL("melanopic_edi_avg_lx", "lx");
+        if (contrib) {
+            for (size_t l = 0; l < sc->n_lum; l++) {
+                char b[300];
+                snprintf(b, sizeof b, "E_%s_avg_lx", sc->lum[l].name);
+                COL(b, "lx");
+            }
+            if (sky) COL("E_sky_avg_lx", "lx");
+        }
     } else {
         COL("x", "m");
         COL("y", "m");
@@ -174,7 +257,7 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
                 snprintf(b, sizeof b, "E_%s_lx", sc->lum[l].name);
                 COL(b, "lx");
             }
-            COL("E_sky_lx", "lx");
+            if (sky) COL("E_sky_lx", "lx");
         }
     }
     cli_table *t = cli_table_new((int)nn, (const char *const *)names, (const char *const *)units);
@@ -208,9 +291,15 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
             cli_table_num(t, mn);
             cli_table_num(t, mx);
             cli_table_num(t, avg > 0 ? mn / avg : NAN);
+            cli_table_num(t, mx > 0 ? mn / mx : NAN);
             if (sc->want_luminance) cli_table_num(t, ls / n);
             if (sc->want_cct) cli_table_num(t, cn == b - a ? cs / (double)cn : NAN);
             if (sc->want_melanopic) cli_table_num(t, ms / n);
+            for (size_t l = 0; contrib && l < sc->n_lum + (size_t)sky; l++) {
+                double c = 0;
+                for (size_t g = a; g < b; g++) c += res->contrib_lx[g * (sc->n_lum + 1) + l];
+                cli_table_num(t, c / n);
+            }
             continue;
         }
         for (size_t g = a; g < b; g++) {
@@ -222,7 +311,7 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
             if (sc->want_cct) cli_table_num(t, res->cct_K[g]), cli_table_num(t, res->duv[g]);
             if (sc->want_melanopic) cli_table_num(t, res->melanopic_edi_lx[g]);
             if (contrib)
-                for (size_t l = 0; l <= sc->n_lum; l++) cli_table_num(t, res->contrib_lx[g * (sc->n_lum + 1) + l]);
+                for (size_t l = 0; l < sc->n_lum + (size_t)sky; l++) cli_table_num(t, res->contrib_lx[g * (sc->n_lum + 1) + l]);
         }
     }
     *names_out = names;
@@ -230,32 +319,58 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
     return t;
 }
 
-/* Each grid receiver's illuminance as a false-colour PNG, drawn as seen from the side its
- * normal points to: the first free axis to the right, the second upwards. */
+/* The plane of a grid receiver (its first free axis as A, the second as B) for the isolux plot. */
+void cli_scene_plane(const lx_scene_receiver *rc, lx_plane *p)
+{
+    memset(p, 0, sizeof *p);
+    int k = rc->axis - 'x', ia = k == 0 ? 1 : 0, ib = k == 2 ? 1 : 2;
+    p->u[ia] = 1, p->v[ib] = 1;
+    p->origin_m[k] = rc->points[k];
+    const double *first = rc->points, *last_a = rc->points + 3 * (rc->na - 1), *last_b = rc->points + 3 * (rc->nb - 1) * rc->na;
+    p->a0 = first[ia], p->a1 = last_a[ia], p->b0 = first[ib], p->b1 = last_b[ib];
+    p->na = rc->na, p->nb = rc->nb;
+    memcpy(p->normal, rc->normal, sizeof p->normal);
+}
+
+/* The scene's luminaires as plot marks (free with free()); NULL when there are none or no memory. */
+lx_plot_mark *cli_scene_marks(const lx_scene *sc)
+{
+    lx_plot_mark *mk = sc->n_lum ? calloc(sc->n_lum, sizeof *mk) : NULL;
+    for (size_t l = 0; mk && l < sc->n_lum; l++) {
+        memcpy(mk[l].pos_m, sc->lum[l].pos_m, sizeof mk[l].pos_m);
+        memcpy(mk[l].aim, sc->lum[l].aim, sizeof mk[l].aim);
+        mk[l].name = sc->lum[l].name;
+    }
+    return mk;
+}
+
+/* Each grid receiver's illuminance as an isolux plot DIR/SCENE_RECEIVER.png (DIR created when
+ * missing), seen from the side its normal points to: the first free axis to the right, the
+ * second upwards. */
 static lx_status write_pngs(lx_ctx *ctx, const lx_scene *sc, const lx_scene_result *res, const char *scene_path,
-                            const char *dir)
+                            const char *dir, int imperial)
 {
     const char *base = strrchr(scene_path, '/');
     base = base ? base + 1 : scene_path;
     size_t bl = strlen(base);
     const char *dot = strrchr(base, '.');
     if (dot && dot != base) bl = (size_t)(dot - base);
-    for (size_t r = 0; r < sc->n_rec; r++) {
+    lx_plot_mark *mk = cli_scene_marks(sc);
+    lx_status st = LX_OK;
+    for (size_t r = 0; r < sc->n_rec && !st; r++) {
         const lx_scene_receiver *rc = &sc->rec[r];
         if (rc->kind != LX_SREC_GRID) continue;
-        double *v = malloc(rc->n * sizeof *v);
-        char path[4096], title[512];
-        if (!v) return LX_ENOMEM;
-        for (size_t j = 0; j < rc->nb; j++)
-            for (size_t i = 0; i < rc->na; i++) v[j * rc->na + i] = res->E_lx[res->first[r] + (rc->nb - 1 - j) * rc->na + i];
+        char path[4096];
+        lx_plane p;
+        cli_scene_plane(rc, &p);
         snprintf(path, sizeof path, "%s/%.*s_%s.png", dir, (int)bl, base, rc->name);
-        snprintf(title, sizeof title, "E (lx) %s", rc->name);
-        lx_status st = lx_png_falsecolor(ctx, path, (int)rc->na, (int)rc->nb, v, NAN, NAN, 0, title);
-        free(v);
-        if (st != LX_OK) return st;
-        if (!cli_quiet) fprintf(stderr, "luxcalc: scene: wrote %s\n", path);
+        lx_isolux_opts io = {.marks = mk, .n_marks = mk ? sc->n_lum : 0, .source = scene_path, .surface = rc->name,
+                             .caption = sc->title, .imperial = imperial};
+        st = lx_grid_write_png(ctx, path, &p, res->E_lx + res->first[r], &io);
+        if (!st && !cli_quiet) fprintf(stderr, "luxcalc: scene: wrote %s\n", path);
     }
-    return LX_OK;
+    free(mk);
+    return st;
 }
 
 /* --glare: one row per observer and luminaire that counts, with the observer's UGR */
@@ -316,7 +431,7 @@ int cmd_scene(int argc, char **argv)
     cli_format fmt = CLI_FMT_TABLE;
     optind = 1;
     opterr = 0;
-    while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":o:h", opts, NULL)) != -1) {
         switch (c) {
         case 'e': do_explain = 1; break;
         case 'c': contrib = 1; break;
@@ -334,7 +449,7 @@ int cmd_scene(int argc, char **argv)
             break;
         }
         case 'h': cli_print_help(help); return CLI_OK;
-        default: cli_error(cmd, "bad option '%s' (see luxcalc scene --help)", argv[optind - 1]); return CLI_USAGE;
+        default: return cli_bad_option(cmd, argv, c);
         }
     }
     if (optind + 1 != argc) {
@@ -362,21 +477,28 @@ int cmd_scene(int argc, char **argv)
     if (st == LX_OK) st = lx_scene_plan_make(ctx, sc, backend, &plan);
     if (st == LX_OK) st = lx_scene_eval(ctx, sc, plan, NULL, &res);
     int rc = CLI_OK;
-    if (st == LX_OK && png_dir) st = write_pngs(ctx, sc, res, argv[optind], png_dir);
+    if (st == LX_OK && png_dir && cli_make_dir(cmd, "--png", png_dir) != 0) {
+        lx_scene_result_free(res);
+        lx_scene_plan_free(plan);
+        lx_scene_free(sc);
+        lx_ctx_destroy(ctx);
+        return CLI_INPUT;
+    }
+    if (st == LX_OK && png_dir) st = write_pngs(ctx, sc, res, argv[optind], png_dir, cli_imperial());
     if (st != LX_OK) rc = cli_fail(cmd, ctx, st);
     else {
         cli_output o;
         if (cli_output_open(&o, out, cmd) != 0) rc = CLI_INPUT;
         else if (do_explain) {
             explain(o.fp, sc, plan, res, fmt);
-            if (cli_output_close(&o, !ferror(o.fp), cmd) != 0) rc = CLI_INPUT;
+            if (cli_output_close(&o, !ferror(o.fp), cmd) != 0) rc = CLI_RUNTIME;
         } else {
             char **names = NULL;
             size_t nn = 0;
             cli_table *t = results(sc, res, fmt, contrib, &names, &nn);
             int ok = t && cli_table_write(t, fmt, o.fp, 1) == 0;
             if (!t) cli_error(cmd, "out of memory");
-            if (cli_output_close(&o, ok, cmd) != 0 || !ok) rc = t ? CLI_INPUT : CLI_RUNTIME;
+            if (cli_output_close(&o, ok, cmd) != 0 || !ok) rc = CLI_RUNTIME;
             cli_table_free(t);
             for (size_t i = 0; i < nn; i++) free(names[i]);
             free(names);

@@ -37,6 +37,7 @@ int cli_exit_code(lx_status st)
     case LX_EINVAL:
     case LX_EUNSUPPORTED: return CLI_INPUT;
     case LX_ENOMEM:
+    case LX_EWRITE:
     case LX_EDEVICE: return CLI_RUNTIME;
     }
     return CLI_RUNTIME;
@@ -75,6 +76,7 @@ int cli_format_parse(const char *s)
     if (!strcmp(s, "table")) return CLI_FMT_TABLE;
     if (!strcmp(s, "csv")) return CLI_FMT_CSV;
     if (!strcmp(s, "json")) return CLI_FMT_JSON;
+    if (!strcmp(s, "tsv")) return CLI_FMT_TSV;
     return -1;
 }
 
@@ -114,7 +116,7 @@ void cli_print_exact(FILE *out, double v)
 
 /* ---- the result table ---- */
 typedef struct cell {
-    int kind; /* 0 number, 1 string, 2 integer */
+    int kind; /* 0 number, 1 string, 2 integer, 3 JSON text */
     double num;
     long long integer;
     char *str;
@@ -124,11 +126,13 @@ struct cli_table {
     int ncols;
     const char *const *names;
     const char *const *units;
+    cli_column *col;  /* the columns as they go out (output units), made on the first write */
     cell *cells;
     size_t ncells, cap;
     size_t emitted;   /* rows already written by cli_table_flush */
     int header_done;  /* csv header / json '[' written */
     int json_array;   /* json: an array was opened */
+    unsigned char json_only[256]; /* columns csv, tsv and table leave out */
 };
 
 cli_table *cli_table_new(int ncols, const char *const *names, const char *const *units)
@@ -176,11 +180,36 @@ void cli_table_int(cli_table *t, long long v)
 
 int cli_table_rows(const cli_table *t) { return (int)(t->emitted + t->ncells / (size_t)t->ncols); }
 
+void cli_table_json(cli_table *t, const char *json)
+{
+    cell *c = push(t);
+    c->kind = 3;
+    c->str = strdup(json ? json : "null");
+}
+
+void cli_table_json_only(cli_table *t, int col)
+{
+    if (col >= 0 && col < (int)sizeof t->json_only) t->json_only[col] = 1;
+}
+
+void cli_table_set_units(cli_table *t, const char *const *units)
+{
+    t->units = units;
+    free(t->col); /* the output columns are made again with these units at the next write */
+    t->col = NULL;
+}
+
+static int shown(const cli_table *t, int c, cli_format fmt)
+{
+    return fmt == CLI_FMT_JSON || c >= (int)sizeof t->json_only || !t->json_only[c];
+}
+
 void cli_table_free(cli_table *t)
 {
     if (!t) return;
     for (size_t i = 0; i < t->ncells; i++) free(t->cells[i].str);
     free(t->cells);
+    free(t->col);
     free(t);
 }
 
@@ -212,7 +241,15 @@ static void csv_str(FILE *out, const char *s)
     if (b != stack) free(b);
 }
 
-static void json_str(FILE *out, const char *s)
+static void tsv_str(FILE *out, const char *s)
+{
+    for (; *s; s++) fputc(*s == '\t' || *s == '\n' || *s == '\r' ? ' ' : *s, out);
+}
+
+void cli_json_string(FILE *out, const char *s);
+static void json_str(FILE *out, const char *s) { cli_json_string(out, s); }
+
+void cli_json_string(FILE *out, const char *s)
 {
     fputc('"', out);
     for (; *s; s++) {
@@ -226,63 +263,76 @@ static void json_str(FILE *out, const char *s)
     fputc('"', out);
 }
 
-static void cell_text(const cell *c, char *buf, size_t cap)
+static void cell_text(const cell *c, const cli_column *col, char *buf, size_t cap)
 {
-    if (c->kind == 1) snprintf(buf, cap, "%s", c->str);
+    if (c->kind == 1 || c->kind == 3) snprintf(buf, cap, "%s", c->str);
     else if (c->kind == 2) snprintf(buf, cap, "%lld", c->integer);
-    else if (!isfinite(c->num)) snprintf(buf, cap, "-");
-    else if (c->num != 0 && (fabs(c->num) >= 1e7 || fabs(c->num) < 1e-4)) snprintf(buf, cap, "%.6g", c->num);
-    else snprintf(buf, cap, "%.6g", c->num);
+    else cli_number_text(buf, cap, col, c->num * col->scale);
 }
 
 static void write_row(const cli_table *t, const cell *row, cli_format fmt, FILE *out, size_t index)
 {
-    if (fmt == CLI_FMT_CSV) {
-        for (int c = 0; c < t->ncols; c++) {
+    if (fmt == CLI_FMT_CSV || fmt == CLI_FMT_TSV) {
+        for (int c = 0, k = 0; c < t->ncols; c++) {
             const cell *x = &row[c];
-            if (c) fputc(',', out);
-            if (x->kind == 1) csv_str(out, x->str);
+            if (!shown(t, c, fmt)) continue;
+            if (k++) fputc(fmt == CLI_FMT_CSV ? ',' : '\t', out);
+            if (x->kind == 1 || x->kind == 3) (fmt == CLI_FMT_CSV ? csv_str : tsv_str)(out, x->str);
             else if (x->kind == 2) fprintf(out, "%lld", x->integer);
-            else if (isfinite(x->num)) cli_print_exact(out, x->num);
+            else if (isfinite(x->num)) cli_print_exact(out, x->num * t->col[c].scale);
         }
         fputc('\n', out);
     } else if (fmt == CLI_FMT_JSON) {
         fputs(t->json_array ? (index ? ",\n  {" : "  {") : "{", out);
         for (int c = 0; c < t->ncols; c++) {
             const cell *x = &row[c];
-            fprintf(out, "%s\"%s\": ", c ? ", " : "", t->names[c]);
-            if (x->kind == 1) json_str(out, x->str);
+            fprintf(out, "%s\"%s\": ", c ? ", " : "", t->col[c].name);
+            if (x->kind == 3) fputs(x->str, out);
+            else if (x->kind == 1) json_str(out, x->str);
             else if (x->kind == 2) fprintf(out, "%lld", x->integer);
-            else if (isfinite(x->num)) cli_print_exact(out, x->num);
+            else if (isfinite(x->num)) cli_print_exact(out, x->num * t->col[c].scale);
             else fputs("null", out);
         }
         fputs(t->json_array ? "}" : "}\n", out);
     } else {
-        /* people: one block per row, "name  value unit", aligned */
+        /* people: one block per row, "name  value unit", aligned, numbers to their quantity's digits */
         int w = 0;
         for (int c = 0; c < t->ncols; c++) {
-            int l = (int)strlen(t->names[c]);
-            if (l > w) w = l;
+            int l = (int)strlen(t->col[c].name);
+            if (l > w && shown(t, c, fmt)) w = l;
         }
         if (index) fputc('\n', out);
         for (int c = 0; c < t->ncols; c++) {
             char buf[512];
-            cell_text(&row[c], buf, sizeof buf);
-            const char *u = t->units && t->units[c] ? t->units[c] : "";
-            fprintf(out, "%-*s  %s%s%s\n", w, t->names[c], buf, *u && strcmp(buf, "-") ? " " : "",
+            if (!shown(t, c, fmt)) continue;
+            cell_text(&row[c], &t->col[c], buf, sizeof buf);
+            const char *u = t->col[c].unit;
+            fprintf(out, "%-*s  %s%s%s\n", w, t->col[c].name, buf, *u && strcmp(buf, "-") ? " " : "",
                     strcmp(buf, "-") ? u : "");
         }
     }
 }
 
+/* the columns as they go out: names and units in the output units (--units) */
+static int make_columns(cli_table *t)
+{
+    if (t->col) return 0;
+    t->col = calloc((size_t)t->ncols, sizeof *t->col);
+    if (!t->col) return -1;
+    for (int c = 0; c < t->ncols; c++) cli_column_out(t->names[c], t->units ? t->units[c] : NULL, &t->col[c]);
+    return 0;
+}
+
 int cli_table_flush(cli_table *t, cli_format fmt, FILE *out, int json_array, int final)
 {
     size_t rows = t->ncells / (size_t)t->ncols;
+    if (make_columns(t)) return -1;
     /* json prints one object for exactly one row: hold a lone first row until we know */
     if (fmt == CLI_FMT_JSON && !t->header_done && !final && !json_array && t->emitted + rows < 2) return 0;
     if (!t->header_done) {
-        if (fmt == CLI_FMT_CSV) {
-            for (int c = 0; c < t->ncols; c++) fprintf(out, "%s%s", c ? "," : "", t->names[c]);
+        if (fmt == CLI_FMT_CSV || fmt == CLI_FMT_TSV) {
+            for (int c = 0, k = 0; c < t->ncols; c++)
+                if (shown(t, c, fmt)) fprintf(out, "%s%s", k++ ? (fmt == CLI_FMT_CSV ? "," : "\t") : "", t->col[c].name);
             fputc('\n', out);
         } else if (fmt == CLI_FMT_JSON) {
             t->json_array = json_array || t->emitted + rows != 1;
@@ -301,10 +351,20 @@ int cli_table_flush(cli_table *t, cli_format fmt, FILE *out, int json_array, int
 int cli_table_header(cli_table *t, cli_format fmt, FILE *out)
 {
     if (fmt != CLI_FMT_CSV || t->header_done) return 0;
-    for (int c = 0; c < t->ncols; c++) fprintf(out, "%s%s", c ? "," : "", t->names[c]);
+    if (make_columns(t)) return -1;
+    for (int c = 0, k = 0; c < t->ncols; c++)
+        if (shown(t, c, fmt)) fprintf(out, "%s%s", k++ ? "," : "", t->col[c].name);
     fputc('\n', out);
     t->header_done = 1;
     return ferror(out) ? -1 : 0;
+}
+
+int cli_table_plain_csv(cli_table *t, int n)
+{
+    if (make_columns(t) || n > t->ncols) return 0;
+    for (int c = 0; c < t->ncols; c++)
+        if ((c < n && (t->col[c].scale != 1 || !shown(t, c, CLI_FMT_CSV))) || (c >= n && shown(t, c, CLI_FMT_CSV))) return 0;
+    return 1;
 }
 
 void cli_table_count_written(cli_table *t, size_t rows) { t->emitted += rows; }
@@ -364,6 +424,22 @@ int cli_output_open(cli_output *o, const char *path, const char *cmd)
         o->fp = stdout;
         return 0;
     }
+    struct stat sb;
+    if (stat(path, &sb) == 0 && !S_ISREG(sb.st_mode) && !S_ISDIR(sb.st_mode)) {
+        /* a device or FIFO (/dev/null, /dev/full, a pipe): written directly, never replaced */
+        o->fp = fopen(path, "w");
+        if (!o->fp) {
+            cli_error(cmd, "%s: cannot open: %s", path, strerror(errno));
+            return -1;
+        }
+        o->path = strdup(path);
+        if (!o->path) {
+            fclose(o->fp);
+            cli_error(cmd, "out of memory");
+            return -1;
+        }
+        return 0;
+    }
     size_t n = strlen(path);
     o->path = strdup(path);
     o->tmp = malloc(n + 16);
@@ -401,21 +477,21 @@ int cli_output_open(cli_output *o, const char *path, const char *cmd)
 
 int cli_output_close(cli_output *o, int ok, const char *cmd)
 {
+    if (!o->path) return cli_stdout_check(cmd); /* standard output */
+    /* a failed write shows in the stream's error flag; flushing again reproduces its errno */
+    int err = 0;
+    errno = 0;
+    if (fflush(o->fp) != 0) err = errno ? errno : EIO;
+    else if (ferror(o->fp)) err = EIO;
+    if (!err && ok && o->tmp && fsync(fileno(o->fp)) != 0) err = errno;
+    if (fclose(o->fp) != 0 && !err) err = errno ? errno : EIO;
     int rc = 0;
-    if (!o->path) {
-        if (fflush(stdout) != 0) rc = -1;
-        return rc;
+    if (err) rc = cli_write_failed(cmd, o->path, err);
+    if (o->tmp) {
+        if (ok && !err && rename(o->tmp, o->path) != 0) rc = cli_write_failed(cmd, o->path, errno);
+        if (!ok || rc) unlink(o->tmp);
+        untrack(o->tmp);
     }
-    if (ok) {
-        if (fflush(o->fp) != 0 || fsync(fileno(o->fp)) != 0 || ferror(o->fp)) rc = -1;
-    }
-    if (fclose(o->fp) != 0) rc = -1;
-    if (ok && rc == 0 && rename(o->tmp, o->path) != 0) rc = -1;
-    if (!ok || rc != 0) {
-        if (ok) cli_error(cmd, "%s: cannot write: %s", o->path, strerror(errno));
-        unlink(o->tmp);
-    }
-    untrack(o->tmp);
     free(o->path);
     free(o->tmp);
     o->path = o->tmp = NULL;

@@ -12,6 +12,13 @@
 int lt_quantity(lx_ctx *ctx, const char *cmd, const char *opt, const char *text, lx_quantity q,
                 const char *bare_unit, double efficacy, double *out);
 
+/* Parses n lengths separated by the characters of seps in turn (",," for X,Y,Z; ":,:" for
+ * A0:A1,B0:B1): each may carry its unit ("2m", "6.5ft"); a unit after the last applies to the bare
+ * ones before it ("6,4,9 ft", as in scene files); bare numbers alone are metres. Prints the error
+ * naming opt (expect says what is expected) and returns CLI_USAGE; 0 on success. */
+int lt_lengths(lx_ctx *ctx, const char *cmd, const char *opt, const char *text, const char *seps, const char *expect,
+               double *out);
+
 /* Resolves --efficacy TEXT or --spd FILE (at most one; both NULL gives 0 = none) into *efficacy
  * in lm/W. Returns 0, or the exit code after printing the error. */
 int lt_efficacy(lx_ctx *ctx, const char *cmd, const char *eff_text, const char *spd_path, double *efficacy);
@@ -30,7 +37,7 @@ int lt_format(const char *cmd, const char *s, cli_format *fmt);
     {"efficacy", required_argument, 0, 'K'}, {"spd", required_argument, 0, 'S'},                                    \
         {"format", required_argument, 0, 'f'}, {"help", no_argument, 0, 'h'}
 /* getopt_long's short options of every lighting command: -o FILE and -h */
-#define LT_SHORTOPTS "o:h"
+#define LT_SHORTOPTS ":o:h"
 /* lt_common_opt's "handled, go on parsing" */
 #define LT_NEXT (-1)
 
@@ -51,9 +58,9 @@ void lt_common_init(lt_common *co, const char *cmd, const char *help);
  * anything else prints the error (CLI_USAGE). Returns LT_NEXT or the exit code to return. */
 int lt_common_opt(lt_common *co, int c, char **argv);
 
-/* Prints "bad option 'ARG' (see luxcalc CMD --help)" for the option getopt_long just read;
- * returns CLI_USAGE. */
-int lt_bad_option(const lt_common *co, char **argv);
+/* Prints "luxcalc CMD: unknown option 'ARG' (see luxcalc CMD --help)" (or "needs a value" for
+ * c == ':') for the option getopt_long just read; returns CLI_USAGE. */
+int lt_bad_option(const lt_common *co, char **argv, int c);
 
 /* For commands without operands: prints "unexpected argument" and returns CLI_USAGE when
  * argv[optind] exists, else returns 0. */
@@ -70,7 +77,12 @@ int lt_emit(const lt_common *co, cli_table *t);
 int lt_emit_nums(const lt_common *co, int n, const char *const *names, const char *const *units,
                  const double *vals);
 
-/* radians to degrees as value / (pi/180), the same division the unit table uses, so 30deg prints 30 */
+/* radians to degrees as value / (pi/180), the same division the unit table uses */
 #define LT_DEG (3.14159265358979323846 / 180.0)
+
+/* An input echoed back after a unit conversion, as it was given: rounded to 15 significant digits,
+ * which removes the conversion's last-bit residue (30deg -> 0.5235987755982988 rad -> 30, not
+ * 29.999999999999996) and keeps every digit a user types. */
+double lt_echo(double v);
 
 #endif

@@ -4,7 +4,16 @@
 #include "lighting.h"
 
 #include <getopt.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+
+double lt_echo(double v)
+{
+    char buf[32];
+    snprintf(buf, sizeof buf, "%.15g", v);
+    return strtod(buf, NULL);
+}
 
 int lt_format(const char *cmd, const char *s, cli_format *fmt)
 {
@@ -49,6 +58,36 @@ int lt_quantity(lx_ctx *ctx, const char *cmd, const char *opt, const char *text,
     return CLI_USAGE;
 }
 
+int lt_lengths(lx_ctx *ctx, const char *cmd, const char *opt, const char *text, const char *seps, const char *expect,
+               double *out)
+{
+    int n = (int)strlen(seps) + 1;
+    char tok[8][64] = {{0}};
+    const char *p = text;
+    for (int i = 0; i < n; i++) {
+        size_t len = i < n - 1 ? strcspn(p, (char[]){seps[i], 0}) : strlen(p);
+        if ((i < n - 1 && p[len] != seps[i]) || len >= sizeof tok[i] || n > 8) {
+            cli_error(cmd, "%s: expected %s (got '%s')", opt, expect, text);
+            return CLI_USAGE;
+        }
+        memcpy(tok[i], p, len);
+        tok[i][len] = 0;
+        p += len + (i < n - 1);
+    }
+    /* the unit written after the last number, for the bare ones before it */
+    char *end;
+    strtod(tok[n - 1], &end);
+    const char *unit = end + strspn(end, " ");
+    for (int i = 0; i < n; i++) {
+        char buf[200];
+        strtod(tok[i], &end);
+        int bare = *(end + strspn(end, " ")) == 0;
+        snprintf(buf, sizeof buf, "%.63s%s%.63s", tok[i], bare && *unit ? " " : "", bare ? unit : "");
+        if (lt_quantity(ctx, cmd, opt, buf, LX_Q_LENGTH, NULL, 0, &out[i])) return CLI_USAGE;
+    }
+    return 0;
+}
+
 int lt_efficacy(lx_ctx *ctx, const char *cmd, const char *eff_text, const char *spd_path, double *efficacy)
 {
     *efficacy = 0;
@@ -75,10 +114,7 @@ int lt_write(const char *cmd, cli_table *t, cli_format fmt, const char *out_path
     cli_output o;
     if (cli_output_open(&o, out_path, cmd) != 0) return CLI_INPUT;
     int ok = cli_table_write(t, fmt, o.fp, 0) == 0;
-    if (cli_output_close(&o, ok, cmd) != 0 || !ok) {
-        if (!ok && !out_path) cli_error(cmd, "cannot write the output");
-        return CLI_RUNTIME;
-    }
+    if (cli_output_close(&o, ok, cmd) != 0 || !ok) return CLI_RUNTIME;
     return CLI_OK;
 }
 
@@ -89,11 +125,7 @@ void lt_common_init(lt_common *co, const char *cmd, const char *help)
     opterr = 0;
 }
 
-int lt_bad_option(const lt_common *co, char **argv)
-{
-    cli_error(co->cmd, "bad option '%s' (see luxcalc %s --help)", argv[optind - 1], co->cmd);
-    return CLI_USAGE;
-}
+int lt_bad_option(const lt_common *co, char **argv, int c) { return cli_bad_option(co->cmd, argv, c); }
 
 int lt_common_opt(lt_common *co, int c, char **argv)
 {
@@ -103,7 +135,7 @@ int lt_common_opt(lt_common *co, int c, char **argv)
     case 'o': co->out = optarg; return LT_NEXT;
     case 'f': return lt_format(co->cmd, optarg, &co->fmt) ? CLI_USAGE : LT_NEXT;
     case 'h': cli_print_help(co->help); return CLI_OK;
-    default: return lt_bad_option(co, argv);
+    default: return lt_bad_option(co, argv, c);
     }
 }
 

@@ -53,7 +53,10 @@ static void usage(FILE *out)
                  "Photometry and radiometry: spectra, lighting calculations, luminaires, radiance maps.\n\n"
                  "commands:\n");
     for (const cli_cmd *c = cli_commands; c->name; c++) fprintf(out, "  %-14s %s\n", c->name, c->summary);
-    fprintf(out, "\nRun 'luxcalc COMMAND --help' for a command's options and an example.\n"
+    fprintf(out, "\nOptions of every command that prints results: --format table|csv|tsv|json, -o FILE,\n"
+                 "--precision N (significant digits in the table format), --units metric|imperial (fc, ft,\n"
+                 "fL; or unit names, e.g. --units imperial,cd/ft2).\n"
+                 "\nRun 'luxcalc COMMAND --help' for a command's options and an example.\n"
                  "Exit status: 0 success, 1 usage error, 2 input error, 3 runtime error.\n"
                  "--max-input-mb N (or LX_MAX_INPUT_MB=N): the size limit of every text input file in MB\n"
                  "(default 256 for spectra, 16 for photometric and scene files; README \"Robustness\").\n");
@@ -61,6 +64,7 @@ static void usage(FILE *out)
 
 int main(int argc, char **argv)
 {
+    cli_stdout_guard();
     int i = 1;
     for (; i < argc && argv[i][0] == '-'; i++) {
         const char *a = argv[i];
@@ -122,7 +126,14 @@ int main(int argc, char **argv)
         return CLI_USAGE;
     }
     for (const cli_cmd *c = cli_commands; c->name; c++)
-        if (!strcmp(c->name, argv[i])) return c->run(argc - i, argv + i);
+        if (!strcmp(c->name, argv[i])) {
+            int n = argc - i;
+            if (cli_output_options(c->name, &n, argv + i)) return CLI_USAGE;
+            cli_join_units(&n, argv + i);
+            int rc = c->run(n, argv + i);
+            int w = cli_stdout_check(c->name); /* what a command printed itself, and a closed stdout */
+            return w ? w : rc;
+        }
     if (!strcmp(argv[i], "help")) {
         if (i + 1 < argc)
             for (const cli_cmd *c = cli_commands; c->name; c++)

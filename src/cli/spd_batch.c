@@ -13,14 +13,44 @@
 
 #define CHUNK 65536 /* spectra per batch call: bounds memory, lets output stream */
 
-void cli_spd_add_row(cli_table *t, const char *file, const char *name, const lx_colorimetry *r)
+void cli_spd_add_row(cli_spd_batch *B, const char *file, const char *name, const lx_colorimetry *r, const lx_par *par,
+                     const lx_hazard *hz, const lx_binning *bin)
 {
+    cli_table *t = B->table;
     cli_table_str(t, file);
     cli_table_str(t, name);
     double v[] = {r->X, r->Y, r->Z, r->x, r->y, r->u_prime, r->v_prime, r->cct_K, r->duv, r->ler_lm_per_W,
                   r->scotopic_Y, r->sp_ratio, r->radiant};
     for (size_t j = 0; j < sizeof v / sizeof *v; j++) cli_table_num(t, v[j]);
     cli_table_str(t, "cie15");
+    if (B->metrics && B->metrics->any)
+        cli_metrics_row_batch(t, B->ctx, B->metrics, B->unit ? B->unit : "relative", par, hz, bin, B->vendor);
+    cli_table_json(t, B->instrument);
+}
+
+typedef cli_spd_lab lab;
+
+void cli_spd_lab_free(cli_spd_lab *L) { free(L->par), free(L->hz), free(L->bin); }
+
+lx_status cli_spd_lab_compute(cli_spd_batch *B, const lx_batch *b, const lx_colorimetry *res, lx_batch_opts *opts,
+                              cli_spd_lab *L)
+{
+    memset(L, 0, sizeof *L);
+    const cli_metrics *m = B->metrics;
+    if (!m || !m->any) return LX_OK;
+    size_t n = b->n_spectra ? b->n_spectra : 1;
+    int need_par = cli_metrics_need_par(m), need_hz = cli_metrics_need_hazard(m), need_bin = cli_metrics_need_binning(m);
+    /* binning from the exact CCT of the colorimetry (2 deg); with --observer 10 the batch's own */
+    int table_bin = need_bin && B->observer != LX_OBSERVER_2;
+    if ((need_par && !(L->par = malloc(n * sizeof *L->par))) || (need_hz && !(L->hz = malloc(n * sizeof *L->hz))) ||
+        (need_bin && !(L->bin = malloc(n * sizeof *L->bin))))
+        return LX_ENOMEM;
+    lx_status st = LX_OK;
+    if (need_par || need_hz || table_bin)
+        st = lx_lab_batch(B->ctx, b, opts, L->par, L->hz, table_bin ? L->bin : NULL);
+    for (size_t i = 0; need_bin && !table_bin && i < b->n_spectra && st == LX_OK; i++)
+        st = lx_binning_compute(B->ctx, res[i].x, res[i].y, res[i].cct_K, res[i].duv, &L->bin[i]);
+    return st;
 }
 
 /* The largest |value| of spectrum i of b (for the overflow message). */
@@ -48,7 +78,9 @@ static lx_status run_chunk(cli_spd_batch *B, const lx_batch *b, const char *file
     lx_batch_opts opts;
     memset(&opts, 0, sizeof opts);
     opts.backend = B->backend;
+    lab L = {0};
     lx_status st = lx_batch_colorimetry(B->ctx, b, B->observer, &opts, res);
+    if (st == LX_OK) st = cli_spd_lab_compute(B, b, res, &opts, &L);
     if (st == LX_OK) {
         char idx[32];
         for (size_t i = 0; i < b->n_spectra; i++) {
@@ -63,10 +95,11 @@ static lx_status run_chunk(cli_spd_batch *B, const lx_batch *b, const char *file
                 }
                 continue;
             }
-            cli_spd_add_row(B->table, file, name, &res[i]);
+            cli_spd_add_row(B, file, name, &res[i], L.par ? &L.par[i] : NULL, L.hz ? &L.hz[i] : NULL, L.bin ? &L.bin[i] : NULL);
         }
         if (B->flush) B->flush(B->flush_arg);
     }
+    cli_spd_lab_free(&L);
     free(res);
     return st;
 }

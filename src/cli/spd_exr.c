@@ -32,7 +32,7 @@ int cli_spd_exr(lx_ctx *ctx, const char *cmd, const char *path, const char *out_
         fprintf(stderr, "luxcalc: %s: %s: %d polarised channels (S1-S3) ignored\n", cmd, path, img->polarised_ignored);
     int rc = CLI_OK;
     if (out_exr && (st = lx_xyz_image_write_exr(ctx, out_exr, img)) != LX_OK) rc = cli_fail(cmd, ctx, st);
-    if (!rc && png && (st = lx_xyz_png_write(ctx, png, img)) != LX_OK) rc = cli_fail(cmd, ctx, st);
+    if (!rc && png && (st = lx_xyz_image_write_png(ctx, png, img)) != LX_OK) rc = cli_fail(cmd, ctx, st);
     if (!rc) {
         size_t n = (size_t)img->width * img->height;
         double lo = INFINITY, hi = -INFINITY, sum = 0;

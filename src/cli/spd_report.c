@@ -1,4 +1,4 @@
-/* spd_report.c - `luxcalc spd --report DIR`: one PNG report per spectrum (lx_spd_report_png),
+/* spd_report.c - `luxcalc spd --report DIR`: one PNG report per spectrum (lx_spd_report_write_png),
  * named DIR/<file-stem>_<spectrum>.png with the names reduced to portable characters. */
 #include "spd_report.h"
 
@@ -8,16 +8,16 @@
 #include <sys/stat.h>
 #include <sys/types.h>
 
-int cli_report_dir(const char *cmd, const char *dir)
+int cli_make_dir(const char *cmd, const char *opt, const char *dir)
 {
     struct stat sb;
     if (stat(dir, &sb) == 0) {
         if (S_ISDIR(sb.st_mode)) return 0;
-        cli_error(cmd, "%s: --report: not a directory", dir);
+        cli_error(cmd, "%s: %s: not a directory", dir, opt);
         return -1;
     }
     if (mkdir(dir, 0777) != 0 && errno != EEXIST) {
-        cli_error(cmd, "%s: --report: cannot create the directory: %s", dir, strerror(errno));
+        cli_error(cmd, "%s: %s: cannot create the directory: %s", dir, opt, strerror(errno));
         return -1;
     }
     return 0;
@@ -36,10 +36,34 @@ static void put_clean(char *buf, size_t cap, const char *s, size_t n)
     buf[len] = 0;
 }
 
-int cli_spd_report(lx_ctx *ctx, const char *cmd, const char *dir, const char *file, size_t index, const lx_spd *spd,
-                   lx_observer obs)
+/* 1 when name was written before in this run, else records it (0) */
+static int seen(cli_reports *rep, const char *name)
 {
-    char name[256] = "", idx[32];
+    for (size_t i = 0; i < rep->n_used; i++)
+        if (!strcmp(rep->used[i], name)) return 1;
+    if (rep->n_used == rep->cap_used) {
+        size_t cap = rep->cap_used ? 2 * rep->cap_used : 64;
+        char **nu = realloc(rep->used, cap * sizeof *nu);
+        if (!nu) return 0; /* without memory to remember, a repeat may overwrite */
+        rep->used = nu;
+        rep->cap_used = cap;
+    }
+    char *c = strdup(name);
+    if (c) rep->used[rep->n_used++] = c;
+    return 0;
+}
+
+void cli_reports_free(cli_reports *rep)
+{
+    for (size_t i = 0; i < rep->n_used; i++) free(rep->used[i]);
+    free(rep->used);
+    rep->used = NULL;
+    rep->n_used = rep->cap_used = 0;
+}
+
+int cli_spd_report(cli_reports *rep, lx_ctx *ctx, const char *file, size_t index, const lx_spd *spd)
+{
+    char name[256] = "", idx[32], unique[280];
     const char *base = strrchr(file, '/');
     base = base ? base + 1 : file;
     if (!strcmp(file, "-")) base = "stdin";
@@ -50,16 +74,20 @@ int cli_spd_report(lx_ctx *ctx, const char *cmd, const char *dir, const char *fi
     const char *sp = spd->name && *spd->name ? spd->name : (snprintf(idx, sizeof idx, "%zu", index + 1), idx);
     put_clean(name, 240, sp, strlen(sp));
     if (name[0] == '.') name[0] = '_'; /* never a hidden file */
-    size_t n = strlen(dir) + strlen(name) + 8;
+    snprintf(unique, sizeof unique, "%s", name);
+    for (int k = 2; seen(rep, unique); k++) snprintf(unique, sizeof unique, "%s_%d", name, k);
+    size_t n = strlen(rep->dir) + strlen(unique) + 8;
     char *path = malloc(n);
-    if (!path) return cli_error(cmd, "out of memory"), CLI_RUNTIME;
-    snprintf(path, n, "%s/%s.png", dir, name);
+    if (!path) return cli_error(rep->cmd, "out of memory"), CLI_RUNTIME;
+    snprintf(path, n, "%s/%s.png", rep->dir, unique);
     char title[200];
     snprintf(title, sizeof title, "%s: %s", base, sp);
-    lx_status st = lx_spd_report_png(ctx, spd, obs, title, path);
+    lx_report_opts o = rep->opts;
+    o.title = title;
+    lx_status st = lx_spd_report_write_png(ctx, spd, &o, path);
     int rc = CLI_OK;
-    if (st != LX_OK) rc = cli_fail(cmd, ctx, st);
-    else if (cli_verbose) fprintf(stderr, "luxcalc: %s: wrote %s\n", cmd, path);
+    if (st != LX_OK) rc = cli_fail(rep->cmd, ctx, st);
+    else if (cli_verbose) fprintf(stderr, "luxcalc: %s: wrote %s\n", rep->cmd, path);
     free(path);
     return rc;
 }

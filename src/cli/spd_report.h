@@ -4,12 +4,22 @@
 
 #include "cli.h"
 
-/* Creates DIR when it does not exist (one level). Returns 0, or prints the error and returns -1. */
-int cli_report_dir(const char *cmd, const char *dir);
+/* Creates DIR (for option opt, "--report") when it does not exist (one level). Returns 0, or
+ * prints the error and returns -1. */
+int cli_make_dir(const char *cmd, const char *opt, const char *dir);
+/* The reports of one run: where they go, how they are drawn, and the names already written. */
+typedef struct cli_reports {
+    const char *cmd, *dir;
+    lx_report_opts opts; /* observer, unit, diagram (title set per report) */
+    char **used;         /* file names written in this run */
+    size_t n_used, cap_used;
+} cli_reports;
 /* Writes DIR/<file-stem>_<spectrum>.png (names reduced to [A-Za-z0-9._-], others '_'; an empty
- * spectrum name uses its 1-based index) for spectrum `index` of `file`. Returns an exit code. */
-int cli_spd_report(lx_ctx *ctx, const char *cmd, const char *dir, const char *file, size_t index, const lx_spd *spd,
-                   lx_observer obs);
+ * spectrum name uses its 1-based index; a name already written in this run gets _2, _3 ...) for
+ * spectrum `index` of `file`. Returns an exit code. */
+int cli_spd_report(cli_reports *rep, lx_ctx *ctx, const char *file, size_t index, const lx_spd *spd);
+/* Frees the list of names. */
+void cli_reports_free(cli_reports *rep);
 
 /* 1 when the file's first four bytes are the OpenEXR magic 76 2f 31 01. */
 int cli_is_exr(const char *path);

@@ -49,8 +49,12 @@ typedef struct bstream {
     long long out0;           /* -o: where this file's rows begin in our temporary file */
     int started, failed;
     int over_cap;             /* larger than the general reader takes (or a pipe): no second reading */
-    /* other formats: the results, written to the table when the file is done */
+    /* the table path: the results (and metrics), written to the table when the file is done */
     lx_colorimetry *res;
+    cli_spd_lab lab;
+    struct {
+        int par, hz, bin;
+    } lab_used;
     char *names;
     size_t res_cap, names_len, names_cap;
     unsigned long long total;
@@ -268,6 +272,74 @@ static void take_back(bstream *S)
     S->hold_len = 0;
 }
 
+/* ---- the table path: formats other than plain csv, metric columns, unit scaling ---- */
+
+/* grows the held results to n rows (colorimetry and the metrics B asks for) */
+static int hold_rows(bstream *S, size_t n, const cli_spd_lab *L)
+{
+    if (n <= S->res_cap) return 0;
+    size_t cap = 2 * n;
+    lx_colorimetry *r = realloc(S->res, cap * sizeof *r);
+    if (r) S->res = r;
+    lx_par *pa = r && L->par ? realloc(S->lab.par, cap * sizeof *pa) : S->lab.par;
+    if (pa) S->lab.par = pa;
+    lx_hazard *hz = r && L->hz ? realloc(S->lab.hz, cap * sizeof *hz) : S->lab.hz;
+    if (hz) S->lab.hz = hz;
+    lx_binning *bi = r && L->bin ? realloc(S->lab.bin, cap * sizeof *bi) : S->lab.bin;
+    if (bi) S->lab.bin = bi;
+    if (!r || (L->par && !pa) || (L->hz && !hz) || (L->bin && !bi)) return -1;
+    S->res_cap = cap;
+    return 0;
+}
+
+/* A part's rows through the table: written at once for a file the general reader cannot take
+ * again (beyond its size limit, or a pipe: memory stays a part), else kept until the file is
+ * done. The metrics are computed here, on B's context. */
+static lx_status table_rows(bstream *S, const lx_batch_table *part, part_out *o)
+{
+    cli_spd_batch *B = S->B;
+    lx_batch_opts opts = {.backend = B->backend, .threads = 1};
+    cli_spd_lab L = {0};
+    lx_status st = cli_spd_lab_compute(B, &part->batch, o->res, &opts, &L);
+    size_t n = part->batch.n_spectra, kept = 0;
+    if (st == LX_OK && !S->over_cap && hold_rows(S, S->rows + n, &L) != 0) st = LX_ENOMEM;
+    for (size_t i = 0; st == LX_OK && i < n; i++) {
+        if (o->nbad && o->bad[i]) continue;
+        size_t l;
+        const char *nm = row_name(part, i, &l);
+        char name[1024];
+        snprintf(name, sizeof name, "%.*s", (int)(l < sizeof name - 1 ? l : sizeof name - 1), nm);
+        if (S->over_cap) {
+            cli_spd_add_row(B, S->path, name, &o->res[i], L.par ? &L.par[i] : NULL, L.hz ? &L.hz[i] : NULL,
+                            L.bin ? &L.bin[i] : NULL);
+            kept++;
+            continue;
+        }
+        if (S->names_len + l + 1 > S->names_cap) {
+            size_t cap = 2 * (S->names_len + l + 1) + 4096;
+            char *q = realloc(S->names, cap);
+            if (!q) {
+                st = LX_ENOMEM;
+                break;
+            }
+            S->names = q, S->names_cap = cap;
+        }
+        memcpy(S->names + S->names_len, nm, l);
+        S->names[S->names_len + l] = 0;
+        S->names_len += l + 1;
+        size_t at = S->rows + kept++;
+        S->res[at] = o->res[i];
+        if (L.par) S->lab.par[at] = L.par[i];
+        if (L.hz) S->lab.hz[at] = L.hz[i];
+        if (L.bin) S->lab.bin[at] = L.bin[i];
+    }
+    S->lab_used.par |= L.par != NULL, S->lab_used.hz |= L.hz != NULL, S->lab_used.bin |= L.bin != NULL;
+    cli_spd_lab_free(&L);
+    if (st == LX_OK) S->rows += kept;
+    if (st == LX_OK && S->over_cap && B->flush) B->flush(B->flush_arg);
+    return st;
+}
+
 /* ---- emit: in file order, on this thread ---- */
 
 static lx_status on_emit(void *user, const lx_batch_table *part, size_t row0, void *state)
@@ -293,33 +365,8 @@ static lx_status on_emit(void *user, const lx_batch_table *part, size_t row0, vo
         put(S, o->text, o->len);
         S->rows += n - o->nbad;
         if (!S->started && (B->forced || S->rows >= CLI_SPD_BATCH_MIN)) start_output(S);
-    } else if (st == LX_OK) { /* table and json: kept until the file is done */
-        if (S->rows + n > S->res_cap) {
-            size_t cap = 2 * (S->rows + n);
-            lx_colorimetry *r = realloc(S->res, cap * sizeof *r);
-            if (!r) st = LX_ENOMEM;
-            else S->res = r, S->res_cap = cap;
-        }
-        size_t kept = 0;
-        for (size_t i = 0; st == LX_OK && i < n; i++) {
-            if (o->nbad && o->bad[i]) continue;
-            size_t l;
-            const char *nm = row_name(part, i, &l);
-            if (S->names_len + l + 1 > S->names_cap) {
-                size_t cap = 2 * (S->names_len + l + 1) + 4096;
-                char *q = realloc(S->names, cap);
-                if (!q) {
-                    st = LX_ENOMEM;
-                    break;
-                }
-                S->names = q, S->names_cap = cap;
-            }
-            memcpy(S->names + S->names_len, nm, l);
-            S->names[S->names_len + l] = 0;
-            S->names_len += l + 1;
-            S->res[S->rows + kept++] = o->res[i];
-        }
-        if (st == LX_OK) S->rows += kept;
+    } else if (st == LX_OK) { /* the table (other formats, metrics, units): its rows */
+        st = table_rows(S, part, o);
     }
     free(local.res);
     free(local.text);
@@ -436,7 +483,8 @@ int cli_spd_batch_file(cli_spd_batch *B, const char *path, lx_spd_set **set)
     memset(&S, 0, sizeof S);
     S.B = B;
     S.path = path;
-    S.csv = B->format == CLI_FMT_CSV;
+    /* rows as text made on the parsing threads: plain csv of the default columns */
+    S.csv = B->format == CLI_FMT_CSV && !(B->metrics && B->metrics->any) && cli_table_plain_csv(B->table, 16);
     S.on_workers = B->backend != LX_BACKEND_OPENCL && lx_backend_from_env() != LX_BACKEND_OPENCL;
     S.total = regular ? (unsigned long long)sb.st_size : 0;
     /* beyond the general reader's size limit (or from a pipe) nothing can be read twice */
@@ -458,7 +506,7 @@ int cli_spd_batch_file(cli_spd_batch *B, const char *path, lx_spd_set **set)
         prefix = read_prefix(B, path, in, &prefix_len, &all);
         if (!prefix || all || !plain_rows_header(prefix, prefix_len)) {
             /* the general reader, on what was read and the rest of the pipe (its size limit) */
-            lx_status st = prefix ? lx_spd_read_stream(B->ctx, path, in, prefix, prefix_len, set) : LX_EIO;
+            lx_status st = prefix ? lx_spd_read_stream(B->ctx, path, in, prefix, prefix_len, B->ropts, set) : LX_EIO;
             if (in != stdin) fclose(in);
             free(S.file_cell);
             if (st != LX_OK) {
@@ -494,11 +542,13 @@ int cli_spd_batch_file(cli_spd_batch *B, const char *path, lx_spd_set **set)
             done = -cli_exit_code(st);
         }
     }
-    if (done == 1 && !S.csv) {
+    if (done == 1 && !S.csv && !S.over_cap) {
         size_t off = 0;
         for (size_t i = 0; i < S.rows; i++) {
-            cli_spd_add_row(B->table, path, S.names + off, &S.res[i]);
+            cli_spd_add_row(B, path, S.names + off, &S.res[i], S.lab_used.par ? &S.lab.par[i] : NULL,
+                            S.lab_used.hz ? &S.lab.hz[i] : NULL, S.lab_used.bin ? &S.lab.bin[i] : NULL);
             off += strlen(S.names + off) + 1;
+            if (B->flush && (i + 1) % 65536 == 0) B->flush(B->flush_arg); /* the table holds a chunk at most */
         }
         if (B->flush) B->flush(B->flush_arg);
     }
@@ -507,6 +557,7 @@ int cli_spd_batch_file(cli_spd_batch *B, const char *path, lx_spd_set **set)
     free(prefix);
     free(S.hold);
     free(S.res);
+    cli_spd_lab_free(&S.lab);
     free(S.names);
     free(S.file_cell);
     return done;

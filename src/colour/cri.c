@@ -1,5 +1,6 @@
 /* cri.c - CIE 13.3-1995 colour rendering index (R1-R14, Ra) with its reference illuminant and
- * von Kries adaptation, plus the sampling grid shared with tm30.c (lx__quality_*). */
+ * von Kries adaptation, plus the quadrature shared with tm30.c (lx__qgrid, lx__quality_*): the
+ * CIE sums for uniformly sampled data, exact integration of line spectra. */
 #include "colour/colour_private.h"
 
 #include <math.h>
@@ -14,7 +15,8 @@
 #define DUV_LIMIT 0.05        /* beyond it CCT has no meaning (as lx_spd_colorimetry) */
 #define OUTSIDE_LIMIT 0.01    /* refuse when 1 % of the reference's X, Y or Z is outside the data */
 
-double lx__quality_step(const lx_spd *spd)
+/* The CIE15 grid step: 5 nm for data uniformly sampled at 5 nm on multiples of 5 nm, else 1 nm. */
+static double cie15_step(const lx_spd *spd)
 {
     if (spd->n < 2) return 1.0;
     double l0 = spd->lambda_nm[0];
@@ -24,12 +26,75 @@ double lx__quality_step(const lx_spd *spd)
     return 5.0;
 }
 
-void lx__quality_sample(const lx_spd *spd, double start_nm, double step_nm, int n, double *out)
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+lx_status lx__qgrid_make(lx_ctx *ctx, const lx_spd *spd, double start_nm, double end_nm, lx__qgrid *g)
+{
+    g->lam = g->w = NULL;
+    g->n = 0;
+    g->exact = lx_method_resolve(spd, LX_METHOD_AUTO) == LX_METHOD_EXACT;
+    if (!g->exact) {
+        double step = cie15_step(spd);
+        size_t n = (size_t)lround((end_nm - start_nm) / step) + 1;
+        g->lam = malloc(2 * n * sizeof *g->lam);
+        if (!g->lam) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+        g->w = g->lam + n;
+        for (size_t i = 0; i < n; i++) g->lam[i] = start_nm + (double)i * step, g->w[i] = step;
+        g->n = n;
+        return LX_OK;
+    }
+    /* the breakpoints: every whole nm of [start, end] and every sample of the data inside it */
+    size_t nw = (size_t)lround(end_nm - start_nm) + 1, nb = 0;
+    double *bp = malloc((nw + spd->n) * sizeof *bp);
+    if (!bp) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    for (size_t i = 0; i < nw; i++) bp[nb++] = start_nm + (double)i;
+    for (size_t i = 0; i < spd->n; i++)
+        if (spd->lambda_nm[i] > start_nm && spd->lambda_nm[i] < end_nm) bp[nb++] = spd->lambda_nm[i];
+    qsort(bp, nb, sizeof *bp, cmp_double);
+    size_t m = 0;
+    for (size_t i = 0; i < nb; i++)
+        if (m == 0 || bp[i] > bp[m - 1]) bp[m++] = bp[i];
+    if (m < 2) {
+        free(bp);
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "an empty wavelength range (%g-%g nm)", start_nm, end_nm);
+    }
+    /* Simpson on each interval: nodes at the breakpoints (shared) and the midpoints */
+    size_t n = 2 * m - 1;
+    g->lam = malloc(2 * n * sizeof *g->lam);
+    if (!g->lam) {
+        free(bp);
+        return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    }
+    g->w = g->lam + n;
+    for (size_t i = 0; i < n; i++) g->w[i] = 0;
+    for (size_t k = 0; k + 1 < m; k++) {
+        double h = bp[k + 1] - bp[k];
+        g->lam[2 * k] = bp[k];
+        g->lam[2 * k + 1] = 0.5 * (bp[k] + bp[k + 1]);
+        g->w[2 * k] += h / 6, g->w[2 * k + 1] += 4 * h / 6, g->w[2 * k + 2] += h / 6;
+    }
+    g->lam[n - 1] = bp[m - 1];
+    g->n = n;
+    free(bp);
+    return LX_OK;
+}
+
+void lx__qgrid_free(lx__qgrid *g)
+{
+    free(g->lam);
+    g->lam = g->w = NULL;
+}
+
+void lx__quality_sample(const lx_spd *spd, const lx__qgrid *g, double *out)
 {
     size_t j = 0;
     const double *x = spd->lambda_nm, *y = spd->value;
-    for (int i = 0; i < n; i++) {
-        double l = start_nm + i * step_nm;
+    for (size_t i = 0; i < g->n; i++) { /* the nodes increase */
+        double l = g->lam[i];
         if (l < x[0] || l > x[spd->n - 1]) {
             out[i] = 0.0;
             continue;
@@ -41,34 +106,35 @@ void lx__quality_sample(const lx_spd *spd, double start_nm, double step_nm, int 
     }
 }
 
-void lx__quality_table(const lx__table *t, int col, double start_nm, double step_nm, int n, double *out)
+void lx__quality_table(const lx__table *t, int col, const lx__qgrid *g, double *out)
 {
     lx_spd v;
     if (lx__table_view(t, col, &v) != 0) {
-        for (int i = 0; i < n; i++) out[i] = 0.0;
+        for (size_t i = 0; i < g->n; i++) out[i] = 0.0;
         return;
     }
-    lx__quality_sample(&v, start_nm, step_nm, n, out);
+    lx__quality_sample(&v, g, out);
 }
 
 /* The 2 deg CMFs sampled on the grid (3 * n doubles). */
-static void cmf2_grid(double start_nm, double step_nm, int n, double *xyz)
+static void cmf2_grid(const lx__qgrid *g, double *xyz)
 {
     const lx__table *t = lx__table_find("cie1931_2deg_xyz_1nm");
     static const char *const cols[3] = {"x_bar", "y_bar", "z_bar"};
-    for (int c = 0; c < 3; c++) lx__quality_table(t, lx__table_col(t, cols[c]), start_nm, step_nm, n, xyz + c * n);
+    for (int c = 0; c < 3; c++) lx__quality_table(t, lx__table_col(t, cols[c]), g, xyz + c * g->n);
 }
 
-double lx__quality_outside(const double *ref, double start_nm, double step_nm, int n, double lo_nm, double hi_nm)
+double lx__quality_outside(const double *ref, const lx__qgrid *g, double lo_nm, double hi_nm)
 {
-    double *cmf = malloc(sizeof(double) * 3 * (size_t)n);
+    size_t n = g->n;
+    double *cmf = malloc(sizeof(double) * 3 * n);
     if (!cmf) return INFINITY;
-    cmf2_grid(start_nm, step_nm, n, cmf);
+    cmf2_grid(g, cmf);
     double worst = 0.0;
     for (int c = 0; c < 3; c++) {
         double all = 0.0, out = 0.0;
-        for (int i = 0; i < n; i++) {
-            double l = start_nm + i * step_nm, w = ref[i] * cmf[c * n + i];
+        for (size_t i = 0; i < n; i++) {
+            double l = g->lam[i], w = g->w[i] * ref[i] * cmf[c * n + i];
             all += w;
             if (l < lo_nm - 1e-9 || l > hi_nm + 1e-9) out += w;
         }
@@ -79,12 +145,13 @@ double lx__quality_outside(const double *ref, double start_nm, double step_nm, i
 }
 
 /* CIE 1960 u, v and Y (scaled) of the colour stimulus illum * refl under the grid CMFs. */
-static void stimulus(const double *cmf, int n, const double *illum, const double *refl, double k, double *u,
+static void stimulus(const double *cmf, const lx__qgrid *g, const double *illum, const double *refl, double k, double *u,
                      double *v, double *Y)
 {
     double X = 0, YY = 0, Z = 0;
-    for (int i = 0; i < n; i++) {
-        double p = refl ? illum[i] * refl[i] : illum[i];
+    size_t n = g->n;
+    for (size_t i = 0; i < n; i++) {
+        double p = g->w[i] * (refl ? illum[i] * refl[i] : illum[i]);
         X += p * cmf[i];
         YY += p * cmf[n + i];
         Z += p * cmf[2 * n + i];
@@ -102,16 +169,17 @@ static double dterm(double u, double v) { return (1.708 * v + 0.404 - 1.481 * u)
 
 /* U*, V*, W* of the 14 samples under illum (adapted to the reference white ur, vr when the
  * illuminant's white ut, vt differs). */
-static void uvw_samples(const double *cmf, int n, const double *illum, const double *tcs, double ut, double vt,
-                        double ur, double vr, int adapt, double uvw[NTCS][3])
+static void uvw_samples(const double *cmf, const lx__qgrid *g, const double *illum, const double *tcs, double ut,
+                        double vt, double ur, double vr, int adapt, double uvw[NTCS][3])
 {
     double uw, vw, Yw;
-    stimulus(cmf, n, illum, NULL, 1.0, &uw, &vw, &Yw);
+    size_t n = g->n;
+    stimulus(cmf, g, illum, NULL, 1.0, &uw, &vw, &Yw);
     double k = 100.0 / Yw;
     double cr = cterm(ur, vr), dr = dterm(ur, vr), ct = cterm(ut, vt), dt = dterm(ut, vt);
     for (int s = 0; s < NTCS; s++) {
         double u, v, Y;
-        stimulus(cmf, n, illum, tcs + (size_t)s * n, k, &u, &v, &Y);
+        stimulus(cmf, g, illum, tcs + (size_t)s * n, k, &u, &v, &Y);
         if (adapt) {
             double ci = cterm(u, v), di = dterm(u, v);
             double den = 16.518 + 1.481 * (cr / ct) * ci - (dr / dt) * di;
@@ -125,6 +193,24 @@ static void uvw_samples(const double *cmf, int n, const double *illum, const dou
     }
 }
 
+/* The test source's CCT and Duv for its reference, or the reason there is none (LX_ERANGE). */
+static lx_status cri_cct(lx_ctx *ctx, double ut, double vt, double Yt, double *T, double *duv)
+{
+    if (!(Yt > 0) || !isfinite(ut) || !isfinite(vt))
+        return lx__error(ctx, LX_ERANGE, NULL, 0, "CRI: the spectrum has no luminous content in 360-830 nm");
+    if (lx_cct_from_uv(ctx, LX_OBSERVER_2, ut, vt, T, duv) != LX_OK) {
+        char why[LX__ERRMSG_MAX];
+        snprintf(why, sizeof why, "%s", lx_ctx_errmsg(ctx));
+        return lx__error(ctx, LX_ERANGE, NULL, 0, "CRI: no correlated colour temperature: %s", why);
+    }
+    if (fabs(*duv) > DUV_LIMIT)
+        return lx__error(ctx, LX_ERANGE, NULL, 0, "CRI: Duv %.4f is beyond 0.05: too far from the Planckian locus for a CCT",
+                         *duv);
+    if (*T > 25000.0)
+        return lx__error(ctx, LX_ERANGE, NULL, 0, "CRI: CCT %.0f K is above 25000 K, where CIE daylight is undefined", *T);
+    return LX_OK;
+}
+
 lx_status lx_cri_compute(lx_ctx *ctx, const lx_spd *spd, lx_cri *out)
 {
     LX__NEED_CTX(ctx);
@@ -133,70 +219,50 @@ lx_status lx_cri_compute(lx_ctx *ctx, const lx_spd *spd, lx_cri *out)
     if (st != LX_OK) return st;
     const lx__table *tt = lx__table_find("cie13_3_tcs");
     if (!tt) return lx__error(ctx, LX_EINVAL, NULL, 0, "CRI: embedded table cie13_3_tcs missing");
-    double step = lx__quality_step(spd);
-    int n = (int)lround((CRI_END - CRI_START) / step) + 1;
-    double *buf = malloc(sizeof(double) * (size_t)n * (3 + NTCS + 3));
-    if (!buf) return lx__error(ctx, LX_ENOMEM, NULL, 0, "CRI: out of memory");
-    double *cmf = buf, *tcs = cmf + 3 * n, *test = tcs + NTCS * n, *ref = test + n, *lam = ref + n;
-    cmf2_grid(CRI_START, step, n, cmf);
+    lx__qgrid g;
+    if ((st = lx__qgrid_make(ctx, spd, CRI_START, CRI_END, &g)) != LX_OK) return st;
+    size_t n = g.n;
+    double *buf = malloc(sizeof(double) * n * (3 + NTCS + 2));
+    if (!buf) {
+        lx__qgrid_free(&g);
+        return lx__error(ctx, LX_ENOMEM, NULL, 0, "CRI: out of memory");
+    }
+    double *cmf = buf, *tcs = cmf + 3 * n, *test = tcs + NTCS * n, *ref = test + n, *lam = g.lam;
+    cmf2_grid(&g, cmf);
     for (int s = 0; s < NTCS; s++) {
         char name[8];
         snprintf(name, sizeof name, "TCS%02d", s + 1);
-        lx__quality_table(tt, lx__table_col(tt, name), CRI_START, step, n, tcs + (size_t)s * n);
+        lx__quality_table(tt, lx__table_col(tt, name), &g, tcs + (size_t)s * n);
     }
-    lx__quality_sample(spd, CRI_START, step, n, test);
-    for (int i = 0; i < n; i++) lam[i] = CRI_START + i * step;
-
+    lx__quality_sample(spd, &g, test);
     lx_cri r;
     memset(&r, 0, sizeof r);
     double ut, vt, Yt, T, duv;
-    stimulus(cmf, n, test, NULL, 1.0, &ut, &vt, &Yt);
-    if (!(Yt > 0) || !isfinite(ut) || !isfinite(vt)) {
-        free(buf);
-        return lx__error(ctx, LX_ERANGE, NULL, 0, "CRI: the spectrum has no luminous content in 360-830 nm");
-    }
-    st = lx_cct_from_uv(ctx, LX_OBSERVER_2, ut, vt, &T, &duv);
-    if (st != LX_OK) {
-        char why[LX__ERRMSG_MAX];
-        snprintf(why, sizeof why, "%s", lx_ctx_errmsg(ctx));
-        free(buf);
-        return lx__error(ctx, LX_ERANGE, NULL, 0, "CRI: no correlated colour temperature: %s", why);
-    }
-    if (fabs(duv) > DUV_LIMIT) {
-        free(buf);
-        return lx__error(ctx, LX_ERANGE, NULL, 0,
-                         "CRI: Duv %.4f is beyond 0.05: too far from the Planckian locus for a CCT", duv);
-    }
-    if (T > 25000.0) {
-        free(buf);
-        return lx__error(ctx, LX_ERANGE, NULL, 0, "CRI: CCT %.0f K is above 25000 K, where CIE daylight is undefined", T);
-    }
+    stimulus(cmf, &g, test, NULL, 1.0, &ut, &vt, &Yt);
+    if ((st = cri_cct(ctx, ut, vt, Yt, &T, &duv)) != LX_OK) goto done;
     r.cct_K = r.ref_cct_K = T;
     r.duv = duv;
     r.ref_daylight = T >= 5000.0;
     if (r.ref_daylight) {
-        if ((st = lx_daylight(ctx, T, (size_t)n, lam, ref)) != LX_OK) {
-            free(buf);
-            return st;
-        }
+        if ((st = lx_daylight(ctx, T, n, lam, ref)) != LX_OK) goto done;
     } else {
-        for (int i = 0; i < n; i++) ref[i] = lx_planck(lam[i], T);
+        for (size_t i = 0; i < n; i++) ref[i] = lx_planck(lam[i], T);
     }
-    double outside = lx__quality_outside(ref, CRI_START, step, n, spd->lambda_nm[0], spd->lambda_nm[spd->n - 1]);
+    double outside = lx__quality_outside(ref, &g, spd->lambda_nm[0], spd->lambda_nm[spd->n - 1]);
     if (outside > OUTSIDE_LIMIT) {
-        free(buf);
-        return lx__error(ctx, LX_ERANGE, NULL, 0,
-                         "CRI: the spectrum covers %g-%g nm only; %.1f %% of the reference's tristimulus values "
-                         "lie outside it (CIE 13.3 needs 380-780 nm)",
-                         spd->lambda_nm[0], spd->lambda_nm[spd->n - 1], 100 * outside);
+        st = lx__error(ctx, LX_ERANGE, NULL, 0,
+                       "CRI: the spectrum covers %g-%g nm only; %.1f %% of the reference's tristimulus values "
+                       "lie outside it (CIE 13.3 needs 380-780 nm)",
+                       spd->lambda_nm[0], spd->lambda_nm[spd->n - 1], 100 * outside);
+        goto done;
     }
     double ur, vr, Yr;
-    stimulus(cmf, n, ref, NULL, 1.0, &ur, &vr, &Yr);
+    stimulus(cmf, &g, ref, NULL, 1.0, &ur, &vr, &Yr);
     r.dc = hypot(ut - ur, vt - vr);
     r.valid = r.dc <= DC_LIMIT;
     double uvw_t[NTCS][3], uvw_r[NTCS][3];
-    uvw_samples(cmf, n, test, tcs, ut, vt, ur, vr, 1, uvw_t);
-    uvw_samples(cmf, n, ref, tcs, ur, vr, ur, vr, 0, uvw_r);
+    uvw_samples(cmf, &g, test, tcs, ut, vt, ur, vr, 1, uvw_t);
+    uvw_samples(cmf, &g, ref, tcs, ur, vr, ur, vr, 0, uvw_r);
     double sum = 0;
     for (int s = 0; s < NTCS; s++) {
         double dE = sqrt((uvw_t[s][0] - uvw_r[s][0]) * (uvw_t[s][0] - uvw_r[s][0]) +
@@ -206,7 +272,9 @@ lx_status lx_cri_compute(lx_ctx *ctx, const lx_spd *spd, lx_cri *out)
         if (s < 8) sum += r.r[s];
     }
     r.ra = sum / 8.0;
-    free(buf);
     *out = r;
-    return LX_OK;
+done:
+    free(buf);
+    lx__qgrid_free(&g);
+    return st;
 }

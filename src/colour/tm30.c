@@ -108,32 +108,35 @@ static void cam02ucs(const cam *cm, const double XYZ[3], double jab[3], double *
 static double rf_of(double dE) { return 10.0 * log1p(exp((100.0 - 6.73 * dE) / 10.0)); }
 
 /* The reference illuminant of CIE 224 at T on the grid; ybar2 for the Y normalisation of the mix. */
-static lx_status reference(lx_ctx *ctx, double T, int n, const double *lam, const double *ybar2, double *ref, double *tmp)
+static lx_status reference(lx_ctx *ctx, double T, const lx__qgrid *g, const double *ybar2, double *ref, double *tmp)
 {
+    size_t n = g->n;
+    const double *lam = g->lam;
     if (T < 4000.0) {
-        for (int i = 0; i < n; i++) ref[i] = lx_planck(lam[i], T);
+        for (size_t i = 0; i < n; i++) ref[i] = lx_planck(lam[i], T);
         return LX_OK;
     }
-    lx_status st = lx_daylight(ctx, T, (size_t)n, lam, ref);
+    lx_status st = lx_daylight(ctx, T, n, lam, ref);
     if (st != LX_OK || T >= 5000.0) return st;
     double yp = 0, yd = 0, m = (T - 4000.0) / 1000.0;
-    for (int i = 0; i < n; i++) {
+    for (size_t i = 0; i < n; i++) {
         tmp[i] = lx_planck(lam[i], T);
-        yp += tmp[i] * ybar2[i];
-        yd += ref[i] * ybar2[i];
+        yp += g->w[i] * tmp[i] * ybar2[i];
+        yd += g->w[i] * ref[i] * ybar2[i];
     }
-    for (int i = 0; i < n; i++) ref[i] = (1.0 - m) * tmp[i] / yp + m * ref[i] / yd;
+    for (size_t i = 0; i < n; i++) ref[i] = (1.0 - m) * tmp[i] / yp + m * ref[i] / yd;
     return LX_OK;
 }
 
 /* J'a'b' of the 99 samples under illum (10 deg CMFs), and the CAM hue of each; p: 3 n scratch. */
-static void samples_jab(const double *cmf10, int n, const double *illum, const double *ces, double *p,
+static void samples_jab(const double *cmf10, const lx__qgrid *g, const double *illum, const double *ces, double *p,
                         double jab[NCES][3], double hue[NCES])
 {
     double w[3] = {0, 0, 0};
+    size_t n = g->n;
     for (int c = 0; c < 3; c++)
-        for (int i = 0; i < n; i++) {
-            p[c * n + i] = illum[i] * cmf10[c * n + i];
+        for (size_t i = 0; i < n; i++) {
+            p[c * n + i] = g->w[i] * illum[i] * cmf10[c * n + i];
             w[c] += p[c * n + i];
         }
     double k = 100.0 / w[1];
@@ -146,7 +149,7 @@ static void samples_jab(const double *cmf10, int n, const double *illum, const d
         for (int c = 0; c < 3; c++) {
             const double *pc = p + c * n;
             double acc = 0;
-            for (int i = 0; i < n; i++) acc += pc[i] * r[i];
+            for (size_t i = 0; i < n; i++) acc += pc[i] * r[i];
             XYZ[c] = k * acc;
         }
         cam02ucs(&cm, XYZ, jab[s], &hue[s]);
@@ -163,27 +166,31 @@ lx_status lx_tm30_compute(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out)
     const lx__table *t10 = lx__table_find("cie1964_10deg_xyz_1nm");
     const lx__table *t2 = lx__table_find("cie1931_2deg_xyz_1nm");
     if (!tc || !t10 || !t2) return lx__error(ctx, LX_EINVAL, NULL, 0, "TM-30: embedded tables missing");
-    double step = lx__quality_step(spd);
-    int n = (int)lround((TM_END - TM_START) / step) + 1;
-    double *buf = malloc(sizeof(double) * (size_t)n * (NCES + 3 + 3 + 3 + 5));
-    if (!buf) return lx__error(ctx, LX_ENOMEM, NULL, 0, "TM-30: out of memory");
+    lx__qgrid g;
+    if ((st = lx__qgrid_make(ctx, spd, TM_START, TM_END, &g)) != LX_OK) return st;
+    size_t n = g.n;
+    double *buf = malloc(sizeof(double) * n * (NCES + 3 + 3 + 3 + 4));
+    if (!buf) {
+        lx__qgrid_free(&g);
+        return lx__error(ctx, LX_ENOMEM, NULL, 0, "TM-30: out of memory");
+    }
     double *ces = buf, *cmf10 = ces + (size_t)NCES * n, *cmf2 = cmf10 + 3 * n, *test = cmf2 + 3 * n;
-    double *ref = test + n, *tmp = ref + n, *lam = tmp + n, *scratch = lam + n;
+    double *ref = test + n, *tmp = ref + n, *scratch = tmp + n;
     static const char *const c10[3] = {"x_bar_10", "y_bar_10", "z_bar_10"}, *const c2[3] = {"x_bar", "y_bar", "z_bar"};
     for (int c = 0; c < 3; c++) {
-        lx__quality_table(t10, lx__table_col(t10, c10[c]), TM_START, step, n, cmf10 + c * n);
-        lx__quality_table(t2, lx__table_col(t2, c2[c]), TM_START, step, n, cmf2 + c * n);
+        lx__quality_table(t10, lx__table_col(t10, c10[c]), &g, cmf10 + c * n);
+        lx__quality_table(t2, lx__table_col(t2, c2[c]), &g, cmf2 + c * n);
     }
     for (int s = 0; s < NCES; s++) {
         char name[8];
         snprintf(name, sizeof name, "CES%02d", s + 1);
-        lx__quality_table(tc, lx__table_col(tc, name), TM_START, step, n, ces + (size_t)s * n);
+        lx__quality_table(tc, lx__table_col(tc, name), &g, ces + (size_t)s * n);
     }
-    lx__quality_sample(spd, TM_START, step, n, test);
-    for (int i = 0; i < n; i++) lam[i] = TM_START + i * step;
+    lx__quality_sample(spd, &g, test);
 
     double X = 0, Y = 0, Z = 0;
-    for (int i = 0; i < n; i++) X += test[i] * cmf2[i], Y += test[i] * cmf2[n + i], Z += test[i] * cmf2[2 * n + i];
+    for (size_t i = 0; i < n; i++)
+        X += g.w[i] * test[i] * cmf2[i], Y += g.w[i] * test[i] * cmf2[n + i], Z += g.w[i] * test[i] * cmf2[2 * n + i];
     double d = X + 15 * Y + 3 * Z, T, duv;
     const char *why = NULL;
     char msg[LX__ERRMSG_MAX];
@@ -198,12 +205,13 @@ lx_status lx_tm30_compute(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out)
         snprintf(msg, sizeof msg, "CCT %.0f K is above 25000 K, where CIE daylight is undefined", T);
         why = msg;
     }
-    if (!why && (st = reference(ctx, T, n, lam, cmf2 + n, ref, tmp)) != LX_OK) {
+    if (!why && (st = reference(ctx, T, &g, cmf2 + n, ref, tmp)) != LX_OK) {
         free(buf);
+        lx__qgrid_free(&g);
         return st;
     }
     if (!why) {
-        double outside = lx__quality_outside(ref, TM_START, step, n, spd->lambda_nm[0], spd->lambda_nm[spd->n - 1]);
+        double outside = lx__quality_outside(ref, &g, spd->lambda_nm[0], spd->lambda_nm[spd->n - 1]);
         if (outside > OUTSIDE_LIMIT) {
             snprintf(msg, sizeof msg,
                      "the spectrum covers %g-%g nm only; %.1f %% of the reference's tristimulus values lie "
@@ -214,6 +222,7 @@ lx_status lx_tm30_compute(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out)
     }
     if (why) {
         free(buf);
+        lx__qgrid_free(&g);
         return lx__error(ctx, LX_ERANGE, NULL, 0, "TM-30: %s", why);
     }
 
@@ -221,8 +230,8 @@ lx_status lx_tm30_compute(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out)
     lx_tm30 r = zero;
     r.cct_K = T, r.duv = duv;
     double jt[NCES][3], jr[NCES][3], ht[NCES], hr[NCES];
-    samples_jab(cmf10, n, test, ces, scratch, jt, ht);
-    samples_jab(cmf10, n, ref, ces, scratch, jr, hr);
+    samples_jab(cmf10, &g, test, ces, scratch, jt, ht);
+    samples_jab(cmf10, &g, ref, ces, scratch, jr, hr);
     double sum = 0, bin_dE[NBIN] = {0}, at[NBIN][2] = {{0}}, ar[NBIN][2] = {{0}};
     int cnt[NBIN] = {0};
     for (int s = 0; s < NCES; s++) {
@@ -266,6 +275,7 @@ lx_status lx_tm30_compute(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out)
         r.rg = 100.0 * area_t / area_r;
     }
     free(buf);
+    lx__qgrid_free(&g);
     *out = r;
     return LX_OK;
 }

@@ -45,6 +45,8 @@ struct lx_ctx {
     lx_counters counters;             /* work counters of the lighting and scene layers */
     size_t input_limit[LX_INPUT_KIND_COUNT]; /* bytes per lx_input_kind; 0: the default */
     lx_backend backend_used;          /* lx_ctx_backend_used: AUTO until a backend-choosing call succeeds */
+    lx_irr_method irr_method;         /* lx_ctx_irradiance_method: AUTO until an irradiance call succeeds */
+    double irr_fast_cost_ratio;       /* and AUTO's cost estimate for that call (NaN before) */
 };
 
 /* The data in slot id of ctx (NULL when empty or ctx is NULL). */
@@ -103,6 +105,27 @@ lx_status lx__read_stream(lx_ctx *ctx, const char *path, lx_input_kind kind, FIL
  * first block [buf, buf + n) of a text (only its first LX__TEXT_PROBE_BYTES are looked at). */
 lx_status lx__input_size_check(lx_ctx *ctx, const char *path, lx_input_kind kind, unsigned long long size);
 lx_status lx__text_check(lx_ctx *ctx, const char *path, const char *buf, size_t n);
+
+/* ---- output files (file_write.c) ---- */
+
+/* An output file written atomically: lx__wfile_open creates a temporary file beside path
+ * (LX_EIO naming path when it cannot), lx__wfile_write writes all of buf (LX_EWRITE with the
+ * system's reason: "No space left on device"), lx__wfile_close(ctx, w, st) with st == LX_OK
+ * fsyncs, closes and renames into place, otherwise (or when anything failed) removes the
+ * temporary file and returns the first error. A path that exists and is not a regular file (a
+ * device, a FIFO) is opened and written directly (it is never replaced). */
+typedef struct lx__wfile {
+    int fd;
+    int err;          /* errno of the first failed write (0: none) */
+    const char *path; /* not owned */
+    char *tmp;        /* the temporary file, NULL when writing path directly */
+} lx__wfile;
+lx_status lx__wfile_open(lx_ctx *ctx, const char *path, lx__wfile *w);
+lx_status lx__wfile_write(lx_ctx *ctx, lx__wfile *w, const void *buf, size_t n);
+lx_status lx__wfile_close(lx_ctx *ctx, lx__wfile *w, lx_status st);
+/* Today's date as "YYYY-MM-DD" (UTC; SOURCE_DATE_EPOCH's when it is set, for reproducible
+ * output), malloc'ed; NULL without memory. For the dates files carry (the IES [ISSUEDATE]). */
+char *lx__date_today(void);
 
 /* A cursor over the lines of a buffer: LF or CRLF; line counts from 1 after the first call. */
 typedef struct lx__lines {
@@ -163,6 +186,18 @@ void lx__team_join(lx__team *team);
  * beyond a level's set, for the one path that uses them: */
 /* 1 when the CPU has AVX-512 BITALG besides the AVX-512 set (the vector CSV line parser). */
 int lx__cpu_has_bitalg(void);
+
+/* ---- geometry (lambert.c) ---- */
+
+/* The integral of max(0, n . w) dw over the directions w of the polygon v[0..nv-1] (vertices as
+ * vectors from the viewpoint, in order, planar and convex; at most LX__POLY_MAX) seen from the
+ * origin: Lambert's formula on the polygon clipped to n . x >= 0. n: unit. Exact (closed form). */
+#define LX__POLY_MAX 8
+double lx__polygon_projected(const double (*v)[3], int nv, const double n[3]);
+/* Lambert's term of the straight edge a -> b (vectors from the viewpoint): the angle it subtends
+ * times n . (a x b) / |a x b| (0 for a degenerate edge). Half the sum over a closed polygon's
+ * edges is its projected solid angle, with the sign of its orientation. */
+double lx__lambert_edge(const double a[3], const double b[3], const double n[3]);
 
 /* ---- the backend rule (backend.c) ---- */
 

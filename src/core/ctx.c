@@ -2,6 +2,7 @@
 #include "core/core_private.h"
 
 #include <stdio.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -18,6 +19,7 @@ const char *lx_strerror(lx_status status)
     case LX_ERANGE: return "undefined for this input";
     case LX_EUNSUPPORTED: return "not supported";
     case LX_EDEVICE: return "OpenCL device error";
+    case LX_EWRITE: return "write error";
     }
     return "unknown status";
 }
@@ -28,6 +30,8 @@ lx_status lx_ctx_create(lx_ctx **out)
     *out = calloc(1, sizeof **out);
     if (!*out) return LX_ENOMEM;
     (*out)->log_max = LX_LOG_WARN;
+    (*out)->irr_method = LX_IRR_AUTO;
+    (*out)->irr_fast_cost_ratio = NAN;
     return LX_OK;
 }
 

@@ -1,7 +1,8 @@
 /* grid.c - illuminance on points from placed luminaires: E = I(C, gamma) cos(xi) / d^2 summed over
  * luminaires, with the exact model (bilinear or smooth interpolation, the luminous area integrated to a
- * tolerance under the five-times rule) and the fast path: a table indexed by sqrt(1 - |cos g|)
- * and the diamond angle of C (no acos/atan2), run by threads on the CPU or by kernels/grid.cl. */
+ * tolerance where the point model's estimated error asks for it, nearfield.c) and the fast path: a
+ * table indexed by sqrt(1 - |cos g|) and the diamond angle of C (no acos/atan2), run by threads on
+ * the CPU or by kernels/grid.cl. */
 #include "grid_private.h"
 
 #include <math.h>
@@ -300,21 +301,64 @@ typedef struct job {
     double tol;          /* near-field tolerance */
     int simd;            /* lx__grid_simd() */
     double *E;
-    unsigned long long near_pairs, near_cells, near_unconverged; /* OUT */
+    const size_t *area;  /* the luminaires with an opening (n_area of them) */
+    size_t n_area;
+    lx__nf_probe *pr;    /* scratch, n_area each: probes, decisions, order */
+    unsigned char *nf;
+    size_t *ord;
+    unsigned long long near_pairs, near_cells, near_unconverged, probes; /* OUT */
 } job;
 
-/* The near-field pairs of point pt: luminaire k's point term e_point replaced by its area sum. */
-static int is_near(const plum *p, const double *pt)
+typedef struct probe_arg {
+    const plum *p;
+    lx_interp interp;
+    const double *pt, *n;
+} probe_arg;
+
+/* The point model of the whole luminaire moved to offset (a, b) on its opening. */
+static double probe_g(void *arg, double a, double b)
 {
-    if (!(p->size_m > 0)) return 0;
-    double w0 = pt[0] - p->pos[0], w1 = pt[1] - p->pos[1], w2 = pt[2] - p->pos[2];
-    return w0 * w0 + w1 * w1 + w2 * w2 < 25 * p->size_m * p->size_m;
+    const probe_arg *A = arg;
+    plum sub = *A->p;
+    for (int k = 0; k < 3; k++) sub.pos[k] = A->p->pos[k] + a * A->p->ex[k] + b * A->p->ey[k];
+    return pair_point(&sub, A->interp, A->pt, A->n);
+}
+
+/* The near-field pass of one point. *e holds the point model of every luminaire (through the
+ * table or the exact interpolation, as j->interp); each pair with an opening is decided (AUTO:
+ * from the probes of its point-model error against the tolerance, lx__nf_decide; AREA: always
+ * integrated) and the integrated ones replace their point terms. */
+static void near_pass(job *j, const double *pt, const double *n, double *e)
+{
+    lx_interp exact = j->interp == LX_INTERP_TABLE ? LX_INTERP_BILINEAR : j->interp;
+    size_t k = j->n_area;
+    if (j->model == LX_MODEL_AREA) {
+        for (size_t a = 0; a < k; a++) j->nf[a] = 1;
+    } else {
+        for (size_t a = 0; a < k; a++) {
+            const plum *p = &j->pl[j->area[a]];
+            probe_arg A = {p, exact, pt, n};
+            double w0 = pt[0] - p->pos[0], w1 = pt[1] - p->pos[1], w2 = pt[2] - p->pos[2];
+            lx__nf_probe_pair(probe_g, &A, p->circular, p->w, p->l, sqrt(w0 * w0 + w1 * w1 + w2 * w2),
+                              lx__nf_faces(p->pos, p->ex, p->ey, p->circular, p->w, p->l, pt, n), &j->pr[a]);
+        }
+        j->probes += k;
+        lx__nf_decide(k, j->pr, *e, j->tol, j->nf, j->ord);
+    }
+    for (size_t a = 0; a < k; a++) {
+        if (!j->nf[a]) continue;
+        const plum *p = &j->pl[j->area[a]];
+        double P = j->model != LX_MODEL_AREA && j->interp != LX_INTERP_TABLE ? j->pr[a].point
+                                                                              : pair_point(p, j->interp, pt, n);
+        *e += pair_near(p, j->interp, pt, n, j->tol, &j->near_cells, &j->near_unconverged) - P;
+        j->near_pairs++;
+    }
 }
 
 #define BLK 256 /* points per block of the table path: 7 arrays of BLK doubles stay in L1 */
 
 /* The table path: blocks of points, each luminaire's transform applied to a whole block
- * (lx__grid_table_block), near-field pairs then replaced by their area sums. */
+ * (lx__grid_table_block, the SIMD loops), then the near-field pass per point. */
 static void run_table_job(job *j)
 {
     double X[BLK], Y[BLK], Z[BLK], NX[BLK], NY[BLK], NZ[BLK], acc[BLK];
@@ -323,8 +367,6 @@ static void run_table_job(job *j)
         NY[0] = j->nrm[1];
         NZ[0] = j->nrm[2];
     }
-    int any_area = 0;
-    for (size_t m = 0; m < j->m; m++) any_area |= j->pl[m].size_m > 0;
     for (size_t b0 = j->i0; b0 < j->i1; b0 += BLK) {
         size_t nb = j->i1 - b0 < BLK ? j->i1 - b0 : BLK;
         const double *P = j->pts + 3 * b0;
@@ -341,17 +383,8 @@ static void run_table_job(job *j)
                 NZ[i] = j->nrm[3 * (b0 + i) + 2];
             }
         for (size_t m = 0; m < j->m; m++) lx__grid_table_block(&j->pl[m], nb, X, Y, Z, NX, NY, NZ, j->shared, j->simd, acc);
-        if (j->model != LX_MODEL_POINT && any_area)
-            for (size_t i = 0; i < nb; i++) {
-                const double *pt = P + 3 * i, *n = j->shared ? j->nrm : j->nrm + 3 * (b0 + i);
-                for (size_t m = 0; m < j->m; m++) {
-                    const plum *p = &j->pl[m];
-                    if (!is_near(p, pt)) continue;
-                    acc[i] += pair_near(p, j->interp, pt, n, j->tol, &j->near_cells, &j->near_unconverged) -
-                              pair_point(p, LX_INTERP_TABLE, pt, n);
-                    j->near_pairs++;
-                }
-            }
+        if (j->model != LX_MODEL_POINT && j->n_area)
+            for (size_t i = 0; i < nb; i++) near_pass(j, P + 3 * i, j->shared ? j->nrm : j->nrm + 3 * (b0 + i), &acc[i]);
         memcpy(j->E + b0, acc, nb * sizeof *acc);
     }
 }
@@ -366,37 +399,66 @@ static void run_job(void *arg, int t)
     for (size_t i = j->i0; i < j->i1; i++) {
         const double *pt = j->pts + 3 * i, *n = j->shared ? j->nrm : j->nrm + 3 * i;
         double e = 0;
-        for (size_t m = 0; m < j->m; m++) {
-            const plum *p = &j->pl[m];
-            if (j->model != LX_MODEL_POINT && is_near(p, pt)) {
-                e += pair_near(p, j->interp, pt, n, j->tol, &j->near_cells, &j->near_unconverged);
-                j->near_pairs++;
-                continue;
-            }
-            e += pair_point(p, j->interp, pt, n);
-        }
+        for (size_t m = 0; m < j->m; m++) e += pair_point(&j->pl[m], j->interp, pt, n);
+        if (j->model != LX_MODEL_POINT && j->n_area) near_pass(j, pt, n, &e);
         j->E[i] = e;
     }
 }
 
-static lx_status run_cpu(lx_ctx *ctx, const plum *pl, size_t m, const double *pts, size_t n, const double *nrm, int shared,
-                         lx_interp interp, lx_model model, double tol, int threads, double *E)
+/* The near-field pass over points [i0, i1) whose point model is already in E (the OpenCL path). */
+static void run_near_job(void *arg, int t)
+{
+    job *j = (job *)arg + t;
+    for (size_t i = j->i0; i < j->i1; i++)
+        near_pass(j, j->pts + 3 * i, j->shared ? j->nrm : j->nrm + 3 * i, &j->E[i]);
+}
+
+/* Runs fn over n points on up to 64 threads, each with its job and its scratch; adds the work
+ * to the context's counters. near_only: run_near_job (E holds the point model already). */
+static lx_status run_jobs(lx_ctx *ctx, const plum *pl, size_t m, const double *pts, size_t n, const double *nrm, int shared,
+                          lx_interp interp, lx_model model, double tol, int threads, int near_only, double *E)
 {
     int T = lx__threads(threads, (long)(n / 256 + 1));
     job jobs[64];
+    size_t n_area = 0;
+    for (size_t k = 0; k < m; k++) n_area += pl[k].size_m > 0;
+    size_t *area = malloc((n_area ? n_area : 1) * sizeof *area);
+    size_t per = n_area ? n_area : 1;
+    lx__nf_probe *pr = malloc((size_t)T * per * sizeof *pr);
+    unsigned char *nf = malloc((size_t)T * per);
+    size_t *ord = malloc((size_t)T * per * sizeof *ord);
+    if (!area || !pr || !nf || !ord) {
+        free(area), free(pr), free(nf), free(ord);
+        return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    }
+    for (size_t k = 0, a = 0; k < m; k++)
+        if (pl[k].size_m > 0) area[a++] = k;
     int simd = lx__grid_simd();
     for (int t = 0; t < T; t++)
         jobs[t] = (job){pl, m, pts, nrm, shared, n * (size_t)t / (size_t)T, n * (size_t)(t + 1) / (size_t)T, interp, model,
-                        tol, simd, E, 0, 0, 0};
-    int ran = lx__parallel_run(T, run_job, jobs);
-    for (int t = ran; t < T; t++) run_job(jobs, t); /* the threads that did not start */
+                        tol, simd, E, area, n_area, pr + (size_t)t * per, nf + (size_t)t * per, ord + (size_t)t * per,
+                        0, 0, 0, 0};
+    void (*fn)(void *, int) = near_only ? run_near_job : run_job;
+    int ran = lx__parallel_run(T, fn, jobs);
+    for (int t = ran; t < T; t++) fn(jobs, t); /* the threads that did not start */
+    unsigned long long unconv = 0, pairs = 0, probes = 0;
     for (int t = 0; t < T; t++) {
         ctx->counters.nearfield_pairs += jobs[t].near_pairs;
         ctx->counters.nearfield_subdivisions += jobs[t].near_cells;
-        if (jobs[t].near_unconverged)
-            lx__log(ctx, LX_LOG_INFO, "grid: %llu near-field pairs did not reach the tolerance %g at %d cells per side",
-                    jobs[t].near_unconverged, tol, LX__NEAR_MAX);
+        ctx->counters.nearfield_probes += jobs[t].probes;
+        unconv += jobs[t].near_unconverged;
+        pairs += jobs[t].near_pairs;
+        probes += jobs[t].probes;
     }
+    if (model != LX_MODEL_POINT && n_area)
+        lx__log(ctx, LX_LOG_INFO, "grid: %llu of %llu pairs with a luminous opening integrated over it (%s)", pairs,
+                (unsigned long long)n * n_area,
+                model == LX_MODEL_AREA ? "model area" : "the others' estimated point-model error is within the tolerance");
+    (void)probes;
+    if (unconv)
+        lx__log(ctx, LX_LOG_INFO, "grid: %llu near-field pairs did not reach the tolerance %g at %d cells per side", unconv,
+                tol, LX__NEAR_MAX);
+    free(area), free(pr), free(nf), free(ord);
     return LX_OK;
 }
 
@@ -420,11 +482,11 @@ lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, c
     if (!(mf > 0) || mf > 1) return lx__error(ctx, LX_EINVAL, NULL, 0, "the maintenance factor must be in (0, 1] (got %g)", mf);
     if (o.interp != LX_INTERP_BILINEAR && o.interp != LX_INTERP_SMOOTH && o.interp != LX_INTERP_TABLE)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown interpolation %d", (int)o.interp);
-    if (o.model != LX_MODEL_AUTO && o.model != LX_MODEL_POINT)
-        return lx__error(ctx, LX_EINVAL, NULL, 0, "grids use the point or auto model");
+    if (o.model != LX_MODEL_AUTO && o.model != LX_MODEL_POINT && o.model != LX_MODEL_AREA)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "grids use the auto, point or area model");
     if (o.table_n < 0 || o.table_n == 1 || o.table_n > LX__GRID_MAX_TABLE_ROWS)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "table rows must be 2 to %d (got %d; 0: 1024)", LX__GRID_MAX_TABLE_ROWS, o.table_n);
-    double tol = o.nearfield_tol == 0 ? 1e-4 : o.nearfield_tol;
+    double tol = o.nearfield_tol == 0 ? LX__NEARFIELD_TOL : o.nearfield_tol;
     if (!(tol >= 1e-12) || !(tol <= 0.1))
         return lx__error(ctx, LX_EINVAL, NULL, 0, "the near-field tolerance must be in [1e-12, 0.1] (got %g)", tol);
     lx_backend backend = o.backend == LX_BACKEND_AUTO ? lx_backend_from_env() : o.backend;
@@ -462,9 +524,10 @@ lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, c
         frame(p, q->ex, q->ey, q->ez);
         double tilt = acos(fmax(-1.0, fmin(1.0, -p->aim[2] / r)));
         q->scale = mf * lx_luminaire_tilt_factor(p->lum, tilt);
-        double w = fabs(p->lum->width_m), l = fabs(p->lum->length_m);
-        q->circular = p->lum->width_m < 0 && (p->lum->length_m < 0 || l == 0);
-        if (q->circular) l = w;
+        /* LM-63 / EULUMDAT: the length lies along C0-C180 (ex), the width along C90-C270 (ey) */
+        double w = fabs(p->lum->length_m), l = fabs(p->lum->width_m);
+        q->circular = p->lum->width_m < 0 && (p->lum->length_m < 0 || p->lum->length_m == 0);
+        if (q->circular) w = l = fabs(p->lum->width_m);
         q->w = w;
         q->l = l;
         q->size_m = q->circular ? w : sqrt(w * w + l * l);
@@ -519,26 +582,13 @@ lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, c
             use_cl = 0;
             st = LX_OK;
         }
-        if (use_cl && o.model != LX_MODEL_POINT) {
-            /* near-field pairs: replace the kernel's point term by the converged area sum */
-            unsigned long long pairs = 0, cells = 0, unconv = 0;
-            for (size_t i = 0; i < n; i++) {
-                const double *pt = points + 3 * i, *nn = shared_normal ? normals : normals + 3 * i;
-                for (size_t k = 0; k < m; k++) {
-                    const plum *p = &pl[k];
-                    if (!is_near(p, pt)) continue;
-                    E[i] += pair_near(p, o.interp, pt, nn, tol, &cells, &unconv) - pair_point(p, o.interp, pt, nn);
-                    pairs++;
-                }
-            }
-            ctx->counters.nearfield_pairs += pairs;
-            ctx->counters.nearfield_subdivisions += cells;
-        }
+        if (use_cl && o.model != LX_MODEL_POINT)
+            st = run_jobs(ctx, pl, m, points, n, normals, shared_normal, o.interp, o.model, tol, o.threads, 1, E);
     }
 #endif
     if (!use_cl) {
         if (m == 0) memset(E, 0, n * sizeof *E);
-        else st = run_cpu(ctx, pl, m, points, n, normals, shared_normal, o.interp, o.model, tol, o.threads, E);
+        else st = run_jobs(ctx, pl, m, points, n, normals, shared_normal, o.interp, o.model, tol, o.threads, 0, E);
     }
     for (size_t i = 0; st == LX_OK && i < n; i++)
         if (!isfinite(E[i])) { /* never a NaN or an infinity handed on as an illuminance */

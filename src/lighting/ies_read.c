@@ -165,6 +165,10 @@ static int keyword(lx_luminaire *lum, const char *s, const char *e, char ***last
     if (kl == 7 && prefix_ci(k, ke, "MANUFAC")) dst = &lum->manufacturer;
     else if (kl == 6 && prefix_ci(k, ke, "LUMCAT")) dst = &lum->catalog;
     else if (kl == 9 && prefix_ci(k, ke, "LUMINAIRE")) dst = &lum->description;
+    else if (kl == 4 && prefix_ci(k, ke, "TEST")) dst = &lum->test;
+    else if (kl == 7 && prefix_ci(k, ke, "TESTLAB")) dst = &lum->testlab;
+    else if (kl == 9 && prefix_ci(k, ke, "ISSUEDATE")) dst = &lum->issuedate;
+    else if (kl == 4 && prefix_ci(k, ke, "LAMP")) dst = &lum->lamp;
     else if (kl == 4 && prefix_ci(k, ke, "MORE")) dst = *last;
     else if (kl == 15 && prefix_ci(k, ke, "_ABSOLUTELUMENS")) {
         double x;
@@ -327,6 +331,8 @@ lx_status lx__ies_read(lx_ctx *ctx, const char *file, const char *text, size_t l
         goto fail;
     }
     double unit = h[6] == 1 ? 0.3048 : 1.0;
+    /* LM-63: the width is measured along the 90-270 degree photometric plane, the length along
+     * 0-180 (negative values: round shapes) */
     lum->width_m = h[7] * unit;
     lum->length_m = h[8] * unit;
     lum->height_m = h[9] * unit;

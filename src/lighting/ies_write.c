@@ -34,34 +34,77 @@ static void put(sbuf *b, const char *s, size_t n)
 
 static void puts_(sbuf *b, const char *s) { put(b, s, strlen(s)); }
 
+/* the shortest text that reads back as v exactly, without an exponent where a plain number does
+ * (800, not 8e+02) */
 static void num(sbuf *b, double v)
 {
-    char t[40];
+    char t[64];
     for (int prec = 1; prec <= 17; prec++) {
         snprintf(t, sizeof t, "%.*g", prec, v);
         if (strtod(t, NULL) == v) break;
     }
+    if (strchr(t, 'e') && fabs(v) >= 1e-4 && fabs(v) < 1e15)
+        for (int dec = 0; dec <= 20; dec++) {
+            snprintf(t, sizeof t, "%.*f", dec, v);
+            if (strtod(t, NULL) == v) break;
+        }
     puts_(b, t);
 }
 
-/* Header text on one line: no line breaks, at most 200 characters. */
-static void kw(sbuf *b, const char *key, const char *val)
+/* An angle in the shortest form within 1e-9 deg of it: computed angles (j x 0.1) print as
+ * 0.3, not 0.30000000000000004. */
+static void angle(sbuf *b, double v)
 {
-    char line[240];
-    snprintf(line, sizeof line, "[%s] %.200s", key, val && *val ? val : "");
-    for (char *q = line; *q; q++)
-        if (*q == '\n' || *q == '\r') *q = ' ';
-    puts_(b, line);
-    puts_(b, "\r\n");
+    char t[48];
+    for (int dec = 0; dec <= 12; dec++) {
+        snprintf(t, sizeof t, "%.*f", dec, v);
+        if (fabs(strtod(t, NULL) - v) <= 1e-9) break;
+    }
+    if (!strcmp(t, "-0")) snprintf(t, sizeof t, "0");
+    puts_(b, t);
 }
 
-/* Values ten to a line (LM-63-2002 keeps lines under 256 characters). */
-static void list(sbuf *b, const double *v, size_t n, size_t stride)
+/* A keyword line, its value on lines of at most 200 characters (LM-63-2002 keeps lines under 256):
+ * a longer value goes on in [MORE] lines, cut between words; line breaks become spaces. */
+static void kw(sbuf *b, const char *key, const char *val)
+{
+    const char *s = val ? val : "";
+    int first = 1;
+    do {
+        size_t n = strlen(s), take = n > 200 ? 200 : n;
+        if (take < n) {
+            size_t k = take;
+            while (k > 0 && s[k] != ' ') k--;
+            if (k > 0) take = k;
+        }
+        char line[240];
+        snprintf(line, sizeof line, "[%s] %.*s", first ? key : "MORE", (int)take, s);
+        for (char *q = line; *q; q++)
+            if (*q == '\n' || *q == '\r') *q = ' ';
+        puts_(b, line);
+        puts_(b, "\r\n");
+        s += take;
+        while (*s == ' ') s++;
+        first = 0;
+    } while (*s);
+}
+
+/* Values ten to a line (LM-63-2002 keeps lines under 256 characters); angles cleaned. */
+static void list_(sbuf *b, const double *v, size_t n, size_t stride, int angles)
 {
     for (size_t i = 0; i < n; i++) {
-        num(b, v[i * stride]);
+        (angles ? angle : num)(b, v[i * stride]);
         puts_(b, (i + 1) % 10 == 0 || i + 1 == n ? "\r\n" : " ");
     }
+}
+
+static void list(sbuf *b, const double *v, size_t n, size_t stride) { list_(b, v, n, stride, 0); }
+
+/* The base name of a path (the file a converted luminaire came from). */
+static const char *base(const char *path)
+{
+    const char *s = path ? strrchr(path, '/') : NULL;
+    return s ? s + 1 : path ? path : "";
 }
 
 lx_status lx_luminaire_write_ies(lx_ctx *ctx, const lx_luminaire *l, char **text, size_t *len)
@@ -75,23 +118,34 @@ lx_status lx_luminaire_write_ies(lx_ctx *ctx, const lx_luminaire *l, char **text
      * short of 360 get the C360 plane (a copy of C0) */
     int close = l->symmetry == LX_SYM_NONE && l->h_deg[l->n_h - 1] < 360;
     sbuf b = {0};
+    /* the source's own test, laboratory, date, lamp and catalogue fields are kept; what a source
+     * does not state is said so, and a file written today is issued today */
+    char other[400], src[200];
+    snprintf(src, sizeof src, "%s", base(l->file));
+    char *today = l->issuedate && *l->issuedate ? NULL : lx__date_today();
     puts_(&b, "IESNA:LM-63-2002\r\n");
-    kw(&b, "TEST", "computed by luxcalc (not a measurement)");
-    kw(&b, "TESTLAB", "luxcalc");
-    kw(&b, "ISSUEDATE", "none");
-    kw(&b, "MANUFAC", l->manufacturer);
+    snprintf(other, sizeof other, "not stated in %s", src);
+    kw(&b, "TEST", l->test && *l->test ? l->test : other);
+    kw(&b, "TESTLAB", l->testlab && *l->testlab ? l->testlab : other);
+    kw(&b, "ISSUEDATE", l->issuedate && *l->issuedate ? l->issuedate : today ? today : "unknown");
+    free(today);
+    kw(&b, "MANUFAC", l->manufacturer && *l->manufacturer ? l->manufacturer : other);
     kw(&b, "LUMCAT", l->catalog);
     kw(&b, "LUMINAIRE", l->description);
+    if (l->lamp && *l->lamp) kw(&b, "LAMP", l->lamp);
     if (isfinite(l->stated_lumens)) {
-        char t[64];
-        snprintf(t, sizeof t, "%.17g", l->stated_lumens);
-        for (int prec = 1; prec <= 17; prec++) {
-            snprintf(t, sizeof t, "%.*g", prec, l->stated_lumens);
-            if (strtod(t, NULL) == l->stated_lumens) break;
-        }
-        kw(&b, "_ABSOLUTELUMENS", t);
+        sbuf nb = {0};
+        num(&nb, l->stated_lumens);
+        kw(&b, "_ABSOLUTELUMENS", nb.p);
+        free(nb.p);
     }
-    kw(&b, "OTHER", "candela values are absolute (multiplier and ballast factor 1)");
+    if (strcmp(src, "(model)")) {
+        snprintf(other, sizeof other, "written by luxcalc %s from %s (%s); candela values are absolute (multiplier and "
+                 "ballast factor 1)", LX_VERSION_STRING, src, lx_lum_format_name(l->format));
+        kw(&b, "OTHER", other);
+    } else {
+        kw(&b, "OTHER", "candela values are absolute (multiplier and ballast factor 1)");
+    }
     if (l->tilt_include && l->n_tilt) {
         puts_(&b, "TILT=INCLUDE\r\n");
         char t[16];
@@ -99,7 +153,7 @@ lx_status lx_luminaire_write_ies(lx_ctx *ctx, const lx_luminaire *l, char **text
         puts_(&b, t);
         snprintf(t, sizeof t, "%zu\r\n", l->n_tilt);
         puts_(&b, t);
-        list(&b, l->tilt_deg, l->n_tilt, 1);
+        list_(&b, l->tilt_deg, l->n_tilt, 1, 1);
         list(&b, l->tilt_factor, l->n_tilt, 1);
     } else {
         puts_(&b, "TILT=NONE\r\n");
@@ -114,6 +168,8 @@ lx_status lx_luminaire_write_ies(lx_ctx *ctx, const lx_luminaire *l, char **text
     char t[64];
     snprintf(t, sizeof t, "%zu %zu 1 2 ", l->n_v, nh);
     puts_(&b, t);
+    /* the opening as LM-63 orders it: width (along the 90-270 plane), then length (along 0-180);
+     * lx_luminaire keeps the same meaning, so the axes survive a write and a read */
     num(&b, l->width_m);
     puts_(&b, " ");
     num(&b, l->length_m);
@@ -122,9 +178,9 @@ lx_status lx_luminaire_write_ies(lx_ctx *ctx, const lx_luminaire *l, char **text
     puts_(&b, "\r\n1 1 ");
     num(&b, isfinite(l->input_watts) ? l->input_watts : 0);
     puts_(&b, "\r\n");
-    list(&b, l->v_deg, l->n_v, 1);
+    list_(&b, l->v_deg, l->n_v, 1, 1);
     for (size_t i = 0; i < nh; i++) {
-        num(&b, i < l->n_h ? l->h_deg[i] : 360.0);
+        angle(&b, i < l->n_h ? l->h_deg[i] : 360.0);
         puts_(&b, (i + 1) % 10 == 0 || i + 1 == nh ? "\r\n" : " ");
     }
     for (size_t i = 0; i < nh; i++) list(&b, l->cd + (i < l->n_h ? i : 0) * l->n_v, l->n_v, 1);

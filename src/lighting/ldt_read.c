@@ -83,11 +83,11 @@ lx_status lx__ldt_read(lx_ctx *ctx, const char *file, const char *buf, size_t le
     if ((st = num(ctx, &r, "Dc (C-plane step)", &dc))) goto fail;
     if ((st = whole(ctx, &r, "Ng (number of gamma angles)", 2, LX__LDT_MAX_GAMMA, &ng))) goto fail;
     if ((st = num(ctx, &r, "Dg (gamma step)", &dg))) goto fail;
-    if ((st = text(ctx, &r, "the measurement report number", NULL))) goto fail;
+    if ((st = text(ctx, &r, "the measurement report number", &l->test))) goto fail;
     if ((st = text(ctx, &r, "the luminaire name", &l->description))) goto fail;
     if ((st = text(ctx, &r, "the luminaire number", &l->catalog))) goto fail;
     if ((st = text(ctx, &r, "the file name", NULL))) goto fail;
-    if ((st = text(ctx, &r, "the date/user", NULL))) goto fail;
+    if ((st = text(ctx, &r, "the date/user", &l->issuedate))) goto fail;
     static const char *dn[9] = {"the luminaire length", "the luminaire width", "the luminaire height",
                                 "the luminous area length", "the luminous area width", "the luminous height C0",
                                 "the luminous height C90", "the luminous height C180", "the luminous height C270"};
@@ -108,7 +108,7 @@ lx_status lx__ldt_read(lx_ctx *ctx, const char *file, const char *buf, size_t le
                            "%g (got %g)", LX__LDT_MAX_LAMPS, lamps);
             goto fail;
         }
-        if ((st = text(ctx, &r, "the lamp type", NULL))) goto fail;
+        if ((st = text(ctx, &r, "the lamp type", k == 0 ? &l->lamp : NULL))) goto fail;
         if ((st = num(ctx, &r, "the lamps' luminous flux", &flux))) goto fail;
         if (!(flux > 0)) {
             st = lx__error(ctx, LX_EPARSE, file, r.it.line, "the lamps' luminous flux must be positive (got %g lm)", flux);
@@ -188,8 +188,15 @@ lx_status lx__ldt_read(lx_ctx *ctx, const char *file, const char *buf, size_t le
     l->lamp_lumens = l->absolute ? NAN : flux1;
     l->stated_lumens = l->absolute ? flux1 : flux1 * lorl / 100.0;
     l->input_watts = watts1;
-    l->width_m = dim[3] / 1000.0;  /* luminous length: along C0-C180 */
-    l->length_m = dim[4] / 1000.0; /* luminous width: along C90-C270 */
+    /* the luminous area: its length (or diameter) lies along C0-C180, its width along C90-C270
+     * (EULUMDAT, as LM-63 puts length along 0-180 and width along 90-270); width 0 means a
+     * circle whose diameter is the length, stored as LM-63 does (both negative) */
+    if (dim[4] == 0 && dim[3] > 0) {
+        l->width_m = l->length_m = -dim[3] / 1000.0;
+    } else {
+        l->length_m = dim[3] / 1000.0;
+        l->width_m = dim[4] / 1000.0;
+    }
     l->height_m = dim[5] / 1000.0;
     long cdline = r.it.line + 1;
     for (long k = 0; k < count; k++) {

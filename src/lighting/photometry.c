@@ -67,6 +67,10 @@ void lx_luminaire_free(lx_luminaire *l)
     free(l->manufacturer);
     free(l->catalog);
     free(l->description);
+    free(l->test);
+    free(l->testlab);
+    free(l->issuedate);
+    free(l->lamp);
     free(l);
 }
 
@@ -88,6 +92,38 @@ static int has_tilt_line(const char *text, size_t len)
     return 0;
 }
 
+/* 1 when the lines that follow EULUMDAT's first (Ityp, Isym, Mc, Dc, Ng, Dg) hold numbers as far as
+ * the file goes; else the line number of the first that does not, in *bad */
+static int looks_ldt(const char *text, size_t len, long *bad)
+{
+    lx__lines it = {text, text + len, 0};
+    const char *s, *e;
+    if (!lx__next_line(&it, &s, &e)) return 1;
+    for (int k = 0; k < 6 && lx__next_line(&it, &s, &e); k++) {
+        while (s < e && (*s == ' ' || *s == '\t')) s++;
+        while (e > s && (e[-1] == ' ' || e[-1] == '\t')) e--;
+        double v;
+        if (s == e || lx__parse_double(s, e, &v) != e) {
+            *bad = it.line;
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* up to cap - 1 bytes of [s, e) with every byte outside printable ASCII as \xNN */
+static void escaped(char *buf, size_t cap, const char *s, const char *e)
+{
+    size_t k = 0;
+    for (; s < e && k + 8 < cap; s++) {
+        unsigned char c = (unsigned char)*s;
+        if (c >= 32 && c < 127 && c != '\\') buf[k++] = (char)c;
+        else k += (size_t)snprintf(buf + k, cap - k, "\\x%02X", c);
+    }
+    if (s < e && k + 4 < cap) memcpy(buf + k, "...", 3), k += 3; /* cut short */
+    buf[k] = 0;
+}
+
 lx_status lx_luminaire_read_mem(lx_ctx *ctx, const char *name, const char *text, size_t len, lx_luminaire **out)
 {
     LX__NEED_CTX(ctx);
@@ -100,6 +136,21 @@ lx_status lx_luminaire_read_mem(lx_ctx *ctx, const char *name, const char *text,
     if (len == skip) return lx__error(ctx, LX_EPARSE, name, 1, "empty file (a byte-order mark only)");
     int ies_version = (len - skip >= 6 && !memcmp(text + skip, "IESNA", 5)) || (len - skip >= 4 && !memcmp(text + skip, "IES:", 4));
     if (has_tilt_line(text, len) || ies_version) return lx__ies_read(ctx, name, text, len, out);
+    long bad = 0;
+    if (!looks_ldt(text + skip, len - skip, &bad)) {
+        lx__lines it = {text + skip, text + len, 0};
+        const char *s, *e;
+        for (long k = 0; k < bad && lx__next_line(&it, &s, &e);) k = it.line;
+        char line[64], first[64]; /* excerpts: the message stays short */
+        escaped(line, sizeof line, s, e);
+        it = (lx__lines){text + skip, text + len, 0};
+        lx__next_line(&it, &s, &e);
+        escaped(first, sizeof first, s, e);
+        return lx__error(ctx, LX_EPARSE, name, bad,
+                         "neither IES LM-63 (no TILT= line, no IESNA version line) nor EULUMDAT (line %ld, \"%s\", is not "
+                         "a number); the file begins \"%s\"",
+                         bad, line, first);
+    }
     return lx__ldt_read(ctx, name, text, len, out);
 }
 
@@ -583,8 +634,13 @@ lx_status lx_luminaire_from_model(lx_ctx *ctx, const lx_lum_model *m, lx_luminai
         snprintf(desc, sizeof desc, "%s, %.17g lm (analytic model sampled by luxcalc)", what, m->flux_lm);
     l->description = strdup(desc);
     l->catalog = strdup(m->catalog ? m->catalog : what);
-    l->manufacturer = strdup("luxcalc");
-    if (!l->h_deg || !l->v_deg || !l->cd || !l->description || !l->catalog || !l->manufacturer) {
+    l->manufacturer = strdup("luxcalc (an analytic model, no manufacturer)");
+    l->test = strdup("computed by luxcalc " LX_VERSION_STRING " from an analytic model (not a measurement)");
+    l->testlab = strdup("none: an analytic model, not a measurement");
+    l->lamp = strdup(what);
+    l->issuedate = lx__date_today();
+    if (!l->h_deg || !l->v_deg || !l->cd || !l->description || !l->catalog || !l->manufacturer || !l->test ||
+        !l->testlab || !l->lamp || !l->issuedate) {
         lx_luminaire_free(l);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }

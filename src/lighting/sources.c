@@ -1,6 +1,6 @@
-/* sources.c - light sources for the lighting calculator: isotropic point, Warn spotlight,
- * Lambertian disk and rectangle (exact configuration factors and the point model, with the
- * five-times rule), and the Lambertian reflector. */
+/* sources.c - light sources for the lighting calculator: isotropic point, Warn spotlight (and the
+ * flux in a cone), Lambertian disk and rectangle (exact configuration factors by default, the
+ * point model beside them with its error, the coplanar limit), and the Lambertian reflector. */
 #include "lighting/lighting_private.h"
 
 #include <float.h>
@@ -85,6 +85,30 @@ lx_status lx_warn_intensity(lx_ctx *ctx, double flux_lm, double exponent, double
     return LX_OK;
 }
 
+lx_status lx_warn_cone_flux(lx_ctx *ctx, double flux_lm, double exponent, double half_angle_rad, double *cone_flux_lm,
+                            double *fraction)
+{
+    LX__NEED_CTX(ctx);
+    lx_status st;
+    if (!cone_flux_lm && !fraction) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_warn_cone_flux: NULL output");
+    if ((st = check_finite(ctx, "flux", flux_lm, 1)) != LX_OK) return st;
+    if ((st = check_finite(ctx, "Warn exponent", exponent, 1)) != LX_OK) return st;
+    if (!(half_angle_rad >= 0 && half_angle_rad <= LX__PI))
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "the cone's half-angle must be from 0 to 180 deg (got %g deg)",
+                         half_angle_rad / LX__DEG);
+    /* flux within a: 2 pi c int_0^a cos^S t sin t dt = F (1 - cos^(S+1) a), F = 2 pi c / (S + 1);
+     * 1 - cos^(S+1) a = -expm1((S + 1) ln cos a), ln cos a = log1p(-2 sin^2(a/2)) (no cancellation
+     * for small a or large S) */
+    double f = 1.0;
+    if (half_angle_rad < LX__PI / 2) {
+        double s = sin(0.5 * half_angle_rad);
+        f = -expm1((exponent + 1) * log1p(-2 * s * s));
+    }
+    if (cone_flux_lm) *cone_flux_lm = flux_lm * f;
+    if (fraction) *fraction = f;
+    return LX_OK;
+}
+
 lx_status lx_warn_exponent_from_beam(lx_ctx *ctx, double beam_rad, double *exponent)
 {
     LX__NEED_CTX(ctx);
@@ -111,11 +135,13 @@ lx_status lx_warn_beam_from_exponent(lx_ctx *ctx, double exponent, double *beam_
 
 /* ---- extended sources ---- */
 
+/* AUTO is the closed form: it costs what the point model costs. near_field says whether the
+ * point model would miss the grids' default tolerance (1e-4 relative). */
 static void finish(lx_source_result *r, lx_model model)
 {
-    r->near_field = r->distance_m < 5 * r->largest_dimension_m;
     r->point_error = r->exact_lx > 0 ? r->point_lx / r->exact_lx - 1 : NAN;
-    r->model = model == LX_MODEL_AUTO ? (r->near_field ? LX_MODEL_EXACT : LX_MODEL_POINT) : model;
+    r->near_field = !(fabs(r->point_error) <= LX__NEARFIELD_TOL);
+    r->model = model == LX_MODEL_POINT ? LX_MODEL_POINT : LX_MODEL_EXACT;
     r->illuminance_lx = r->model == LX_MODEL_EXACT ? r->exact_lx : r->point_lx;
 }
 
@@ -132,8 +158,16 @@ static lx_status check_result(lx_ctx *ctx, const lx_source_result *r, double lum
 
 static lx_status check_model(lx_ctx *ctx, lx_model model)
 {
-    if (model != LX_MODEL_AUTO && model != LX_MODEL_POINT && model != LX_MODEL_EXACT)
+    if (model != LX_MODEL_AUTO && model != LX_MODEL_POINT && model != LX_MODEL_EXACT && model != LX_MODEL_AREA)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown model %d", (int)model);
+    return LX_OK;
+}
+
+/* The distance of a receiver from the source's plane: >= 0 and finite (0: the coplanar limit). */
+static lx_status check_height(lx_ctx *ctx, double h)
+{
+    if (!(h >= 0) || !isfinite(h))
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "distance must be zero or positive and finite (got %g m)", h);
     return LX_OK;
 }
 
@@ -163,10 +197,24 @@ lx_status lx_disk_illuminance(lx_ctx *ctx, double luminance_cd_m2, double radius
     if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_disk_illuminance: NULL output");
     if ((st = check_finite(ctx, "luminance", luminance_cd_m2, 1)) != LX_OK) return st;
     if ((st = check_distance(ctx, "radius", radius_m)) != LX_OK) return st;
-    if ((st = check_distance(ctx, "distance", height_m)) != LX_OK) return st;
+    if ((st = check_height(ctx, height_m)) != LX_OK) return st;
     if ((st = check_finite(ctx, "offset", offset_m, 0)) != LX_OK) return st;
     if ((st = check_model(ctx, model)) != LX_OK) return st;
     double r = fabs(offset_m);
+    if (height_m == 0) {
+        /* the coplanar limit h -> 0+: on the disk it fills the receiver's hemisphere (F = 1), on
+         * the rim half of it, outside it is seen edge-on (F = 0); the point model is 0 there,
+         * and undefined at the centre */
+        lx_source_result res = {0};
+        res.exact_lx = LX__PI * luminance_cd_m2 * (r < radius_m ? 1.0 : r == radius_m ? 0.5 : 0.0);
+        res.exact_rel_error = 1e-16;
+        res.point_lx = r > 0 ? 0.0 : NAN;
+        res.distance_m = r;
+        res.largest_dimension_m = 2 * radius_m;
+        finish(&res, model);
+        *out = res;
+        return LX_OK;
+    }
     double s = fmax(radius_m, fmax(height_m, r)); /* scale so no square over- or underflows */
     double R = radius_m / s, h = height_m / s, x = r / s;
     lx_source_result res = {0};
@@ -278,10 +326,24 @@ lx_status lx_rect_illuminance(lx_ctx *ctx, double luminance_cd_m2, double width_
     if ((st = check_finite(ctx, "luminance", luminance_cd_m2, 1)) != LX_OK) return st;
     if ((st = check_distance(ctx, "width", width_m)) != LX_OK) return st;
     if ((st = check_distance(ctx, "length", length_m)) != LX_OK) return st;
-    if ((st = check_distance(ctx, "distance", height_m)) != LX_OK) return st;
+    if ((st = check_height(ctx, height_m)) != LX_OK) return st;
     if ((st = check_finite(ctx, "offset x", x_m, 0)) != LX_OK) return st;
     if ((st = check_finite(ctx, "offset y", y_m, 0)) != LX_OK) return st;
     if ((st = check_model(ctx, model)) != LX_OK) return st;
+    if (height_m == 0) {
+        /* the coplanar limit: inside pi L, on an edge pi L / 2, at a corner pi L / 4, outside 0 */
+        double fx = fabs(x_m) < 0.5 * width_m ? 1 : fabs(x_m) == 0.5 * width_m ? 0.5 : 0;
+        double fy = fabs(y_m) < 0.5 * length_m ? 1 : fabs(y_m) == 0.5 * length_m ? 0.5 : 0;
+        lx_source_result res = {0};
+        res.exact_lx = LX__PI * luminance_cd_m2 * fx * fy;
+        res.exact_rel_error = 1e-16;
+        res.distance_m = hypot(x_m, y_m);
+        res.point_lx = res.distance_m > 0 ? 0.0 : NAN;
+        res.largest_dimension_m = hypot(width_m, length_m);
+        finish(&res, model);
+        *out = res;
+        return LX_OK;
+    }
     double s = fmax(fmax(width_m, length_m), fmax(height_m, fmax(fabs(x_m), fabs(y_m))));
     double a = width_m / s, b = length_m / s, h = height_m / s, x = x_m / s, y = y_m / s;
     /* the rectangle in coordinates centred on the receiver's foot */

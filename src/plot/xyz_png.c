@@ -1,14 +1,14 @@
 /* xyz_png.c - an sRGB preview PNG of an XYZ image (what `luxcalc spd IMAGE.exr --png` writes):
- * XYZ to linear sRGB, then the canvas's exposure, tone curve and encoding. */
+ * XYZ to linear sRGB, then the page's exposure, tone curve and encoding (tonemap.c). */
 #include "plot/plot_private.h"
 
 #include <stdlib.h>
 
-lx_status lx_xyz_png_write(lx_ctx *ctx, const char *path, const lx_xyz_image *img)
+lx_status lx_xyz_image_write_png(lx_ctx *ctx, const char *path, const lx_xyz_image *img)
 {
     LX__NEED_CTX(ctx);
-    if (!path || !img || !img->xyz) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_xyz_png_write: NULL argument");
-    /* XYZ -> linear sRGB (IEC 61966-2-1); lx__canvas_tonemap does exposure, tone curve, encoding */
+    if (!path || !img || !img->xyz) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_xyz_image_write_png: NULL argument");
+    /* XYZ -> linear sRGB (IEC 61966-2-1); lx__page_tonemap does exposure, tone curve, encoding */
     static const double M[3][3] = {{3.2406, -1.5372, -0.4986}, {-0.9689, 1.8758, 0.0415}, {0.0557, -0.2040, 1.0570}};
     size_t npix = (size_t)img->width * img->height;
     float *rgb = malloc(sizeof(float) * 3 * npix);
@@ -28,13 +28,11 @@ lx_status lx_xyz_png_write(lx_ctx *ctx, const char *path, const lx_xyz_image *im
     if (w < 1) w = 1;
     if (h < 1) h = 1;
     static const unsigned char black[3] = {0, 0, 0};
-    lx__canvas c;
-    lx_status st = lx__canvas_init(ctx, &c, w, h, black);
-    if (!st) {
-        lx__canvas_tonemap(&c, 0, 0, w, h, rgb, 3, img->width, img->height);
-        st = lx__canvas_write_png(ctx, &c, path);
-    }
-    lx__canvas_free(&c);
+    lx__page pg;
+    lx_status st = lx__page_init(ctx, &pg, w, h, black);
+    if (!st) st = lx__page_tonemap(ctx, &pg, (lx__box){0, 0, w, h}, rgb, 3, img->width, img->height);
+    if (!st) st = lx__page_write_png(ctx, &pg, path);
+    lx__page_free(&pg);
     free(rgb);
     return st;
 }

@@ -172,6 +172,7 @@ lx_status lx_envmap_downsample(lx_ctx *ctx, const lx_envmap *in, int width, int 
     memcpy(m->chroma_xy, in->chroma_xy, sizeof m->chroma_xy);
     m->units = in->units;
     m->lum_per_unit = in->lum_per_unit;
+    m->irradiance = in->irradiance;
     int fx = in->width / width, fy = in->height / height, C = in->channels;
     double *acc = calloc((size_t)width * C, sizeof *acc);
     if (!acc) {

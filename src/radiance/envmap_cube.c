@@ -216,10 +216,26 @@ typedef struct cube_job {
     int f, fast;
 } cube_job;
 
+/* Texel p (row r, column q of the face): L_p times the integral of max(0, n . w) over it. The sign
+ * of n . w on the face is that of g(a, b) = nl0 + nl1 a + nl2 b, affine in the face point (1, a, b):
+ * a texel with every corner lit is wholly lit (n . its first moment), one whose corners straddle
+ * g = 0 is crossed by the horizon and integrated in closed form (Lambert's formula on the texel's
+ * square clipped to the horizon, lx__polygon_projected: the texel edges are great-circle arcs). */
 static inline double texel_term(const cube_job *J, const float *L, int C, size_t p, const double nl[3], double *e)
 {
-    const double *m = J->mom + 3 * p;
-    double v = nl[0] * m[0] + nl[1] * m[1] + nl[2] * m[2];
+    int N = J->map->width, r = (int)(p / (size_t)N), q = (int)(p % (size_t)N);
+    double a0 = edge(N, q), a1 = edge(N, q + 1), b0 = edge(N, r), b1 = edge(N, r + 1);
+    double g00 = nl[0] + nl[1] * a0 + nl[2] * b0, g10 = nl[0] + nl[1] * a1 + nl[2] * b0;
+    double g01 = nl[0] + nl[1] * a0 + nl[2] * b1, g11 = nl[0] + nl[1] * a1 + nl[2] * b1;
+    double lo = fmin(fmin(g00, g10), fmin(g01, g11)), hi = fmax(fmax(g00, g10), fmax(g01, g11)), v;
+    if (hi <= 0) return 0;
+    if (lo >= 0) {
+        const double *m = J->mom + 3 * p;
+        v = nl[0] * m[0] + nl[1] * m[1] + nl[2] * m[2];
+    } else {
+        const double sq[4][3] = {{1, a0, b0}, {1, a1, b0}, {1, a1, b1}, {1, a0, b1}};
+        v = lx__polygon_projected(sq, 4, nl);
+    }
     if (v > 0)
         for (int c = 0; c < C; c++) e[c] += v * L[p * C + c];
     return v;

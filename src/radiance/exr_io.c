@@ -141,6 +141,10 @@ static lx_status exr_read(lx_ctx *ctx, const char *path, int allow_cube, lx_envm
         m->has_chromaticities = 1;
         memcpy(m->chroma_xy, xy, sizeof xy);
     }
+    const char *q = NULL;
+    int32_t ql = 0;
+    if (exr_attr_get_string(e, 0, "luxcalcQuantity", &ql, &q) == EXR_ERR_SUCCESS && q && ql == 10 && !memcmp(q, "irradiance", 10))
+        m->irradiance = 1;
     float wl;
     if (exr_attr_get_float(e, 0, "whiteLuminance", &wl) == EXR_ERR_SUCCESS && isfinite(wl) && wl > 0) {
         m->units = LX_ENV_LUMINANCE;
@@ -179,8 +183,7 @@ lx_status lx_envmap_write_exr(lx_ctx *ctx, const char *path, const lx_envmap *ma
     if ((int)comp < 0 || comp >= EXR_COMPRESSION_LAST_TYPE)
         return lx__error(ctx, LX_EINVAL, path, 0, "unknown EXR compression %d", (int)comp);
     lx__exr_stream s = {.fd = -1};
-    char *tmp = NULL;
-    lx_status st = lx__exr_write_begin(ctx, path, &s, &tmp);
+    lx_status st = lx__exr_write_begin(ctx, path, &s);
     if (st) return st;
     exr_context_initializer_t init;
     lx__exr_stream_init(&s, 1, &init);
@@ -206,6 +209,7 @@ lx_status lx_envmap_write_exr(lx_ctx *ctx, const char *path, const lx_envmap *ma
         rv = exr_attr_set_chromaticities(e, part, "chromaticities", &chr);
     }
     if (!rv && map->units == LX_ENV_LUMINANCE) rv = exr_attr_set_float(e, part, "whiteLuminance", (float)map->lum_per_unit);
+    if (!rv && map->irradiance) rv = exr_attr_set_string(e, part, "luxcalcQuantity", "irradiance");
     if (!rv) rv = exr_write_header(e);
     if (rv) {
         st = lx__exr_fail(ctx, path, &s, rv, "cannot write the header");
@@ -238,5 +242,5 @@ lx_status lx_envmap_write_exr(lx_ctx *ctx, const char *path, const lx_envmap *ma
     if (rv) st = lx__exr_fail(ctx, path, &s, rv, "cannot encode the pixels");
 done:
     if (inited) exr_encoding_destroy(e, &enc);
-    return lx__exr_write_end(ctx, path, &s, &e, tmp, st);
+    return lx__exr_write_end(ctx, path, &s, &e, st);
 }

@@ -11,6 +11,8 @@
 /* The user data of an OpenEXR context: the file and OpenEXR's last message. */
 typedef struct lx__exr_stream {
     int fd;
+    int werr;      /* errno of the first failed write (0: none) */
+    lx__wfile wf;  /* writing: the atomic output file (core/file_write.c) */
     char msg[512]; /* the last message OpenEXR reported ("" when none) */
 } lx__exr_stream;
 
@@ -39,15 +41,15 @@ int64_t lx__exr_stream_size(const lx__exr_stream *s);
  * unimplemented feature: LX_EUNSUPPORTED, read/write/access: LX_EIO, else LX_EPARSE); returns it. */
 lx_status lx__exr_fail(lx_ctx *ctx, const char *path, const lx__exr_stream *s, exr_result_t rv, const char *what);
 
-/* Atomic writing: creates "path.tmpXXXXXX" (mode 0644) as s->fd and *tmp (free with
- * lx__exr_write_end). On failure records "cannot create" and returns LX_EIO (LX_ENOMEM). */
-lx_status lx__exr_write_begin(lx_ctx *ctx, const char *path, lx__exr_stream *s, char **tmp);
+/* Atomic writing (lx__wfile_open: a temporary file beside path, or a device written directly)
+ * as s->fd. On failure records "cannot create" and returns LX_EIO (LX_ENOMEM). */
+lx_status lx__exr_write_begin(lx_ctx *ctx, const char *path, lx__exr_stream *s);
 
 /* Ends an atomic write begun by lx__exr_write_begin: finishes *e (when not NULL), fsyncs,
- * closes and renames tmp onto path when st is LX_OK and all that succeeds, else removes tmp.
- * Frees tmp; returns st or the first failure. Destroy any encode pipeline before. */
-lx_status lx__exr_write_end(lx_ctx *ctx, const char *path, lx__exr_stream *s, exr_context_t *e, char *tmp,
-                            lx_status st);
+ * closes and renames into place when st is LX_OK and all that succeeds, else removes the
+ * temporary file. A failed write is LX_EWRITE with the system's reason ("No space left on
+ * device"). Returns st or the first failure. Destroy any encode pipeline before. */
+lx_status lx__exr_write_end(lx_ctx *ctx, const char *path, lx__exr_stream *s, exr_context_t *e, lx_status st);
 
 /* Which slot (0 .. nc-1) of a pixel a file channel feeds, or -1 for none. */
 typedef int (*lx__exr_slot_fn)(const char *channel_name, const void *user);

@@ -57,7 +57,10 @@ static int64_t s_write(exr_const_context_t ectx, void *ud, const void *buf, uint
     while (put < sz) {
         ssize_t r = pwrite(s->fd, (const char *)buf + put, (size_t)(sz - put), (off_t)(off + put));
         if (r < 0 && errno == EINTR) continue;
-        if (r <= 0) return -1;
+        if (r <= 0) {
+            if (!s->werr) s->werr = r < 0 ? errno : EIO;
+            return -1;
+        }
         put += (uint64_t)r;
     }
     return (int64_t)put;
@@ -86,37 +89,23 @@ lx_status lx__exr_fail(lx_ctx *ctx, const char *path, const lx__exr_stream *s, e
     return lx__error(ctx, st, path, 0, "%s: %s", what, s->msg[0] ? s->msg : exr_get_default_error_message(rv));
 }
 
-lx_status lx__exr_write_begin(lx_ctx *ctx, const char *path, lx__exr_stream *s, char **tmp)
+lx_status lx__exr_write_begin(lx_ctx *ctx, const char *path, lx__exr_stream *s)
 {
-    size_t plen = strlen(path);
-    char *t = malloc(plen + 16);
-    if (!t) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
-    snprintf(t, plen + 16, "%s.tmpXXXXXX", path);
     s->msg[0] = '\0';
-    s->fd = mkstemp(t);
-    if (s->fd < 0) {
-        lx_status st = lx__error(ctx, LX_EIO, path, 0, "cannot create: %s", strerror(errno));
-        free(t);
-        return st;
-    }
-    fchmod(s->fd, 0644);
-    *tmp = t;
-    return LX_OK;
+    s->werr = 0;
+    lx_status st = lx__wfile_open(ctx, path, &s->wf);
+    s->fd = s->wf.fd;
+    return st;
 }
 
-lx_status lx__exr_write_end(lx_ctx *ctx, const char *path, lx__exr_stream *s, exr_context_t *e, char *tmp,
-                            lx_status st)
+lx_status lx__exr_write_end(lx_ctx *ctx, const char *path, lx__exr_stream *s, exr_context_t *e, lx_status st)
 {
     if (e && *e) {
         exr_result_t fr = exr_finish(e);
         if (!st && fr) st = lx__exr_fail(ctx, path, s, fr, "cannot finish the file");
     }
-    if (!st && fsync(s->fd) != 0) st = lx__error(ctx, LX_EIO, path, 0, "cannot write: %s", strerror(errno));
-    if (close(s->fd) != 0 && !st) st = lx__error(ctx, LX_EIO, path, 0, "cannot write: %s", strerror(errno));
-    if (!st && rename(tmp, path) != 0) st = lx__error(ctx, LX_EIO, path, 0, "cannot rename into place: %s", strerror(errno));
-    if (st) unlink(tmp);
-    free(tmp);
-    return st;
+    if (s->werr) st = lx__error(ctx, LX_EWRITE, path, 0, "%s", strerror(s->werr));
+    return lx__wfile_close(ctx, &s->wf, st);
 }
 
 lx_status lx__exr_read_begin(lx_ctx *ctx, const char *path, lx__exr_stream *s, exr_context_t *e,

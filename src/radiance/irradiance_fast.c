@@ -1,7 +1,10 @@
-/* irradiance_fast.c - the brute-force sum sum_p L_p max(0, n . m_p) in O(rows) per output normal.
- * In row j, n . m_p = A cos(phi_i - phi_n) + B (A >= 0), so the pixels that count form one
- * circular run |phi_i - phi_n| < acos(-B / A) of columns; their sum comes from per-row prefix
- * sums of L, L gx and L gy (double). Rows are processed in blocks to bound memory. */
+/* irradiance_fast.c - the exact irradiance of a lat-long map, E(n) = sum_p L_p int_p max(0, n . w) dw,
+ * in O(rows + the pixels the horizon crosses) per output normal. In row j the wholly lit pixels form
+ * one circular run of columns between the lit arcs of the row's two edge parallels: their sum is
+ * n . (their exact first moments), from per-row prefix sums of L, L gx and L gy (double); the pixels
+ * the horizon crosses are integrated one by one in closed form (irradiance_horizon.c), once per
+ * output row of a lat-long output whose width divides the input's. Rows are processed in blocks
+ * to bound memory. */
 #include "radiance/radiance_private.h"
 
 #include <math.h>
@@ -9,15 +12,18 @@
 #include <string.h>
 
 #define BLOCK_ROWS 64
+struct block_cache;
 
 typedef struct fast_job {
     const lx_envmap *map;
     const lx__llgeom *g;
+    const lx__hz *z;
     const double *dirs;
     double *out;   /* accumulated over blocks */
     double *pre;   /* BLOCK_ROWS rows x 3 C x (W + 1) prefix sums */
     int j0, nrows; /* current block */
-    double *alpha; /* per thread: BLOCK_ROWS cached half-widths (or -1 none, 4 all) */
+    double *alpha; /* per thread: LX__HZ_RAY_SCRATCH (the lit half-widths, the meridian cache) */
+    struct block_cache *cache; /* per thread */
 } fast_job;
 
 static void build_prefix(void *arg, long r0, long r1, int t)
@@ -54,56 +60,108 @@ static inline double pref(const double *p, long W, long k)
     return p[k - q * W] + (double)q * p[W];
 }
 
+/* The classification and crossed-pixel weights of one block of rows for a reference normal: a
+ * normal with the same n_z and sqrt(nx^2 + ny^2) whose phi_n is the reference's plus a whole number
+ * k of columns sees the same pixels k columns on (the map is periodic in phi), so a lat-long output
+ * row computes its crossed pixels once. */
+typedef struct row_cache {
+    int kind;
+    long in_lo, in_hi, out_lo, out_hi;
+    size_t w0; /* its weights: w[w0 ..], (in_lo - out_lo) + (out_hi - in_hi) of them */
+} row_cache;
+
+typedef struct block_cache {
+    int valid;
+    double nz, st, phin;
+    row_cache row[BLOCK_ROWS];
+    double *w; /* BLOCK_ROWS x W */
+} block_cache;
+
+/* Fills the cache for ray (the block's rows). */
+static void cache_fill(const fast_job *J, lx__hz_ray *ray, block_cache *bc)
+{
+    const lx__hz *z = J->z;
+    long W = J->map->width;
+    size_t nw = 0;
+    for (int r = 0; r < J->nrows; r++) {
+        int j = J->j0 + r;
+        row_cache *rc = &bc->row[r];
+        rc->in_lo = rc->in_hi = rc->out_lo = rc->out_hi = 0;
+        rc->kind = lx__hz_row((int)W, z->dphi, ray->phin, ray->alpha[j], ray->alpha[j + 1], &rc->in_lo, &rc->in_hi,
+                              &rc->out_lo, &rc->out_hi);
+        if (rc->kind == LX__HZ_LIT) rc->in_lo = 0, rc->in_hi = W;
+        rc->w0 = nw;
+        if (rc->kind != LX__HZ_RANGES) continue;
+        /* the pixels the horizon crosses, one by one in closed form (n = +-z, whose horizon may run
+         * along a row edge, has them checked first) */
+        for (int part = 0; part < 2; part++)
+            for (long k = part ? rc->in_hi : rc->out_lo, k1 = part ? rc->out_hi : rc->in_lo; k < k1; k++)
+                bc->w[nw++] = lx__hz_pixel(z, J->g, ray, j, (int)(((k % W) + W) % W), ray->st == 0);
+    }
+    bc->valid = 1;
+    bc->nz = ray->n[2];
+    bc->st = ray->st;
+    bc->phin = ray->phin;
+}
+
 static void accumulate(void *arg, long o0, long o1, int t)
 {
     fast_job *J = arg;
     const lx_envmap *m = J->map;
     const lx__llgeom *g = J->g;
+    const lx__hz *z = J->z;
     long W = m->width;
     int C = m->channels;
     size_t stride = (size_t)W + 1;
-    double *alpha = J->alpha + (size_t)t * BLOCK_ROWS;
-    double last_nz = NAN, dphi = g->dphi, hs = 2 * sin(0.5 * dphi);
+    double *alpha = J->alpha + (size_t)t * LX__HZ_RAY_SCRATCH(m->width, m->height), *tz = alpha + 3 * ((size_t)m->height + 1);
+    unsigned *stamp = (unsigned *)(tz + 3 * (W + 1)), gen = 0;
+    for (long i = 0; i <= W; i++) stamp[i] = 0;
+    block_cache *bc = &J->cache[t];
+    bc->valid = 0;
+    double last_nz = NAN, last_st = NAN;
     for (long o = o0; o < o1; o++) {
-        double nx = J->dirs[3 * o], ny = J->dirs[3 * o + 1], nz = J->dirs[3 * o + 2];
-        double st = sqrt(nx * nx + ny * ny);
-        if (nz != last_nz) { /* half-widths depend on the row and n_z only */
-            for (int r = 0; r < J->nrows; r++) {
-                int j = J->j0 + r;
-                double A = g->row_s2[j] * hs * st, B = nz * g->row_sc[j] * dphi;
-                if (A <= 0) alpha[r] = B > 0 ? 4 : -1;
-                else {
-                    double q = -B / A;
-                    alpha[r] = q <= -1 ? 4 : q >= 1 ? -1 : acos(q);
-                }
-            }
-            last_nz = nz;
+        lx__hz_ray ray;
+        lx__hz_ray_init(&ray, J->dirs + 3 * o, alpha, tz, stamp, &gen);
+        const double *n = ray.n;
+        long shift = 0;
+        int reuse = 0;
+        if (bc->valid && n[2] == bc->nz && fabs(ray.st - bc->st) <= 1e-14) {
+            double q = (ray.phin - bc->phin) / z->dphi, k = nearbyint(q);
+            reuse = fabs(q - k) < 1e-9;
+            shift = reuse ? (long)k : 0;
         }
-        double phin = atan2(ny, nx);
+        if (!reuse) {
+            if (n[2] != last_nz || ray.st != last_st) { /* the lit half-widths depend on n_z and st only */
+                lx__hz_ray_rows(&ray, z, J->j0, J->j0 + J->nrows);
+                last_nz = n[2], last_st = ray.st;
+            }
+            cache_fill(J, &ray, bc);
+        }
         double e[3] = {0, 0, 0};
         for (int r = 0; r < J->nrows; r++) {
-            double al = alpha[r];
-            if (al < 0) continue;
+            const row_cache *rc = &bc->row[r];
+            if (rc->kind == LX__HZ_DARK) continue;
             int j = J->j0 + r;
+            long in_lo = rc->in_lo + shift, in_hi = rc->in_hi + shift;
             const double *P = J->pre + (size_t)r * 3 * C * stride;
-            double a = g->row_s2[j], b = nz * g->row_sc[j] * dphi;
-            long lo, hi;
-            if (al > LX__PI) {
-                lo = 0;
-                hi = W; /* exclusive */
-            } else {
-                lo = (long)ceil((phin - al) / dphi - 0.5);
-                hi = (long)floor((phin + al) / dphi - 0.5) + 1;
-                if (hi - lo > W) hi = lo + W;
-                if (hi <= lo) continue;
-            }
-            for (int c = 0; c < C; c++) {
-                const double *p0 = P + (3 * c) * stride, *px = p0 + stride, *py = px + stride;
-                double s0 = pref(p0, W, hi) - pref(p0, W, lo);
-                double sx = pref(px, W, hi) - pref(px, W, lo);
-                double sy = pref(py, W, hi) - pref(py, W, lo);
-                e[c] += a * (nx * sx + ny * sy) + b * s0;
-            }
+            double a = g->row_s2[j], b = n[2] * g->row_sc[j] * g->dphi;
+            if (in_hi > in_lo) /* wholly lit: n . the moments, by prefix sums */
+                for (int c = 0; c < C; c++) {
+                    const double *p0 = P + (3 * c) * stride, *px = p0 + stride, *py = px + stride;
+                    double s0 = pref(p0, W, in_hi) - pref(p0, W, in_lo);
+                    double sx = pref(px, W, in_hi) - pref(px, W, in_lo);
+                    double sy = pref(py, W, in_hi) - pref(py, W, in_lo);
+                    e[c] += a * (n[0] * sx + n[1] * sy) + b * s0;
+                }
+            if (rc->kind != LX__HZ_RANGES) continue;
+            const float *row = m->data + (size_t)j * W * C;
+            const double *w = bc->w + rc->w0;
+            for (int part = 0; part < 2; part++)
+                for (long k = part ? rc->in_hi : rc->out_lo, k1 = part ? rc->out_hi : rc->in_lo; k < k1; k++, w++) {
+                    if (!(*w > 0)) continue;
+                    long i = ((k + shift) % W + W) % W;
+                    for (int c = 0; c < C; c++) e[c] += *w * row[(size_t)i * C + c];
+                }
         }
         for (int c = 0; c < C; c++) J->out[o * C + c] += e[c];
     }
@@ -116,15 +174,23 @@ lx_status lx__irr_fast(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const d
     lx__llgeom g;
     lx_status st = lx__llgeom_init(ctx, &g, W, H);
     if (st) return st;
+    lx__hz z;
+    if ((st = lx__hz_init(ctx, &z, W, H))) {
+        lx__llgeom_free(&g);
+        return st;
+    }
     int nt = lx__threads(threads, 0);
     double *pre = malloc((size_t)BLOCK_ROWS * 3 * C * (W + 1) * sizeof *pre);
-    double *alpha = malloc((size_t)nt * BLOCK_ROWS * sizeof *alpha);
+    double *alpha = malloc((size_t)nt * LX__HZ_RAY_SCRATCH(W, H) * sizeof *alpha);
     double *acc = calloc(n_dirs * C, sizeof *acc);
-    if (!pre || !alpha || !acc) {
+    struct block_cache *cache = calloc((size_t)nt, sizeof *cache);
+    double *wbuf = malloc((size_t)nt * BLOCK_ROWS * W * sizeof *wbuf);
+    if (!pre || !alpha || !acc || !cache || !wbuf) {
         st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
         goto done;
     }
-    fast_job J = {map, &g, dirs, acc, pre, 0, 0, alpha};
+    for (int t = 0; t < nt; t++) cache[t].w = wbuf + (size_t)t * BLOCK_ROWS * W;
+    fast_job J = {map, &g, &z, dirs, acc, pre, 0, 0, alpha, cache};
     for (int j0 = 0; j0 < H && !st; j0 += BLOCK_ROWS) {
         J.j0 = j0;
         J.nrows = H - j0 < BLOCK_ROWS ? H - j0 : BLOCK_ROWS;
@@ -136,6 +202,9 @@ done:
     free(pre);
     free(alpha);
     free(acc);
+    free(cache);
+    free(wbuf);
+    lx__hz_free(&z);
     lx__llgeom_free(&g);
     return st;
 }

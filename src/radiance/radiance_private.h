@@ -21,6 +21,54 @@ typedef struct lx__llgeom {
 lx_status lx__llgeom_init(lx_ctx *ctx, lx__llgeom *g, int w, int h);
 void lx__llgeom_free(lx__llgeom *g);
 
+/* The pixels the horizon of a normal crosses (irradiance_horizon.c): sines and cosines of the
+ * pixel edges of a w x h lat-long map, the lit half-width of a parallel, the classification of a
+ * row and the exact integral of max(0, n . w) over one pixel. */
+typedef struct lx__hz {
+    int w, h;
+    double dphi, dth;
+    double *ts, *tc; /* sin, cos of theta at the h + 1 row edges */
+    double *ps, *pc; /* sin, cos of phi at the w + 1 column edges */
+} lx__hz;
+lx_status lx__hz_init(lx_ctx *ctx, lx__hz *z, int w, int h);
+void lx__hz_free(lx__hz *z);
+/* The lit half-width about phi_n of the parallel with sin s, cos c for a unit normal with z
+ * component nz and st = sqrt(nx^2 + ny^2): acos(-nz c / (st s)) in [0, pi], 4 when the whole
+ * parallel is lit, -1 when none of it is. */
+double lx__hz_alpha(double nz, double st, double s, double c);
+/* Row j between parallels of lit half-widths a0 and a1 (phin = phi_n in [0, 2 pi)): DARK (no lit
+ * pixel), LIT (every pixel wholly lit) or RANGES: columns [in_lo, in_hi) wholly lit, [out_lo,
+ * in_lo) and [in_hi, out_hi) possibly crossed by the horizon (lx__hz_pixel), the others dark;
+ * indices mod w, in_lo <= in_hi, out_lo <= in_lo, in_hi <= out_hi, out_hi - out_lo <= w. */
+enum { LX__HZ_DARK, LX__HZ_LIT, LX__HZ_RANGES };
+int lx__hz_row(int w, double dphi, double phin, double a0, double a1, long *in_lo, long *in_hi, long *out_lo, long *out_hi);
+/* One normal as the horizon code uses it: n, sqrt(nx^2 + ny^2), phi_n in [0, 2 pi) with its cosine
+ * and sine, the lit half-widths of the h + 1 row edges with their cosines and sines (alpha: 3 (h +
+ * 1) doubles, filled by lx__hz_ray_rows), and a cache of the meridians' horizon crossings (tz: 3 (w +
+ * 1) doubles, angle, sine, cosine; valid where stamp[i] == gen). Scratch: LX__HZ_RAY_SCRATCH doubles (stamps included,
+ * zeroed once), gen a counter kept with it. */
+typedef struct lx__hz_ray {
+    double n[3], st, phin, cphin, sphin;
+    double *alpha;
+    double *tz;
+    unsigned *stamp, gen;
+} lx__hz_ray;
+#define LX__HZ_RAY_SCRATCH(w, h) (3 * ((size_t)(h) + 1) + 4 * ((size_t)(w) + 1))
+void lx__hz_ray_init(lx__hz_ray *r, const double n[3], double *alpha, double *tz, unsigned *stamp, unsigned *gen);
+/* The lit half-widths of row edges k0..k1 (they depend on n_z and st only). */
+void lx__hz_ray_rows(lx__hz_ray *r, const lx__hz *z, int k0, int k1);
+/* The exact integral of max(0, n . w) over pixel (j, i) (closed form). check: first test whether
+ * the pixel is wholly lit or dark (for EACH rows; RANGES rows vouch for their crossed pixels). */
+double lx__hz_pixel(const lx__hz *z, const lx__llgeom *g, const lx__hz_ray *r, int j, int i, int check);
+
+/* sum over the rows 0 .. rows - 1 of a w x h lat-long map of L (one double per pixel) times the
+ * exact integral of max(0, n . w) over each pixel (n unit): the scene's EXR sky. */
+lx_status lx__irr_rows_exact(lx_ctx *ctx, int w, int h, const double *L, int rows, const double n[3], double *sum);
+/* Makes a clamped sum exact: adds to out (n_dirs x channels) the difference between the exact
+ * integral of max(0, n . w) and max(0, n . m_p), times L_p, over the pixels each normal's horizon
+ * crosses (brute force on the CPU and on OpenCL). */
+lx_status lx__irr_horizon_fix(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const double *dirs, int threads, double *out);
+
 /* The irradiance back ends: n_dirs unit normals (3 doubles each) -> out[n * channels]. */
 lx_status lx__irr_brute_cpu(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const double *dirs, int threads,
                             double *out);

@@ -334,8 +334,7 @@ lx_status lx_xyz_image_write_exr(lx_ctx *ctx, const char *path, const lx_xyz_ima
     LX__NEED_CTX(ctx);
     if (!path || !img || !img->xyz) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_xyz_image_write_exr: NULL argument");
     lx__exr_stream s = {.fd = -1};
-    char *tmp = NULL;
-    lx_status st = lx__exr_write_begin(ctx, path, &s, &tmp);
+    lx_status st = lx__exr_write_begin(ctx, path, &s);
     if (st) return st;
     exr_context_initializer_t init;
     lx__exr_stream_init(&s, 1, &init);
@@ -344,7 +343,7 @@ lx_status lx_xyz_image_write_exr(lx_ctx *ctx, const char *path, const lx_xyz_ima
     int inited = 0, part = 0, W = img->width, H = img->height;
     size_t npix = (size_t)W * H;
     float *f = malloc(sizeof(float) * 3 * (npix ? npix : 1));
-    if (!f) return lx__exr_write_end(ctx, path, &s, NULL, tmp, lx__error(ctx, LX_ENOMEM, path, 0, "out of memory"));
+    if (!f) return lx__exr_write_end(ctx, path, &s, NULL, lx__error(ctx, LX_ENOMEM, path, 0, "out of memory"));
     for (size_t i = 0; i < 3 * npix; i++) f[i] = (float)img->xyz[i];
     exr_result_t rv = exr_start_write(&e, path, EXR_WRITE_FILE_DIRECTLY, &init);
     if (!rv) rv = exr_add_part(e, "", EXR_STORAGE_SCANLINE, &part);
@@ -368,7 +367,7 @@ lx_status lx_xyz_image_write_exr(lx_ctx *ctx, const char *path, const lx_xyz_ima
     if (rv) st = lx__exr_fail(ctx, path, &s, rv, "cannot encode the pixels");
 done:
     if (inited) exr_encoding_destroy(e, &enc);
-    st = lx__exr_write_end(ctx, path, &s, &e, tmp, st);
+    st = lx__exr_write_end(ctx, path, &s, &e, st);
     free(f);
     return st;
 }

@@ -33,13 +33,17 @@ void lx_scene_result_free(lx_scene_result *res)
     free(res);
 }
 
-/* What a luminaire needs during evaluation. */
-typedef struct lum_eval {
-    const lx_scene_luminaire *l;
-    double ex[3], ey[3], ez[3];
-    double area;
-    int spot_falloff, gonio, cosine;
-} lum_eval;
+typedef lx__scene_lum lum_eval;
+
+void lx__scene_lum_init(lx__scene_lum *e, const lx_scene_luminaire *l, const lx_scene_plan *plan)
+{
+    e->l = l;
+    lx__scene_frame(l, e->ex, e->ey, e->ez);
+    e->area = l->radius_m > 0 ? LX__PI * l->radius_m * l->radius_m : l->width_m * l->length_m;
+    e->spot_falloff = plan->on[LX_EFFECT_SPOT_FALLOFF];
+    e->gonio = plan->on[LX_EFFECT_GONIOMETRIC];
+    e->cosine = plan->on[LX_EFFECT_COSINE];
+}
 
 static double dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
@@ -70,9 +74,8 @@ static double intensity(lx_ctx *ctx, const lum_eval *le, const double u[3], doub
     return 0;
 }
 
-/* E at receiver point q (normal n) from a point source at s with intensity I(u) scaled by frac. */
-static double point_E(lx_ctx *ctx, const lum_eval *le, const double s[3], const double q[3], const double n[3],
-                      double frac)
+double lx__scene_point_E(lx_ctx *ctx, const lx__scene_lum *le, const double s[3], const double q[3], const double n[3],
+                         double frac)
 {
     double v[3] = {q[0] - s[0], q[1] - s[1], q[2] - s[2]};
     double d2 = dot(v, v);
@@ -99,14 +102,15 @@ static double near_mean(void *arg, int lev)
     const near_arg *A = arg;
     const lx_scene_luminaire *l = A->le->l;
     int circular = l->radius_m > 0;
-    double w = circular ? 2 * l->radius_m : l->width_m, len = circular ? 0 : l->length_m;
+    double w, len;
+    lx__scene_lum_extent(l, &w, &len);
     size_t cells = lx__area_cells(circular, lev);
     double frac = 1.0 / (double)cells, sum = 0;
     for (size_t c = 0; c < cells; c++) {
         double a, b, s[3];
         lx__area_cell(circular, w, len, lev, c, &a, &b);
         for (int k = 0; k < 3; k++) s[k] = l->pos_m[k] + a * A->le->ex[k] + b * A->le->ey[k];
-        sum += point_E(A->ctx, A->le, s, A->q, A->n, frac);
+        sum += lx__scene_point_E(A->ctx, A->le, s, A->q, A->n, frac);
     }
     return sum;
 }
@@ -119,6 +123,17 @@ static double near_E(lx_ctx *ctx, const lum_eval *le, const double q[3], const d
     ctx->counters.nearfield_pairs++;
     ctx->counters.nearfield_subdivisions += patches;
     return x > 0 ? x : 0;
+}
+
+/* A Lambertian disk or rectangle in closed form (area_exact.c): any receiver orientation. */
+static double closed_E(lx_ctx *ctx, const lum_eval *le, const double q[3], const double n[3])
+{
+    const lx_scene_luminaire *l = le->l;
+    double m[3] = {-le->ez[0], -le->ez[1], -le->ez[2]}; /* the emitting normal: the aim */
+    ctx->counters.nearfield_pairs++;
+    ctx->counters.closed_form_evaluations++;
+    if (l->kind == LX_SLUM_DISK) return lx__lambert_disk_E(l->luminance_cd_m2, l->pos_m, le->ex, le->ey, m, l->radius_m, q, n, NULL);
+    return lx__lambert_rect_E(l->luminance_cd_m2, l->pos_m, le->ex, le->ey, m, l->width_m, l->length_m, q, n);
 }
 
 static double now_s(void)
@@ -255,15 +270,7 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
     if (!res->first || !res->E_lx || !res->contrib_lx || !res->L_cd_m2 || !res->cct_K || !res->duv ||
         !res->melanopic_edi_lx)
         goto nomem;
-    for (size_t l = 0; l < nl; l++) {
-        lum_eval *e = &le[l];
-        e->l = &sc->lum[l];
-        lx__scene_frame(e->l, e->ex, e->ey, e->ez);
-        e->area = e->l->radius_m > 0 ? LX__PI * e->l->radius_m * e->l->radius_m : e->l->width_m * e->l->length_m;
-        e->spot_falloff = plan->on[LX_EFFECT_SPOT_FALLOFF];
-        e->gonio = plan->on[LX_EFFECT_GONIOMETRIC];
-        e->cosine = plan->on[LX_EFFECT_COSINE];
-    }
+    for (size_t l = 0; l < nl; l++) lx__scene_lum_init(&le[l], &sc->lum[l], plan);
     int sky = plan->on[LX_EFFECT_ENVIRONMENT] && only < 0;
     int spectral = plan->on[LX_EFFECT_SPECTRAL];
     if (sky && sc->sky == LX_SKY_MAP && (st = lx__scene_sky_map_load(ctx, sc, &map)) != LX_OK) goto fail;
@@ -290,10 +297,12 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
             double *c = res->contrib_lx + g * nc;
             for (size_t l = 0; l < nl; l++) {
                 if ((only >= 0 && (long)l != only) || (ondev && ondev[l * sc->n_rec + r])) continue;
-                if (plan->near[l * np + g]) c[l] = near_E(ctx, &le[l], q, rc->normal, sc->nearfield_tol);
+                unsigned char path = plan->near[l * np + g];
+                if (path == LX__PATH_CLOSED) c[l] = closed_E(ctx, &le[l], q, rc->normal);
+                else if (path) c[l] = near_E(ctx, &le[l], q, rc->normal, sc->nearfield_tol);
                 else {
                     ctx->counters.point_evaluations++;
-                    c[l] = point_E(ctx, &le[l], sc->lum[l].pos_m, q, rc->normal, 1);
+                    c[l] = lx__scene_point_E(ctx, &le[l], sc->lum[l].pos_m, q, rc->normal, 1);
                 }
             }
             c[nl] = E_sky;

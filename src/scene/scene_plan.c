@@ -1,5 +1,6 @@
 /* scene_plan.c - the scene planner: which effects a scene needs (and why), which luminaire-
- * receiver pairs take the near-field path (the five-times rule), and the work it expects. */
+ * receiver pairs take the near-field path (closed forms; the point model's estimated error
+ * against the tolerance, lighting/nearfield.c), and the work it expects. */
 #include "scene_private.h"
 
 #include <math.h>
@@ -51,6 +52,16 @@ double lx__scene_lum_size(const lx_scene_luminaire *l)
     return 0;
 }
 
+void lx__scene_lum_extent(const lx_scene_luminaire *l, double *along_x, double *along_y)
+{
+    double x = 0, y = 0;
+    if (l->radius_m > 0) x = y = 2 * l->radius_m;
+    else if (l->kind == LX_SLUM_RECT) x = l->width_m, y = l->length_m;
+    else if (l->kind == LX_SLUM_FILE) x = l->length_m, y = l->width_m;
+    *along_x = x;
+    *along_y = y;
+}
+
 static void why(lx_scene_plan *p, lx_effect e, int on, const char *fmt, ...)
 {
     va_list ap;
@@ -64,6 +75,8 @@ void lx_scene_plan_free(lx_scene_plan *plan)
 {
     if (!plan) return;
     free(plan->near);
+    free(plan->near_err);
+    free(plan->near_why);
     free(plan->device);
     free(plan);
 }
@@ -82,6 +95,116 @@ static unsigned long long near_patches(double size, double d, double tol, int di
     return total;
 }
 
+static const char *const why_names[LX_NEAR_WHY_COUNT] = {
+    "point: no luminous area",       "point: estimated error within tolerance", "point: faces away (zero)",
+    "area: estimated error over tolerance", "area: probes cannot vouch",      "closed form",
+    "area: no closed form without the cosine", "area: forced on",            "point: forced off"};
+
+const char *lx_near_why_name(lx_near_why why)
+{
+    return (int)why >= 0 && why < LX_NEAR_WHY_COUNT ? why_names[why] : NULL;
+}
+
+/* The probe function of the near-field decision: the luminaire as a point at offset (a, b) on
+ * its opening, seen from the receiver point. */
+typedef struct probe_arg {
+    lx_ctx *ctx;
+    const lx__scene_lum *le;
+    const double *q, *n;
+} probe_arg;
+
+static double probe_g(void *arg, double a, double b)
+{
+    const probe_arg *A = arg;
+    const lx__scene_lum *le = A->le;
+    double s[3];
+    for (int k = 0; k < 3; k++) s[k] = le->l->pos_m[k] + a * le->ex[k] + b * le->ey[k];
+    return lx__scene_point_E(A->ctx, le, s, A->q, A->n, 1);
+}
+
+/* The near-field path of every pair (p->near, near_err, near_why): none for points; disks and
+ * rectangles in closed form (patches when the cosine is forced off); IES/LDT openings decided
+ * per receiver point from probes of the point model's error (lx__nf_decide: their summed
+ * estimates within tol / 2 of the point's point-model illuminance, else integrated), or all
+ * integrated / none when near_field is forced. */
+static lx_status plan_near(lx_ctx *ctx, const lx_scene *sc, lx_scene_plan *p, size_t *n_closed, size_t *n_probed,
+                           double *worst_err, size_t *worst_l, size_t *worst_r)
+{
+    size_t nl = sc->n_lum, np = p->n_points;
+    lx_effect_force F = sc->force[LX_EFFECT_NEAR_FIELD];
+    lx__scene_lum *le = calloc(nl, sizeof *le);
+    lx__nf_probe *pr = malloc(nl * sizeof *pr);
+    unsigned char *nf = malloc(nl);
+    size_t *ord = malloc(nl * sizeof *ord), *idx = malloc(nl * sizeof *idx);
+    if (!le || !pr || !nf || !ord || !idx) {
+        free(le), free(pr), free(nf), free(ord), free(idx);
+        return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    }
+    int any_file = 0;
+    for (size_t l = 0; l < nl; l++) {
+        lx__scene_lum_init(&le[l], &sc->lum[l], p);
+        any_file |= sc->lum[l].kind == LX_SLUM_FILE && lx__scene_lum_size(&sc->lum[l]) > 0;
+    }
+    lx_counters before = ctx->counters;
+    *worst_err = 0;
+    size_t g = 0;
+    for (size_t r = 0; r < sc->n_rec; r++)
+        for (size_t i = 0; i < sc->rec[r].n; i++, g++) {
+            const double *q = sc->rec[r].points + 3 * i, *n = sc->rec[r].normal;
+            double E_point = 0;
+            size_t k = 0;
+            for (size_t l = 0; l < nl; l++) {
+                const lx_scene_luminaire *L = &sc->lum[l];
+                size_t at = l * np + g;
+                p->near_err[at] = NAN;
+                double size = lx__scene_lum_size(L);
+                unsigned char path = LX__PATH_POINT, why = LX_NEAR_NONE;
+                if (!(size > 0)) why = LX_NEAR_NONE;
+                else if (F == LX_FORCE_OFF) why = LX_NEAR_FORCED_OFF;
+                else if (L->kind != LX_SLUM_FILE) {
+                    path = p->on[LX_EFFECT_COSINE] ? LX__PATH_CLOSED : LX__PATH_AREA;
+                    why = p->on[LX_EFFECT_COSINE] ? LX_NEAR_CLOSED : LX_NEAR_NO_CLOSED;
+                    *n_closed += path == LX__PATH_CLOSED;
+                } else if (F == LX_FORCE_ON) path = LX__PATH_AREA, why = LX_NEAR_FORCED_ON;
+                else { /* probed below, with the point's other luminaires */
+                    double ax, ay, d = 0;
+                    lx__scene_lum_extent(L, &ax, &ay);
+                    for (int c = 0; c < 3; c++) d += (q[c] - L->pos_m[c]) * (q[c] - L->pos_m[c]);
+                    probe_arg A = {ctx, &le[l], q, n};
+                    int circ = L->radius_m > 0;
+                    lx__nf_probe_pair(probe_g, &A, circ, ax, ay, sqrt(d),
+                                      lx__nf_faces(L->pos_m, le[l].ex, le[l].ey, circ, ax, ay, q, n), &pr[k]);
+                    E_point += pr[k].point;
+                    idx[k++] = l;
+                    ++*n_probed;
+                    continue;
+                }
+                p->near[at] = path;
+                p->near_why[at] = why;
+                if (any_file && F == LX_FORCE_AUTO) E_point += lx__scene_point_E(ctx, &le[l], L->pos_m, q, n, 1);
+            }
+            if (!k) continue;
+            lx__nf_decide(k, pr, E_point, sc->nearfield_tol, nf, ord);
+            for (size_t j = 0; j < k; j++) {
+                size_t at = idx[j] * np + g;
+                double rel = E_point != 0 ? pr[j].err / fabs(E_point) : pr[j].err > 0 ? INFINITY : 0;
+                p->near_err[at] = rel;
+                p->near[at] = nf[j] ? LX__PATH_AREA : LX__PATH_POINT;
+                p->near_why[at] = nf[j] ? (pr[j].unsure ? LX_NEAR_UNSURE : LX_NEAR_OVER)
+                                        : (pr[j].zero ? LX_NEAR_ZERO : LX_NEAR_WITHIN);
+                if (!pr[j].unsure && rel > *worst_err) *worst_err = rel, *worst_l = idx[j], *worst_r = r;
+            }
+        }
+    /* what the probes cost, kept apart from the evaluation's work */
+    const unsigned long long *a = (const unsigned long long *)&ctx->counters, *b = (const unsigned long long *)&before;
+    unsigned long long *o = (unsigned long long *)&p->planning;
+    for (size_t c = 0; c < sizeof p->planning / sizeof *o; c++) o[c] = a[c] - b[c];
+    p->planning.nearfield_probes = *n_probed;
+    ctx->counters.nearfield_probes += *n_probed;
+    free(le), free(pr), free(nf), free(ord), free(idx);
+    return LX_OK;
+}
+
 lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, lx_backend backend, lx_scene_plan **out)
 {
     LX__NEED_CTX(ctx);
@@ -95,13 +218,14 @@ lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, lx_backend backend
     p->n_pairs = p->n_points * sc->n_lum;
     p->n_normals = sc->n_rec;
     p->near = calloc(p->n_pairs ? p->n_pairs : 1, 1);
+    p->near_why = calloc(p->n_pairs ? p->n_pairs : 1, 1);
+    p->near_err = malloc((p->n_pairs ? p->n_pairs : 1) * sizeof *p->near_err);
     p->device = calloc(sc->n_lum * sc->n_rec > 0 ? sc->n_lum * sc->n_rec : 1, 1);
-    if (!p->near || !p->device) {
-        free(p->near);
-        free(p->device);
-        free(p);
+    if (!p->near || !p->near_why || !p->near_err || !p->device) {
+        lx_scene_plan_free(p);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
+    for (size_t k = 0; k < p->n_pairs; k++) p->near_err[k] = NAN;
     const lx_effect_force *F = sc->force;
     lx_status st = LX_OK;
     size_t n_spot = 0, n_file = 0, n_area = 0;
@@ -146,46 +270,50 @@ lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, lx_backend backend
         why(p, LX_EFFECT_GONIOMETRIC, 0, "forced off in [effects]: IES/LDT luminaires are isotropic points of their flux");
     else
         why(p, LX_EFFECT_GONIOMETRIC, 1, "%zu IES/LDT luminaire%s (intensity tables)", n_file, n_file == 1 ? "" : "s");
-    /* near field: per pair, the five-times rule */
+    /* near field: per pair, from the closed forms and the point model's estimated error */
     if (!n_area) {
         FORCED_ON_NOTHING(LX_EFFECT_NEAR_FIELD, "luminaires with a luminous area");
         why(p, LX_EFFECT_NEAR_FIELD, 0, "no luminaire has a luminous area (all are points)");
     } else {
-        double worst = INFINITY;
-        const char *wl = NULL, *wr = NULL;
-        for (size_t l = 0; l < sc->n_lum; l++) {
-            const lx_scene_luminaire *L = &sc->lum[l];
-            double size = lx__scene_lum_size(L);
-            if (!(size > 0)) continue;
-            size_t g = 0;
-            for (size_t r = 0; r < sc->n_rec; r++)
-                for (size_t i = 0; i < sc->rec[r].n; i++, g++) {
-                    const double *q = sc->rec[r].points + 3 * i;
-                    double d = sqrt((q[0] - L->pos_m[0]) * (q[0] - L->pos_m[0]) + (q[1] - L->pos_m[1]) * (q[1] - L->pos_m[1]) +
-                                    (q[2] - L->pos_m[2]) * (q[2] - L->pos_m[2]));
-                    int near = F[LX_EFFECT_NEAR_FIELD] == LX_FORCE_ON ? 1
-                               : F[LX_EFFECT_NEAR_FIELD] == LX_FORCE_OFF ? 0
-                                                                         : d < 5 * size;
-                    if (d / size < worst) worst = d / size, wl = L->name, wr = sc->rec[r].name;
-                    if (near) {
-                        p->near[l * p->n_points + g] = 1;
-                        p->n_near++;
-                        p->estimate.nearfield_subdivisions +=
-                            near_patches(size, d, sc->nearfield_tol, L->radius_m > 0);
+        size_t n_closed = 0, n_probed = 0, wl = 0, wr = 0;
+        double worst = 0;
+        if ((st = plan_near(ctx, sc, p, &n_closed, &n_probed, &worst, &wl, &wr)) != LX_OK) goto fail;
+        size_t g = 0, n_area_pairs = 0;
+        for (size_t r = 0; r < sc->n_rec; r++)
+            for (size_t i = 0; i < sc->rec[r].n; i++, g++)
+                for (size_t l = 0; l < sc->n_lum; l++) {
+                    const lx_scene_luminaire *L = &sc->lum[l];
+                    size_t at = l * p->n_points + g;
+                    if (!p->near[at]) continue;
+                    p->n_near++;
+                    if (p->near[at] == LX__PATH_AREA) {
+                        n_area_pairs++;
+                        const double *q = sc->rec[r].points + 3 * i;
+                        double d = sqrt((q[0] - L->pos_m[0]) * (q[0] - L->pos_m[0]) + (q[1] - L->pos_m[1]) * (q[1] - L->pos_m[1]) +
+                                        (q[2] - L->pos_m[2]) * (q[2] - L->pos_m[2]));
+                        p->estimate.nearfield_subdivisions += near_patches(lx__scene_lum_size(L), d, sc->nearfield_tol, L->radius_m > 0);
                     }
                 }
-        }
         p->estimate.nearfield_pairs = p->n_near;
+        p->estimate.nearfield_probes = n_probed;
+        p->estimate.closed_form_evaluations = n_closed;
         if (F[LX_EFFECT_NEAR_FIELD] == LX_FORCE_OFF)
             why(p, LX_EFFECT_NEAR_FIELD, 0, "forced off in [effects]: every luminaire is a point at its centre");
         else if (F[LX_EFFECT_NEAR_FIELD] == LX_FORCE_ON)
-            why(p, LX_EFFECT_NEAR_FIELD, 1, "forced on in [effects]: %zu pairs integrated over the luminous area", p->n_near);
-        else if (p->n_near)
-            why(p, LX_EFFECT_NEAR_FIELD, 1, "%zu of %zu pairs closer than 5x the luminaire size (closest: %s to %s at %.3g x)",
-                p->n_near, p->n_pairs, wl, wr, worst);
-        else
-            why(p, LX_EFFECT_NEAR_FIELD, 0, "every receiver is at least 5x the luminaire size away (closest: %s to %s at %.3g x)",
-                wl, wr, worst);
+            why(p, LX_EFFECT_NEAR_FIELD, 1, "forced on in [effects]: %zu pairs integrated over the luminous area, %zu in closed form",
+                n_area_pairs, n_closed);
+        else if (p->n_near) {
+            char parts[3][96] = {"", "", ""};
+            if (n_closed) snprintf(parts[0], sizeof parts[0], "; %zu disk/rect in closed form", n_closed);
+            if (n_area_pairs)
+                snprintf(parts[1], sizeof parts[1], "; %zu integrated (point-model error estimated over %g, or unsure)",
+                         n_area_pairs, sc->nearfield_tol);
+            if (n_probed) snprintf(parts[2], sizeof parts[2], "; %zu of %zu probed pairs kept as points", n_probed - n_area_pairs, n_probed);
+            why(p, LX_EFFECT_NEAR_FIELD, 1, "%zu of %zu pairs on the area path%s%s%s", p->n_near, p->n_pairs, parts[0],
+                parts[1], parts[2]);
+        } else
+            why(p, LX_EFFECT_NEAR_FIELD, 0, "the point model's estimated error meets the tolerance %g on all %zu probed pairs "
+                "(largest %.2g: %s to %s)", sc->nearfield_tol, n_probed, worst, sc->lum[wl].name, sc->rec[wr].name);
     }
     /* spectral: only when asked for and every source has a spectrum */
     {
@@ -266,7 +394,7 @@ lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, lx_backend backend
             size_t g = 0;
             for (size_t r = 0; r < sc->n_rec; r++)
                 for (size_t i = 0; i < sc->rec[r].n; i++, g++)
-                    if (p->near[l * p->n_points + g]) {
+                    if (p->near[l * p->n_points + g] == LX__PATH_AREA) {
                         const double *q = sc->rec[r].points + 3 * i, *s = sc->lum[l].pos_m;
                         double d = sqrt((q[0] - s[0]) * (q[0] - s[0]) + (q[1] - s[1]) * (q[1] - s[1]) + (q[2] - s[2]) * (q[2] - s[2]));
                         p->estimate.goniometric_lookups += near_patches(size, d, sc->nearfield_tol, sc->lum[l].radius_m > 0);

@@ -88,8 +88,30 @@ char *lx__scene_resolve(const char *base_file, const char *rel);
 void lx__scene_frame(const lx_scene_luminaire *l, double ex[3], double ey[3], double ez[3]);
 /* The size the five-times rule uses: disk diameter, rectangle (or opening) diagonal; 0 for points. */
 double lx__scene_lum_size(const lx_scene_luminaire *l);
+/* The luminous opening along the luminaire's ex (C0) and ey (C90) axes: a rectangle's width and
+ * length; a file luminaire's length (C0-C180) and width (C90-C270), as LM-63 and EULUMDAT define
+ * them; a disk's diameter (both). 0 for points. */
+void lx__scene_lum_extent(const lx_scene_luminaire *l, double *along_x, double *along_y);
 /* Total flux of a file luminaire's table times its scale (lm). */
 double lx__scene_file_flux(const lx_scene_luminaire *l);
+
+/* What a luminaire needs during evaluation (and the planner's probes): its frame, area and the
+ * effects that shape its intensity. */
+typedef struct lx__scene_lum {
+    const lx_scene_luminaire *l;
+    double ex[3], ey[3], ez[3];
+    double area;
+    int spot_falloff, gonio, cosine;
+} lx__scene_lum;
+void lx__scene_lum_init(lx__scene_lum *e, const lx_scene_luminaire *l, const lx_scene_plan *plan);
+/* E at receiver point q (unit normal n) of the luminaire as a point source at s carrying frac of
+ * its intensity (the point model; counts its spot and table work). */
+double lx__scene_point_E(lx_ctx *ctx, const lx__scene_lum *le, const double s[3], const double q[3], const double n[3],
+                         double frac);
+
+/* The paths of lx_scene_plan.near: the point model, the luminous area integrated in patches, a
+ * disk or rectangle in closed form. */
+enum { LX__PATH_POINT = 0, LX__PATH_AREA = 1, LX__PATH_CLOSED = 2 };
 
 /* Sky illuminance on a receiver with unit normal n (lx): sky plus ground. Counts its work. */
 lx_status lx__scene_sky_eval(lx_ctx *ctx, const lx_scene *sc, const void *map, const double n[3], double *E_lx);

@@ -56,22 +56,16 @@ void lx__scene_sky_map_free(void *p)
     free(m);
 }
 
-/* Sum over the upper-hemisphere pixels of L max(0, n . m_pixel) (the pixel's first moment: exact
- * for pixels the receiver sees whole). Rows whose centre is below the horizon are ground. */
+/* Sum over the upper-hemisphere pixels of L times the integral of max(0, n . w) over the pixel
+ * (exact, the pixels the receiver's horizon crosses included: lx__irr_rows_exact). Rows whose
+ * centre is below the horizon are ground. */
 static double map_sum(lx_ctx *ctx, const sky_map *m, const double n[3])
 {
-    int W = m->map->width, H = m->map->height;
+    int W = m->map->width, H = m->map->height, rows = 0;
+    while (rows < H && (rows + 0.5) / H < 0.5) rows++;
     double sum = 0;
-    for (int j = 0; j < H; j++) {
-        if ((j + 0.5) / H >= 0.5) break;
-        for (int i = 0; i < W; i++) {
-            double mo[3];
-            lx_envmap_pixel_moment(W, H, j, i, mo);
-            double c = n[0] * mo[0] + n[1] * mo[1] + n[2] * mo[2];
-            if (c > 0) sum += m->L[(size_t)j * W + i] * c;
-        }
-        ctx->counters.environment_samples += (unsigned long long)W;
-    }
+    if (lx__irr_rows_exact(ctx, W, H, m->L, rows, n, &sum) != LX_OK) return NAN;
+    ctx->counters.environment_samples += (unsigned long long)W * (unsigned long long)rows;
     return sum;
 }
 

@@ -9,6 +9,7 @@
 typedef struct job {
     const lx_batch *b;
     lx_observer obs;
+    double lo_K, hi_K;  /* the CCT range as Planckian radiators at its ends show it on this grid */
     const double *ints; /* n x 4: xbar, ybar, zbar, V' integrals */
     lx_colorimetry *out;
     lx_status st[64];   /* per thread */
@@ -23,7 +24,7 @@ static double value_at(const lx_batch *b, size_t i, size_t j, int e)
     return e ? ldexp(v, -e) : v;
 }
 
-static double radiant_of(const lx_batch *b, size_t i)
+double lx__batch_radiant(const lx_batch *b, size_t i)
 {
     size_t stride = b->row_stride ? b->row_stride : b->n_lambda;
     double sum = 0.0;
@@ -56,8 +57,8 @@ static void work(void *arg, long i0, long i1, int t)
     if ((j->st[t] = lx_ctx_create(&ctx)) != LX_OK) return;
     for (long i = i0; i < i1 && j->st[t] == LX_OK; i++) {
         j->out[i].method = LX_METHOD_CIE15;
-        j->st[t] = lx__colorimetry_derive(ctx, j->obs, j->ints + 4 * i, j->ints[4 * i + 3], radiant_of(j->b, i), 1,
-                                          &j->out[i]);
+        j->st[t] = lx__colorimetry_fast(ctx, j->obs, j->ints + 4 * i, j->ints[4 * i + 3], lx__batch_radiant(j->b, i), j->lo_K,
+                                        j->hi_K, &j->out[i]);
     }
     lx_ctx_destroy(ctx);
 }
@@ -82,7 +83,16 @@ lx_status lx_batch_colorimetry(lx_ctx *ctx, const lx_batch *b, lx_observer obs, 
     }
     /* below 256 spectra a thread costs more than the CCT solves it takes over */
     int nt = b->n_spectra < 256 ? 1 : lx__threads(opts ? opts->threads : 0, (long)b->n_spectra);
-    job J = {.b = b, .obs = obs, .ints = ints, .out = out};
+    job J = {.b = b, .obs = obs, .lo_K = 1000.0, .hi_K = 100000.0, .ints = ints, .out = out};
+    /* the range ends through the grid's own sampling (the batch sums at the grid's step, the CIE 015
+     * rule), as lx_spd_colorimetry takes them: a blackbody at an end is in the range */
+    double *grid = malloc(b->n_lambda * sizeof *grid);
+    if (grid) {
+        for (size_t k = 0; k < b->n_lambda; k++) grid[k] = b->start_nm + (double)k * b->step_nm;
+        lx_spd g = {.n = b->n_lambda, .lambda_nm = grid, .value = grid, .name = "grid"};
+        lx__cct_range_ends(ctx, &g, obs, LX_METHOD_CIE15, &J.lo_K, &J.hi_K);
+        free(grid);
+    }
     lx__parallel_for(ctx, nt, (long)b->n_spectra, work, &J);
     free(ints);
     for (int t = 0; t < nt; t++)

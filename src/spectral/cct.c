@@ -316,3 +316,14 @@ lx_status lx_cct_from_xy(lx_ctx *ctx, lx_observer obs, double x, double y, doubl
     }
     return lx_cct_from_uv(ctx, obs, 4 * x / d, 6 * y / d, cct_K, duv);
 }
+
+lx_status lx__cct_from_uv_table(lx_ctx *ctx, lx_observer obs, double u, double v, double *cct_K, double *duv)
+{
+    *cct_K = *duv = NAN;
+    if (!isfinite(u) || !isfinite(v)) return LX_ERANGE;
+    /* the one fast solver (cct_fast.c: the exact answer to rounding, 0.15 us); where it does not
+     * answer (the nearest point outside 900 K - 120000 K) the exact solve, on ctx */
+    if (lx__cct_fast(obs, u, v, cct_K, duv)) return LX_OK;
+    lx_status st = lx_cct_from_uv(ctx, obs, u, v, cct_K, duv);
+    return st == LX_OK ? LX_OK : LX_ERANGE;
+}

@@ -3,52 +3,53 @@
 #include "spectral/spectral_private.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 
 static lx_status overflow_check(lx_ctx *ctx, const lx_colorimetry *r, double max_abs);
 
-/* The CCT columns of r from its u', v': by the fast table (cct_fast.c) when fast and the answer is
- * clear of the validity edges (|Duv| 0.05, 1000 K, 100000 K: there the two solvers' last bits could
- * disagree, so the exact one decides), else by the exact solver. An invalid fast answer is final:
- * within 0.1 of the locus the root it finds is the only one (cct_fast.c), so a point it puts
- * farther than 0.05 from the locus, or whose root it finds outside its table (900 K - 120000 K),
- * has no CCT in 1000 K - 100000 K within 0.05 either. */
-static void cct_columns(lx_ctx *ctx, lx_observer obs, lx_colorimetry *r, int fast)
+/* The CCT of u, v (NaN when the solver finds none), keeping the context's error state (an undefined
+ * CCT is a result, not an error). */
+static double solve_cct(lx_ctx *ctx, lx_observer obs, double u, double v, double *duv)
 {
-    double u = r->u_prime, v = r->v_prime * 2.0 / 3.0, T, duv;
-    int got = fast ? lx__cct_fast(obs, u, v, &T, &duv) : 0;
-    /* the nearest locus point beyond 900 K - 120000 K: CCT outside 1000-100000 K or |Duv| > 0.1 */
-    if (fast && !got) return;
-    if (got) {
-        double ad = fabs(duv);
-        int edge = fabs(ad - 0.05) < 1e-9 || fabs(T - 1000.0) < 1e-4 || fabs(T - 100000.0) < 1e-2;
-        if (!edge) {
-            r->cct_valid = ad <= 0.05 && T >= 1000.0 && T <= 100000.0;
-            if (r->cct_valid) r->cct_K = T, r->duv = duv;
-            return;
-        }
-    }
-    /* an undefined CCT is a result, not an error: keep the context's error state */
+    double T = NAN;
+    *duv = NAN;
     lx_status st0 = ctx->status;
     long line0 = ctx->errline;
     char msg0[LX__ERRMSG_MAX], file0[sizeof ctx->errfile];
     memcpy(msg0, ctx->errmsg, sizeof msg0);
     memcpy(file0, ctx->errfile, sizeof file0);
-    if (lx_cct_from_uv(ctx, obs, u, v, &T, &duv) == LX_OK) {
-        /* the range ends are inclusive to solver precision (a 1000 K blackbody solves to 1000 K - 1e-9) */
-        r->cct_valid = fabs(duv) <= 0.05 && T >= 1000.0 * (1 - 1e-9) && T <= 100000.0 * (1 + 1e-9);
-        if (r->cct_valid) r->cct_K = T, r->duv = duv;
-    } else {
+    if (lx_cct_from_uv(ctx, obs, u, v, &T, duv) != LX_OK) {
+        T = NAN;
         ctx->status = st0;
         ctx->errline = line0;
         memcpy(ctx->errmsg, msg0, sizeof msg0);
         memcpy(ctx->errfile, file0, sizeof file0);
     }
+    return T;
 }
 
-lx_status lx__colorimetry_derive(lx_ctx *ctx, lx_observer obs, const double xyz[3], double vprime, double radiant,
-                                 int fast, lx_colorimetry *out)
+/* The CCT of u, v by the fast table (cct_fast.c): 1 with *T, *duv when the answer is clear of the
+ * validity edges (|Duv| 0.05, lo_K, hi_K: there the two solvers' last bits could disagree, so the
+ * exact one decides), 1 with T NaN when the fast answer says there is no CCT to report, 0 when the
+ * exact solver must decide. An invalid fast answer is final: within 0.1 of the locus the root it
+ * finds is the only one (cct_fast.c), so a point it puts farther than 0.05 from the locus, or whose
+ * root it finds outside its table (900 K - 120000 K, beyond the range ends), has no CCT in the
+ * range within 0.05 either. */
+static int fast_cct(lx_observer obs, double u, double v, double lo_K, double hi_K, double *T, double *duv)
+{
+    double t, d;
+    *T = *duv = NAN;
+    if (!lx__cct_fast(obs, u, v, &t, &d)) return 1; /* beyond the table: CCT outside the range, or |Duv| > 0.1 */
+    double ad = fabs(d);
+    if (fabs(ad - 0.05) < 1e-9 || fabs(t / lo_K - 1) < 1e-7 || fabs(t / hi_K - 1) < 1e-7) return 0;
+    if (ad <= 0.05) *T = t, *duv = d;
+    return 1;
+}
+
+static lx_status colorimetry(lx_ctx *ctx, lx_observer obs, const double xyz[3], double vprime, double radiant,
+                             double lo_K, double hi_K, int fast, lx_colorimetry *out, double *solved_K)
 {
     LX__NEED_CTX(ctx);
     if (!out || !xyz) return lx__error(ctx, LX_EINVAL, NULL, 0, "integrals and output are required");
@@ -80,15 +81,64 @@ lx_status lx__colorimetry_derive(lx_ctx *ctx, lx_observer obs, const double xyz[
     r.sp_ratio = r.Y != 0 ? r.scotopic_Y / r.Y : NAN;
     r.cct_K = r.duv = NAN;
     r.cct_valid = 0;
-    if (d != 0 && isfinite(r.u_prime)) cct_columns(ctx, obs, &r, fast);
+    double T = NAN, duv = NAN, u = r.u_prime, v = r.v_prime * 2.0 / 3.0;
+    /* solved_K asks for a CCT outside the range too: only the exact solver has the whole locus */
+    if (d != 0 && isfinite(u) && !(fast && !solved_K && fast_cct(obs, u, v, lo_K, hi_K, &T, &duv)))
+        T = solve_cct(ctx, obs, u, v, &duv);
+    /* the range ends are inclusive to the solver's precision */
+    r.cct_valid = isfinite(T) && fabs(duv) <= 0.05 && T >= lo_K * (1 - 1e-9) && T <= hi_K * (1 + 1e-9);
+    if (r.cct_valid) r.cct_K = T, r.duv = duv;
+    if (solved_K) *solved_K = isfinite(T) && fabs(duv) <= 0.05 ? T : NAN;
     *out = r;
     return LX_OK;
+}
+
+lx_status lx__colorimetry_range(lx_ctx *ctx, lx_observer obs, const double xyz[3], double vprime, double radiant,
+                                double lo_K, double hi_K, lx_colorimetry *out, double *solved_K)
+{
+    return colorimetry(ctx, obs, xyz, vprime, radiant, lo_K, hi_K, 0, out, solved_K);
+}
+
+lx_status lx__colorimetry_fast(lx_ctx *ctx, lx_observer obs, const double xyz[3], double vprime, double radiant,
+                               double lo_K, double hi_K, lx_colorimetry *out)
+{
+    return colorimetry(ctx, obs, xyz, vprime, radiant, lo_K, hi_K, 1, out, NULL);
 }
 
 lx_status lx_colorimetry_from_integrals(lx_ctx *ctx, lx_observer obs, const double xyz[3], double vprime,
                                         double radiant, lx_colorimetry *out)
 {
-    return lx__colorimetry_derive(ctx, obs, xyz, vprime, radiant, 0, out);
+    return lx__colorimetry_range(ctx, obs, xyz, vprime, radiant, 1000.0, 100000.0, out, NULL);
+}
+
+/* The CCT a Planckian radiator at T_K shows when sampled at the spectrum's wavelengths and integrated
+ * by the same method (the data's sampling moves it: a 1000 K blackbody summed at 5 nm solves to
+ * 999.99935 K, a 100000 K one to 100066 K). NaN when that cannot be computed. */
+static double apparent_cct(lx_ctx *ctx, const lx_spd *spd, lx_observer obs, lx_method method, double T_K)
+{
+    double *v = malloc(spd->n * sizeof *v);
+    if (!v) return NAN;
+    for (size_t i = 0; i < spd->n; i++) v[i] = lx_planck(spd->lambda_nm[i], T_K);
+    lx_spd p = *spd;
+    p.value = v;
+    lx_function f0 = obs == LX_OBSERVER_2 ? LX_FN_XBAR_2 : LX_FN_XBAR_10;
+    double xyz[3], T = NAN, duv;
+    int ok = 1;
+    for (int k = 0; k < 3 && ok; k++) {
+        lx_spd w;
+        ok = lx_function_get(ctx, f0 + k, &w) == LX_OK && lx_spd_integrate(ctx, &p, &w, method, &xyz[k]) == LX_OK;
+    }
+    double d = xyz[0] + 15 * xyz[1] + 3 * xyz[2];
+    if (ok && d > 0) T = solve_cct(ctx, obs, 4 * xyz[0] / d, 6 * xyz[1] / d, &duv);
+    free(v);
+    return T;
+}
+
+void lx__cct_range_ends(lx_ctx *ctx, const lx_spd *spd, lx_observer obs, lx_method method, double *lo_K, double *hi_K)
+{
+    double lo = apparent_cct(ctx, spd, obs, method, 1000.0), hi = apparent_cct(ctx, spd, obs, method, 100000.0);
+    *lo_K = isfinite(lo) ? fmin(lo, 1000.0) : 1000.0;
+    *hi_K = isfinite(hi) ? fmax(hi, 100000.0) : 100000.0;
 }
 
 lx_status lx_spd_colorimetry(lx_ctx *ctx, const lx_spd *spd, lx_observer obs, lx_method method, lx_colorimetry *out)
@@ -118,7 +168,16 @@ lx_status lx_spd_colorimetry(lx_ctx *ctx, const lx_spd *spd, lx_observer obs, lx
     if (st != LX_OK) return st;
     lx_colorimetry r;
     r.method = method;
-    st = lx_colorimetry_from_integrals(ctx, obs, xyz, scot, radiant, &r);
+    double T;
+    st = lx__colorimetry_range(ctx, obs, xyz, scot, radiant, 1000.0, 100000.0, &r, &T);
+    /* near an end of 1000-100000 K: the ends as a Planckian radiator shows them through this
+     * spectrum's sampling and method, so a blackbody at an end is in the range to the solver's
+     * precision whatever the step */
+    if (st == LX_OK && !r.cct_valid && isfinite(T) && (fabs(T / 1000.0 - 1) < 0.01 || fabs(T / 100000.0 - 1) < 0.01)) {
+        double lo, hi;
+        lx__cct_range_ends(ctx, spd, obs, method, &lo, &hi);
+        st = lx__colorimetry_range(ctx, obs, xyz, scot, radiant, lo, hi, &r, NULL);
+    }
     if (st == LX_OK && (st = overflow_check(ctx, &r, lx__spd_max_abs(spd))) == LX_OK) *out = r;
     return st;
 }

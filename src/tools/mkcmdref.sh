@@ -28,6 +28,7 @@ ex "convert" convert 46 fc --format csv
 ex "solve" solve --illuminance 500lx --intensity 2000cd
 ex "ies" ies --format csv samples/ies/spot_warn_30deg_800lm.ies
 ex "grid" grid --ies samples/ies/spot_warn_30deg_800lm.ies --at 2,1.5,2.8 --plane z=0.8 --area 0:4,0:3 --spacing 1 --format csv
+ex "grid" grid --ies samples/ies/spot_warn_30deg_800lm.ies --at 2,1.5,2.8 --plane z=0.8 --area 0:4,0:3 --spacing 1 --points-at centres --format table
 ex "irradiance" irradiance samples/envmaps/sky_sun.exr --normal 0,0,1 --method fast --format csv
 ex "luminance-map" luminance-map samples/envmaps/sky_sun.exr --format csv
 LINES_MAX=20 ex "scene" scene samples/scenes/spectral.scene

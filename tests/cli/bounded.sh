@@ -118,6 +118,25 @@ bounded spd --format csv "$G/longline.csv" # within the spectrum limit: the gene
 expect_rc 2 "a 4.4 MB batch line, general reader: exit 2"
 expect_err_match "^luxcalc: spd: $G/longline.csv:2002: row has 1100001 fields, expected 4" "a 4.4 MB batch line, general reader: its line"
 
+# ---- a batch file larger than the spectrum-file limit: printed as it is computed ----
+# 3000 spectra on a 5 nm grid (2.5 MB) under LX_MAX_INPUT_MB=1: the same rows, bit for bit, as
+# when the whole file fits the limit; a spectrum at 1e308 in it is reported with its data row and
+# skipped, the others printed
+awk 'BEGIN { printf "id"; for (l = 380; l <= 780; l += 5) printf ",%d", l; printf "\n"
+             for (i = 0; i < 3000; i++) { printf "s%d", i; for (l = 380; l <= 780; l += 5) printf ",%.4f", 1 + ((i * 7 + l) % 13) / 10; printf "\n" } }' >"$G/rows.csv"
+bounded spd --format csv "$G/rows.csv"
+cp "$T/out" "$G/rows_whole.out"
+LX_MAX_INPUT_MB=1 bounded spd --format csv "$G/rows.csv"
+expect_rc 0 "a 2.5 MB batch file over a 1 MB limit is streamed"
+cmp -s "$T/out" "$G/rows_whole.out" && ok "streamed over the limit: the same rows, bit for bit" ||
+  notok "streamed over the limit: the same rows" "$(diff "$T/out" "$G/rows_whole.out" | head -c 400)"
+awk -F, -v OFS=, 'NR == 1501 { for (i = 2; i <= NF; i++) $i = "1e308" } { print }' "$G/rows.csv" >"$G/rows_bad.csv"
+LX_MAX_INPUT_MB=1 bounded spd --format csv "$G/rows_bad.csv"
+refused "streamed over the limit: a spectrum at 1e308" \
+  "^luxcalc: spd: $G/rows_bad.csv: spectrum 's1499' \(data row 1500\): integral overflows: values up to 1e308 give X beyond the double range$"
+[ "$(grep -c ',s[0-9]*,' "$T/out")" = 2999 ] && ! grep -q ',s1499,' "$T/out" && ok "streamed over the limit: the other 2999 rows printed" ||
+  notok "streamed over the limit: the other 2999 rows printed" "$(grep -c ',s[0-9]*,' "$T/out") rows"
+
 # ---- integrals beyond the double range; 1e300 still computes ----
 awk 'BEGIN { print "nm,one,e300,e308,zero"; for (l = 380; l <= 780; l += 5) print l ",1,1e300,1e308,0" }' >"$G/range.csv"
 bounded spd --format csv "$G/range.csv"

@@ -58,3 +58,72 @@ run grid --ies $S/point_isotropic_1000lm.ies --at 0,0,2 --plane z=0 --area 0:1,0
 expect_rc 1 "--table-rows 1 is a usage error"
 run grid --ies $S/point_isotropic_1000lm.ies --at 0,0,2 --plane z=0 --area 0:1,0:0 --points 2x1 --table-rows 64 --interp smooth
 expect_rc 1 "--table-rows with another --interp is a usage error"
+
+# ---- grid options of the plots issue ----
+P=$S/point_isotropic_1000lm.ies   # I = 1000 / (4 pi) = 79.5774715 cd
+# --at takes units like every option: 200 cm, and a unit after the last value for all three
+run grid --ies $P --at 0,0,200cm --plane z=0 --area 0:1,0:0 --points 2x1
+expect_field 1 illuminance_lx 19.894367886486918 1e-9 "--at with a unit on one value"
+run grid --ies $P --at 0,0,6.561679790026246ft --plane z=0 --area 0:1,0:0 --points 2x1
+expect_field 1 illuminance_lx 19.894367886486918 1e-9 "--at in feet (6.5617 ft = 2 m)"
+run grid --ies $P --at "0,0,2 m" --plane z=0 --area 0:3.280839895013123,0:0ft --points 2x1
+expect_field 2 illuminance_lx 14.235250868343543 1e-9 "--at and --area with the unit after the last value"
+run grid --ies $P --at 0,0,2lm --plane z=0 --area 0:1,0:0 --points 2x1
+expect_rc 1 "--at with a unit of another quantity is a usage error"
+expect_err_match "--at: unit 'lm' is a luminous flux, not a length" "the message names the option and the unit"
+# the summary: CLI.md's names first, then the names scenes use and E_min / E_max
+# (E_min / E_max = 14.2352509 / 19.8943679 = 0.715541753)
+run grid --ies $P --at 0,0,2 --plane z=0 --area 0:1,0:0 --points 2x1 --summary
+expect_out_match '^E_avg,E_min,E_max,U0,illuminance_avg_lx,illuminance_min_lx,illuminance_max_lx,uniformity_u0,uniformity_min_max$' "summary columns"
+expect_field 1 uniformity_min_max 0.71554175279993270 1e-12 "E_min / E_max"
+expect_field 1 illuminance_avg_lx 17.064809377415231 1e-9 "illuminance_avg_lx = E_avg"
+run grid --ies $P --at 0,0,2 --plane z=0 --area 0:1,0:0 --points 2x1 --summary --format table
+expect_out_match '^uniformity_u0 +0\.834$' "table summary: U0 to 3 decimals"
+expect_out_match '^illuminance_avg_lx +17\.06 lx$' "table summary: lux to 4 significant digits"
+run grid --ies $P --at 0,0,2 --plane z=0 --area 0:1,0:0 --points 2x1 --format json
+expect_err_match '"uniformity_min_max": 0.7155417527999327' "the summary on stderr in the chosen format (json)"
+# cell centres (EN 12464-1, DIALux): 4 m x 3 m at 1 m spacing is 4 x 3 cells, points 0.5 m inside
+run grid --ies $P --at 2,1.5,2 --plane z=0 --area 0:4,0:3 --spacing 1 --points-at centres
+expect_field 1 x 0.5 0 "first centre x = s/2"
+expect_field 1 y 0.5 0 "first centre y = s/2"
+expect_field 12 x 3.5 0 "last centre x = 4 - s/2"
+n=$(printf '%s\n' "$out" | wc -l)
+if [ "$n" -eq 13 ]; then ok "4 x 3 cells give 12 points"; else notok "4 x 3 cells give 12 points" "$n lines"; fi
+# a spacing that does not divide the side: ceil(4 / 1.5) = 3 cells of 4/3 m, centres at 2/3, 2, 10/3
+run grid --ies $P --at 2,1.5,2 --plane z=0 --area 0:4,0:0 --spacing 1.5 --points-at centres
+expect_field 2 x 2 1e-12 "cells no larger than the spacing: the middle centre"
+expect_field 3 x 3.3333333333333335 1e-12 "the last centre 4 - (4/3)/2"
+# a plane facing away from the luminaire: zeros, and a warning that says why
+run grid --ies $P --at 0,0,-2 --plane z=0 --area 0:1,0:1 --spacing 1 --summary
+expect_rc 0 "a plane facing away still runs"
+expect_err_match 'warning: the plane faces away from every luminaire' "facing away: a warning"
+run grid --ies $P --at 0,0,-2 --plane z=0 --area 0:1,0:1 --spacing 1 --summary --normal 0,0,-1
+expect_field 1 E_max 19.894367886486918 1e-9 "with --normal towards it, the closed form again"
+if printf '%s\n' "$err" | grep -q warning; then notok "no warning when lit" "$err"; else ok "no warning when lit"; fi
+# the table format prints the grid as a grid: a heading, a row of x, one row per y (highest first)
+run grid --ies $P --at 0,0,2 --plane z=0 --area 0:1,0:1 --spacing 1 --format table
+expect_out_match '^illuminance \(lx\) on z = 0 m: rows y \(m\), columns x \(m\)$' "grid table heading"
+expect_out_match '^y \\ x +0 +1$' "grid table: the x coordinates"
+expect_out_match '^ *1 +14\.24 +10\.83$' "grid table: the row y = 1 first, 4 significant digits (I h / 6^1.5)"
+expect_out_match '^ *0 +19\.89 +14\.24$' "grid table: the row y = 0 last"
+# imperial output: fc and ft (1 lx = 0.09290304 fc; 1 m = 3.2808399 ft), the csv names follow
+run grid --ies $P --at 0,0,2 --plane z=0 --area 0:1,0:0 --points 2x1 --units imperial
+expect_out_match '^x,y,z,illuminance_fc$' "imperial csv header"
+expect_field 1 illuminance_fc 1.8482472555330098 1e-12 "19.8943679 lx in fc"
+expect_field 2 x 3.280839895013123 1e-12 "1 m in ft"
+# grid --scene: the luminaires of a scene file on a plane of the flags (point.scene: 400 cd at 2 m)
+run grid --scene tests/data/scenes/point.scene --plane z=0 --area 0:1,0:0 --points 2x1
+expect_rc 0 "grid --scene runs"
+# E = I h / d^3: 400 x 2 / 8 = 100 lx; 1 m aside 400 x 2 / 5^1.5 = 71.5541753
+expect_field 1 illuminance_lx 100 1e-9 "grid --scene: under the lamp"
+expect_field 2 illuminance_lx 71.55417527999327 1e-9 "grid --scene: 1 m aside"
+run grid --scene tests/data/scenes/point.scene --summary
+expect_rc 1 "grid --scene without a plane needs the scene's one grid"
+expect_err_match 'the scene has 0 grid receivers' "the message says why"
+run scene samples/scenes/office.scene --format csv
+desk=$(printf '%s\n' "$out" | awk -F, '$1=="desk"{s+=$5; n++} END {printf "%.17g", s/n}')
+run grid --scene samples/scenes/office.scene --summary
+expect_rc 0 "grid --scene uses the scene's one grid"
+expect_field 1 E_avg "$desk" 1e-9 "the same desk average as luxcalc scene"
+run grid --ies $P --scene tests/data/scenes/point.scene --plane z=0 --area 0:1,0:0 --points 2x1
+expect_rc 1 "--ies and --scene together are a usage error"

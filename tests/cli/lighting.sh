@@ -28,6 +28,12 @@ expect_out_match '^peak_intensity_cd,intensity_cd,illuminance_lx' "spot csv head
 expect_field 1 intensity_cd 0.5 1e-12 "spot S=1 at 60 deg"
 run spot --flux 1000 --exponent 1e6 --angle 90deg --format csv
 expect_field 1 intensity_cd 0 0 "spot S=1e6 at 90 deg is 0, not NaN"
+# the flux in a cone of a Warn lobe: F (1 - cos^(S+1) A); S = 1 at 60 deg: 3/4 of 800 lm
+run spot --flux 800lm --exponent 1 --cone 60deg --format csv
+expect_field 1 cone_flux_lm 600 1e-9 "spot --cone: 600 lm of 800 within 60 deg (S = 1)"
+expect_field 1 cone_fraction 0.75 1e-12 "spot --cone: fraction 3/4"
+run spot --flux 800lm --exponent 1 --cone 200deg --format csv
+expect_rc 2 "spot --cone beyond 180 deg is refused"
 # disk L=1000, R=0.5, h=1: 200 pi = 628.3185307 lx; point = 250 pi, error 0.25
 run disk --luminance 1000cd/m2 --radius 0.5m --distance 1m --format csv
 expect_out_match '^illuminance_lx,point_illuminance_lx,point_error' "disk csv header"
@@ -35,6 +41,28 @@ expect_field 1 illuminance_lx 628.3185307 1e-6 "disk on axis 628.3185 lx"
 expect_field 1 point_error 0.25 1e-12 "disk point error R^2/h^2"
 run disk --luminance 1000 --radius 0.5 --distance 5 --model exact --format csv
 expect_field 1 point_error 0.01 1e-12 "disk at 5 D: 1.000 %"
+# auto (the default) reports the closed form at any distance: at 5 D, 10 D (pi L R^2 / (h^2 + R^2))
+run disk --luminance 1000 --radius 0.5 --distance 5 --format csv
+expect_field 1 illuminance_lx 31.10487775831479 1e-9 "disk at 5 D: exact by default (250 pi / 25.25 lx)"
+expect_out_match '^[^,]*,[^,]*,[^,]*,[^,]*,exact,1,' "disk at 5 D: model exact, near_field 1"
+run disk --luminance 1000 --radius 0.5 --distance 10 --format csv
+expect_field 1 illuminance_lx 7.834395644862326 1e-9 "disk at 10 D: exact (250 pi / 100.25 lx)"
+expect_field 1 point_error 0.0025 1e-12 "disk at 10 D: point error 0.25 %"
+run disk --luminance 1000 --radius 0.5 --distance 10 --model point --format csv
+expect_field 1 illuminance_lx 7.853981633974483 1e-9 "--model point: the point model (250 pi / 100 lx)"
+expect_out_match '^[^,]*,[^,]*,[^,]*,[^,]*,point,' "--model point: model point"
+# the coplanar limit: pi L on the disk, pi L / 2 on the rim, 0 outside
+run disk --luminance 1000 --radius 0.5 --distance 0 --offset 0.2 --format csv
+expect_rc 0 "disk --distance 0 is the coplanar limit"
+expect_field 1 illuminance_lx 3141.5926535897932 1e-12 "on the disk: pi L"
+run disk --luminance 1000 --radius 0.5 --distance 0 --offset 0.5 --format csv
+expect_field 1 illuminance_lx 1570.7963267948966 1e-12 "on the rim: pi L / 2"
+run disk --luminance 1000 --radius 0.5 --distance 0 --offset 2 --format csv
+expect_field 1 illuminance_lx 0 0 "outside: 0"
+run rect --luminance 4 --width 1 --length 2 --distance 0 --at corner --format csv
+expect_field 1 illuminance_lx 3.14159265358979 1e-12 "rect corner, coplanar: pi L / 4"
+run disk --luminance 1000 --radius 0.5 --distance -1 --format csv
+expect_rc 2 "a negative distance is refused"
 # square at 5 side, centre: 1.33245778 % (60-digit decimal evaluation of Howell B-3)
 run rect --luminance 1 --width 1 --length 1 --distance 5 --at centre --format csv
 expect_field 1 point_error 0.0133245778057 1e-12 "square at 5 side: 1.3325 %"

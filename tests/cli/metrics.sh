@@ -60,3 +60,29 @@ expect_field 1 mesopic_m 1 0 "mesopic m = 1 in photopic range"
 
 run spd --help
 expect_out_match -- '--metrics LIST\|all' "help mentions --metrics"
+# equivalent-daylight columns are named by what they hold (CIE S 026): with radiance input they are
+# luminances; the EDI names still select them
+run spd --unit W/sr/m2/nm --metrics melanopic_edi_lx,cyanopic_edi --format csv "$S"
+hdr=$(printf '%s\n' "$out" | head -n 1)
+case "$hdr" in *",method,melanopic_edl_cd_m2,cyanopic_edl") ok "W/sr/m2/nm: melanopic_edl_cd_m2, cyanopic_edl" ;; *) notok "W/sr/m2/nm: edl names" "$hdr" ;; esac
+run spd --unit W/nm --metrics melanopic_edl_cd_m2 --format csv "$S"
+case "$(printf '%s\n' "$out" | head -n 1)" in *",method,melanopic_ed_flux_lm") ok "W/nm: melanopic_ed_flux_lm" ;; *) notok "W/nm: ed_flux name" "$out" ;; esac
+run spd --unit W/m2/nm --metrics melanopic_ed_intensity_cd --format csv "$S"
+case "$(printf '%s\n' "$out" | head -n 1)" in *",method,melanopic_edi_lx") ok "W/m2/nm: melanopic_edi_lx" ;; *) notok "W/m2/nm: edi name" "$out" ;; esac
+# a 1000 K blackbody summed at 5 nm solves to 999.99935 K (its sampling, not the solver): the range
+# end holds it (the ends as a blackbody at 1000 K shows them through the same sampling); Planck's
+# law in W/(sr m2 nm) at 5 nm from luxcalc blackbody, whose values test_colorimetry.c checks
+run blackbody --temperature 1000K --range 360:830:5
+printf '%s\n' "$out" > "$T/bb1000.csv"
+run spd --metrics cri_ra,tm30_rg --format csv "$T/bb1000.csv"
+expect_field 1 cct_K 1000 1e-3 "1000 K blackbody at 5 nm: cct_K 999.99935, not empty"
+expect_field 1 cri_ra 100 1e-4 "its Ra 100"
+# every empty metric says why: TM-30 Rg at 1000 K (empty hue bins), mesopic without luminance, CCT
+expect_err_match "tm30_rg .*empty: hue bins [0-9, ]+ hold none of the 99 colour evaluation samples" "an empty Rg says why"
+run spd --metrics mesopic --format csv "$S"
+expect_err_match "mesopic columns empty: they need luminance \(--unit W/sr/m2/nm" "empty mesopic columns say why"
+printf 'nm,green\n500,0\n520,1\n540,0\n' > "$T/green.csv"
+run spd --format csv "$T/green.csv"
+expect_err_match "cct_K and duv empty: Duv [0-9.]+ is beyond 0.05" "an empty CCT says why"
+run spd -q --format csv "$T/green.csv"
+if [ -z "$err" ]; then ok "-q silences the notes"; else notok "-q silences the notes" "$err"; fi

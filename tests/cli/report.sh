@@ -1,4 +1,5 @@
-# report.sh - `luxcalc spd --report DIR`: one PNG per spectrum (names sanitised), PNG signature and
+# report.sh - `luxcalc spd --report DIR`: one PNG per spectrum (names sanitised, repeated names kept
+# apart), PNG signature and
 # size, the refusal path (CRI undefined: still a report), --input-format f32 refused, atomic
 # failure on an unusable DIR; and the progress bar (nothing on a non-terminal stderr; a bar on a
 # pseudo-terminal through util-linux `script`, skipped when it is missing).
@@ -19,7 +20,7 @@ for s in A D65 FL2 FL11; do
   if [ -f "$f" ] && [ "$(png_sig "$f")" = 89504e470d0a1a0a ]; then ok "$s report is a PNG"; else notok "$s report is a PNG" "missing or bad signature"; fi
 done
 sz=$(png_size "$T/rep/cie_illuminants_FL2.png")
-if [ "$sz" = 1100x800 ]; then ok "report is 1100x800"; else notok "report is 1100x800" "$sz"; fi
+if [ "$sz" = 1200x880 ]; then ok "report is 1200x880"; else notok "report is 1200x880" "$sz"; fi
 bytes=$(wc -c < "$T/rep/cie_illuminants_FL2.png")
 if [ "$bytes" -gt 20000 ] && [ "$bytes" -lt 400000 ]; then ok "report size plausible"; else notok "report size plausible" "$bytes bytes"; fi
 if ls -a "$T/rep" | grep -q 'tmp'; then notok "no temporary files left" "$(ls -a "$T/rep")"; else ok "no temporary files left"; fi
@@ -31,6 +32,16 @@ run spd --report "$T/rep2" "$T/odd name.csv"
 expect_rc 0 "odd names exit 0"
 if [ -f "$T/rep2/odd_name_my_lamp_1.png" ] && [ "$(ls "$T/rep2" | wc -l)" -eq 2 ]; then ok "names sanitised"
 else notok "names sanitised" "$(ls "$T/rep2")"; fi
+
+# names that repeat (two columns "lamp", and "a b" / "a_b" which reduce to one name): one file each
+printf 'wavelength_nm,lamp,lamp,a b,a_b\n' > "$T/same.csv"
+for l in $(seq 380 5 780); do printf '%s,1,2,%s,1\n' "$l" "$((l % 7 + 1))" >> "$T/same.csv"; done
+run spd --report "$T/rep6" --diagram uv "$T/same.csv"
+expect_rc 0 "repeated names exit 0"
+if [ "$(ls "$T/rep6" | tr '\n' ' ')" = "same_a_b.png same_a_b_2.png same_lamp.png same_lamp_2.png " ]; then ok "one file per spectrum when names repeat"
+else notok "one file per spectrum when names repeat" "$(ls "$T/rep6")"; fi
+run spd --report "$T/rep6" --diagram lab "$T/same.csv"
+expect_rc 1 "--diagram takes xy or uv"
 
 # CRI undefined (a 532 nm laser, Duv far beyond 0.05): the report is written, with the reason
 run spd --report "$T/rep3" samples/spd/laser_532nm.csv

@@ -22,10 +22,13 @@ fi
 run scene samples/scenes/office.scene --explain
 expect_rc 0 "office explain"
 expect_out_match '^  goniometric +on' "office: goniometric on"
-expect_out_match '^  near_field +on .*closer than 5x' "office: near field for close pairs"
+expect_out_match '^  near_field +on .*integrated \(point-model error estimated over 1e-05' "office: near field where the point model misses 1e-5"
 expect_out_match 'dl1 -> desk: [0-9]+ of 117 points near field' "office: costly pairs listed"
+expect_out_match '^  dl1 +desk +1 +0.5 +0.5 +0.75 +[0-9.e-]+ +area: estimated error over tolerance' "office: each pair's estimate and decision"
 run scene samples/scenes/street.scene --explain --format json
-expect_out_match '"near_field": false' "street: all pairs far"
+expect_out_match '"near_field": true' "street: some pairs near"
+expect_out_match '"path": "point", "why": "point: estimated error within tolerance"' "street: far pairs keep the point model"
+expect_out_match '"path": "area", "why": "area: ' "street: near pairs integrated"
 # errors: file and line, exit 2; usage errors exit 1
 run scene tests/data/scenes/bad_key.scene
 expect_rc 2 "unknown key is an input error"
@@ -41,3 +44,15 @@ run scene samples/scenes/office.scene --format csv -o "$T/office.csv" --png "$T"
 expect_rc 0 "-o and --png"
 if [ "$(wc -l < "$T/office.csv")" -eq 119 ]; then ok "-o: header + 118 points"; else notok "-o: header + 118 points" "$(wc -l < "$T/office.csv") lines"; fi
 if head -c 8 "$T/office_desk.png" | od -An -c | grep -q 'P   N   G'; then ok "--png wrote a PNG"; else notok "--png wrote a PNG" "no $T/office_desk.png"; fi
+
+# --contributions in the table format: each luminaire's mean over the receiver; no sky column
+# without a sky, one with it
+run scene tests/data/scenes/point.scene --contributions
+expect_rc 0 "--contributions in the table format"
+expect_out_match '^E_lamp_avg_lx +100\.0 lx$' "the lamp's part: 400 cd / (2 m)^2 = 100 lx"
+expect_out_match '^uniformity_min_max +1\.000$' "E_min / E_max in the scene summary"
+if printf '%s\n' "$out" | grep -q 'E_sky'; then notok "no sky column without a sky" "$out"; else ok "no sky column without a sky"; fi
+run scene tests/data/scenes/point.scene --contributions --format csv
+expect_out_match '^receiver,x,y,z,illuminance_lx,luminance_cd_m2,E_lamp_lx$' "csv contributions without a sky column"
+run scene samples/scenes/facade.scene --contributions --format csv
+expect_out_match ',E_sky_lx$' "a scene with a sky has the sky column"

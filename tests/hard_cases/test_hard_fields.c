@@ -189,7 +189,7 @@ static void nan_in_maps_and_ies(void **state)
     for (int k = 0; k < 128; k++) m->data[k] = 1.0f;
     m->data[37] = NAN;
     double up[3] = {0, 0, 1}, E = 42;
-    for (int meth = 0; meth < 3; meth++) {
+    for (int meth = LX_IRR_AUTO; meth <= LX_IRR_BRUTE; meth++) {
         lx_irr_opts o = {.method = (lx_irr_method)meth, .backend = LX_BACKEND_CPU};
         lx_status st = lx_irradiance_dirs(ctx, m, 1, up, &o, &E);
         assert_int_not_equal(st, LX_OK);

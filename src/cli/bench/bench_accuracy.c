@@ -332,8 +332,8 @@ int acc_spectra(lx_ctx *ctx, FILE *o, const char *png)
                                     "cie15 10 nm", "cie15 20 nm", "pbrt-v3 60 bins (5 nm)", "pbrt 30 bins (10 nm)",
                                     "batch CPU double", "batch CPU float", "batch OpenCL double", "batch OpenCL float",
                                     "batch OpenCL float, Kahan float sums", "RGB (3 coefficients)"};
-    static const char *mlabel[NM] = {"EXACT", "LINEAR1NM", "CIE15 1", "CIE15 5", "CIE15 10", "CIE15 20", "PBRT 60",
-                                     "PBRT 30", "CPU F64", "CPU F32", "CL F64", "CL F32", "CL KAHAN", "RGB"};
+    static const char *mlabel[NM] = {"exact", "linear1nm", "cie15 1 nm", "cie15 5 nm", "cie15 10 nm", "cie15 20 nm", "pbrt 60 bins",
+                                     "pbrt 30 bins", "batch CPU f64", "batch CPU f32", "batch CL f64", "batch CL f32", "CL f32 Kahan", "RGB"};
     double err[NM][NCASE][3], tm[NM][NCASE], vs_cpu[NM][NCASE];
     for (int m = 0; m < NM; m++)
         for (int c = 0; c < NCASE; c++) {
@@ -580,9 +580,9 @@ int acc_spectra(lx_ctx *ctx, FILE *o, const char *png)
                 if (!nt) continue;
                 pts[np++] = (lx_plot_point){acc_median(ts, nt), w, mlabel[m], g};
             }
-        static const char *series[2] = {"D65 FL2 HP1 1000K", "LASER, NA DOUBLET"};
-        if (lx_png_error_time(ctx, png, "SPECTRA: WORST RELATIVE ERROR IN Y", "TIME PER SPECTRUM (S), MEDIAN",
-                              "REL. ERROR IN Y", (size_t)np, pts, 2, series))
+        static const char *series[2] = {"D65, FL2, HP1, 1000 K", "laser, Na doublet"};
+        if (lx_error_time_write_png(ctx, png, "Spectra: worst relative error in Y", "time per spectrum (s), median",
+                              "|\u0394Y| / Y", (size_t)np, pts, 2, series))
             return cli_fail("bench", ctx, LX_EIO);
         fprintf(o, "Plot: worst |dY|/Y over D65, FL2, HP1 and the blackbody, and over the two line spectra, against the "
                    "median time per spectrum.\n\n");

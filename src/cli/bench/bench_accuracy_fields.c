@@ -81,8 +81,8 @@ int acc_radiance(lx_ctx *ctx, FILE *o, const char *png)
                                        "brute force, 1/8 res.", "brute force, 1/16 res.", "brute force, 1/32 res.",
                                        "exact fast path (row prefix sums)", "brute force, full res. (CPU, the reference)",
                                        "brute force, full res. (OpenCL)"};
-    static const char *labels[NMETH] = {"SH9", "SH9 WIN", "BRUTE 1/2", "BRUTE 1/4", "BRUTE 1/8", "BRUTE 1/16",
-                                        "BRUTE 1/32", "FAST", "BRUTE", "BRUTE CL"};
+    static const char *labels[NMETH] = {"SH9", "SH9 windowed", "brute 1/2", "brute 1/4", "brute 1/8", "brute 1/16",
+                                        "brute 1/32", "fast", "brute", "brute CL"};
     double emax[2][NMETH], erms[2][NMETH], tt[2][NMETH];
     fprintf(o, "## bench accuracy: radiance fields\n\n");
     fprintf(o, "Irradiance E(n) for %zu normals (a %dx%d lat-long set of directions) from a %dx%d one-channel map: a smooth "
@@ -141,8 +141,9 @@ int acc_radiance(lx_ctx *ctx, FILE *o, const char *png)
         for (int s = 0; s < 2; s++)
             for (int m = 0; m < NMETH; m++)
                 if (!isnan(tt[s][m]) && m != 8) pts[np++] = (lx_plot_point){tt[s][m], emax[s][m], labels[m], s};
-        static const char *series[2] = {"SMOOTH SKY", "SKY WITH SUN"};
-        if (lx_png_error_time(ctx, png, "RADIANCE: MAX |DE|/E VS BRUTE FULL RES.", "TIME FOR 1152 NORMALS (S)", "MAX |DE|/E",
+        static const char *series[2] = {"smooth sky", "sky with sun"};
+        if (lx_error_time_write_png(ctx, png, "Radiance: max |\u0394E| / E against brute force at full resolution",
+                                    "time for 1152 normals (s)", "max |\u0394E| / E",
                               (size_t)np, pts, 2, series))
             return cli_fail("bench", ctx, LX_EIO);
     }
@@ -212,7 +213,7 @@ int acc_lighting(lx_ctx *ctx, FILE *o, const char *png)
         acc_fmt_time(b, sizeof b, tp);
         fprintf(o, "| %s | %+.3e | %+.3e | %s | %s |\n", rl[k], dj.r.point_error, rj.r.point_error, a, b);
         char *lab = malloc(24);
-        snprintf(lab, 24, "D/SIZE %s", rl[k]);
+        snprintf(lab, 24, "d/size %s", rl[k]);
         pts[np++] = (lx_plot_point){tp, fabs(dj.r.point_error), lab, 0};
     }
     fprintf(o, "\n");
@@ -263,8 +264,8 @@ int acc_lighting(lx_ctx *ctx, FILE *o, const char *png)
         acc_fmt_err(a, sizeof a, mx);
         acc_fmt_time(b, sizeof b, t);
         char *lab = malloc(24);
-        if (k) snprintf(lab, 24, "%dX%d CELLS", k, k);
-        else snprintf(lab, 24, "AUTO");
+        if (k) snprintf(lab, 24, "%d\u00d7%d cells", k, k);
+        else snprintf(lab, 24, "auto");
         char row[32];
         if (k) snprintf(row, sizeof row, "%d x %d", k, k);
         fprintf(o, "| %s | %s | %s |\n", k ? row : "auto (library)", a, b);
@@ -296,7 +297,7 @@ int acc_lighting(lx_ctx *ctx, FILE *o, const char *png)
             S, F, 2 * acos(pow(0.5, 1 / S)) * 180 / PI, H, NG, NG);
     fprintf(o, "| interpolation | table step | max \\|dE\\|/E_max | time per point |\n|---|---|---|---|\n");
     static const char *in[5] = {"bilinear", "smooth (PCHIP)", "table (CPU)", "table (OpenCL, double)", "table (OpenCL, float)"};
-    static const char *il[5] = {"BILINEAR", "SMOOTH", "TABLE", "TABLE CL", "TABLE CL F32"};
+    static const char *il[5] = {"bilinear", "smooth", "table", "table CL", "table CL f32"};
     static const double steps[2] = {5, 1};
     for (int s = 0; s < 2; s++) {
         lx_lum_model mdl = {.kind = LX_LUM_MODEL_WARN, .flux_lm = F, .exponent = S, .step_deg = steps[s]};
@@ -319,7 +320,7 @@ int acc_lighting(lx_ctx *ctx, FILE *o, const char *png)
             acc_fmt_time(c, sizeof c, t);
             fprintf(o, "| %s | %.0f deg | %s | %s |\n", in[v], steps[s], a, c);
             char *lab = malloc(24);
-            snprintf(lab, 24, "%s %.0f", il[v], steps[s]);
+            snprintf(lab, 24, "%s %.0f\u00b0", il[v], steps[s]);
             pts[np++] = (lx_plot_point){t, mx, lab, 2};
         }
         lx_luminaire_free(lum);
@@ -330,8 +331,8 @@ int acc_lighting(lx_ctx *ctx, FILE *o, const char *png)
     free(Et);
     int rc = CLI_OK;
     if (png) {
-        static const char *series[3] = {"POINT MODEL (DISK)", "NEAR-FIELD CELLS", "IES INTERPOLATION"};
-        if (lx_png_error_time(ctx, png, "LIGHTING: ERROR AGAINST TIME", "TIME PER EVALUATION (S)", "RELATIVE ERROR",
+        static const char *series[3] = {"point model (disk)", "near-field cells", "IES interpolation"};
+        if (lx_error_time_write_png(ctx, png, "Lighting: error against time", "time per evaluation (s)", "relative error",
                               (size_t)np, pts, 3, series))
             rc = cli_fail("bench", ctx, LX_EIO);
     }

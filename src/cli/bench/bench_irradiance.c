@@ -129,7 +129,7 @@ int cli_bench_irradiance(FILE *out)
         }
         qsort(t, 5, sizeof *t, cmp_d);
         tread = t[2];
-        lx_irr_opts o = {0};
+        lx_irr_opts o = {.method = LX_IRR_SH9};
         for (int k = 0; k < 5; k++) {
             double t0 = now_s();
             lx_irradiance_map(ctx, r, 0, 0, &o, &e);
