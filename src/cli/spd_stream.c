@@ -149,7 +149,9 @@ static lx_status part_rows(bstream *S, lx_ctx *ctx, lx_backend backend, const lx
     lx_status st = lx_batch_colorimetry(ctx, b, S->B->observer, &opts, o->res);
     o->nbad = o->why_len = 0;
     for (size_t i = 0; st == LX_OK && i < b->n_spectra; i++) {
-        if (lx_colorimetry_check(ctx, &o->res[i], cli_spd_row_max_abs(b, i)) == LX_OK) {
+        /* the row's largest value only names the overflow in the message: looked for when it fails */
+        if (lx_colorimetry_check(ctx, &o->res[i], NAN) == LX_OK ||
+            lx_colorimetry_check(ctx, &o->res[i], cli_spd_row_max_abs(b, i)) == LX_OK) {
             if (o->nbad) o->bad[i] = 0;
             continue;
         }
