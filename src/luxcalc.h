@@ -8,7 +8,8 @@
  * Errors: every call that can fail returns an lx_status; the library never prints and never exits.
  * - A NULL context is LX_EINVAL, and nothing is read or written (there is nowhere to put a message).
  *   The functions that accept a NULL context say so: lx_ctx_destroy, the lx_ctx_* getters (they
- *   return "", NULL, 0 or LX_BACKEND_AUTO), lx_ctx_set_log and lx_ctx_counters_reset (no-ops).
+ *   return "", NULL, 0, LX_BACKEND_AUTO or the default input limit), lx_ctx_set_log and
+ *   lx_ctx_counters_reset (no-ops).
  * - LX_EINVAL for a NULL pointer the call needs or an argument outside its documented range;
  *   LX_ENOMEM when memory runs out. Codes beyond these are listed at each function ("Errors:").
  * - After a failure lx_ctx_errmsg(ctx) holds the detail (file and line where they apply); outputs
@@ -42,18 +43,19 @@
  *   exported is removed, renamed, or given another signature or meaning;
  * - structs the caller allocates are of three kinds.
  *   Options (lx_batch_opts, lx_grid_opts, lx_irr_opts, lx_exr_write_opts, lx_scene_eval_opts,
- *   lx_lum_model) are only read: zero-initialise them (zero is every field's default) and leave
+ *   lx_lum_model, lx_sky_map_opts, lx_perez_input, lx_sun_input) are only read: zero-initialise them (zero is every field's default) and leave
  *   `reserved` zero, which the library checks (LX_EINVAL otherwise); a later option takes reserved
  *   space, its zero meaning the earlier behaviour.
  *   Results (lx_colorimetry, lx_cri, lx_tm30, lx_alphaopic, lx_source_result, lx_lum_summary,
- *   lx_grid_stats, lx_cl_device_info, lx_counters) are written whole by the library, `reserved`
- *   set to zero; a later result takes reserved space.
+ *   lx_grid_stats, lx_cl_device_info, lx_counters, lx_sky, lx_sun_position, lx_ugr_table) are
+ *   written whole by the library, `reserved` set to zero; a later result takes reserved space.
  *   Views and values (lx_spd, lx_batch, lx_placement, lx_plane, lx_plot_point, lx_unit, lx_sh9)
  *   never change within a soname: a new need gets a new type.
  * - structs only the library allocates (lx_spd_set, lx_batch_table, lx_luminaire, lx_envmap,
- *   lx_xyz_image, lx_scene, lx_scene_plan, lx_scene_result) grow by fields appended at their end:
- *   read their fields, but never allocate, copy or take the size of one. The structs of their arrays
- *   (lx_scene_luminaire, lx_scene_receiver) carry reserved space, as results do.
+ *   lx_xyz_image, lx_scene, lx_scene_plan, lx_scene_result, lx_scene_glare) grow by fields appended
+ *   at their end: read their fields, but never allocate, copy or take the size of one. The structs
+ *   of their arrays (lx_scene_luminaire, lx_scene_receiver, lx_scene_observer, lx_glare_term) carry
+ *   reserved space, as results do.
  * - LX_EFFECT_COUNT sizes arrays inside lx_scene and lx_scene_plan: a new effect changes their
  *   layout and so needs a new soname; LX_FN_COUNT and LX_Q_COUNT size nothing public and may grow.
  * An incompatible change needs a new MAJOR version, whose soname follows it (1.0: libluxcalc.so.1).
@@ -1455,6 +1457,7 @@ typedef struct lx_ugr_table {
     double lamp_flux_lm;           /* the flux the table is for */
     double spacing_h;              /* 0.25 */
     double lb_cd_m2[19][5];        /* the background luminance per room and reflectance combination */
+    long long reserved[4];         /* zero: room for later results (ABI policy) */
 } lx_ugr_table;
 LX_API lx_status lx_ugr_table_compute(lx_ctx *ctx, const lx_luminaire *lum, lx_ugr_table *out);
 
@@ -1709,7 +1712,8 @@ typedef enum lx_sky_model {
 /** A sky luminance distribution L(dir) = zenith_cd_m2 * rel(dir) / rel(zenith), zero below the
  * horizon. rel = (1 + a exp(b / cos Z)) * indicatrix(chi): CIE 1 + c (exp(d chi) - exp(d pi/2))
  * + e cos^2 chi; Perez 1 + c exp(d chi) + e cos^2 chi (Z zenith angle of the element, chi its
- * angle from the sun). Plain data: copy freely; evaluating it is thread-safe. */
+ * angle from the sun). Plain data: copy freely; evaluating it is thread-safe. A result (ABI policy:
+ * reserved is written as zero; lx_scene embeds one). */
 typedef struct lx_sky {
     lx_sky_model model;
     int cie_type;               /* 1..15 (CIE), 0 for Perez */
@@ -1722,6 +1726,7 @@ typedef struct lx_sky {
     int perez_bin;              /* Perez: clearness bin 1..8 (0 for CIE) */
     double sun_normal_lx;       /* Perez: the direct normal illuminance Evn from the efficacy model (lx);
                                  * CIE: NaN (the sun's illuminance is given separately) */
+    long long reserved[4];      /* zero: room for later fields */
 } lx_sky;
 
 /** How a CIE sky is scaled: by its zenith luminance (cd/m2) or by its diffuse horizontal
@@ -1738,13 +1743,15 @@ LX_API lx_status lx_sky_cie(lx_ctx *ctx, int type, const double sun_dir[3], lx_s
 /** The parameters (a, b, c, d, e) of CIE type 1..15 from the embedded table (src/data). */
 LX_API lx_status lx_sky_cie_params(lx_ctx *ctx, int type, double params[5]);
 
-/** Inputs of the Perez sky: the sun and the measured irradiance, as gendaylit -W takes them. */
+/** Inputs of the Perez sky: the sun and the measured irradiance, as gendaylit -W takes them (options:
+ * zero-initialise, reserved stays zero). */
 typedef struct lx_perez_input {
     double sun_dir[3];           /* towards the sun, above the horizon */
     double direct_normal_W_m2;   /* DNI, >= 0 */
     double diffuse_horizontal_W_m2; /* DHI, > 0 */
     int day_of_year;             /* 1..366 (the extraterrestrial irradiance's eccentricity factor) */
     double precipitable_water_cm;/* atmospheric precipitable water for the efficacy models (0: 2 cm, gendaylit's default) */
+    long long reserved[4];       /* zero: room for later inputs */
 } lx_perez_input;
 
 /** The Perez all-weather sky for the given irradiance: sky clearness epsilon and brightness Delta
@@ -1766,7 +1773,8 @@ LX_API double lx_sky_luminance(const lx_sky *sky, const double dir[3]);
  * 48: 1e-8 relative or better on the CIE skies). Thread-safe. */
 LX_API lx_status lx_sky_illuminance(lx_ctx *ctx, const lx_sky *sky, const double n[3], int nodes, double *E_lx);
 
-/** Inputs of the solar position algorithm (NREL SPA, Reda & Andreas 2004). */
+/** Inputs of the solar position algorithm (NREL SPA, Reda & Andreas 2004; options: zero-initialise,
+ * reserved stays zero). */
 typedef struct lx_sun_input {
     int year, month, day, hour, minute; /* local standard time; year -2000..6000 */
     double second;
@@ -1779,9 +1787,11 @@ typedef struct lx_sun_input {
     double pressure_mbar;     /* annual mean local pressure (for refraction; 1013.25 at sea level) */
     double temperature_C;     /* annual mean local temperature */
     double refraction_deg;    /* atmospheric refraction at sunrise and sunset (0.5667 usually) */
+    long long reserved[4];    /* zero: room for later inputs */
 } lx_sun_input;
 
-/** The sun's position and the intermediate SPA values the algorithm's published test prints. */
+/** The sun's position and the intermediate SPA values the algorithm's published test prints. A result
+ * (reserved written as zero; lx_scene embeds one). */
 typedef struct lx_sun_position {
     double julian_day;
     double L_deg, B_deg, R_au;     /* Earth heliocentric longitude, latitude, radius vector */
@@ -1791,6 +1801,7 @@ typedef struct lx_sun_position {
     double zenith_deg;             /* topocentric zenith angle, refraction applied */
     double azimuth_deg;            /* from north towards east, 0..360 */
     double dir[3];                 /* unit vector towards the sun (x east, y north, z up) */
+    long long reserved[4];         /* zero: room for later results */
 } lx_sun_position;
 
 /** NREL SPA (Reda & Andreas 2004, NREL/TP-560-34302): the sun's topocentric zenith and azimuth,
@@ -1805,12 +1816,13 @@ LX_API void lx_sun_direction(double altitude_rad, double azimuth_rad, double dir
 /** Half the angle the solar disc subtends: 0.2665 deg (Radiance gendaylit), in radians. */
 #define LX_SUN_HALF_ANGLE_RAD (0.2665 * 3.14159265358979323846 / 180.0)
 
-/** Options of lx_sky_map (zero-initialise for defaults). */
+/** Options of lx_sky_map (zero-initialise for defaults; reserved stays zero). */
 typedef struct lx_sky_map_opts {
     int width, height;           /* lat-long size (0: 1024 x 512) */
     double sun_normal_lx;        /* direct normal illuminance of the sun disc (0: no sun) */
     double ground_reflectance;   /* below the horizon: uniform rho (Dv + Evn sin(altitude)) / pi (0: black) */
     int supersample;             /* sky samples per pixel and axis, Gauss-Legendre in cos(theta) and phi (0: 4) */
+    long long reserved[4];       /* zero: room for later options */
 } lx_sky_map_opts;
 
 /** Renders a sky (and the sun disc) as a one-channel (Y) lat-long map in the convention of
@@ -1883,6 +1895,12 @@ typedef struct lx_counters {
     unsigned long long nearfield_probes;       /* pairs whose point-model error was estimated (13 point
                                                 * evaluations each: the near-field decision) */
     unsigned long long closed_form_evaluations;/* disk and rectangle luminaires evaluated in closed form */
+    /* rooms: occlusion and interreflection (README "Rooms") */
+    unsigned long long visibility_tests;       /* segments tested against surfaces and obstructions (ray casts) */
+    unsigned long long form_factors;           /* point-to-polygon form factors (patch matrix and gathers) */
+    unsigned long long radiosity_patches;      /* patches of the interreflection solves */
+    unsigned long long radiosity_shots;        /* patch shots of the progressive refinement */
+    unsigned long long gather_points;          /* receiver points and element centres gathered */
     unsigned long long reserved[2];            /* zero: room for later counters (ABI policy) */
 } lx_counters;
 
@@ -1901,11 +1919,14 @@ typedef enum lx_effect {
     LX_EFFECT_SPECTRAL,           /* spectral sums: CCT and melanopic EDI at receivers */
     LX_EFFECT_ENVIRONMENT,        /* sky and ground irradiance */
     LX_EFFECT_OPENCL,             /* grid work on an OpenCL device */
+    LX_EFFECT_OCCLUSION,          /* surfaces and obstructions that cut luminaire-receiver segments */
+    LX_EFFECT_INTERREFLECTION,    /* diffuse interreflection between the faces of rooms, surfaces, obstructions */
     LX_EFFECT_COUNT
 } lx_effect;
 
 /** "inverse_square", "cosine", "spot_falloff", "goniometric", "near_field", "spectral",
- * "environment", "opencl" (static storage; NULL for a bad value). Thread-safe. */
+ * "environment", "opencl", "occlusion", "interreflection" (static storage; NULL for a bad value).
+ * Thread-safe. */
 LX_API const char *lx_effect_name(lx_effect e);
 
 /** Luminaire kinds of a scene. */
@@ -1983,11 +2004,50 @@ typedef struct lx_scene_observer {
     double view[3];           /* unit line of sight */
     double up[3];             /* unit, orthogonal to view: the vertical of the visual field (from +z) */
     double background_cd_m2;  /* Lb given in the scene (NaN: none) */
+    long long reserved[4];    /* zero: room for later fields (an element of lx_scene.obs) */
 } lx_scene_observer;
 
 /** Forced state of an effect in [effects]. */
 typedef enum lx_effect_force { LX_FORCE_AUTO = 0, LX_FORCE_ON = 1, LX_FORCE_OFF = 2 } lx_effect_force;
 
+/** The faces of a room, in this order (the index of lx_scene_room.reflectance; `--surfaces` rows). */
+typedef enum lx_room_face {
+    LX_ROOM_FLOOR = 0, LX_ROOM_CEILING, LX_ROOM_WALL_XMIN, LX_ROOM_WALL_XMAX, LX_ROOM_WALL_YMIN, LX_ROOM_WALL_YMAX
+} lx_room_face;
+
+/** A room: an axis-aligned box whose six faces reflect diffusely on their inside. The luminaires
+ * and receivers inside it see its inside only (no light passes its walls). */
+typedef struct lx_scene_room {
+    char *name;
+    const char *file;         /* the scene file and line of its section header */
+    long line;
+    double min_m[3], max_m[3];
+    double reflectance[6];    /* per lx_room_face, 0 <= rho < 1 */
+    long long reserved[4];    /* zero: room for later fields (an element of lx_scene.room: ABI policy) */
+} lx_scene_room;
+
+/** A surface: the planar parallelogram corner + s edge1 + t edge2 (0 <= s, t <= 1), Lambertian on
+ * both sides with one reflectance; it blocks light. Its front is the side edge1 x edge2 points to. */
+typedef struct lx_scene_surface {
+    char *name;
+    const char *file;
+    long line;
+    double corner_m[3], edge1_m[3], edge2_m[3];
+    double reflectance;       /* 0 <= rho < 1 */
+    long long reserved[4];    /* zero: room for later fields */
+} lx_scene_surface;
+
+/** An obstruction: an axis-aligned box that blocks light; its six faces reflect diffusely. */
+typedef struct lx_scene_obstruction {
+    char *name;
+    const char *file;
+    long line;
+    double min_m[3], max_m[3];
+    double reflectance;       /* 0 <= rho < 1 */
+    long long reserved[4];    /* zero: room for later fields */
+} lx_scene_obstruction;
+
+/** A scene read from a file. Owns everything it points to. Read-only after reading. */
 /** A scene read from a file. Owns everything it points to. Read-only after reading; freed with
  * lx_scene_free (a struct only the library allocates: ABI policy). */
 typedef struct lx_scene {
@@ -2030,6 +2090,17 @@ typedef struct lx_scene {
     long sun_line;
     size_t n_obs;                         /* [observer NAME] sections */
     lx_scene_observer *obs;
+    /* rooms, surfaces and obstructions (README "Rooms") */
+    size_t n_room, n_surf, n_obst;
+    lx_scene_room *room;
+    lx_scene_surface *surf;
+    lx_scene_obstruction *obst;
+    double interreflection_tol;           /* [scene] interreflection_tolerance: relative, on every receiver's
+                                           * total illuminance (default 1e-3) */
+    double patch_size_m;                  /* [scene] patch_size: the radiosity patch size (0: the planner chooses) */
+    int patch_refinement;                 /* [scene] patch_refinement: 1 (default) splits patches near luminaires,
+                                           * shadow edges and receivers; 0 keeps them uniform */
+    long interreflection_tol_line, patch_size_line; /* their lines (0 when not given) */
 } lx_scene;
 
 /** Reads a scene file ('-' is standard input); includes are resolved relative to the including
@@ -2044,6 +2115,30 @@ LX_API lx_status lx_scene_read_mem(lx_ctx *ctx, const char *name, const char *te
 /** Frees a scene. Accepts NULL. */
 LX_API void lx_scene_free(lx_scene *scene);
 
+/** The planner's interreflection choices (all zero when interreflection is off). */
+typedef struct lx_scene_room_plan {
+    double flux_lm;            /* luminaire flux the reflecting faces can receive (in rooms, or in the open
+                                * with reflecting surfaces) */
+    double area_m2;            /* S: the exposed reflecting area */
+    double mean_reflectance;   /* the area-weighted reflectance rho */
+    double indirect_est_lx;    /* the integrating-sphere estimate rho Phi / (S (1 - rho)) */
+    double share_est;          /* the largest estimated indirect share of a receiver point's total */
+    double tolerance;          /* interreflection_tolerance */
+    double patch_size_m;       /* chosen (or given by patch_size) */
+    size_t n_patches;          /* the solve's patches */
+    size_t n_elements;         /* the gather's elements: the patches, split where the light varies fast or a
+                                * receiver is close (the final gather resolves them) */
+    size_t n_refined;          /* splits the refinement made (near luminaires, shadow edges, receivers) */
+    size_t n_nodes;            /* direct-light quadrature nodes over all elements */
+    double stop_unshot_lm;     /* the solve iterates until the unshot flux is below this */
+    double memory_bytes;       /* what the solve allocates (the form-factor matrix dominates) */
+    double memory_limit_bytes; /* the bound (1 GiB; LX_ROOM_MEMORY_MB overrides) */
+    int backend;               /* lx_backend for the form factors and gathers (AUTO: the size decides) */
+    void *mesh;                /* the patches, faces and occluders (internal; owned) */
+    long long reserved[4];     /* zero: room for later fields (embedded in lx_scene_plan: ABI policy) */
+} lx_scene_room_plan;
+
+/** The planner's decision. */
 /** Why a luminaire-receiver pair takes its path (lx_scene_plan.near_why). */
 typedef enum lx_near_why {
     LX_NEAR_NONE = 0,    /* point model: the luminaire has no luminous area */
@@ -2085,6 +2180,12 @@ typedef struct lx_scene_plan {
                                        * the point's illuminance (NaN where it was not estimated); owned */
     unsigned char *near_why;          /* n_lum x n_points: an lx_near_why; owned */
     lx_counters planning;             /* the work the planner did itself (the near-field probes) */
+    /* occlusion and interreflection (README "Rooms") */
+    unsigned char *occ;               /* n_lum x n_points (luminaire-major): 0 no surface or obstruction can cut
+                                       * the pair (bounding-volume test), 1 visibility-tested, 2 blocked (the pair
+                                       * is in different rooms); owned; NULL when occlusion is off */
+    size_t n_occ_tested, n_occ_blocked;
+    lx_scene_room_plan room;
 } lx_scene_plan;
 
 /** Plans a scene: which effects, and which pairs take the near-field path. backend: AUTO lets
@@ -2097,18 +2198,55 @@ typedef struct lx_scene_plan {
 LX_API lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *scene, lx_backend backend, lx_scene_plan **out);
 LX_API void lx_scene_plan_free(lx_scene_plan *plan);
 
+/** One face's results (`luxcalc scene --surfaces`): area-weighted averages over its exposed area
+ * (the flux it receives divided by its area). */
+typedef struct lx_scene_surface_result {
+    char *name;                 /* ROOM.floor, ROOM.ceiling, ROOM.wall_xmin ... ROOM.wall_ymax,
+                                 * SURFACE.front, SURFACE.back, OBSTRUCTION.bottom, .top, .xmin ... .ymax */
+    double area_m2;             /* exposed area (less what an obstruction standing on it covers) */
+    double direct_lx, indirect_lx, E_lx;
+    double L_cd_m2;             /* rho E / pi */
+    double reflectance;
+    long long reserved[4];      /* zero: room for later results (an element of lx_scene_result.surfaces) */
+} lx_scene_surface_result;
+
+/** What the interreflection solve did. */
+typedef struct lx_scene_room_stats {
+    size_t n_patches;
+    unsigned long long sweeps;  /* progressive-refinement sweeps over the patches */
+    unsigned long long shots;   /* patch shots */
+    double direct_lm;           /* flux the faces received directly from the sources */
+    double indirect_lm;         /* flux they received after one or more reflections */
+    double absorbed_lm;         /* (1 - rho) x received, over every face */
+    double escaped_lm;          /* reflected flux that reached no face (open scenes) */
+    double unshot_lm;           /* reflected flux not yet distributed when the solve stopped */
+    double indirect_share;      /* measured: sum of indirect / sum of total over the receiver points */
+    double gather_check;        /* rms relative difference between each patch's indirect illuminance in the
+                                 * solve and the exact-form-factor gather at its centre (discretisation) */
+    int backend;                /* lx_backend the form factors and gathers ran on */
+    double seconds_ff, seconds_solve, seconds_gather;
+    long long reserved[4];      /* zero: room for later results (embedded in lx_scene_result) */
+} lx_scene_room_stats;
+
+/** Results at every receiver point (receiver order, then point order). */
 /** Results at every receiver point (receiver order, then point order); made by lx_scene_eval,
  * freed with lx_scene_result_free (a struct only the library allocates). */
 typedef struct lx_scene_result {
     size_t n_points, n_lum;
     size_t *first;              /* n_rec + 1: receiver r has points first[r] .. first[r+1]-1 */
     double *E_lx;               /* n_points: total illuminance */
-    double *contrib_lx;         /* n_points x (n_lum + 1): each luminaire's part, last the sky's */
+    double *contrib_lx;         /* n_points x (n_lum + 1): each luminaire's part, last the sky's (direct
+                                 * light: with interreflection on, the reflected part is indirect_lx) */
     double *L_cd_m2;            /* n_points: rho E / pi (NaN without a reflectance or not asked) */
     double *cct_K, *duv;        /* n_points (NaN when spectral is off or CCT undefined) */
     double *melanopic_edi_lx;   /* n_points (NaN when spectral is off) */
     lx_counters work;           /* the work this evaluation did */
     double seconds;             /* wall-clock time of the evaluation */
+    /* interreflection (NULL and zero when it is off): E_lx = direct_lx + indirect_lx */
+    double *direct_lx, *indirect_lx;   /* n_points */
+    size_t n_surfaces;                 /* room faces, surface sides, obstruction faces */
+    lx_scene_surface_result *surfaces;
+    lx_scene_room_stats room;
 } lx_scene_result;
 
 /** Options of lx_scene_eval (zero-initialise for defaults: everything; ABI policy: reserved stays
@@ -2135,9 +2273,11 @@ typedef struct lx_glare_term {
     double position_index;      /* Guth p (lx_guth_position_index) */
     double sigma_deg, tau_deg;  /* the source's angle from the line of sight, and about it from the vertical */
     double term;                /* L^2 omega / p^2 */
+    long long reserved[4];      /* zero: room for later fields (an element of lx_scene_glare.terms) */
 } lx_glare_term;
 
-/** The glare of a scene at its observers. */
+/** The glare of a scene at its observers; made by lx_scene_glare_eval, freed with lx_scene_glare_free
+ * (a struct only the library allocates). */
 typedef struct lx_scene_glare {
     size_t n_obs, n_lum;
     double *ugr;                /* n_obs: UGR (NaN when no luminaire counts) */

@@ -1029,6 +1029,27 @@ static void nonzero_reserved_options_refused(void **state)
     p = out_path("reserved_r.png");
     EXPECT_EINVAL(lx_spd_report_write_png(ctx, &D65, &ro, p));
     assert_absent(p);
+
+    /* daylight: the sky map's options and the Perez and SPA inputs */
+    const double sun[3] = {0, 0.5, 0.8};
+    lx_sky sky;
+    lx_assert_ok(ctx, lx_sky_cie(ctx, 12, sun, LX_SKY_BY_ZENITH, 5000, &sky));
+    lx_sky_map_opts mo = {.width = 16, .height = 8};
+    mo.reserved[3] = 1;
+    m = PSENT;
+    EXPECT_EINVAL(lx_sky_map(ctx, &sky, &mo, &m));
+    assert_null(m);
+    lx_perez_input pi = {.sun_dir = {0, 0.5, 0.8}, .direct_normal_W_m2 = 500, .diffuse_horizontal_W_m2 = 100,
+                         .day_of_year = 172};
+    pi.reserved[0] = 1;
+    lx_sky ps;
+    EXPECT_EINVAL(lx_sky_perez(ctx, &pi, &ps));
+    lx_sun_input si = {.year = 2003, .month = 10, .day = 17, .hour = 12, .timezone_h = -7, .delta_t_s = 67,
+                       .latitude_deg = 39.7, .longitude_deg = -105.2, .pressure_mbar = 820, .temperature_C = 11,
+                       .refraction_deg = 0.5667};
+    si.reserved[1] = 1;
+    lx_sun_position sp;
+    EXPECT_EINVAL(lx_sun_spa(ctx, &si, &sp));
 }
 
 /* ABI policy: results are written whole, their reserved space as zero (whatever the caller left there). */
@@ -1127,6 +1148,33 @@ static void results_write_reserved_as_zero(void **state)
     lx_assert_ok(ctx, lx_cl_devices(ctx, &d, &n));
     for (size_t i = 0; i < n; i++) ZERO_RESERVED(d[i]);
     lx_cl_devices_free(d);
+    /* daylight and glare */
+    const double sun[3] = {0, 0.5, 0.8};
+    lx_sky sky;
+    DIRTY(sky);
+    lx_assert_ok(ctx, lx_sky_cie(ctx, 12, sun, LX_SKY_BY_ZENITH, 5000, &sky));
+    ZERO_RESERVED(sky);
+    lx_perez_input pi = {.sun_dir = {0, 0.5, 0.8}, .direct_normal_W_m2 = 500, .diffuse_horizontal_W_m2 = 100,
+                         .day_of_year = 172};
+    DIRTY(sky);
+    lx_assert_ok(ctx, lx_sky_perez(ctx, &pi, &sky));
+    ZERO_RESERVED(sky);
+    lx_sun_input si = {.year = 2003, .month = 10, .day = 17, .hour = 12, .timezone_h = -7, .delta_t_s = 67,
+                       .latitude_deg = 39.7, .longitude_deg = -105.2, .pressure_mbar = 820, .temperature_C = 11,
+                       .refraction_deg = 0.5667};
+    lx_sun_position sp;
+    DIRTY(sp);
+    lx_assert_ok(ctx, lx_sun_spa(ctx, &si, &sp));
+    ZERO_RESERVED(sp);
+    lx_lum_model pm = {.kind = LX_LUM_MODEL_LAMBERT, .flux_lm = 1000, .width_m = 0.6, .length_m = 0.6};
+    lx_luminaire *panel = NULL;
+    lx_assert_ok(ctx, lx_luminaire_from_model(ctx, &pm, &panel));
+    lx_ugr_table *ut = malloc(sizeof *ut);
+    DIRTY(*ut);
+    lx_assert_ok(ctx, lx_ugr_table_compute(ctx, panel, ut));
+    ZERO_RESERVED(*ut);
+    free(ut);
+    lx_luminaire_free(panel);
 }
 
 /* Creating functions set *out to NULL when they fail (here: on an argument they refuse). */

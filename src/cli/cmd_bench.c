@@ -41,7 +41,7 @@ static const struct {
     {"lab", bench_lab, "PAR, IEC 62471 hazards and LED binning of 2.5e5 spectra on the batch path (goal 1e6/s)"},
     {"grid", bench_grid, "illuminance grid: 1e6 points x 10 luminaires, CPU and OpenCL vs numpy"},
     /* ---- bench topics (one line each: irradiance, grid, accuracy) ---- */
-    {"accuracy", bench_accuracy, "error against a reference vs time of every method: spectra, radiance fields, lighting"},
+    {"accuracy", bench_accuracy, "error against a reference vs time of every method: spectra, radiance fields, lighting, near field"},
     {"irradiance", bench_irradiance, "irradiance maps: SH9, exact (fast), brute force vs numpy, 512x256..4096x2048"},
     {NULL, NULL, NULL},
 };
