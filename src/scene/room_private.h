@@ -218,8 +218,12 @@ lx_status lx__room_cl_ff(lx_ctx *ctx, const lx__room_mesh *m, double *F);
 lx_status lx__room_cl_gather(lx_ctx *ctx, const lx__room_gather_job *g, double *E_lx);
 #endif
 
-/* OpenCL break-even of the form-factor and gather jobs, in form factors (measured: README). */
-#define LX__ROOM_CL_COLD 4e8
-#define LX__ROOM_CL_WARM 2e7
+/* OpenCL break-even of the form-factor and gather jobs, in form factors (README "Rooms"): the
+ * measured start-up on a cold context (7.6 s with PoCL's compile, an empty kernel cache) over the
+ * measured CPU cost (0.46 us a pair of patches, 2 threads under load), and a warm context's 0.1 s
+ * of uploads and launches over it; a device at least as fast per pair as these 2 cores is
+ * assumed (PoCL's CPU device is not: 2.7 us, so the rule's CPU-device exclusion applies). */
+#define LX__ROOM_CL_COLD 2e7
+#define LX__ROOM_CL_WARM 2e5
 
 #endif /* LX_ROOM_PRIVATE_H */
