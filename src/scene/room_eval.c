@@ -117,6 +117,35 @@ static lx_status surfaces(lx_ctx *ctx, const lx__room_mesh *m, const double *phi
     return LX_OK;
 }
 
+/* The solve's account: fluxes, and the discretisation check (each patch's indirect illuminance in
+ * the solve against the area-weighted mean of the exact gathers at its elements). */
+static lx_status stats(lx_ctx *ctx, const lx__room_mesh *m, const double *phi0, const lx__room_solution *sol,
+                       const double *Ei, lx_scene_room_stats *R)
+{
+    size_t n = m->n_patch;
+    R->n_patches = n;
+    R->sweeps = sol->sweeps;
+    R->shots = sol->shots;
+    R->unshot_lm = sol->unshot_lm;
+    R->escaped_lm = sol->escaped_lm;
+    for (size_t i = 0; i < n; i++) {
+        R->direct_lm += phi0[i];
+        R->indirect_lm += sol->phi_ind_lm[i];
+        R->absorbed_lm += (1 - m->patch[i].rho) * (phi0[i] + sol->phi_ind_lm[i]);
+    }
+    double *ga = calloc(n ? n : 1, sizeof *ga), w = 0, e2 = 0;
+    if (!ga) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    for (size_t e = 0; e < m->n_elem; e++) ga[m->elem[e].parent] += Ei[e] * m->elem[e].area_m2;
+    for (size_t i = 0; i < n; i++) {
+        double A = m->patch[i].area_m2, s = sol->phi_ind_lm[i] / A, d = ga[i] / A - s;
+        e2 += A * d * d;
+        w += A * s * s;
+    }
+    free(ga);
+    R->gather_check = w > 0 ? sqrt(e2 / w) : 0;
+    return LX_OK;
+}
+
 /* Gather job arrays for the element centres (*list: their indices, *count of them). Every element
  * is gathered, an unrefined patch's one too: the exact gather at its centre is the better
  * exitance for the receivers' gather than the solve's patch mean (bench room: the work-plane
@@ -204,31 +233,7 @@ lx_status lx__room_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
         sum_all += res->E_lx[g];
     }
     if ((st = surfaces(ctx, m, phi0, &sol, res)) != LX_OK) goto out;
-    R->n_patches = n;
-    R->sweeps = sol.sweeps;
-    R->shots = sol.shots;
-    R->unshot_lm = sol.unshot_lm;
-    R->escaped_lm = sol.escaped_lm;
-    for (size_t i = 0; i < n; i++) {
-        R->direct_lm += phi0[i];
-        R->indirect_lm += sol.phi_ind_lm[i];
-        R->absorbed_lm += (1 - m->patch[i].rho) * (phi0[i] + sol.phi_ind_lm[i]);
-    }
-    /* the discretisation check: each patch's indirect illuminance in the solve against the
-     * area-weighted mean of the exact gathers at its elements */
-    double *ga = calloc(n ? n : 1, sizeof *ga), w = 0, e2 = 0;
-    if (!ga) {
-        st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
-        goto out;
-    }
-    for (size_t e = 0; e < ne; e++) ga[m->elem[e].parent] += Ei[e] * m->elem[e].area_m2;
-    for (size_t i = 0; i < n; i++) {
-        double A = m->patch[i].area_m2, s = sol.phi_ind_lm[i] / A, d = ga[i] / A - s;
-        e2 += A * d * d;
-        w += A * s * s;
-    }
-    free(ga);
-    R->gather_check = w > 0 ? sqrt(e2 / w) : 0;
+    if ((st = stats(ctx, m, phi0, &sol, Ei, R)) != LX_OK) goto out;
     R->indirect_share = sum_all > 0 ? sum_ind / sum_all : 0;
     R->backend = used == LX_BACKEND_OPENCL || gu1 == LX_BACKEND_OPENCL || gu2 == LX_BACKEND_OPENCL ? LX_BACKEND_OPENCL
                                                                                                     : LX_BACKEND_CPU;
