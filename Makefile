@@ -54,7 +54,7 @@ SONAME := libluxcalc.so.$(firstword $(subst ., ,$(VERSION)))
 SHARED := $(BUILD)/$(SONAME)
 CLI := $(BUILD)/luxcalc
 
-.PHONY: all test demo bench asan tsan install uninstall clean deps fuzz
+.PHONY: all test test-nofp64 demo bench asan tsan valgrind install uninstall clean deps fuzz
 
 all: $(STATIC) $(SHARED) $(CLI) $(BUILD)/libs.txt
 
@@ -81,6 +81,20 @@ deps:
 	  fi; \
 	fi
 
+# ---- the configuration of this build dir ----
+# The compiler and preprocessor flags (LX_OPENCL, CPPFLAGS) this BUILD dir's objects were made with:
+# every object depends on this file, which is rewritten only when they change, so switching
+# LX_OPENCL in one BUILD dir rebuilds it instead of mixing objects of both (not rewritten by make -n,
+# which only looks). CFLAGS and LDFLAGS are not tracked: each sanitizer has its own BUILD dir, and
+# tests/cli/install.sh runs make install in them without repeating their CFLAGS.
+FLAGS_STAMP := $(BUILD)/flags.txt
+FLAGS_NOW = $(subst ',,$(CC) $(ALL_CPPFLAGS))
+ifeq ($(findstring n,$(firstword -$(MAKEFLAGS))),)
+$(shell mkdir -p $(BUILD) && { printf '%s\n' '$(FLAGS_NOW)' | cmp -s - $(FLAGS_STAMP) || printf '%s\n' '$(FLAGS_NOW)' >$(FLAGS_STAMP); })
+endif
+$(FLAGS_STAMP):
+	@mkdir -p $(dir $@) && printf '%s\n' '$(FLAGS_NOW)' >$@
+
 # ---- generated sources ----
 $(BUILD)/lxgen: src/tools/lxgen.c | $(BUILD)
 	$(CC) $(WARN) -O1 -o $@ $<
@@ -97,15 +111,15 @@ $(BUILD):
 	@mkdir -p $@
 
 # ---- objects ----
-$(BUILD)/obj/%.o: src/%.c
+$(BUILD)/obj/%.o: src/%.c $(FLAGS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(ALL_CPPFLAGS) $(ALL_CFLAGS) -MMD -MP -c -o $@ $<
 
-$(BUILD)/obj/%.o: $(BUILD)/gen/%.c
+$(BUILD)/obj/%.o: $(BUILD)/gen/%.c $(FLAGS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(ALL_CPPFLAGS) $(ALL_CFLAGS) -Wno-overlength-strings -MMD -MP -c -o $@ $<
 
-$(BUILD)/obj-faults/%.o: src/%.c
+$(BUILD)/obj-faults/%.o: src/%.c $(FLAGS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(ALL_CPPFLAGS) -DLX_FAULTS $(ALL_CFLAGS) -MMD -MP -c -o $@ $<
 
@@ -196,12 +210,25 @@ uninstall:
 	  $(DESTDIR)$(LIBDIR)/pkgconfig/luxcalc.pc $(DESTDIR)$(INCLUDEDIR)/luxcalc.h $(DESTDIR)$(BINDIR)/luxcalc \
 	  $(DESTDIR)$(MANDIR)/man1/luxcalc.1 $(DESTDIR)$(MANDIR)/man3/luxcalc.3 $(DESTDIR)$(COMPLETIONDIR)/luxcalc
 
-# the tests that run threads, under ThreadSanitizer (without OpenCL: PoCL's own threads are not ours)
-TSAN_TESTS := test_threads test_batch
+# the tests that run threads, under ThreadSanitizer with OpenCL on (test_threads runs contexts on
+# OpenCL from four threads at once); tests/tsan.supp may hold reports from inside PoCL's own
+# threads only, never from luxcalc's code
+TSAN_TESTS := test_threads test_batch test_opencl
 tsan: deps
-	@$(MAKE) --no-print-directory BUILD=build-tsan LX_OPENCL=0 CFLAGS="-O1 -g -fsanitize=thread" \
+	@$(MAKE) --no-print-directory BUILD=build-tsan CFLAGS="-O1 -g -fsanitize=thread" \
 	  LDFLAGS="-fsanitize=thread" $(TSAN_TESTS:%=build-tsan/tests/%)
-	@for t in $(TSAN_TESTS); do TSAN_OPTIONS=halt_on_error=1 build-tsan/tests/$$t || exit 1; done
+	@for t in $(TSAN_TESTS); do \
+	  TSAN_OPTIONS="halt_on_error=1 suppressions=$(CURDIR)/tests/tsan.supp" POCL_CACHE_DIR=$(CURDIR)/build-tsan/pocl-cache \
+	    build-tsan/tests/$$t || exit 1; done
+
+# the OpenCL tests again on a device whose fp64 is switched off (LX_CL_FP64=0): the program is built
+# with LX_FP64=0, so the float and compensated-float kernels that devices without fp64 run are
+# compiled and checked against their CPU twins (test_opencl fails if the switch did not take)
+NOFP64_TESTS := test_opencl test_batch test_grid test_irradiance test_scene test_spectral_exr test_threads
+test-nofp64: deps
+	@$(MAKE) --no-print-directory all $(NOFP64_TESTS:%=$(BUILD)/tests/%)
+	@LX_CL_FP64=0 LX_TEST_CLI=0 LX_SHARED_DIR=$${LX_SHARED_DIR:-$(CURDIR)/../shared} \
+	  POCL_CACHE_DIR=$(CURDIR)/$(BUILD)/pocl-cache sh tests/run.sh $(BUILD) $(NOFP64_TESTS:%=$(BUILD)/tests/%)
 
 # the whole suite under valgrind memcheck (tests/valgrind.supp: the loader's and OpenCL stack's own noise);
 # the native run first fills the PoCL kernel cache, so that valgrind does not run the LLVM compiler
@@ -221,4 +248,4 @@ fuzz: deps
 	@FUZZ_JOBS=$(FUZZ_JOBS) sh src/tools/fuzz.sh $(FUZZ_SECONDS) $(FUZZ_TARGETS)
 
 clean:
-	rm -rf build build-asan build-tsan build-fuzz
+	rm -rf build build-asan build-tsan build-fuzz build-valgrind build-noocl

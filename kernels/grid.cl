@@ -1,6 +1,7 @@
 /* grid.cl - illuminance on P points from M luminaires (point model) with the cosine-indexed
  * intensity table: row sqrt(1 - |cos g|), column the diamond angle of C, so no acos or atan2 in
- * the loop. One work-item per point. CPU twin: table_eval and pair_point in src/grid.c.
+ * the loop. One work-item per point. CPU twin: lx__table_eval (src/lighting/grid_private.h) and
+ * pair_point (src/lighting/grid.c), and their SIMD twins in src/lighting/grid_simd.c.
  * Luminaire records of 16 reals: pos[3], ex[3], ey[3], ez[3], scale, cols, ns, table offset. */
 
 #define LX_GRID_KERNEL(NAME, R, R3, SQRT)                                                              \

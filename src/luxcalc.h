@@ -8,7 +8,8 @@
  * Errors: every call that can fail returns an lx_status; the library never prints and never exits.
  * - A NULL context is LX_EINVAL, and nothing is read or written (there is nowhere to put a message).
  *   The functions that accept a NULL context say so: lx_ctx_destroy, the lx_ctx_* getters (they
- *   return "", NULL, 0 or LX_BACKEND_AUTO), lx_ctx_set_log and lx_ctx_counters_reset (no-ops).
+ *   return "", NULL, 0, LX_BACKEND_AUTO or the default input limit), lx_ctx_set_log and
+ *   lx_ctx_counters_reset (no-ops).
  * - LX_EINVAL for a NULL pointer the call needs or an argument outside its documented range;
  *   LX_ENOMEM when memory runs out. Codes beyond these are listed at each function ("Errors:").
  * - After a failure lx_ctx_errmsg(ctx) holds the detail (file and line where they apply); outputs
@@ -42,18 +43,19 @@
  *   exported is removed, renamed, or given another signature or meaning;
  * - structs the caller allocates are of three kinds.
  *   Options (lx_batch_opts, lx_grid_opts, lx_irr_opts, lx_exr_write_opts, lx_scene_eval_opts,
- *   lx_lum_model) are only read: zero-initialise them (zero is every field's default) and leave
+ *   lx_lum_model, lx_sky_map_opts, lx_perez_input, lx_sun_input) are only read: zero-initialise them (zero is every field's default) and leave
  *   `reserved` zero, which the library checks (LX_EINVAL otherwise); a later option takes reserved
  *   space, its zero meaning the earlier behaviour.
  *   Results (lx_colorimetry, lx_cri, lx_tm30, lx_alphaopic, lx_source_result, lx_lum_summary,
- *   lx_grid_stats, lx_cl_device_info, lx_counters) are written whole by the library, `reserved`
- *   set to zero; a later result takes reserved space.
+ *   lx_grid_stats, lx_cl_device_info, lx_counters, lx_sky, lx_sun_position, lx_ugr_table) are
+ *   written whole by the library, `reserved` set to zero; a later result takes reserved space.
  *   Views and values (lx_spd, lx_batch, lx_placement, lx_plane, lx_plot_point, lx_unit, lx_sh9)
  *   never change within a soname: a new need gets a new type.
  * - structs only the library allocates (lx_spd_set, lx_batch_table, lx_luminaire, lx_envmap,
- *   lx_xyz_image, lx_scene, lx_scene_plan, lx_scene_result) grow by fields appended at their end:
- *   read their fields, but never allocate, copy or take the size of one. The structs of their arrays
- *   (lx_scene_luminaire, lx_scene_receiver) carry reserved space, as results do.
+ *   lx_xyz_image, lx_scene, lx_scene_plan, lx_scene_result, lx_scene_glare) grow by fields appended
+ *   at their end: read their fields, but never allocate, copy or take the size of one. The structs
+ *   of their arrays (lx_scene_luminaire, lx_scene_receiver, lx_scene_observer, lx_glare_term) carry
+ *   reserved space, as results do.
  * - LX_EFFECT_COUNT sizes arrays inside lx_scene and lx_scene_plan: a new effect changes their
  *   layout and so needs a new soname; LX_FN_COUNT and LX_Q_COUNT size nothing public and may grow.
  * An incompatible change needs a new MAJOR version, whose soname follows it (1.0: libluxcalc.so.1).
@@ -89,9 +91,9 @@ LX_API const char *lx_version(void);
  *   2. core      Backends, SIMD paths and OpenCL devices
  *   3. tables    Spectra as views; embedded tables: weighting functions, illuminants, test colour samples
  *   4. spectral  Spectra: reading, integration, colorimetry
- *   5. spectral  Correlated colour temperature
+ *   5. spectral  Correlated colour temperature; LED binning
  *   6. spectral  Batches: many spectra on one grid, CSV files end to end
- *   7. spectral  Photobiology: alpha-opic and mesopic quantities, efficacy of a file
+ *   7. spectral  Photobiology: alpha-opic and mesopic quantities, PAR, IEC 62471 hazards, efficacy of a file
  *   8. colour    Colour rendering: CIE 13.3 CRI, CIE 224 / TM-30
  *   9. lighting  Units and quantities
  *  10. lighting  Sources, inverse problems and solid angles
@@ -295,6 +297,13 @@ typedef enum lx_function {
     LX_FN_VPRIME,                                    /* CIE 1951 scotopic V'(lambda), 380-780 nm */
     LX_FN_ALPHA_SC, LX_FN_ALPHA_MC, LX_FN_ALPHA_LC,  /* CIE S 026 alpha-opic action spectra, */
     LX_FN_ALPHA_RH, LX_FN_ALPHA_MEL,                 /* 380-780 nm at 1 nm, peak 1 */
+    LX_FN_PHOTON_PAR,   /* photons per joule in umol/J (lambda / (h c N_A)), 400-700 nm (ANSI/ASABE S640) */
+    LX_FN_PHOTON_EPAR,  /* the same over 400-750 nm (extended PAR) */
+    LX_FN_YPF_MCCREE,   /* umol/J times McCree's 1972 relative quantum efficiency, 350-725 nm (1 nm) */
+    LX_FN_HAZARD_BLUE,  /* IEC 62471 blue-light hazard B(lambda), 300-700 nm */
+    LX_FN_HAZARD_THERMAL, /* IEC 62471 retinal thermal hazard R(lambda), 380-1400 nm */
+    LX_FN_HAZARD_ACTINIC, /* IEC 62471 actinic UV hazard S_UV(lambda), 200-400 nm */
+    LX_FN_UVA,          /* 1 over 315-400 nm (unweighted UV-A of IEC 62471) */
     LX_FN_COUNT
 } lx_function;
 
@@ -342,14 +351,64 @@ LX_API lx_status lx_tcs_get(lx_ctx *ctx, int index, lx_spd *out);
 /* 4. Spectra: reading, integration, colorimetry (src/spectral) */
 /* ============================================================================================ */
 
+/** One field of a file's own header as the instrument or its software wrote it (key and value
+ * trimmed; value "" when the line has none). An array struct of lx_spd_set (ABI policy: reserved
+ * is written as zero). */
+typedef struct lx_spd_field {
+    char *key;
+    char *value;
+    long line;
+    long long reserved[2]; /* zero: room for later fields */
+} lx_spd_field;
+
+/** A data row the reader left out (lx_spd_read_opts.skip_bad_rows): its line and why. An array
+ * struct of lx_spd_set (reserved written as zero). */
+typedef struct lx_spd_skipped {
+    long line;
+    char *why;
+    long long reserved[2]; /* zero: room for later fields */
+} lx_spd_skipped;
+
 /** Spectra read from one file. Owns every array and string it points to; made by lx_spd_read_file
- * or lx_spd_read_mem, freed with lx_spd_set_free. */
+ * or lx_spd_read_mem (and their _opts forms), freed with lx_spd_set_free. The fields after `line`
+ * describe what the reader found. */
 typedef struct lx_spd_set {
     char *file;    /* the path given to the reader ("-" for standard input) */
     size_t count;  /* number of spectra */
     lx_spd *spd;   /* count spectra */
     long *line;    /* for each spectrum, the line of the file it starts on (rows layout) or its header line */
+    const char *format;       /* the layout read: one of lx_spd_formats() (static storage) */
+    size_t nfields;           /* the instrument's own header fields, in file order */
+    lx_spd_field *fields;
+    const char *unit;         /* the values' unit when the file states it or its format fixes it, after
+                               * conversion ("W/m2/nm", "W/nm", "W/sr/m2/nm", "W/sr/nm"); NULL: not known */
+    double unit_scale;        /* the factor the reader applied to the file's values to reach unit (1e-3 for
+                               * mW/m2/nm, 0.01 for uW/cm2/nm); 1 when unit is NULL */
+    const char *unit_source;  /* what the unit was taken from ("UPRtek export: mW/m2/nm"; static storage) */
+    double wavelength_scale;  /* the factor applied to the file's wavelengths to reach nm (1000 for
+                               * micrometres, 0.1 for angstrom), else 1 */
+    size_t nskipped;          /* rows left out with skip_bad_rows */
+    lx_spd_skipped *skipped;
 } lx_spd_set;
+
+/** Options of lx_spd_read_file_opts / lx_spd_read_mem_opts (zero-initialise for the defaults of
+ * lx_spd_read_file; ABI policy: reserved stays zero). */
+typedef struct lx_spd_read_opts {
+    const char *format;          /* NULL or "auto": detected from the content; else a name of lx_spd_formats() */
+    long skip_lines;             /* physical lines to ignore at the start (messages still count them) */
+    const char *columns;         /* "WL,VALUE[,VALUE...]": header names or 1-based numbers of the columns
+                                  * layout's wavelength and value columns; NULL: every column */
+    const char *wavelength_unit; /* "nm", "um" (also "µm") or "A" (also "Å"); NULL: from the wavelength
+                                  * column's header, else micrometres when every wavelength is below 10 */
+    int skip_bad_rows;           /* 1: a malformed data row is left out and recorded in set->skipped
+                                  * instead of failing the file (at least 2 good rows must remain) */
+    long long reserved[4];       /* zero: room for later options */
+} lx_spd_read_opts;
+
+/** The layouts lx_spd_read_file reads, NULL-terminated (static storage): "columns", "rows",
+ * "cgats", "oceanview" (OceanView and SpectraSuite), "sekonic", "uprtek" (UPRtek and LI-COR
+ * LI-180), "tm27" (IES TM-27 XML), "avantes" (AvaSoft), "spectrawiz" (StellarNet). Thread-safe. */
+LX_API const char *const *lx_spd_formats(void);
 
 /** Reads spectra from a text file ("-" is standard input): columns (wavelength in nm, value...) or
  * rows (a header of wavelengths, one spectrum per row), separators , ; tab or spaces, '#' comments,
@@ -363,6 +422,43 @@ LX_API lx_status lx_spd_read_file(lx_ctx *ctx, const char *path, lx_spd_set **ou
  * "(memory)") is used in messages and copied to set->file. Errors: as lx_spd_read_file, less LX_EIO. */
 LX_API lx_status lx_spd_read_mem(lx_ctx *ctx, const char *name, const char *text, size_t len,
                                  lx_spd_set **out);
+
+/** lx_spd_read_file and lx_spd_read_mem with options (opts may be NULL: the defaults). Besides the
+ * layouts of lx_spd_read_file they read the exports of spectrometer software (lx_spd_formats,
+ * recognised by content, never by file name), keep the file's header fields in set->fields,
+ * convert wavelengths to nm and, where the format fixes the values' unit, the values to W-based
+ * units (set->unit). Logs at LX_LOG_INFO how the units were found and at LX_LOG_WARN a spectrum
+ * with no overlap with 360-830 nm. Errors: as lx_spd_read_file; LX_EINVAL for a bad option (an
+ * unknown format or wavelength unit, a column --columns cannot find, negative skip_lines,
+ * non-zero reserved). */
+LX_API lx_status lx_spd_read_file_opts(lx_ctx *ctx, const char *path, const lx_spd_read_opts *opts,
+                                       lx_spd_set **out);
+LX_API lx_status lx_spd_read_mem_opts(lx_ctx *ctx, const char *name, const char *text, size_t len,
+                                      const lx_spd_read_opts *opts, lx_spd_set **out);
+
+/** The value of header field `key` of a set (exact match, the first one), or NULL (also for a NULL
+ * set or key). The string lives as long as the set. Thread-safe. */
+LX_API const char *lx_spd_set_field(const lx_spd_set *set, const char *key);
+
+/** The results an instrument wrote into its export beside the spectrum (Sekonic, UPRtek, LI-COR),
+ * as its firmware computed them; NaN where the file has no such field. A result struct (ABI
+ * policy: reserved is written as zero). */
+typedef struct lx_vendor_results {
+    double cct_K, duv;
+    double illuminance_lx;      /* Sekonic "Illuminance [lx]", UPRtek / LI-COR "LUX" */
+    double X, Y, Z, x, y, u_prime, v_prime;
+    double cri_ra, cri_r[15];   /* CIE 13.3 Ra, R1..R15 */
+    double tm30_rf, tm30_rg;
+    double ppfd_umol_m2_s;      /* photosynthetic photon flux density */
+    double irradiance_W_m2;     /* UPRtek / LI-COR "IRR" */
+    double peak_nm;             /* peak wavelength */
+    int count;                  /* how many of the fields above the file holds */
+    long long reserved[4];      /* zero: room for later results */
+} lx_vendor_results;
+
+/** The instrument's own results from set->fields (by the names each format gives them) into *out;
+ * out->count is 0 for formats that carry none. Errors: LX_EINVAL (NULL set or out). */
+LX_API lx_status lx_spd_set_vendor(lx_ctx *ctx, const lx_spd_set *set, lx_vendor_results *out);
 
 /** Frees a set. Accepts NULL. */
 LX_API void lx_spd_set_free(lx_spd_set *set);
@@ -440,7 +536,7 @@ LX_API lx_status lx_colorimetry_from_integrals(lx_ctx *ctx, lx_observer observer
 LX_API lx_status lx_colorimetry_check(lx_ctx *ctx, const lx_colorimetry *r, double max_abs);
 
 /* ============================================================================================ */
-/* 5. Correlated colour temperature (src/spectral) */
+/* 5. Correlated colour temperature; LED binning (src/spectral) */
 /* ============================================================================================ */
 
 /** CCT (K) and Duv from CIE 1960 (u, v), solved exactly on the Planckian locus computed with the
@@ -458,6 +554,28 @@ LX_API lx_status lx_cct_from_xy(lx_ctx *ctx, lx_observer observer, double x, dou
 /** CIE 1960 u, v (either may be NULL) of the Planckian radiator at T_K with the observer's CMFs.
  * Errors: LX_EINVAL (an unknown observer, T_K not positive and finite). */
 LX_API lx_status lx_planck_uv(lx_ctx *ctx, lx_observer observer, double T_K, double *u, double *v);
+
+/* ---- LED binning: ANSI C78.377-2017 and MacAdam steps ---- */
+
+/** Where a white light's chromaticity falls (CIE 1931 2 deg). A result struct (ABI policy: reserved
+ * is written as zero). */
+typedef struct lx_binning {
+    int ansi_K;             /* nominal CCT (2200 ... 6500 K) of the ANSI C78.377-2017 category holding the
+                             * point (|CCT - target| <= CCT tolerance and |Duv - target Duv| <= 0.006); 0: none */
+    double ansi_duv_offset; /* Duv minus that category's target Duv (NaN when none) */
+    int flex_K;             /* the flexible-CCT rule of C78.377 (2700-6500 K in 100 K steps, targets and
+                             * tolerances from its formulas): the nearest nominal CCT holding the point; 0: none */
+    double flex_duv_offset; /* Duv minus the target Duv of flex_K (NaN when none) */
+    double sdcm;            /* MacAdam steps (standard deviations of colour matching) to the nearest
+                             * IEC 60081 colour centre (NaN for a NaN chromaticity) */
+    int sdcm_centre_K;      /* that centre: 6500, 5000, 4000, 3500, 3000 or 2700 (IEC 60081 F6500 ... F2700) */
+    long long reserved[4];  /* zero: room for later results */
+} lx_binning;
+
+/** Bins one chromaticity: x, y (CIE 1931) with its CCT and Duv (lx_cct_from_xy, 2 deg; NaN CCT or
+ * Duv: no ANSI category) into *out. Tables: src/data/ansi_c78377_categories.csv and
+ * iec60081_sdcm_centres.csv. Errors: LX_EINVAL (NULL out). */
+LX_API lx_status lx_binning_compute(lx_ctx *ctx, double x, double y, double cct_K, double duv, lx_binning *out);
 
 /* ============================================================================================ */
 /* 6. Batches: many spectra on one grid, CSV files end to end (src/spectral) */
@@ -564,8 +682,16 @@ LX_API lx_status lx_batch_resample(lx_ctx *ctx, size_t n_spectra, const double *
 LX_API lx_status lx_batch_colorimetry(lx_ctx *ctx, const lx_batch *batch, lx_observer observer,
                                       const lx_batch_opts *opts, lx_colorimetry *out);
 
+/** Bins every spectrum of a batch (lx_binning_compute, section 5) into out (n_spectra entries):
+ * X, Y, Z by lx_batch_integrate (cie15 rule), CCT and Duv from the cubic Hermite interpolant of the
+ * Planckian locus table that lx_cct_from_uv starts from, without its exact solve (within 0.02 K and
+ * 1e-8 in Duv of it over 1500-10000 K and Duv -0.02..0.02; tests/test_binning.c). A spectrum whose
+ * CCT cannot be found gets ansi_K = flex_K = 0. opts may be NULL. Errors: LX_EINVAL (NULL batch or
+ * out, a batch grid lx_batch_integrate refuses), those of lx_batch_integrate. */
+LX_API lx_status lx_binning_batch(lx_ctx *ctx, const lx_batch *batch, const lx_batch_opts *opts, lx_binning *out);
+
 /* ============================================================================================ */
-/* 7. Photobiology: alpha-opic and mesopic quantities, efficacy of a file (src/spectral) */
+/* 7. Photobiology: alpha-opic and mesopic quantities, PAR, IEC 62471 hazards, efficacy of a file (src/spectral) */
 /* ============================================================================================ */
 
 /** The five CIE S 026 photoreceptors, in the order of every alpha-opic array. */
@@ -614,6 +740,103 @@ LX_API lx_status lx_alphaopic_batch(lx_ctx *ctx, const lx_batch *batch, const lx
  * Errors: LX_EINVAL (negative or non-finite input). */
 LX_API lx_status lx_mesopic_luminance(lx_ctx *ctx, double photopic_cd_m2, double scotopic_cd_m2,
                                       double *mesopic_cd_m2, double *m_out);
+
+/* ---- plant lighting: PAR (ANSI/ASABE S640) ---- */
+
+/** Photosynthetically active radiation of one spectrum. Units follow the spectrum: W/m2/nm gives
+ * umol s-1 m-2 (PPFD), W/nm umol s-1 (PPF), W/sr/m2/nm umol s-1 sr-1 m-2; relative values the same
+ * arithmetic. A quantity whose band the spectrum covers less than LX_COVERAGE_MIN of (weighted,
+ * see lx_hazard) is NaN ("not covered"). A result struct (ABI policy: reserved written as zero). */
+typedef struct lx_par {
+    double ppfd;        /* photon flux 400-700 nm (ANSI/ASABE S640 PPFD / PPF) */
+    double epar;        /* photon flux 400-750 nm (extended PAR, ePAR) */
+    double ypf;         /* yield photon flux: photons weighted by McCree's (1972) relative quantum
+                         * efficiency of field-grown plants, 350-725 nm */
+    double photon_efficacy_umol_J; /* ppfd / radiant integral of the whole spectrum (umol per J of radiant
+                         * energy; per electrical joule only if the radiant power is the input power) */
+    long long reserved[4]; /* zero: room for later results */
+} lx_par;
+
+/** Below this fraction of a weighting function's integral inside the spectrum's wavelength range
+ * a PAR or hazard quantity is "not covered" (NaN), never 0. */
+#define LX_COVERAGE_MIN 0.95
+
+/** PAR of one spectrum with the integration method of lx_spd_integrate into *out. Errors:
+ * LX_EINVAL (an invalid view or method, NULL out). */
+LX_API lx_status lx_par_compute(lx_ctx *ctx, const lx_spd *spd, lx_method method, lx_par *out);
+
+/** The same for a batch (cie15 rule on the batch grid; one lx_batch_integrate of 3 functions) into
+ * out (n_spectra entries). opts may be NULL. Errors: LX_EINVAL (NULL batch or out, fewer than 2
+ * samples), those of lx_batch_integrate. */
+LX_API lx_status lx_par_batch(lx_ctx *ctx, const lx_batch *batch, const lx_batch_opts *opts, lx_par *out);
+
+/** Daily light integral in mol m-2 d-1 of a PPFD (umol s-1 m-2) held for photoperiod_h hours:
+ * ppfd * 3600 * h / 1e6. NaN for a negative or non-finite photoperiod. Thread-safe. */
+LX_API double lx_par_dli(double ppfd_umol_m2_s, double photoperiod_h);
+
+/* ---- photobiological safety: IEC 62471:2006 / CIE S 009:2002 ---- */
+
+/** The weighted quantities of IEC 62471, in the order of lx_hazard arrays. */
+typedef enum lx_hazard_kind {
+    LX_HZ_BLUE = 0,    /* blue-light hazard: integral S B(lambda), 300-700 nm (L_B or E_B) */
+    LX_HZ_THERMAL = 1, /* retinal thermal: integral S R(lambda), 380-1400 nm (L_R) */
+    LX_HZ_ACTINIC = 2, /* actinic UV, skin and eye: integral S S_UV(lambda), 200-400 nm (E_S) */
+    LX_HZ_UVA = 3,     /* near UV, eye: integral S over 315-400 nm unweighted (E_UVA) */
+    LX_HZ_COUNT = 4
+} lx_hazard_kind;
+
+/** IEC 62471 weighted quantities of one spectrum. Units follow the spectrum (W/sr/m2/nm: radiance
+ * L in W m-2 sr-1; W/m2/nm: irradiance E in W m-2). coverage[k] is the fraction of the weighting
+ * function's integral over its band that lies inside the spectrum's wavelength range; value[k]
+ * is NaN ("not covered") when coverage[k] < LX_COVERAGE_MIN. A result struct (ABI policy). */
+typedef struct lx_hazard {
+    double value[LX_HZ_COUNT];
+    double coverage[LX_HZ_COUNT];
+    long long reserved[4]; /* zero: room for later results */
+} lx_hazard;
+
+/** IEC 62471 weighted quantities of one spectrum (integration method of lx_spd_integrate) into
+ * *out. Errors: LX_EINVAL (an invalid view or method, NULL out). */
+LX_API lx_status lx_hazard_compute(lx_ctx *ctx, const lx_spd *spd, lx_method method, lx_hazard *out);
+
+/** The same for a batch (cie15 rule; one lx_batch_integrate of 4 functions) into out (n_spectra
+ * entries). opts may be NULL. Errors: as lx_par_batch. */
+LX_API lx_status lx_hazard_batch(lx_ctx *ctx, const lx_batch *batch, const lx_batch_opts *opts, lx_hazard *out);
+
+/** IEC 62471 risk groups. */
+typedef enum lx_risk_group {
+    LX_RISK_NONE = -1,  /* not evaluated (not covered, not applicable to the geometry) */
+    LX_RISK_EXEMPT = 0,
+    LX_RISK_1 = 1,      /* low risk */
+    LX_RISK_2 = 2,      /* moderate risk */
+    LX_RISK_3 = 3       /* high risk */
+} lx_risk_group;
+
+/** The risk group of each criterion and the worst of them (group: LX_RISK_NONE when none could be
+ * evaluated; a criterion that is not covered could raise it). A result struct (ABI policy). */
+typedef struct lx_hazard_risk {
+    lx_risk_group group;
+    lx_risk_group criterion[LX_HZ_COUNT];
+    long long reserved[4]; /* zero: room for later results */
+} lx_hazard_risk;
+
+/** Risk groups from the emission limits of IEC 62471:2006 Table 6.1 (continuous-wave lamps;
+ * src/data/iec62471_limits.csv) into *out. radiance 1: h holds radiances (W/sr/m2/nm input): L_B,
+ * and L_R when alpha_rad > 0 (the source's angular subtense, clamped to 0.0017-0.1 rad).
+ * radiance 0: irradiances (W/m2/nm): E_S, E_UVA and the small-source blue-light E_B (for sources
+ * subtending less than 0.011 rad). Errors: LX_EINVAL (NULL h or out). */
+LX_API lx_status lx_hazard_risk_group(lx_ctx *ctx, const lx_hazard *h, int radiance, double alpha_rad,
+                                      lx_hazard_risk *out);
+
+/** "exempt", "RG1", "RG2", "RG3", or "" for LX_RISK_NONE (static storage). Thread-safe. */
+LX_API const char *lx_risk_group_name(lx_risk_group g);
+
+/** PAR (par), IEC 62471 quantities (hz) and LED binning (bin, as lx_binning_batch) of every spectrum
+ * of a batch in one pass over its values: one lx_batch_integrate of all the weighting functions
+ * asked for, then the derived values on opts->threads threads. Each output (n_spectra entries)
+ * may be NULL, not all three. opts may be NULL. Errors: as lx_par_batch. */
+LX_API lx_status lx_lab_batch(lx_ctx *ctx, const lx_batch *batch, const lx_batch_opts *opts, lx_par *par,
+                              lx_hazard *hz, lx_binning *bin);
 
 /** The luminous efficacy of radiation (lm/W, 2 deg observer, auto method) of the single
  * spectrum in a file read with lx_spd_read_file (efficacy.c). Errors: those of lx_spd_read_file;
@@ -1159,6 +1382,7 @@ typedef struct lx_ugr_table {
     double lamp_flux_lm;           /* the flux the table is for */
     double spacing_h;              /* 0.25 */
     double lb_cd_m2[19][5];        /* the background luminance per room and reflectance combination */
+    long long reserved[4];         /* zero: room for later results (ABI policy) */
 } lx_ugr_table;
 LX_API lx_status lx_ugr_table_compute(lx_ctx *ctx, const lx_luminaire *lum, lx_ugr_table *out);
 
@@ -1413,7 +1637,8 @@ typedef enum lx_sky_model {
 /** A sky luminance distribution L(dir) = zenith_cd_m2 * rel(dir) / rel(zenith), zero below the
  * horizon. rel = (1 + a exp(b / cos Z)) * indicatrix(chi): CIE 1 + c (exp(d chi) - exp(d pi/2))
  * + e cos^2 chi; Perez 1 + c exp(d chi) + e cos^2 chi (Z zenith angle of the element, chi its
- * angle from the sun). Plain data: copy freely; evaluating it is thread-safe. */
+ * angle from the sun). Plain data: copy freely; evaluating it is thread-safe. A result (ABI policy:
+ * reserved is written as zero; lx_scene embeds one). */
 typedef struct lx_sky {
     lx_sky_model model;
     int cie_type;               /* 1..15 (CIE), 0 for Perez */
@@ -1426,6 +1651,7 @@ typedef struct lx_sky {
     int perez_bin;              /* Perez: clearness bin 1..8 (0 for CIE) */
     double sun_normal_lx;       /* Perez: the direct normal illuminance Evn from the efficacy model (lx);
                                  * CIE: NaN (the sun's illuminance is given separately) */
+    long long reserved[4];      /* zero: room for later fields */
 } lx_sky;
 
 /** How a CIE sky is scaled: by its zenith luminance (cd/m2) or by its diffuse horizontal
@@ -1442,13 +1668,15 @@ LX_API lx_status lx_sky_cie(lx_ctx *ctx, int type, const double sun_dir[3], lx_s
 /** The parameters (a, b, c, d, e) of CIE type 1..15 from the embedded table (src/data). */
 LX_API lx_status lx_sky_cie_params(lx_ctx *ctx, int type, double params[5]);
 
-/** Inputs of the Perez sky: the sun and the measured irradiance, as gendaylit -W takes them. */
+/** Inputs of the Perez sky: the sun and the measured irradiance, as gendaylit -W takes them (options:
+ * zero-initialise, reserved stays zero). */
 typedef struct lx_perez_input {
     double sun_dir[3];           /* towards the sun, above the horizon */
     double direct_normal_W_m2;   /* DNI, >= 0 */
     double diffuse_horizontal_W_m2; /* DHI, > 0 */
     int day_of_year;             /* 1..366 (the extraterrestrial irradiance's eccentricity factor) */
     double precipitable_water_cm;/* atmospheric precipitable water for the efficacy models (0: 2 cm, gendaylit's default) */
+    long long reserved[4];       /* zero: room for later inputs */
 } lx_perez_input;
 
 /** The Perez all-weather sky for the given irradiance: sky clearness epsilon and brightness Delta
@@ -1470,7 +1698,8 @@ LX_API double lx_sky_luminance(const lx_sky *sky, const double dir[3]);
  * 48: 1e-8 relative or better on the CIE skies). Thread-safe. */
 LX_API lx_status lx_sky_illuminance(lx_ctx *ctx, const lx_sky *sky, const double n[3], int nodes, double *E_lx);
 
-/** Inputs of the solar position algorithm (NREL SPA, Reda & Andreas 2004). */
+/** Inputs of the solar position algorithm (NREL SPA, Reda & Andreas 2004; options: zero-initialise,
+ * reserved stays zero). */
 typedef struct lx_sun_input {
     int year, month, day, hour, minute; /* local standard time; year -2000..6000 */
     double second;
@@ -1483,9 +1712,11 @@ typedef struct lx_sun_input {
     double pressure_mbar;     /* annual mean local pressure (for refraction; 1013.25 at sea level) */
     double temperature_C;     /* annual mean local temperature */
     double refraction_deg;    /* atmospheric refraction at sunrise and sunset (0.5667 usually) */
+    long long reserved[4];    /* zero: room for later inputs */
 } lx_sun_input;
 
-/** The sun's position and the intermediate SPA values the algorithm's published test prints. */
+/** The sun's position and the intermediate SPA values the algorithm's published test prints. A result
+ * (reserved written as zero; lx_scene embeds one). */
 typedef struct lx_sun_position {
     double julian_day;
     double L_deg, B_deg, R_au;     /* Earth heliocentric longitude, latitude, radius vector */
@@ -1495,6 +1726,7 @@ typedef struct lx_sun_position {
     double zenith_deg;             /* topocentric zenith angle, refraction applied */
     double azimuth_deg;            /* from north towards east, 0..360 */
     double dir[3];                 /* unit vector towards the sun (x east, y north, z up) */
+    long long reserved[4];         /* zero: room for later results */
 } lx_sun_position;
 
 /** NREL SPA (Reda & Andreas 2004, NREL/TP-560-34302): the sun's topocentric zenith and azimuth,
@@ -1509,12 +1741,13 @@ LX_API void lx_sun_direction(double altitude_rad, double azimuth_rad, double dir
 /** Half the angle the solar disc subtends: 0.2665 deg (Radiance gendaylit), in radians. */
 #define LX_SUN_HALF_ANGLE_RAD (0.2665 * 3.14159265358979323846 / 180.0)
 
-/** Options of lx_sky_map (zero-initialise for defaults). */
+/** Options of lx_sky_map (zero-initialise for defaults; reserved stays zero). */
 typedef struct lx_sky_map_opts {
     int width, height;           /* lat-long size (0: 1024 x 512) */
     double sun_normal_lx;        /* direct normal illuminance of the sun disc (0: no sun) */
     double ground_reflectance;   /* below the horizon: uniform rho (Dv + Evn sin(altitude)) / pi (0: black) */
     int supersample;             /* sky samples per pixel and axis, Gauss-Legendre in cos(theta) and phi (0: 4) */
+    long long reserved[4];       /* zero: room for later options */
 } lx_sky_map_opts;
 
 /** Renders a sky (and the sun disc) as a one-channel (Y) lat-long map in the convention of
@@ -1696,6 +1929,7 @@ typedef struct lx_scene_observer {
     double view[3];           /* unit line of sight */
     double up[3];             /* unit, orthogonal to view: the vertical of the visual field (from +z) */
     double background_cd_m2;  /* Lb given in the scene (NaN: none) */
+    long long reserved[4];    /* zero: room for later fields (an element of lx_scene.obs) */
 } lx_scene_observer;
 
 /** Forced state of an effect in [effects]. */
@@ -1964,9 +2198,11 @@ typedef struct lx_glare_term {
     double position_index;      /* Guth p (lx_guth_position_index) */
     double sigma_deg, tau_deg;  /* the source's angle from the line of sight, and about it from the vertical */
     double term;                /* L^2 omega / p^2 */
+    long long reserved[4];      /* zero: room for later fields (an element of lx_scene_glare.terms) */
 } lx_glare_term;
 
-/** The glare of a scene at its observers. */
+/** The glare of a scene at its observers; made by lx_scene_glare_eval, freed with lx_scene_glare_free
+ * (a struct only the library allocates). */
 typedef struct lx_scene_glare {
     size_t n_obs, n_lum;
     double *ugr;                /* n_obs: UGR (NaN when no luminaire counts) */

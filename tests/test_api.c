@@ -730,6 +730,87 @@ static void t_lx_ctx_irradiance_method(void)
     assert_int_equal(lx_ctx_irradiance_method(NULL, &q), LX_IRR_AUTO);
     assert_true(isnan(q));
 }
+/* the readers of instrument exports, PAR, hazards and binning */
+static void t_lx_spd_read_file_opts(void)
+{
+    lx_spd_set *s = PSENT;
+    EXPECT_EINVAL(lx_spd_read_file_opts(NULL, SPD_FILE, NULL, &s));
+    assert_ptr_equal(s, PSENT);
+}
+static void t_lx_spd_read_mem_opts(void)
+{
+    lx_spd_set *s = PSENT;
+    EXPECT_EINVAL(lx_spd_read_mem_opts(NULL, "a.csv", SPD_TEXT, strlen(SPD_TEXT), NULL, &s));
+    assert_ptr_equal(s, PSENT);
+}
+static void t_lx_spd_set_vendor(void)
+{
+    lx_spd_set *set = NULL;
+    lx_assert_ok(C, lx_spd_read_mem(C, "a.csv", SPD_TEXT, strlen(SPD_TEXT), &set));
+    lx_vendor_results v;
+    v.cct_K = SENT;
+    EXPECT_EINVAL(lx_spd_set_vendor(NULL, set, &v));
+    assert_true(v.cct_K == SENT);
+    lx_spd_set_free(set);
+}
+static void t_lx_binning_compute(void)
+{
+    lx_binning b;
+    b.sdcm = SENT;
+    EXPECT_EINVAL(lx_binning_compute(NULL, 0.38, 0.38, 4000, 0, &b));
+    assert_true(b.sdcm == SENT);
+}
+static void t_lx_binning_batch(void)
+{
+    lx_binning b[2];
+    b[0].sdcm = SENT;
+    EXPECT_EINVAL(lx_binning_batch(NULL, &BATCH, NULL, b));
+    assert_true(b[0].sdcm == SENT);
+}
+static void t_lx_par_compute(void)
+{
+    lx_par p;
+    p.ppfd = SENT;
+    EXPECT_EINVAL(lx_par_compute(NULL, &D65, LX_METHOD_AUTO, &p));
+    assert_true(p.ppfd == SENT);
+}
+static void t_lx_par_batch(void)
+{
+    lx_par p[2];
+    p[0].ppfd = SENT;
+    EXPECT_EINVAL(lx_par_batch(NULL, &BATCH, NULL, p));
+    assert_true(p[0].ppfd == SENT);
+}
+static void t_lx_hazard_compute(void)
+{
+    lx_hazard h;
+    h.value[0] = SENT;
+    EXPECT_EINVAL(lx_hazard_compute(NULL, &D65, LX_METHOD_AUTO, &h));
+    assert_true(h.value[0] == SENT);
+}
+static void t_lx_hazard_batch(void)
+{
+    lx_hazard h[2];
+    h[0].value[0] = SENT;
+    EXPECT_EINVAL(lx_hazard_batch(NULL, &BATCH, NULL, h));
+    assert_true(h[0].value[0] == SENT);
+}
+static void t_lx_hazard_risk_group(void)
+{
+    lx_hazard h = {{1, 1, 1, 1}, {1, 1, 1, 1}, {0}};
+    lx_hazard_risk r;
+    r.group = (lx_risk_group)7;
+    EXPECT_EINVAL(lx_hazard_risk_group(NULL, &h, 1, 0.01, &r));
+    assert_int_equal(r.group, 7);
+}
+
+static void t_lx_lab_batch(void)
+{
+    lx_par p[2];
+    p[0].ppfd = SENT;
+    EXPECT_EINVAL(lx_lab_batch(NULL, &BATCH, NULL, p, NULL, NULL));
+    assert_true(p[0].ppfd == SENT);
+}
 
 #define CASE(f) {#f, t_##f}
 static const struct api_case {
@@ -740,6 +821,9 @@ static const struct api_case {
     CASE(lx_ugr_table_compute), CASE(lx_sky_cie), CASE(lx_sky_cie_params), CASE(lx_sky_perez), CASE(lx_sky_illuminance),
     CASE(lx_sun_spa), CASE(lx_sky_map), CASE(lx_scene_glare_eval), CASE(lx_warn_cone_flux), CASE(lx_envmap_concentration),
     CASE(lx_ctx_irradiance_method),
+    CASE(lx_spd_read_file_opts), CASE(lx_spd_read_mem_opts), CASE(lx_spd_set_vendor), CASE(lx_binning_compute),
+    CASE(lx_binning_batch), CASE(lx_par_compute), CASE(lx_par_batch), CASE(lx_hazard_compute), CASE(lx_hazard_batch),
+    CASE(lx_hazard_risk_group), CASE(lx_lab_batch),
     CASE(lx_ctx_create), CASE(lx_ctx_destroy), CASE(lx_ctx_errmsg), CASE(lx_ctx_errfile), CASE(lx_ctx_errline),
     CASE(lx_ctx_set_log), CASE(lx_ctx_backend_used), CASE(lx_cl_ready), CASE(lx_ctx_counters),
     CASE(lx_ctx_counters_reset), CASE(lx_backend_parse), CASE(lx_simd_parse), CASE(lx_cl_select), CASE(lx_cl_borrow),
@@ -846,6 +930,18 @@ static void nonzero_reserved_options_refused(void **state)
     lx_colorimetry cc[2];
     EXPECT_EINVAL(lx_batch_colorimetry(ctx, &BATCH, LX_OBSERVER_2, &bo, cc));
     EXPECT_EINVAL(lx_alphaopic_batch(ctx, &BATCH, &bo, out));
+    lx_par pb[2];
+    lx_hazard hb[2];
+    lx_binning bb[2];
+    EXPECT_EINVAL(lx_par_batch(ctx, &BATCH, &bo, pb));
+    EXPECT_EINVAL(lx_hazard_batch(ctx, &BATCH, &bo, hb));
+    EXPECT_EINVAL(lx_binning_batch(ctx, &BATCH, &bo, bb));
+    lx_spd_read_opts rdo = {.skip_bad_rows = 1};
+    rdo.reserved[2] = 1;
+    lx_spd_set *set = PSENT;
+    EXPECT_EINVAL(lx_spd_read_mem_opts(ctx, "a.csv", SPD_TEXT, strlen(SPD_TEXT), &rdo, &set));
+    assert_null(set);
+    assert_non_null(strstr(lx_ctx_errmsg(ctx), "reserved"));
     const double lam[3] = {500, 510, 520}, val[3] = {1, 2, 3};
     const size_t off[1] = {0}, nin[1] = {3};
     double dv[3];
@@ -901,6 +997,27 @@ static void nonzero_reserved_options_refused(void **state)
     p = out_path("reserved_r.png");
     EXPECT_EINVAL(lx_spd_report_write_png(ctx, &D65, &ro, p));
     assert_absent(p);
+
+    /* daylight: the sky map's options and the Perez and SPA inputs */
+    const double sun[3] = {0, 0.5, 0.8};
+    lx_sky sky;
+    lx_assert_ok(ctx, lx_sky_cie(ctx, 12, sun, LX_SKY_BY_ZENITH, 5000, &sky));
+    lx_sky_map_opts mo = {.width = 16, .height = 8};
+    mo.reserved[3] = 1;
+    m = PSENT;
+    EXPECT_EINVAL(lx_sky_map(ctx, &sky, &mo, &m));
+    assert_null(m);
+    lx_perez_input pi = {.sun_dir = {0, 0.5, 0.8}, .direct_normal_W_m2 = 500, .diffuse_horizontal_W_m2 = 100,
+                         .day_of_year = 172};
+    pi.reserved[0] = 1;
+    lx_sky ps;
+    EXPECT_EINVAL(lx_sky_perez(ctx, &pi, &ps));
+    lx_sun_input si = {.year = 2003, .month = 10, .day = 17, .hour = 12, .timezone_h = -7, .delta_t_s = 67,
+                       .latitude_deg = 39.7, .longitude_deg = -105.2, .pressure_mbar = 820, .temperature_C = 11,
+                       .refraction_deg = 0.5667};
+    si.reserved[1] = 1;
+    lx_sun_position sp;
+    EXPECT_EINVAL(lx_sun_spa(ctx, &si, &sp));
 }
 
 /* ABI policy: results are written whole, their reserved space as zero (whatever the caller left there). */
@@ -932,6 +1049,46 @@ static void results_write_reserved_as_zero(void **state)
     DIRTY(ao);
     lx_assert_ok(ctx, lx_alphaopic_compute(ctx, &D65, LX_METHOD_AUTO, &ao));
     ZERO_RESERVED(ao);
+    lx_par par, parb[2];
+    DIRTY(par);
+    DIRTY(parb);
+    lx_assert_ok(ctx, lx_par_compute(ctx, &D65, LX_METHOD_AUTO, &par));
+    lx_assert_ok(ctx, lx_par_batch(ctx, &BATCH, NULL, parb));
+    ZERO_RESERVED(par);
+    ZERO_RESERVED(parb[1]);
+    lx_hazard hz, hzb[2];
+    DIRTY(hz);
+    DIRTY(hzb);
+    lx_assert_ok(ctx, lx_hazard_compute(ctx, &D65, LX_METHOD_AUTO, &hz));
+    lx_assert_ok(ctx, lx_hazard_batch(ctx, &BATCH, NULL, hzb));
+    ZERO_RESERVED(hz);
+    ZERO_RESERVED(hzb[1]);
+    lx_hazard_risk risk;
+    DIRTY(risk);
+    lx_assert_ok(ctx, lx_hazard_risk_group(ctx, &hz, 0, 0, &risk));
+    ZERO_RESERVED(risk);
+    lx_binning bin, binb[2];
+    DIRTY(bin);
+    DIRTY(binb);
+    lx_assert_ok(ctx, lx_binning_compute(ctx, 0.38, 0.38, 4000, 0.001, &bin));
+    lx_assert_ok(ctx, lx_binning_batch(ctx, &BATCH, NULL, binb));
+    ZERO_RESERVED(bin);
+    ZERO_RESERVED(binb[1]);
+    lx_spd_set *vs = NULL;
+    static const char up[] = "Model Name\tCV600\nCCT\t5000\n380nm\t1\n381nm\t2\n";
+    lx_spd_read_opts ro = {.skip_bad_rows = 1};
+    lx_assert_ok(ctx, lx_spd_read_mem_opts(ctx, "u.txt", up, sizeof up - 1, &ro, &vs));
+    lx_vendor_results vr;
+    DIRTY(vr);
+    lx_assert_ok(ctx, lx_spd_set_vendor(ctx, vs, &vr));
+    ZERO_RESERVED(vr);
+    for (size_t i = 0; i < vs->nfields; i++) assert_memory_equal(vs->fields[i].reserved, zero, sizeof vs->fields[i].reserved);
+    lx_spd_set_free(vs);
+    static const char bad[] = "nm,A\n380,1\n385,x\n390,2\n";
+    lx_assert_ok(ctx, lx_spd_read_mem_opts(ctx, "b.csv", bad, sizeof bad - 1, &ro, &vs));
+    assert_int_equal(vs->nskipped, 1);
+    assert_memory_equal(vs->skipped[0].reserved, zero, sizeof vs->skipped[0].reserved);
+    lx_spd_set_free(vs);
     lx_source_result sr;
     DIRTY(sr);
     lx_assert_ok(ctx, lx_disk_illuminance(ctx, 1000, 0.5, 1, 0, LX_MODEL_AUTO, &sr));
@@ -959,6 +1116,33 @@ static void results_write_reserved_as_zero(void **state)
     lx_assert_ok(ctx, lx_cl_devices(ctx, &d, &n));
     for (size_t i = 0; i < n; i++) ZERO_RESERVED(d[i]);
     lx_cl_devices_free(d);
+    /* daylight and glare */
+    const double sun[3] = {0, 0.5, 0.8};
+    lx_sky sky;
+    DIRTY(sky);
+    lx_assert_ok(ctx, lx_sky_cie(ctx, 12, sun, LX_SKY_BY_ZENITH, 5000, &sky));
+    ZERO_RESERVED(sky);
+    lx_perez_input pi = {.sun_dir = {0, 0.5, 0.8}, .direct_normal_W_m2 = 500, .diffuse_horizontal_W_m2 = 100,
+                         .day_of_year = 172};
+    DIRTY(sky);
+    lx_assert_ok(ctx, lx_sky_perez(ctx, &pi, &sky));
+    ZERO_RESERVED(sky);
+    lx_sun_input si = {.year = 2003, .month = 10, .day = 17, .hour = 12, .timezone_h = -7, .delta_t_s = 67,
+                       .latitude_deg = 39.7, .longitude_deg = -105.2, .pressure_mbar = 820, .temperature_C = 11,
+                       .refraction_deg = 0.5667};
+    lx_sun_position sp;
+    DIRTY(sp);
+    lx_assert_ok(ctx, lx_sun_spa(ctx, &si, &sp));
+    ZERO_RESERVED(sp);
+    lx_lum_model pm = {.kind = LX_LUM_MODEL_LAMBERT, .flux_lm = 1000, .width_m = 0.6, .length_m = 0.6};
+    lx_luminaire *panel = NULL;
+    lx_assert_ok(ctx, lx_luminaire_from_model(ctx, &pm, &panel));
+    lx_ugr_table *ut = malloc(sizeof *ut);
+    DIRTY(*ut);
+    lx_assert_ok(ctx, lx_ugr_table_compute(ctx, panel, ut));
+    ZERO_RESERVED(*ut);
+    free(ut);
+    lx_luminaire_free(panel);
 }
 
 /* Creating functions set *out to NULL when they fail (here: on an argument they refuse). */

@@ -10,6 +10,7 @@
 #include "fuzz/fuzz_batch.c"
 #include "fuzz/fuzz_exr.c"
 #include "fuzz/fuzz_ies.c"
+#include "fuzz/fuzz_instruments.c"
 #include "fuzz/fuzz_scene.c"
 #include "fuzz/fuzz_spd.c"
 #include "fuzz/fuzz_units.c"
@@ -84,6 +85,22 @@ static void test_exr_inputs(void **state)
     assert_true(n >= 40);
 }
 
+static void test_instruments_inputs(void **state)
+{
+    (void)state;
+    /* each file with a run of option bytes (layouts forced, bad rows skipped, units, columns) */
+    int n = replay_dir("tests/fuzz/regressions/instruments", fuzz_instruments_one);
+    n += replay_dir("tests/fuzz/seeds/instruments", fuzz_instruments_file);
+    n += replay_dir("tests/data/instruments/good", fuzz_instruments_file) + replay_dir("tests/data/instruments/bad", fuzz_instruments_file);
+    const char *shared = getenv("LX_SHARED_DIR");
+    if (shared && *shared) {
+        char dir[1024];
+        snprintf(dir, sizeof dir, "%s/spectra/instruments", shared);
+        replay_dir(dir, fuzz_instruments_file);
+    }
+    assert_true(n >= 40);
+}
+
 static void test_units_inputs(void **state)
 {
     (void)state;
@@ -96,6 +113,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_spd_inputs),
         cmocka_unit_test(test_units_inputs),
+        cmocka_unit_test(test_instruments_inputs),
         cmocka_unit_test(test_ies_inputs),
         cmocka_unit_test(test_scene_inputs),
         cmocka_unit_test(test_batch_inputs),

@@ -1,6 +1,8 @@
 /* test_threads.c - thread safety as documented: each thread with its own context gets
  * bit-identical results to a serial run, while sharing read-only objects (a spectral set, a
- * luminaire) and the lazily built tables; functions without a context are pure. */
+ * luminaire) and the lazily built tables; functions without a context are pure; threads with their
+ * own contexts may use OpenCL at once (each starts its own OpenCL state and builds its program).
+ * make tsan runs this file under ThreadSanitizer with OpenCL on. */
 #include "lx_test.h"
 
 #include <pthread.h>
@@ -102,11 +104,69 @@ static void test_repeatable(void **state)
     }
 }
 
+/* ---- OpenCL from several threads at once ---- */
+
+#define CL_NS 64
+#define CL_NL 471
+static float g_cl_values[CL_NS * CL_NL];
+static const lx_function CL_FNS[4] = {LX_FN_XBAR_2, LX_FN_YBAR_2, LX_FN_ZBAR_2, LX_FN_VPRIME};
+
+typedef struct cl_job {
+    double out[CL_NS * 4];
+    lx_status st;
+    lx_backend used;
+} cl_job;
+
+static void *cl_thread(void *arg)
+{
+    cl_job *j = arg;
+    lx_ctx *ctx = NULL;
+    if ((j->st = lx_ctx_create(&ctx)) != LX_OK) return NULL;
+    lx_batch b = {.n_spectra = CL_NS, .n_lambda = CL_NL, .start_nm = 360, .step_nm = 1, .dtype = LX_F32,
+                  .values = g_cl_values};
+    lx_batch_opts o = {.backend = LX_BACKEND_OPENCL, .chunk_spectra = 16};
+    j->st = lx_batch_integrate(ctx, &b, CL_FNS, 4, &o, j->out);
+    j->used = lx_ctx_backend_used(ctx);
+    lx_ctx_destroy(ctx);
+    return NULL;
+}
+
+static void test_opencl_contexts_in_parallel(void **state)
+{
+    lx_ctx *ctx = *state;
+    lx_cl_device_info *d = NULL;
+    size_t n = 0;
+    lx_assert_ok(ctx, lx_cl_devices(ctx, &d, &n));
+    lx_cl_devices_free(d);
+    if (n == 0) {
+        print_message("no OpenCL device (or LX_OPENCL=0): skipped\n");
+        skip();
+    }
+    for (int i = 0; i < CL_NS * CL_NL; i++) g_cl_values[i] = (float)lx_planck(360 + i % CL_NL, 2000 + 50 * (i / CL_NL));
+    /* the reference: the CPU path; the device's float sums agree to the documented 1e-6 */
+    lx_batch b = {.n_spectra = CL_NS, .n_lambda = CL_NL, .start_nm = 360, .step_nm = 1, .dtype = LX_F32,
+                  .values = g_cl_values};
+    lx_batch_opts cpu = {.backend = LX_BACKEND_CPU};
+    static double ref[CL_NS * 4];
+    lx_assert_ok(ctx, lx_batch_integrate(ctx, &b, CL_FNS, 4, &cpu, ref));
+    static cl_job jobs[NT];
+    pthread_t tid[NT];
+    for (int t = 0; t < NT; t++) assert_int_equal(pthread_create(&tid[t], NULL, cl_thread, &jobs[t]), 0);
+    for (int t = 0; t < NT; t++) pthread_join(tid[t], NULL);
+    for (int t = 0; t < NT; t++) {
+        assert_int_equal(jobs[t].st, LX_OK);
+        assert_int_equal(jobs[t].used, LX_BACKEND_OPENCL);
+        for (int i = 0; i < CL_NS * 4; i++) lx_assert_near(jobs[t].out[i], ref[i], 1e-300, 1e-6);
+        assert_memory_equal(jobs[t].out, jobs[0].out, sizeof jobs[0].out); /* one device, one program: the same bits */
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_threads_match_serial),
         cmocka_unit_test(test_repeatable),
+        cmocka_unit_test(test_opencl_contexts_in_parallel),
     };
     return cmocka_run_group_tests_name("threads", tests, lx_test_ctx_setup, lx_test_ctx_teardown);
 }

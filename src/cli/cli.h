@@ -108,6 +108,14 @@ int cli_table_write(cli_table *t, cli_format fmt, FILE *out, int json_array);
 int cli_table_flush(cli_table *t, cli_format fmt, FILE *out, int json_array, int final);
 void cli_table_free(cli_table *t);
 int cli_table_rows(const cli_table *t); /* rows added so far, written or not */
+/* A cell holding JSON text, written as it is in json (never NULL: "null" for none). */
+void cli_table_json(cli_table *t, const char *json);
+/* Marks column col as written in json only (csv and table leave it out). */
+void cli_table_json_only(cli_table *t, int col);
+/* Replaces the units shown in the table format for rows written from now on (flush first). */
+void cli_table_set_units(cli_table *t, const char *const *units);
+/* Writes s as a JSON string (quoted, escaped). */
+void cli_json_string(FILE *out, const char *s);
 
 /* Prints a double in the shortest form that reads back exactly ("%.17g" trimmed). */
 void cli_print_exact(FILE *out, double v);

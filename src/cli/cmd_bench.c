@@ -29,6 +29,8 @@ int cli_bench_grid(FILE *out); /* bench_grid.c */
 static int bench_grid(bench_ctx *b) { return cli_bench_grid(b->out); }
 int cli_bench_metrics(FILE *out); /* bench_metrics.c */
 static int bench_metrics(bench_ctx *b) { return cli_bench_metrics(b->out); }
+int cli_bench_lab(FILE *out); /* bench_lab.c */
+static int bench_lab(bench_ctx *b) { return cli_bench_lab(b->out); }
 
 int cli_bench_irradiance(FILE *out); /* bench_irradiance.c */
 static int bench_irradiance(bench_ctx *b) { return cli_bench_irradiance(b->out); }
@@ -43,9 +45,10 @@ static const struct {
 } topics[] = {
     {"spd", bench_spd, "batch spectra -> XYZ V': in memory vs read bandwidth, CSV end to end vs peers"},
     {"metrics", bench_metrics, "CRI, TM-30 and alpha-opic per second over 1e5 spectra vs colour-science, luxpy"},
+    {"lab", bench_lab, "PAR, IEC 62471 hazards and LED binning of 2.5e5 spectra on the batch path (goal 1e6/s)"},
     {"grid", bench_grid, "illuminance grid: 1e6 points x 10 luminaires, CPU and OpenCL vs numpy"},
     /* ---- bench topics (one line each: irradiance, grid, accuracy) ---- */
-    {"accuracy", bench_accuracy, "error against a reference vs time of every method: spectra, radiance fields, lighting"},
+    {"accuracy", bench_accuracy, "error against a reference vs time of every method: spectra, radiance fields, lighting, near field"},
     {"irradiance", bench_irradiance, "irradiance maps: SH9, exact (fast), brute force vs numpy, 512x256..4096x2048"},
     {"room", bench_room, "interreflection: error of the work-plane mean and worst point against time, tolerance 1e-1..1e-4"},
     {NULL, NULL, NULL},

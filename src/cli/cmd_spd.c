@@ -4,6 +4,7 @@
 #include "spd_metrics.h"
 #include "progress.h"
 #include "spd_report.h"
+#include "spd_input.h"
 
 #include <getopt.h>
 
@@ -18,9 +19,12 @@ static const char help[] =
     "Reads spectral power distributions and prints, for each spectrum, absolute XYZ, xy, u'v',\n"
     "CCT and Duv, luminous efficacy of radiation, scotopic Y and the S/P ratio.\n"
     "FILE: columns (wavelength_nm, value...) or rows (id,380,381,...), separators , ; tab space,\n"
-    "'#' comments, optional header; CGATS/Argyll spectral files; '-' reads standard input.\n"
-    "Text files are read up to 256 MB (luxcalc --max-input-mb N, or LX_MAX_INPUT_MB, raises it);\n"
-    "rows-layout files on a 1 or 5 nm grid are streamed at any size (lines up to 4 MB).\n"
+    "'#' comments, optional header (a title or Key: value lines above it are kept as fields);\n"
+    "Excel CSV; CGATS/Argyll spectral files; the exports of OceanView and SpectraSuite, Sekonic,\n"
+    "UPRtek and LI-COR, IES TM-27 (.spdx), AvaSoft, SpectraWiz, recognised by their content;\n"
+    "'-' reads standard input. Text files are read up to 256 MB (luxcalc --max-input-mb N, or\n"
+    "LX_MAX_INPUT_MB, raises it); rows-layout files on a 1 or 5 nm grid are streamed at any size\n"
+    "(lines up to 4 MB).\n"
     "\n"
     "options:\n"
     "  --observer 2|10        CIE 1931 2 deg (default) or CIE 1964 10 deg observer\n"
@@ -29,28 +33,48 @@ static const char help[] =
     "                         exact: exact integral of piecewise-linear data x piecewise-linear CMFs\n"
     "                         linear1nm: interpolate to 1 nm, then sum\n"
     "                         auto: cie15 for uniform 1 or 5 nm data on whole nm, else exact\n"
-    "  --unit U               what the values are: relative (default) | W/nm (Y in lm) |\n"
-    "                         W/m2/nm (lx) | W/sr/m2/nm (cd/m2) | W/sr/nm (cd)\n"
-    "  --metrics LIST|all     colour rendering and photobiology columns after the others; LIST is\n"
-    "                         comma-separated groups (cri, tm30, alphaopic, mesopic) or column\n"
-    "                         names: cri_ra,cri_r1..cri_r14 (CIE 13.3), tm30_rf,tm30_rg (CIE 224 /\n"
-    "                         TM-30-20), melanopic_edi_lx,melanopic_der, alphaopic_sc,_mc,_lc,_rh,_mel\n"
-    "                         (CIE S 026), then cri_valid,cri_dc, tm30_rf_h1..16, tm30_rcs_h1..16,\n"
-    "                         tm30_rhs_h1..16, {cyan,chlor,erythr,rhod}opic_edi/_der, mesopic_cd_m2,\n"
-    "                         mesopic_m (CIE 191; only with --unit W/sr/m2/nm). alphaopic_* are\n"
-    "                         irradiances in W/m2 and *_edi illuminances in lx for --unit W/m2/nm\n"
-    "                         (W/sr/m2/nm: W/(sr m2) and equivalent daylight luminance cd/m2; W/nm:\n"
-    "                         W and lm; relative: same arithmetic, no unit). A metric that is\n"
-    "                         undefined for a spectrum (far off the locus, truncated data) is left\n"
-    "                         empty and the reason printed on stderr.\n"
-    "  --format F             table (default) | csv | json\n"
+    "  --unit U               what the values are: relative | W/nm (Y in lm) | W/m2/nm (lx) |\n"
+    "                         W/sr/m2/nm (cd/m2) | W/sr/nm (cd); default: the unit the file's format\n"
+    "                         fixes (Sekonic W/m2/nm; UPRtek, LI-COR mW/m2/nm and AvaSoft irradiance\n"
+    "                         uW/cm2/nm, converted), else relative\n"
+    "  --metrics LIST|all     more columns after the others; LIST is comma-separated groups or column\n"
+    "                         names. cri: cri_ra,cri_r1..cri_r14 (CIE 13.3), cri_valid, cri_dc;\n"
+    "                         tm30: tm30_rf,tm30_rg (CIE 224 / TM-30-20), hue bins; alphaopic:\n"
+    "                         melanopic_edi_lx,melanopic_der, alphaopic_sc,_mc,_lc,_rh,_mel (CIE S 026),\n"
+    "                         {cyan,chlor,erythr,rhod}opic_edi/_der; mesopic: mesopic_cd_m2, mesopic_m\n"
+    "                         (CIE 191; only with --unit W/sr/m2/nm); vendor: vendor_* (the results the\n"
+    "                         instrument wrote into its export); par: par_ppfd,par_epar,par_ypf\n"
+    "                         (umol/s per m2 for W/m2/nm; ANSI/ASABE S640, McCree 1972),\n"
+    "                         par_photon_efficacy_umol_J, par_dli_mol_m2_d (with --photoperiod);\n"
+    "                         hazard: hazard_blue, _thermal, _actinic_uv, _uva (IEC 62471 B, R, S_UV\n"
+    "                         weighted; UV-A), their _coverage, hazard_risk_group, _risk_basis,\n"
+    "                         _not_covered; binning: binning_ansi_K, _duv_offset (ANSI C78.377-2017),\n"
+    "                         binning_flex_K, _duv_offset (flexible CCT), binning_sdcm,\n"
+    "                         binning_sdcm_centre (MacAdam steps, IEC 60081 centres).\n"
+    "                         A metric undefined for a spectrum is left empty, the reason on stderr;\n"
+    "                         a band the data does not cover is \"not covered\", never 0\n"
+    ;
+static const char help2[] =
+    "  --photoperiod H        hours of light a day for the daily light integral (par_dli_mol_m2_d)\n"
+    "  --subtense A           the source's angular subtense (rad, or 0.6deg) for the IEC 62471\n"
+    "                         retinal thermal limits (risk group from L_R)\n"
+    "  --format F             table (default) | csv | json (json adds each file's \"instrument\":\n"
+    "                         its layout, unit and header fields)\n"
     "  -o FILE                write the results to FILE (atomically)\n"
     "  --backend B            auto (default; also LX_BACKEND) | cpu | opencl: where batches run.\n"
     "                         A file of >= 1024 spectra on one uniform 1 or 5 nm grid (or any\n"
     "                         size with --backend) is integrated as a batch (vectorised, threaded;\n"
     "                         agrees with the per-spectrum path to 1e-9 relative)\n"
-    "  --input-format F       text (default) | f32: raw little-endian float32 spectra, one after\n"
-    "  --grid START:END:STEP  another, on the grid given by --grid (nm); spectra named 1, 2, ...\n"
+    "  --input-format F       auto (default) | columns | rows | cgats | oceanview | sekonic | uprtek |\n"
+    "                         tm27 | avantes | spectrawiz: read every FILE as that layout; f32: raw\n"
+    "  --grid START:END:STEP  little-endian float32 spectra, one after another, on the grid given by\n"
+    "                         --grid (nm); spectra named 1, 2, ...\n"
+    "  --skip-lines N         ignore the first N lines of every file (line numbers still count them)\n"
+    "  --columns WL,V[,...]   the wavelength and value columns to read, by header name or number (from 1)\n"
+    "  --wavelength-unit U    nm | um | A: the file's wavelength unit (default: from the header, else\n"
+    "                         micrometres when every wavelength is below 10; -v says which)\n"
+    "  --skip-bad-rows        report each malformed data row (FILE:LINE: why) and read the rest; the\n"
+    "                         exit status is then 2\n"
     "  --report DIR           one PNG report per spectrum: DIR/<file-stem>_<spectrum>.png (SPD,\n"
     "                         swatch, CIE xy, R1-R14, TM-30 vector graphic, headline numbers)\n"
     "  --diagram xy|uv        the report's chromaticity diagram: CIE 1931 xy (default) or\n"
@@ -61,14 +85,17 @@ static const char help[] =
     "\n"
     "csv columns: file,spectrum,X,Y,Z,x,y,u_prime,v_prime,cct_K,duv,ler_lm_per_W,scotopic_Y,\n"
     "sp_ratio,radiant,method. cct_K and duv are empty where CCT has no meaning (|Duv| > 0.05 or\n"
-    "outside 1000-100000 K). A bad file is reported and skipped; the exit status is then 2.\n"
+    "outside 1000-100000 K). A bad file is reported and skipped; the exit status is then 2. A\n"
+    "spectrum with no overlap with 360-830 nm is reported on stderr (its photometric values are 0).\n"
     "\n"
     "example:\n"
     "  luxcalc spd --format csv samples/spd/cie_illuminants.csv\n"
     "  luxcalc spd --unit W/nm --observer 10 lamp.csv\n"
     "  luxcalc spd --unit W/m2/nm --metrics all --format csv lamp.csv\n"
+    "  luxcalc spd --metrics vendor,par,binning --format csv ESPD2021_0104_231446.xls\n"
     "  luxcalc spd --report reports/ lamp.csv\n";
 
+/* in the order of cli_spd_unit_names */
 static const struct {
     const char *name, *photometric, *radiant;
 } units[] = {
@@ -115,7 +142,19 @@ static void spd_flush(void *arg)
     if (cli_table_flush(so->t, so->fmt, so->o.fp, 0, 0) != 0) so->failed = 1;
 }
 
-int cmd_spd(int argc, char **argv)
+/* The options of one run. */
+typedef struct spd_args {
+    const char *cmd, *outpath, *grid, *backend_text, *report_dir, *png;
+    lx_observer obs;
+    lx_method method;
+    int fmt, unit, unit_given, f32, backend_given;
+    lx_diagram diagram;
+    cli_metrics msel;
+    lx_spd_read_opts ropts;
+    int reader_opts; /* any option of the text readers given (the rows-layout stream path then steps aside) */
+} spd_args;
+
+static int parse_args(int argc, char **argv, spd_args *a)
 {
     static const struct option opts[] = {
         {"observer", required_argument, NULL, 'b'}, {"method", required_argument, NULL, 'm'},
@@ -126,204 +165,345 @@ int cmd_spd(int argc, char **argv)
         {"backend", required_argument, NULL, 'B'},  {"input-format", required_argument, NULL, 'I'},
         {"grid", required_argument, NULL, 'G'},
         {"report", required_argument, NULL, 'R'}, {"png", required_argument, NULL, 'P'},
+        {"skip-lines", required_argument, NULL, 'L'}, {"columns", required_argument, NULL, 'C'},
+        {"wavelength-unit", required_argument, NULL, 'W'}, {"skip-bad-rows", no_argument, NULL, 'S'},
+        {"photoperiod", required_argument, NULL, 'H'}, {"subtense", required_argument, NULL, 'A'},
         {"diagram", required_argument, NULL, 'D'},
         {NULL, 0, NULL, 0},
     };
-    const char *cmd = "spd", *outpath = NULL;
-    lx_observer obs = LX_OBSERVER_2;
-    lx_method method = LX_METHOD_AUTO;
-    int fmt = CLI_FMT_TABLE, unit = 0, c;
-    cli_metrics msel = {{0}, 0};
-    int f32 = 0, backend_given = getenv("LX_BACKEND") != NULL;
-    const char *grid = NULL, *backend_text = getenv("LX_BACKEND");
-    const char *report_dir = NULL, *png = NULL;
-    lx_diagram diagram = LX_DIAGRAM_XY;
+    const char *cmd = a->cmd;
+    int c;
+    char *end;
     optind = 1;
     while ((c = getopt_long(argc, argv, ":o:vqh", opts, NULL)) != -1) {
         switch (c) {
         case 'b':
-            if (!strcmp(optarg, "2")) obs = LX_OBSERVER_2;
-            else if (!strcmp(optarg, "10")) obs = LX_OBSERVER_10;
+            if (!strcmp(optarg, "2")) a->obs = LX_OBSERVER_2;
+            else if (!strcmp(optarg, "10")) a->obs = LX_OBSERVER_10;
             else return cli_error(cmd, "--observer: expected 2 or 10, not '%s'", optarg), CLI_USAGE;
             break;
         case 'm':
-            if (!strcmp(optarg, "auto")) method = LX_METHOD_AUTO;
-            else if (!strcmp(optarg, "cie15")) method = LX_METHOD_CIE15;
-            else if (!strcmp(optarg, "exact")) method = LX_METHOD_EXACT;
-            else if (!strcmp(optarg, "linear1nm")) method = LX_METHOD_LINEAR1NM;
+            if (!strcmp(optarg, "auto")) a->method = LX_METHOD_AUTO;
+            else if (!strcmp(optarg, "cie15")) a->method = LX_METHOD_CIE15;
+            else if (!strcmp(optarg, "exact")) a->method = LX_METHOD_EXACT;
+            else if (!strcmp(optarg, "linear1nm")) a->method = LX_METHOD_LINEAR1NM;
             else return cli_error(cmd, "--method: expected auto, cie15, exact or linear1nm, not '%s'", optarg), CLI_USAGE;
             break;
         case 'u':
-            unit = -1;
-            for (int i = 0; i < (int)(sizeof units / sizeof *units); i++)
-                if (!strcmp(optarg, units[i].name)) unit = i;
-            if (unit < 0)
+            if ((a->unit = cli_spd_unit_index(optarg)) < 0)
                 return cli_error(cmd, "--unit: expected relative, W/nm, W/m2/nm, W/sr/m2/nm or W/sr/nm, not '%s'", optarg),
                        CLI_USAGE;
+            a->unit_given = 1;
             break;
         case 'f':
-            if ((fmt = cli_format_parse(optarg)) < 0)
+            if ((a->fmt = cli_format_parse(optarg)) < 0)
                 return cli_error(cmd, "--format: expected table, csv or json, not '%s'", optarg), CLI_USAGE;
             break;
         case 'M':
-            if (cli_metrics_parse(&msel, optarg, cmd) != 0) return CLI_USAGE;
+            if (cli_metrics_parse(&a->msel, optarg, cmd) != 0) return CLI_USAGE;
             break;
-        case 'B': backend_text = optarg, backend_given = 1; break;
+        case 'B': a->backend_text = optarg, a->backend_given = 1; break;
         case 'I':
-            if (!strcmp(optarg, "f32")) f32 = 1;
-            else if (!strcmp(optarg, "text")) f32 = 0;
-            else return cli_error(cmd, "--input-format: expected text or f32, not '%s'", optarg), CLI_USAGE;
+            if (cli_spd_input_format(cmd, optarg, &a->ropts.format, &a->f32) != 0) return CLI_USAGE;
+            if (a->ropts.format) a->reader_opts = 1;
             break;
-        case 'G': grid = optarg; break;
-        case 'R': report_dir = optarg; break;
+        case 'L':
+            a->ropts.skip_lines = strtol(optarg, &end, 10);
+            if (*end || end == optarg || a->ropts.skip_lines < 0)
+                return cli_error(cmd, "--skip-lines: expected a count of lines, not '%s'", optarg), CLI_USAGE;
+            a->reader_opts = 1;
+            break;
+        case 'C': a->ropts.columns = optarg, a->reader_opts = 1; break;
+        case 'W':
+            if (strcmp(optarg, "nm") && strcmp(optarg, "um") && strcmp(optarg, "\xc2\xb5m") && strcmp(optarg, "A") &&
+                strcmp(optarg, "\xc3\x85"))
+                return cli_error(cmd, "--wavelength-unit: expected nm, um or A, not '%s'", optarg), CLI_USAGE;
+            a->ropts.wavelength_unit = optarg, a->reader_opts = 1;
+            break;
+        case 'S': a->ropts.skip_bad_rows = 1, a->reader_opts = 1; break;
+        case 'H': {
+            double h = strtod(optarg, &end);
+            if (*end == 'h' && end[1] == 0) end++;
+            if (*end || end == optarg || !(h >= 0 && h <= 24))
+                return cli_error(cmd, "--photoperiod: expected hours of light a day (0-24), not '%s'", optarg), CLI_USAGE;
+            a->msel.photoperiod_h = h;
+            break;
+        }
+        case 'A': {
+            lx_ctx *ctx = cli_ctx(cmd);
+            double v;
+            lx_status st = ctx ? lx_quantity_parse(ctx, optarg, LX_Q_ANGLE, "rad", &v, NULL) : LX_ENOMEM;
+            if (st != LX_OK || !(v > 0)) {
+                cli_error(cmd, "--subtense: expected a positive angle (0.011 for rad, or 0.6deg), not '%s'%s%s", optarg,
+                          st != LX_OK && ctx ? ": " : "", st != LX_OK && ctx ? lx_ctx_errmsg(ctx) : "");
+                lx_ctx_destroy(ctx);
+                return CLI_USAGE;
+            }
+            lx_ctx_destroy(ctx);
+            a->msel.subtense_rad = v;
+            break;
+        }
+        case 'G': a->grid = optarg; break;
+        case 'R': a->report_dir = optarg; break;
         case 'D':
-            if (!strcmp(optarg, "xy")) diagram = LX_DIAGRAM_XY;
-            else if (!strcmp(optarg, "uv")) diagram = LX_DIAGRAM_UV;
+            if (!strcmp(optarg, "xy")) a->diagram = LX_DIAGRAM_XY;
+            else if (!strcmp(optarg, "uv")) a->diagram = LX_DIAGRAM_UV;
             else return cli_error(cmd, "--diagram: expected xy or uv, not '%s'", optarg), CLI_USAGE;
             break;
-        case 'P': png = optarg; break;
-        case 'o': outpath = optarg; break;
+        case 'P': a->png = optarg; break;
+        case 'o': a->outpath = optarg; break;
         case 'v': cli_verbose++; break;
         case 'q': cli_quiet = 1; break;
-        case 'h': cli_print_help(help); return CLI_OK;
+        case 'h': cli_print_help(help), cli_print_help(help2); return -1;
         default: return cli_bad_option(cmd, argv, c);
         }
     }
+    a->msel.observer = a->obs;
+    return CLI_OK;
+}
+
+/* The column units for a file's unit (base columns then metrics), built once per unit. */
+typedef struct spd_cols {
+    const char *names[16 + CLI_METRICS_MAX + 1];
+    const char *unit_cols[5][16 + CLI_METRICS_MAX + 1];
+    char ler_unit[5][16];
+    int n;
+} spd_cols;
+
+/* The columns for every unit; the names are those of unit `named` (metric names can depend on the
+ * unit: melanopic_edi_lx, melanopic_edl_cd_m2, ...), the header being printed once per run. */
+static void build_cols(spd_cols *C, const cli_metrics *msel, int named)
+{
+    static const char *const base[] = {"file", "spectrum", "X", "Y", "Z", "x", "y", "u_prime", "v_prime", "cct_K", "duv",
+                                       "ler_lm_per_W", "scotopic_Y", "sp_ratio", "radiant", "method"};
+    for (int u = 0; u < 5; u++) {
+        const char *pu = units[u].photometric, *ru = units[u].radiant;
+        snprintf(C->ler_unit[u], sizeof C->ler_unit[u], "%s", u ? "lm/W" : "");
+        const char *bu[] = {"", "", pu, pu, pu, "", "", "", "", "K", "", C->ler_unit[u], pu, "", ru, ""};
+        memcpy(C->names, base, sizeof base);
+        memcpy(C->unit_cols[u], bu, sizeof bu);
+        int n = cli_metrics_columns(msel, units[u].name, C->names, C->unit_cols[u], 16);
+        C->names[n] = "instrument"; /* json only */
+        C->unit_cols[u][n] = "";
+        C->n = n + 1;
+    }
+    const char *scratch[sizeof C->unit_cols[0] / sizeof C->unit_cols[0][0]];
+    memcpy(C->names, base, sizeof base);
+    cli_metrics_columns(msel, units[named].name, C->names, scratch, 16);
+}
+
+/* One run over the files. */
+typedef struct spd_run {
+    spd_args *a;
+    lx_ctx *ctx;
+    cli_table *t;
+    spd_out so;
+    spd_cols C;
+    int table_unit;
+    cli_spd_batch B;
+    cli_reports reports;
+    int rc;
+} spd_run;
+
+static void set_unit(spd_run *R, int u)
+{
+    if (u == R->table_unit) return;
+    spd_flush(&R->so);
+    cli_table_set_units(R->t, R->C.unit_cols[u]);
+    R->table_unit = u;
+}
+
+/* The unit of a file: --unit, else the one its format fixes, else relative. */
+static int file_unit(spd_run *R, const lx_spd_set *set)
+{
+    int fu = cli_spd_unit_index(set->unit);
+    if (!R->a->unit_given) return fu >= 0 ? fu : 0;
+    if (set->unit && fu != R->a->unit && !cli_quiet)
+        cli_error(R->a->cmd, "%s: warning: its format gives values in %s (%s); computing as --unit %s", set->file,
+                  set->unit, set->unit_source ? set->unit_source : "", units[R->a->unit].name);
+    return R->a->unit;
+}
+
+static void fail(spd_run *R, lx_status st)
+{
+    int e = cli_fail(R->a->cmd, R->ctx, st);
+    if (e > R->rc) R->rc = e;
+}
+
+static void do_set(spd_run *R, lx_spd_set *set)
+{
+    spd_args *a = R->a;
+    int e = cli_spd_report_skipped(a->cmd, set);
+    if (e > R->rc) R->rc = e;
+    int u = file_unit(R, set);
+    set_unit(R, u);
+    lx_vendor_results vendor;
+    int have_vendor = lx_spd_set_vendor(R->ctx, set, &vendor) == LX_OK && vendor.count > 0;
+    char *inst = cli_spd_instrument_json(set);
+    cli_spd_batch *B = &R->B;
+    B->unit = units[u].name, B->vendor = have_vendor ? &vendor : NULL, B->instrument = inst;
+    if ((!a->msel.any || cli_metrics_batchable(&a->msel)) && !a->report_dir && cli_spd_batchable(B, set)) {
+        lx_status st = cli_spd_batch_set(B, set);
+        if (st != LX_OK) fail(R, st);
+        B->vendor = NULL, B->instrument = NULL;
+        free(inst);
+        return;
+    }
+    B->vendor = NULL, B->instrument = NULL;
+    cli_table *t = R->t;
+    if (set->count >= (a->report_dir ? 8 : 256)) cli_progress_start(set->count, set->file);
+    for (size_t k = 0; k < set->count; k++) {
+        cli_progress_update(k);
+        lx_colorimetry r;
+        long line = set->line ? set->line[k] : 0L;
+        lx_status st = lx_spd_colorimetry(R->ctx, &set->spd[k], a->obs, a->method, &r);
+        if (st == LX_OK) st = lx_colorimetry_check(R->ctx, &r, NAN); /* before printing: no blank columns */
+        if (st != LX_OK) {
+            cli_error(a->cmd, "%s:%ld: spectrum '%s': %s", set->file, line, set->spd[k].name ? set->spd[k].name : "",
+                      lx_ctx_errmsg(R->ctx));
+            if (cli_exit_code(st) > R->rc) R->rc = cli_exit_code(st);
+            continue;
+        }
+        if (!r.cct_valid && !cli_quiet) { /* every empty cell says why */
+            char why[LX__ERRMSG_MAX_CLI];
+            cli_cct_reason(R->ctx, &r, a->obs, why, sizeof why);
+            cli_error(a->cmd, "%s:%ld: spectrum '%s': cct_K and duv empty: %s", set->file, line,
+                      set->spd[k].name ? set->spd[k].name : "", why);
+        }
+        cli_table_str(t, set->file);
+        cli_table_str(t, set->spd[k].name ? set->spd[k].name : "");
+        double v[] = {r.X, r.Y, r.Z, r.x, r.y, r.u_prime, r.v_prime, r.cct_K, r.duv, r.ler_lm_per_W,
+                      r.scotopic_Y, r.sp_ratio, r.radiant};
+        for (size_t j = 0; j < sizeof v / sizeof *v; j++) cli_table_num(t, v[j]);
+        cli_table_str(t, method_name(r.method));
+        if (a->msel.any &&
+            cli_metrics_row(t, R->ctx, &a->msel, &set->spd[k], a->method, units[u].name, &r,
+                            have_vendor ? &vendor : NULL, set->file, line, a->cmd) > 0 && R->rc < CLI_INPUT)
+            R->rc = CLI_INPUT;
+        cli_table_json(t, inst);
+        if (a->report_dir) {
+            R->reports.opts.unit = units[u].name;
+            int re = cli_spd_report(&R->reports, R->ctx, set->file, k, &set->spd[k]);
+            if (re > R->rc) R->rc = re;
+        }
+    }
+    cli_progress_end();
+    free(inst);
+}
+
+static void do_file(spd_run *R, const char *arg, double g_start, double g_step, size_t g_n)
+{
+    spd_args *a = R->a;
+    if (a->f32) {
+        set_unit(R, a->unit);
+        R->B.unit = units[a->unit].name;
+        lx_status st = cli_spd_f32_file(&R->B, arg, g_start, g_step, g_n);
+        if (st != LX_OK && cli_exit_code(st) > R->rc) R->rc = cli_exit_code(st);
+        spd_flush(&R->so);
+        return;
+    }
+    /* rows-layout files: streamed, integrated chunk by chunk (spd_batch.c); else the general reader */
+    set_unit(R, a->unit);
+    R->B.unit = units[a->unit].name;
+    int streamed = (!a->msel.any || cli_metrics_batchable(&a->msel)) && !a->report_dir && !a->reader_opts
+                       ? cli_spd_batch_file(&R->B, arg) : 0;
+    if (streamed < 0 && -streamed > R->rc) R->rc = -streamed;
+    if (streamed) {
+        spd_flush(&R->so);
+        return;
+    }
+    lx_spd_set *set = NULL;
+    lx_status st = lx_spd_read_file_opts(R->ctx, arg, &a->ropts, &set);
+    if (st != LX_OK) {
+        fail(R, st);
+        return;
+    }
+    do_set(R, set);
+    lx_spd_set_free(set);
+    spd_flush(&R->so);
+}
+
+int cmd_spd(int argc, char **argv)
+{
+    spd_args a;
+    memset(&a, 0, sizeof a);
+    a.cmd = "spd", a.obs = LX_OBSERVER_2, a.method = LX_METHOD_AUTO, a.fmt = CLI_FMT_TABLE;
+    a.backend_given = getenv("LX_BACKEND") != NULL, a.backend_text = getenv("LX_BACKEND");
+    a.msel.photoperiod_h = NAN;
+    a.diagram = LX_DIAGRAM_XY;
+    int pe = parse_args(argc, argv, &a);
+    if (pe < 0) return CLI_OK; /* --help */
+    if (pe != CLI_OK) return pe;
+    const char *cmd = a.cmd;
     if (optind >= argc) {
         cli_error(cmd, "no input file (use - for standard input)");
         return CLI_USAGE;
     }
     double g_start = 0, g_step = 0;
     size_t g_n = 0;
-    if (f32 && (!grid || cli_spd_parse_grid(grid, &g_start, &g_step, &g_n) != 0))
+    if (a.f32 && (!a.grid || cli_spd_parse_grid(a.grid, &g_start, &g_step, &g_n) != 0))
         return cli_error(cmd, "--input-format f32 needs --grid START:END:STEP in nm (END - START a whole number of steps), not '%s'",
-                         grid ? grid : ""), CLI_USAGE;
-    if (f32 && msel.any) return cli_error(cmd, "--metrics is not available with --input-format f32"), CLI_USAGE;
-    if (f32 && report_dir)
+                         a.grid ? a.grid : ""), CLI_USAGE;
+    if (a.f32 && a.msel.any) return cli_error(cmd, "--metrics is not available with --input-format f32"), CLI_USAGE;
+    if (a.f32 && a.report_dir)
         return cli_error(cmd, "--report is not available with --input-format f32 (reports need the text path, one spectrum at a time)"), CLI_USAGE;
-    int exr = !f32 && strcmp(argv[optind], "-") != 0 && cli_is_exr(argv[optind]);
-    if (exr && (argc - optind != 1 || msel.any || report_dir))
+    if (a.f32 && a.reader_opts)
+        return cli_error(cmd, "--skip-lines, --columns, --wavelength-unit and --skip-bad-rows apply to text files, not to --input-format f32"), CLI_USAGE;
+    int exr = !a.f32 && strcmp(argv[optind], "-") != 0 && cli_is_exr(argv[optind]);
+    if (exr && (argc - optind != 1 || a.msel.any || a.report_dir))
         return cli_error(cmd, "a spectral EXR image is processed alone, without --metrics or --report"), CLI_USAGE;
-    if (png && !exr) return cli_error(cmd, "--png applies to a spectral EXR image input"), CLI_USAGE;
+    if (a.png && !exr) return cli_error(cmd, "--png applies to a spectral EXR image input"), CLI_USAGE;
     lx_ctx *ctx = cli_ctx(cmd);
     if (!ctx) return CLI_RUNTIME;
     lx_backend backend = LX_BACKEND_AUTO;
-    if (backend_text && lx_backend_parse(ctx, backend_text, &backend) != LX_OK) {
-        cli_error(cmd, "--backend: expected auto, cpu or opencl, not '%s'", backend_text);
+    if (a.backend_text && lx_backend_parse(ctx, a.backend_text, &backend) != LX_OK) {
+        cli_error(cmd, "--backend: expected auto, cpu or opencl, not '%s'", a.backend_text);
         lx_ctx_destroy(ctx);
         return CLI_USAGE;
     }
     if (exr) {
-        int e = cli_spd_exr(ctx, cmd, argv[optind], outpath, png, obs, backend, (cli_format)fmt);
+        int e = cli_spd_exr(ctx, cmd, argv[optind], a.outpath, a.png, a.obs, backend, (cli_format)a.fmt);
         lx_ctx_destroy(ctx);
         return e;
     }
-    if (report_dir && cli_make_dir(cmd, "--report", report_dir) != 0) {
+    if (a.report_dir && cli_make_dir(cmd, "--report", a.report_dir) != 0) {
         lx_ctx_destroy(ctx);
         return CLI_INPUT;
     }
-
-    const char *pu = units[unit].photometric, *ru = units[unit].radiant;
-    static char ler_unit[32];
-    snprintf(ler_unit, sizeof ler_unit, "%s", unit ? "lm/W" : "");
-    const char *names[] = {"file", "spectrum", "X", "Y", "Z", "x", "y", "u_prime", "v_prime", "cct_K", "duv",
-                           "ler_lm_per_W", "scotopic_Y", "sp_ratio", "radiant", "method"};
-    const char *unitnames[] = {"", "", pu, pu, pu, "", "", "", "", "K", "", ler_unit, pu, "", ru, ""};
-    int ncols = (int)(sizeof names / sizeof *names);
-    const char *allnames[sizeof names / sizeof *names + CLI_METRICS_MAX], *allunits[sizeof allnames / sizeof *allnames];
-    memcpy(allnames, names, sizeof names);
-    memcpy(allunits, unitnames, sizeof unitnames);
-    ncols = cli_metrics_columns(&msel, units[unit].name, allnames, allunits, ncols);
-    cli_table *t = cli_table_new(ncols, allnames, allunits);
-    int rc = CLI_OK;
-    spd_out so;
-    memset(&so, 0, sizeof so);
-    so.t = t, so.fmt = (cli_format)fmt, so.cmd = cmd;
-    cli_spd_batch B = {ctx, cmd, t, obs, method, backend, backend_given, spd_flush, &so, 0};
-    so.path = outpath;
-    cli_reports reports = {.cmd = cmd, .dir = report_dir, .opts = {.observer = obs, .unit = units[unit].name, .diagram = diagram}};
+    spd_run *R = calloc(1, sizeof *R);
+    if (!R) {
+        lx_ctx_destroy(ctx);
+        return cli_error(cmd, "out of memory"), CLI_RUNTIME;
+    }
+    R->a = &a, R->ctx = ctx;
+    build_cols(&R->C, &a.msel, a.unit);
+    R->t = cli_table_new(R->C.n, R->C.names, R->C.unit_cols[a.unit]);
+    cli_table_json_only(R->t, R->C.n - 1);
+    R->table_unit = a.unit;
+    R->so.t = R->t, R->so.fmt = (cli_format)a.fmt, R->so.cmd = cmd, R->so.path = a.outpath;
+    cli_spd_batch B = {ctx, cmd, R->t, a.obs, a.method, backend, a.backend_given, spd_flush, &R->so, 0,
+                       a.msel.any ? &a.msel : NULL, units[a.unit].name, NULL, NULL};
+    R->B = B;
+    R->reports.cmd = cmd, R->reports.dir = a.report_dir;
+    R->reports.opts.observer = a.obs, R->reports.opts.unit = units[a.unit].name, R->reports.opts.diagram = a.diagram;
     int nfiles = 0;
     char **files = cli_expand_files(argc - optind, argv + optind, &nfiles);
-    for (int fi = 0; files && fi < nfiles; fi++) {
-        char *arg = files[fi];
-        if (f32) {
-            lx_status st = cli_spd_f32_file(&B, arg, g_start, g_step, g_n);
-            if (st != LX_OK && cli_exit_code(st) > rc) rc = cli_exit_code(st);
-            spd_flush(&so);
-            continue;
-        }
-        /* rows-layout files: streamed, integrated chunk by chunk (spd_batch.c); else the general reader */
-        int streamed = !msel.any && !report_dir ? cli_spd_batch_file(&B, arg) : 0;
-        if (streamed < 0 && -streamed > rc) rc = -streamed;
-        if (streamed) {
-            spd_flush(&so);
-            continue;
-        }
-        lx_spd_set *set = NULL;
-        lx_status st = lx_spd_read_file(ctx, arg, &set);
-        if (st != LX_OK) {
-            int e = cli_fail(cmd, ctx, st);
-            if (e > rc) rc = e;
-            continue;
-        }
-        if (!msel.any && !report_dir && cli_spd_batchable(&B, set)) {
-            if ((st = cli_spd_batch_set(&B, set)) != LX_OK) {
-                int e = cli_fail(cmd, ctx, st);
-                if (e > rc) rc = e;
-            }
-            lx_spd_set_free(set);
-            continue;
-        }
-        if (set->count >= (report_dir ? 8 : 256)) cli_progress_start(set->count, set->file);
-        for (size_t k = 0; k < set->count; k++) {
-            cli_progress_update(k);
-            lx_colorimetry r;
-            st = lx_spd_colorimetry(ctx, &set->spd[k], obs, method, &r);
-            if (st == LX_OK) st = lx_colorimetry_check(ctx, &r, NAN); /* before printing: no blank columns */
-            if (st != LX_OK) {
-                cli_error(cmd, "%s:%ld: spectrum '%s': %s", set->file, set->line ? set->line[k] : 0L,
-                          set->spd[k].name ? set->spd[k].name : "", lx_ctx_errmsg(ctx));
-                int e = cli_exit_code(st);
-                if (e > rc) rc = e;
-                continue;
-            }
-            if (!r.cct_valid && !cli_quiet) { /* every empty cell says why */
-                char why[LX__ERRMSG_MAX_CLI];
-                cli_cct_reason(ctx, &r, obs, why, sizeof why);
-                cli_error(cmd, "%s:%ld: spectrum '%s': cct_K and duv empty: %s", set->file, set->line ? set->line[k] : 0L,
-                          set->spd[k].name ? set->spd[k].name : "", why);
-            }
-            cli_table_str(t, set->file);
-            cli_table_str(t, set->spd[k].name ? set->spd[k].name : "");
-            double v[] = {r.X, r.Y, r.Z, r.x, r.y, r.u_prime, r.v_prime, r.cct_K, r.duv, r.ler_lm_per_W,
-                          r.scotopic_Y, r.sp_ratio, r.radiant};
-            for (size_t j = 0; j < sizeof v / sizeof *v; j++) cli_table_num(t, v[j]);
-            cli_table_str(t, method_name(r.method));
-            if (msel.any && cli_metrics_row(t, ctx, &msel, &set->spd[k], method, units[unit].name, &r, set->file,
-                                            set->line ? set->line[k] : 0L, cmd) > 0 && rc < CLI_INPUT)
-                rc = CLI_INPUT;
-            if (report_dir) {
-                int e = cli_spd_report(&reports, ctx, set->file, k, &set->spd[k]);
-                if (e > rc) rc = e;
-            }
-        }
-        cli_progress_end();
-        lx_spd_set_free(set);
-        spd_flush(&so);
-    }
-    if (B.rejected && rc < CLI_INPUT) rc = CLI_INPUT; /* batch spectra reported instead of printed */
+    for (int fi = 0; files && fi < nfiles; fi++) do_file(R, files[fi], g_start, g_step, g_n);
+    int rc = R->rc;
+    if (R->B.rejected && rc < CLI_INPUT) rc = CLI_INPUT; /* batch spectra reported instead of printed */
     /* nothing computed and something failed: leave any existing output file as it was */
-    if (!(rc != CLI_OK && cli_table_rows(t) == 0)) {
-        if (!so.opened && spd_open(&so) != 0) rc = CLI_INPUT;
-        if (so.opened) {
-            int ok = !so.failed && cli_table_flush(t, so.fmt, so.o.fp, 0, 1) == 0;
-            int e = cli_output_close(&so.o, ok, cmd);
+    if (!(rc != CLI_OK && cli_table_rows(R->t) == 0)) {
+        if (!R->so.opened && spd_open(&R->so) != 0) rc = CLI_INPUT;
+        if (R->so.opened) {
+            int ok = !R->so.failed && cli_table_flush(R->t, R->so.fmt, R->so.o.fp, 0, 1) == 0;
+            int e = cli_output_close(&R->so.o, ok, cmd);
             if (e || !ok) rc = e ? e : rc ? rc : CLI_RUNTIME;
         }
     }
     cli_free_files(files, nfiles);
-    cli_reports_free(&reports);
-    cli_table_free(t);
+    cli_reports_free(&R->reports);
+    cli_table_free(R->t);
+    free(R);
     lx_ctx_destroy(ctx);
     return rc;
 }

@@ -119,7 +119,7 @@ void cli_print_exact(FILE *out, double v)
 
 /* ---- the result table ---- */
 typedef struct cell {
-    int kind; /* 0 number, 1 string, 2 integer */
+    int kind; /* 0 number, 1 string, 2 integer, 3 JSON text */
     double num;
     long long integer;
     char *str;
@@ -135,6 +135,7 @@ struct cli_table {
     size_t emitted;   /* rows already written by cli_table_flush */
     int header_done;  /* csv header / json '[' written */
     int json_array;   /* json: an array was opened */
+    unsigned char json_only[256]; /* columns csv, tsv and table leave out */
 };
 
 cli_table *cli_table_new(int ncols, const char *const *names, const char *const *units)
@@ -182,6 +183,30 @@ void cli_table_int(cli_table *t, long long v)
 
 int cli_table_rows(const cli_table *t) { return (int)(t->emitted + t->ncells / (size_t)t->ncols); }
 
+void cli_table_json(cli_table *t, const char *json)
+{
+    cell *c = push(t);
+    c->kind = 3;
+    c->str = strdup(json ? json : "null");
+}
+
+void cli_table_json_only(cli_table *t, int col)
+{
+    if (col >= 0 && col < (int)sizeof t->json_only) t->json_only[col] = 1;
+}
+
+void cli_table_set_units(cli_table *t, const char *const *units)
+{
+    t->units = units;
+    free(t->col); /* the output columns are made again with these units at the next write */
+    t->col = NULL;
+}
+
+static int shown(const cli_table *t, int c, cli_format fmt)
+{
+    return fmt == CLI_FMT_JSON || c >= (int)sizeof t->json_only || !t->json_only[c];
+}
+
 void cli_table_free(cli_table *t)
 {
     if (!t) return;
@@ -210,7 +235,10 @@ static void tsv_str(FILE *out, const char *s)
     for (; *s; s++) fputc(*s == '\t' || *s == '\n' || *s == '\r' ? ' ' : *s, out);
 }
 
-static void json_str(FILE *out, const char *s)
+void cli_json_string(FILE *out, const char *s);
+static void json_str(FILE *out, const char *s) { cli_json_string(out, s); }
+
+void cli_json_string(FILE *out, const char *s)
 {
     fputc('"', out);
     for (; *s; s++) {
@@ -226,7 +254,7 @@ static void json_str(FILE *out, const char *s)
 
 static void cell_text(const cell *c, const cli_column *col, char *buf, size_t cap)
 {
-    if (c->kind == 1) snprintf(buf, cap, "%s", c->str);
+    if (c->kind == 1 || c->kind == 3) snprintf(buf, cap, "%s", c->str);
     else if (c->kind == 2) snprintf(buf, cap, "%lld", c->integer);
     else cli_number_text(buf, cap, col, c->num * col->scale);
 }
@@ -234,10 +262,11 @@ static void cell_text(const cell *c, const cli_column *col, char *buf, size_t ca
 static void write_row(const cli_table *t, const cell *row, cli_format fmt, FILE *out, size_t index)
 {
     if (fmt == CLI_FMT_CSV || fmt == CLI_FMT_TSV) {
-        for (int c = 0; c < t->ncols; c++) {
+        for (int c = 0, k = 0; c < t->ncols; c++) {
             const cell *x = &row[c];
-            if (c) fputc(fmt == CLI_FMT_CSV ? ',' : '\t', out);
-            if (x->kind == 1) (fmt == CLI_FMT_CSV ? csv_str : tsv_str)(out, x->str);
+            if (!shown(t, c, fmt)) continue;
+            if (k++) fputc(fmt == CLI_FMT_CSV ? ',' : '\t', out);
+            if (x->kind == 1 || x->kind == 3) (fmt == CLI_FMT_CSV ? csv_str : tsv_str)(out, x->str);
             else if (x->kind == 2) fprintf(out, "%lld", x->integer);
             else if (isfinite(x->num)) cli_print_exact(out, x->num * t->col[c].scale);
         }
@@ -247,7 +276,8 @@ static void write_row(const cli_table *t, const cell *row, cli_format fmt, FILE 
         for (int c = 0; c < t->ncols; c++) {
             const cell *x = &row[c];
             fprintf(out, "%s\"%s\": ", c ? ", " : "", t->col[c].name);
-            if (x->kind == 1) json_str(out, x->str);
+            if (x->kind == 3) fputs(x->str, out);
+            else if (x->kind == 1) json_str(out, x->str);
             else if (x->kind == 2) fprintf(out, "%lld", x->integer);
             else if (isfinite(x->num)) cli_print_exact(out, x->num * t->col[c].scale);
             else fputs("null", out);
@@ -258,11 +288,12 @@ static void write_row(const cli_table *t, const cell *row, cli_format fmt, FILE 
         int w = 0;
         for (int c = 0; c < t->ncols; c++) {
             int l = (int)strlen(t->col[c].name);
-            if (l > w) w = l;
+            if (l > w && shown(t, c, fmt)) w = l;
         }
         if (index) fputc('\n', out);
         for (int c = 0; c < t->ncols; c++) {
             char buf[512];
+            if (!shown(t, c, fmt)) continue;
             cell_text(&row[c], &t->col[c], buf, sizeof buf);
             const char *u = t->col[c].unit;
             fprintf(out, "%-*s  %s%s%s\n", w, t->col[c].name, buf, *u && strcmp(buf, "-") ? " " : "",
@@ -289,7 +320,8 @@ int cli_table_flush(cli_table *t, cli_format fmt, FILE *out, int json_array, int
     if (fmt == CLI_FMT_JSON && !t->header_done && !final && !json_array && t->emitted + rows < 2) return 0;
     if (!t->header_done) {
         if (fmt == CLI_FMT_CSV || fmt == CLI_FMT_TSV) {
-            for (int c = 0; c < t->ncols; c++) fprintf(out, "%s%s", c ? (fmt == CLI_FMT_CSV ? "," : "\t") : "", t->col[c].name);
+            for (int c = 0, k = 0; c < t->ncols; c++)
+                if (shown(t, c, fmt)) fprintf(out, "%s%s", k++ ? (fmt == CLI_FMT_CSV ? "," : "\t") : "", t->col[c].name);
             fputc('\n', out);
         } else if (fmt == CLI_FMT_JSON) {
             t->json_array = json_array || t->emitted + rows != 1;

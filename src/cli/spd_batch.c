@@ -12,14 +12,49 @@
 
 #define CHUNK 65536 /* spectra per batch call: bounds memory, lets output stream */
 
-static void add_row(cli_table *t, const char *file, const char *name, const lx_colorimetry *r)
+static void add_row(cli_spd_batch *B, const char *file, const char *name, const lx_colorimetry *r, const lx_par *par,
+                    const lx_hazard *hz, const lx_binning *bin)
 {
+    cli_table *t = B->table;
     cli_table_str(t, file);
     cli_table_str(t, name);
     double v[] = {r->X, r->Y, r->Z, r->x, r->y, r->u_prime, r->v_prime, r->cct_K, r->duv, r->ler_lm_per_W,
                   r->scotopic_Y, r->sp_ratio, r->radiant};
     for (size_t j = 0; j < sizeof v / sizeof *v; j++) cli_table_num(t, v[j]);
     cli_table_str(t, "cie15");
+    if (B->metrics && B->metrics->any)
+        cli_metrics_row_batch(t, B->ctx, B->metrics, B->unit ? B->unit : "relative", par, hz, bin, B->vendor);
+    cli_table_json(t, B->instrument);
+}
+
+/* The metric integrals of a batch for rows [0, n) (each array NULL when not needed). */
+typedef struct lab {
+    lx_par *par;
+    lx_hazard *hz;
+    lx_binning *bin;
+} lab;
+
+static void lab_free(lab *L) { free(L->par), free(L->hz), free(L->bin); }
+
+static lx_status lab_compute(cli_spd_batch *B, const lx_batch *b, const lx_colorimetry *res, lx_batch_opts *opts,
+                             lab *L)
+{
+    memset(L, 0, sizeof *L);
+    const cli_metrics *m = B->metrics;
+    if (!m || !m->any) return LX_OK;
+    size_t n = b->n_spectra ? b->n_spectra : 1;
+    int need_par = cli_metrics_need_par(m), need_hz = cli_metrics_need_hazard(m), need_bin = cli_metrics_need_binning(m);
+    /* binning from the exact CCT of the colorimetry (2 deg); with --observer 10 the batch's own */
+    int table_bin = need_bin && B->observer != LX_OBSERVER_2;
+    if ((need_par && !(L->par = malloc(n * sizeof *L->par))) || (need_hz && !(L->hz = malloc(n * sizeof *L->hz))) ||
+        (need_bin && !(L->bin = malloc(n * sizeof *L->bin))))
+        return LX_ENOMEM;
+    lx_status st = LX_OK;
+    if (need_par || need_hz || table_bin)
+        st = lx_lab_batch(B->ctx, b, opts, L->par, L->hz, table_bin ? L->bin : NULL);
+    for (size_t i = 0; need_bin && !table_bin && i < b->n_spectra && st == LX_OK; i++)
+        st = lx_binning_compute(B->ctx, res[i].x, res[i].y, res[i].cct_K, res[i].duv, &L->bin[i]);
+    return st;
 }
 
 /* The largest |value| of spectrum i of b (for the overflow message). */
@@ -47,7 +82,9 @@ static lx_status run_chunk(cli_spd_batch *B, const lx_batch *b, const char *file
     lx_batch_opts opts;
     memset(&opts, 0, sizeof opts);
     opts.backend = B->backend;
+    lab L = {0};
     lx_status st = lx_batch_colorimetry(B->ctx, b, B->observer, &opts, res);
+    if (st == LX_OK) st = lab_compute(B, b, res, &opts, &L);
     if (st == LX_OK) {
         char idx[32];
         for (size_t i = 0; i < b->n_spectra; i++) {
@@ -62,10 +99,11 @@ static lx_status run_chunk(cli_spd_batch *B, const lx_batch *b, const char *file
                 }
                 continue;
             }
-            add_row(B->table, file, name, &res[i]);
+            add_row(B, file, name, &res[i], L.par ? &L.par[i] : NULL, L.hz ? &L.hz[i] : NULL, L.bin ? &L.bin[i] : NULL);
         }
         if (B->flush) B->flush(B->flush_arg);
     }
+    lab_free(&L);
     free(res);
     return st;
 }
@@ -124,6 +162,9 @@ typedef struct stream_acc {
     int over_cap;      /* the file is larger than the general reader takes */
     unsigned char *bad; /* per row: refused by lx_colorimetry_check (reported, no row) */
     lx_colorimetry *res;
+    lx_par *par;
+    lx_hazard *hz;
+    lx_binning *bin;
     char *names;       /* NUL-separated, in row order */
     size_t rows, cap, names_len, names_cap;
     int checked;       /* the grid was checked on the first chunk */
@@ -191,6 +232,15 @@ static lx_status stream_chunk(void *user, const lx_batch_table *chunk, size_t ro
         unsigned char *f = r ? realloc(A->bad, cap) : NULL;
         if (!f) return LX_ENOMEM;
         A->bad = f;
+        lx_par *p = realloc(A->par, cap * sizeof *p);
+        if (!p) return LX_ENOMEM;
+        A->par = p;
+        lx_hazard *h = realloc(A->hz, cap * sizeof *h);
+        if (!h) return LX_ENOMEM;
+        A->hz = h;
+        lx_binning *g = realloc(A->bin, cap * sizeof *g);
+        if (!g) return LX_ENOMEM;
+        A->bin = g;
         A->cap = cap;
     }
     memset(A->bad + base, 0, b->n_spectra);
@@ -226,6 +276,14 @@ static lx_status stream_chunk(void *user, const lx_batch_table *chunk, size_t ro
     opts.backend = B->backend;
     opts.threads = 1; /* the other cores parse the next chunk meanwhile */
     lx_status st = lx_batch_colorimetry(B->ctx, b, B->observer, &opts, A->res + base);
+    lab L = {0};
+    if (st == LX_OK) st = lab_compute(B, b, A->res + base, &opts, &L);
+    if (st == LX_OK) {
+        if (L.par) memcpy(A->par + base, L.par, b->n_spectra * sizeof *L.par);
+        if (L.hz) memcpy(A->hz + base, L.hz, b->n_spectra * sizeof *L.hz);
+        if (L.bin) memcpy(A->bin + base, L.bin, b->n_spectra * sizeof *L.bin);
+    }
+    lab_free(&L);
     A->rows = row0 + b->n_spectra;
     for (size_t i = 0; st == LX_OK && i < b->n_spectra; i++) {
         if (A->bad[base + i] || lx_colorimetry_check(B->ctx, &A->res[base + i], row_max_abs(b, i)) == LX_OK) continue;
@@ -236,8 +294,12 @@ static lx_status stream_chunk(void *user, const lx_batch_table *chunk, size_t ro
         B->rejected++;
     }
     if (st == LX_OK && A->over_cap) {
+        const cli_metrics *m = B->metrics;
+        int par = m && cli_metrics_need_par(m), hz = m && cli_metrics_need_hazard(m), bin = m && cli_metrics_need_binning(m);
         for (size_t i = 0; i < b->n_spectra; i++)
-            if (!A->bad[i]) add_row(B->table, A->path, chunk->names + chunk->name_at[i], &A->res[i]);
+            if (!A->bad[i])
+                add_row(B, A->path, chunk->names + chunk->name_at[i], &A->res[i], par ? &A->par[i] : NULL,
+                        hz ? &A->hz[i] : NULL, bin ? &A->bin[i] : NULL);
         if (B->flush) B->flush(B->flush_arg);
     }
     return st;
@@ -259,20 +321,28 @@ int cli_spd_batch_file(cli_spd_batch *B, const char *path)
      * the rows before it were printed) */
     if (st != LX_OK && (st != LX_EUNSUPPORTED || A.rows > 0) && A.over_cap) {
         free(A.res);
+        free(A.par);
+        free(A.hz);
+        free(A.bin);
         free(A.names);
         free(A.bad);
         return -cli_fail(B->cmd, B->ctx, st);
     }
     if (done && !A.over_cap) {
         size_t off = 0;
+        const cli_metrics *m = B->metrics;
+        int par = m && cli_metrics_need_par(m), hz = m && cli_metrics_need_hazard(m), bin = m && cli_metrics_need_binning(m);
         for (size_t i = 0; i < A.rows; i++) {
-            if (!A.bad[i]) add_row(B->table, path, A.names + off, &A.res[i]);
+            if (!A.bad[i]) add_row(B, path, A.names + off, &A.res[i], par ? &A.par[i] : NULL, hz ? &A.hz[i] : NULL, bin ? &A.bin[i] : NULL);
             off += strlen(A.names + off) + 1;
             if (B->flush && (i + 1) % CHUNK == 0) B->flush(B->flush_arg); /* the table holds a chunk at most */
         }
         if (B->flush) B->flush(B->flush_arg);
     }
     free(A.res);
+    free(A.par);
+    free(A.hz);
+    free(A.bin);
     free(A.names);
     free(A.bad);
     return done ? 1 : 0;

@@ -3,6 +3,7 @@
 #define LX_SPD_BATCH_H
 
 #include "cli.h"
+#include "spd_metrics.h"
 
 /* A file with at least this many spectra on one uniform grid takes the batch path even without
  * --backend (results agree with the per-spectrum path to 1e-9 relative, not bit for bit). */
@@ -19,6 +20,10 @@ typedef struct cli_spd_batch {
     void (*flush)(void *arg);   /* called after each chunk's rows were added */
     void *flush_arg;
     size_t rejected;            /* spectra reported on stderr instead of a row (exit status 2) */
+    const cli_metrics *metrics; /* the --metrics selection (batchable groups only), NULL for none */
+    const char *unit;           /* the current file's unit name (the metrics' units) */
+    const lx_vendor_results *vendor; /* the current file's instrument results, NULL for none */
+    const char *instrument;     /* the current file's instrument JSON cell, NULL for null */
 } cli_spd_batch;
 
 /* 1 when every spectrum of set shares one uniform grid that the method integrates with cie15. */

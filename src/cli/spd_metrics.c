@@ -1,19 +1,27 @@
 /* spd_metrics.c - `luxcalc spd --metrics`: CIE 13.3 CRI, CIE 224 / TM-30, CIE S 026 alpha-opic and
- * CIE 191 mesopic columns, in the fixed order of ../shared/CLI.md followed by the extra columns. */
+ * CIE 191 mesopic columns, in the fixed order of ../shared/CLI.md followed by the extra columns; then
+ * the instrument's own results (vendor_*), PAR (ANSI/ASABE S640), IEC 62471 hazards and LED binning. */
 #include "spd_metrics.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-enum { G_CRI = 1, G_TM30 = 2, G_AO = 4, G_MES = 8 };
+enum { G_CRI = 1, G_TM30 = 2, G_AO = 4, G_MES = 8, G_VENDOR = 16, G_PAR = 32, G_HAZ = 64, G_BIN = 128 };
+#define G_BATCHABLE (G_VENDOR | G_PAR | G_HAZ | G_BIN)
 
 /* Column kinds: where each value comes from. */
 enum { K_RA, K_R, K_RF, K_RG, K_MEL_EDI, K_MEL_DER, K_AO_E, K_CRI_VALID, K_CRI_DC, K_RF_H, K_RCS_H, K_RHS_H,
-       K_AO_EDI, K_AO_DER, K_MES_L, K_MES_M };
+       K_AO_EDI, K_AO_DER, K_MES_L, K_MES_M, K_VEND, K_PAR, K_HZ, K_HZ_COV, K_HZ_GROUP, K_HZ_BASIS, K_HZ_NOTCOV,
+       K_BIN_ANSI, K_BIN_ANSI_DUV, K_BIN_FLEX, K_BIN_FLEX_DUV, K_BIN_SDCM, K_BIN_CENTRE };
+
+/* the vendor columns, in lx_vendor_results order (index: the field's slot, see vendor_value) */
+static const char *const vendor_cols[] = {"cct_K", "duv", "illuminance_lx", "X", "Y", "Z", "x", "y", "u_prime",
+                                          "v_prime", "cri_ra"};
+static const char *const hz_names[LX_HZ_COUNT] = {"blue", "thermal", "actinic_uv", "uva"};
 
 typedef struct col {
-    char name[24];
+    char name[40];
     int group, kind, index;
 } col;
 
@@ -32,7 +40,7 @@ static const char *const ao_names[5] = {"sc", "mc", "lc", "rh", "mel"};
 static void build(void)
 {
     if (ncols) return;
-    char nm[24];
+    char nm[40];
     /* the contract columns (CLI.md), in this order */
     add("cri_ra", G_CRI, K_RA, 0);
     for (int i = 0; i < 14; i++) snprintf(nm, sizeof nm, "cri_r%d", i + 1), add(nm, G_CRI, K_R, i);
@@ -51,6 +59,34 @@ static void build(void)
     for (int i = 0; i < 4; i++) snprintf(nm, sizeof nm, "%sopic_der", i == 0 ? "cyan" : i == 1 ? "chlor" : i == 2 ? "erythr" : "rhod"), add(nm, G_AO, K_AO_DER, i);
     add("mesopic_cd_m2", G_MES, K_MES_L, 0);
     add("mesopic_m", G_MES, K_MES_M, 0);
+    /* the instrument's own results */
+    for (int i = 0; i < 11; i++) snprintf(nm, sizeof nm, "vendor_%s", vendor_cols[i]), add(nm, G_VENDOR, K_VEND, i);
+    for (int i = 0; i < 15; i++) snprintf(nm, sizeof nm, "vendor_cri_r%d", i + 1), add(nm, G_VENDOR, K_VEND, 11 + i);
+    add("vendor_tm30_rf", G_VENDOR, K_VEND, 26);
+    add("vendor_tm30_rg", G_VENDOR, K_VEND, 27);
+    add("vendor_ppfd_umol_m2_s", G_VENDOR, K_VEND, 28);
+    add("vendor_irradiance_W_m2", G_VENDOR, K_VEND, 29);
+    add("vendor_peak_nm", G_VENDOR, K_VEND, 30);
+    /* PAR */
+    add("par_ppfd", G_PAR, K_PAR, 0);
+    add("par_epar", G_PAR, K_PAR, 1);
+    add("par_ypf", G_PAR, K_PAR, 2);
+    add("par_photon_efficacy_umol_J", G_PAR, K_PAR, 3);
+    add("par_dli_mol_m2_d", G_PAR, K_PAR, 4);
+    /* IEC 62471 */
+    for (int i = 0; i < LX_HZ_COUNT; i++) snprintf(nm, sizeof nm, "hazard_%s", hz_names[i]), add(nm, G_HAZ, K_HZ, i);
+    for (int i = 0; i < LX_HZ_COUNT; i++)
+        snprintf(nm, sizeof nm, "hazard_%s_coverage", hz_names[i]), add(nm, G_HAZ, K_HZ_COV, i);
+    add("hazard_risk_group", G_HAZ, K_HZ_GROUP, 0);
+    add("hazard_risk_basis", G_HAZ, K_HZ_BASIS, 0);
+    add("hazard_not_covered", G_HAZ, K_HZ_NOTCOV, 0);
+    /* binning */
+    add("binning_ansi_K", G_BIN, K_BIN_ANSI, 0);
+    add("binning_ansi_duv_offset", G_BIN, K_BIN_ANSI_DUV, 0);
+    add("binning_flex_K", G_BIN, K_BIN_FLEX, 0);
+    add("binning_flex_duv_offset", G_BIN, K_BIN_FLEX_DUV, 0);
+    add("binning_sdcm", G_BIN, K_BIN_SDCM, 0);
+    add("binning_sdcm_centre", G_BIN, K_BIN_CENTRE, 0);
 }
 
 /* The equivalent-daylight columns are named by what they hold (CIE S 026: equivalent daylight
@@ -89,6 +125,20 @@ static int names_col(const char *tok, int i)
     return 0;
 }
 
+static int selected_groups(const cli_metrics *m)
+{
+    build();
+    int g = 0;
+    for (int i = 0; i < ncols; i++)
+        if (m->sel[i]) g |= cols[i].group;
+    return g;
+}
+
+int cli_metrics_batchable(const cli_metrics *m) { return (selected_groups(m) & ~G_BATCHABLE) == 0; }
+int cli_metrics_need_par(const cli_metrics *m) { return (selected_groups(m) & G_PAR) != 0; }
+int cli_metrics_need_hazard(const cli_metrics *m) { return (selected_groups(m) & G_HAZ) != 0; }
+int cli_metrics_need_binning(const cli_metrics *m) { return (selected_groups(m) & G_BIN) != 0; }
+
 int cli_metrics_parse(cli_metrics *m, const char *list, const char *cmd)
 {
     build();
@@ -98,12 +148,14 @@ int cli_metrics_parse(cli_metrics *m, const char *list, const char *cmd)
     for (char *save = NULL, *tok = strtok_r(copy, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
         while (*tok == ' ') tok++;
         int g = !strcmp(tok, "all") ? 0xff : !strcmp(tok, "cri") ? G_CRI : !strcmp(tok, "tm30") ? G_TM30
-              : !strcmp(tok, "alphaopic") ? G_AO : !strcmp(tok, "mesopic") ? G_MES : 0;
+              : !strcmp(tok, "alphaopic") ? G_AO : !strcmp(tok, "mesopic") ? G_MES : !strcmp(tok, "vendor") ? G_VENDOR
+              : !strcmp(tok, "par") ? G_PAR : !strcmp(tok, "hazard") ? G_HAZ : !strcmp(tok, "binning") ? G_BIN : 0;
         int found = 0;
         for (int i = 0; i < ncols; i++)
             if ((cols[i].group & g) || names_col(tok, i)) m->sel[i] = 1, found = 1;
         if (!found) {
-            cli_error(cmd, "--metrics: unknown group or column '%s' (groups: all, cri, tm30, alphaopic, mesopic)", tok);
+            cli_error(cmd, "--metrics: unknown group or column '%s' (groups: all, cri, tm30, alphaopic, mesopic, vendor, "
+                      "par, hazard, binning)", tok);
             rc = -1;
             break;
         }
@@ -113,19 +165,32 @@ int cli_metrics_parse(cli_metrics *m, const char *list, const char *cmd)
     return rc;
 }
 
+static const char *par_unit(const char *unit)
+{
+    return !strcmp(unit, "W/m2/nm") ? "umol/(s m2)" : !strcmp(unit, "W/nm") ? "umol/s" : !strcmp(unit, "W/sr/m2/nm")
+           ? "umol/(s sr m2)" : !strcmp(unit, "W/sr/nm") ? "umol/(s sr)" : "";
+}
+
+static const char *hz_unit(const char *unit)
+{
+    return !strcmp(unit, "W/m2/nm") ? "W/m2" : !strcmp(unit, "W/nm") ? "W" : !strcmp(unit, "W/sr/m2/nm") ? "W/(sr m2)"
+           : !strcmp(unit, "W/sr/nm") ? "W/sr" : "";
+}
+
 int cli_metrics_columns(const cli_metrics *m, const char *unit, const char **names, const char **units, int n)
 {
     build();
-    static const char *edi_unit, *ao_unit;
+    const char *edi_unit, *ao_unit;
     edi_unit = !strcmp(unit, "W/m2/nm") ? "lx" : !strcmp(unit, "W/sr/m2/nm") ? "cd/m2" : !strcmp(unit, "W/nm") ? "lm"
              : !strcmp(unit, "W/sr/nm") ? "cd" : "";
-    ao_unit = !strcmp(unit, "W/m2/nm") ? "W/m2" : !strcmp(unit, "W/sr/m2/nm") ? "W/(sr m2)" : !strcmp(unit, "W/nm") ? "W"
-            : !strcmp(unit, "W/sr/nm") ? "W/sr" : "";
+    ao_unit = hz_unit(unit);
     for (int i = 0; i < ncols; i++) {
         if (!m->sel[i]) continue;
-        int k = cols[i].kind;
+        int k = cols[i].kind, x = cols[i].index;
         names[n] = col_name(i, unit);
-        units[n] = k == K_MEL_EDI || k == K_AO_EDI ? edi_unit : k == K_AO_E ? ao_unit : k == K_MES_L ? "cd/m2" : "";
+        units[n] = k == K_MEL_EDI || k == K_AO_EDI ? edi_unit : k == K_AO_E ? ao_unit : k == K_MES_L ? "cd/m2"
+                 : k == K_PAR ? (x < 3 ? par_unit(unit) : x == 3 ? "umol/J" : "mol/(m2 d)")
+                 : k == K_HZ ? hz_unit(unit) : k == K_VEND ? (x == 0 ? "K" : x == 2 ? "lx" : "") : "";
         n++;
     }
     return n;
@@ -149,19 +214,113 @@ void cli_cct_reason(lx_ctx *ctx, const lx_colorimetry *c, lx_observer obs, char 
     else snprintf(buf, size, "the CCT solves to %.6g K, outside 1000-100000 K", T);
 }
 
+static double vendor_value(const lx_vendor_results *v, int x)
+{
+    if (!v) return NAN;
+    const double head[] = {v->cct_K, v->duv, v->illuminance_lx, v->X, v->Y, v->Z, v->x, v->y, v->u_prime, v->v_prime,
+                           v->cri_ra};
+    if (x < 11) return head[x];
+    if (x < 26) return v->cri_r[x - 11];
+    const double tail[] = {v->tm30_rf, v->tm30_rg, v->ppfd_umol_m2_s, v->irradiance_W_m2, v->peak_nm};
+    return x - 26 < 5 ? tail[x - 26] : NAN;
+}
+
+/* Appends the cells of the groups computed elsewhere (vendor, PAR, hazard, binning) for column i;
+ * returns 0 when column i is not one of them. */
+static int append_lab(cli_table *t, const cli_metrics *m, int i, const char *unit, const lx_par *par,
+                      const lx_hazard *hz, const lx_hazard_risk *risk, const lx_binning *bin,
+                      const lx_vendor_results *vendor)
+{
+    int x = cols[i].index, radiance = !strcmp(unit, "W/sr/m2/nm"), irradiance = !strcmp(unit, "W/m2/nm");
+    (void)m;
+    switch (cols[i].kind) {
+    case K_VEND: cli_table_num(t, vendor_value(vendor, x)); return 1;
+    case K_PAR: {
+        double v = !par ? NAN : x == 0 ? par->ppfd : x == 1 ? par->epar : x == 2 ? par->ypf : x == 3
+                 ? par->photon_efficacy_umol_J : irradiance ? lx_par_dli(par->ppfd, m->photoperiod_h) : NAN;
+        if (par && x < 3 && isnan(v)) cli_table_str(t, "not covered");
+        else cli_table_num(t, v);
+        return 1;
+    }
+    case K_HZ:
+        if (hz && isnan(hz->value[x])) cli_table_str(t, "not covered");
+        else cli_table_num(t, hz ? hz->value[x] : NAN);
+        return 1;
+    case K_HZ_COV: cli_table_num(t, hz ? hz->coverage[x] : NAN); return 1;
+    case K_HZ_GROUP: cli_table_str(t, risk ? lx_risk_group_name(risk->group) : ""); return 1;
+    case K_HZ_BASIS: {
+        char buf[64] = "";
+        static const char *const rad[LX_HZ_COUNT] = {"L_B", "L_R", NULL, NULL}, *const irr[LX_HZ_COUNT] = {"E_B", NULL, "E_S", "E_UVA"};
+        for (int k = 0; risk && k < LX_HZ_COUNT; k++)
+            if (risk->criterion[k] != LX_RISK_NONE)
+                snprintf(buf + strlen(buf), sizeof buf - strlen(buf), "%s%s", *buf ? "," : "", radiance ? rad[k] : irr[k]);
+        cli_table_str(t, risk ? buf : "");
+        return 1;
+    }
+    case K_HZ_NOTCOV: {
+        char buf[64] = "";
+        for (int k = 0; hz && k < LX_HZ_COUNT; k++)
+            if (isnan(hz->value[k]))
+                snprintf(buf + strlen(buf), sizeof buf - strlen(buf), "%s%s", *buf ? "," : "", hz_names[k]);
+        cli_table_str(t, buf);
+        return 1;
+    }
+    case K_BIN_ANSI:
+        if (bin && bin->ansi_K) cli_table_int(t, bin->ansi_K);
+        else cli_table_num(t, NAN);
+        return 1;
+    case K_BIN_ANSI_DUV: cli_table_num(t, bin ? bin->ansi_duv_offset : NAN); return 1;
+    case K_BIN_FLEX:
+        if (bin && bin->flex_K) cli_table_int(t, bin->flex_K);
+        else cli_table_num(t, NAN);
+        return 1;
+    case K_BIN_FLEX_DUV: cli_table_num(t, bin ? bin->flex_duv_offset : NAN); return 1;
+    case K_BIN_SDCM: cli_table_num(t, bin ? bin->sdcm : NAN); return 1;
+    case K_BIN_CENTRE: {
+        char buf[40] = "";
+        if (bin && bin->sdcm_centre_K) snprintf(buf, sizeof buf, "IEC 60081 F%d", bin->sdcm_centre_K);
+        cli_table_str(t, buf);
+        return 1;
+    }
+    default: return 0;
+    }
+}
+
+/* The risk group of h for the file's unit (only radiance and irradiance have limits). */
+static int risk_of(lx_ctx *ctx, const cli_metrics *m, const char *unit, const lx_hazard *h, lx_hazard_risk *r)
+{
+    int radiance = !strcmp(unit, "W/sr/m2/nm"), irradiance = !strcmp(unit, "W/m2/nm");
+    if (!radiance && !irradiance) return 0;
+    return lx_hazard_risk_group(ctx, h, radiance, m->subtense_rad, r) == LX_OK;
+}
+
+void cli_metrics_row_batch(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const char *unit, const lx_par *par,
+                           const lx_hazard *hz, const lx_binning *bin, const lx_vendor_results *vendor)
+{
+    build();
+    lx_hazard_risk risk;
+    int have_risk = hz && risk_of(ctx, m, unit, hz, &risk);
+    for (int i = 0; i < ncols; i++)
+        if (m->sel[i] && !append_lab(t, m, i, unit, par, hz, have_risk ? &risk : NULL, bin, vendor))
+            cli_table_num(t, NAN); /* not a batch column (cli_metrics_batchable said none is selected) */
+}
+
 int cli_metrics_row(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const lx_spd *spd, lx_method method,
-                    const char *unit, const lx_colorimetry *c, const char *file, long line, const char *cmd)
+                    const char *unit, const lx_colorimetry *c, const lx_vendor_results *vendor, const char *file,
+                    long line, const char *cmd)
 {
     int bad = 0;
     build();
-    int need = 0;
-    for (int i = 0; i < ncols; i++)
-        if (m->sel[i]) need |= cols[i].group;
+    int need = selected_groups(m);
     const char *label = spd->name ? spd->name : "";
     lx_cri cri;
     lx_tm30 *tm = NULL;
     lx_alphaopic ao;
-    int have_cri = 0, have_tm = 0, have_ao = 0, have_mes = 0;
+    lx_par par;
+    lx_hazard hz;
+    lx_hazard_risk risk;
+    lx_binning bin;
+    int have_cri = 0, have_tm = 0, have_ao = 0, have_mes = 0, have_par = 0, have_hz = 0, have_risk = 0, have_bin = 0;
     double lmes = NAN, mm = NAN;
     if ((need & G_CRI)) {
         have_cri = lx_cri_compute(ctx, spd, &cri) == LX_OK;
@@ -201,10 +360,24 @@ int cli_metrics_row(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const lx_sp
                        "the 99 colour evaluation samples under the reference (%.0f K), so TM-30's gamut polygon is undefined",
                   file, line, label, strchr(bins, ',') ? "s" : "", bins, strchr(bins, ',') ? "" : "s", tm->cct_K);
     }
+    if ((need & G_PAR)) have_par = lx_par_compute(ctx, spd, method, &par) == LX_OK;
+    if ((need & G_HAZ)) {
+        have_hz = lx_hazard_compute(ctx, spd, method, &hz) == LX_OK;
+        have_risk = have_hz && risk_of(ctx, m, unit, &hz, &risk);
+    }
+    if ((need & G_BIN)) { /* ANSI binning is defined in CIE 1931 2 deg */
+        lx_colorimetry c2;
+        const lx_colorimetry *cc = c;
+        if (m->observer == LX_OBSERVER_10 && lx_spd_colorimetry(ctx, spd, LX_OBSERVER_2, method, &c2) == LX_OK) cc = &c2;
+        have_bin = lx_binning_compute(ctx, cc->x, cc->y, cc->cct_K, cc->duv, &bin) == LX_OK;
+    }
     for (int i = 0; i < ncols; i++) {
         if (!m->sel[i]) continue;
         int x = cols[i].index;
         double v = NAN;
+        if (append_lab(t, m, i, unit, have_par ? &par : NULL, have_hz ? &hz : NULL, have_risk ? &risk : NULL,
+                       have_bin ? &bin : NULL, vendor))
+            continue;
         switch (cols[i].kind) {
         case K_RA: if (have_cri) v = cri.ra; break;
         case K_R: if (have_cri) v = cri.r[x]; break;

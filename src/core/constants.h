@@ -18,4 +18,11 @@
 #define LX__C2_NM_K 1.4388e7     /* the same in nm K */
 #define LX__SIGMA 5.670374419e-8 /* Stefan-Boltzmann constant, W m^-2 K^-4 */
 
+/* Photon counting (SI 2019 exact values: h, c, N_A). */
+#define LX__H 6.62607015e-34  /* Planck constant, J s */
+#define LX__C 299792458.0     /* speed of light in vacuum, m/s */
+#define LX__NA 6.02214076e23  /* Avogadro constant, 1/mol */
+/* umol of photons per joule at 1 nm: lambda_nm * LX__UMOL_PER_J_NM = lambda / (h c N_A) in umol/J */
+#define LX__UMOL_PER_J_NM (1e-9 * 1e6 / (LX__H * LX__C * LX__NA))
+
 #endif /* LX_CONSTANTS_H */

@@ -216,7 +216,7 @@ int lx__backend_fallback(lx_ctx *ctx, const char *job, lx_backend asked, lx_stat
 
 /* ---- OpenCL runtime (opencl.c) and the embedded kernels ---- */
 typedef struct lx__kernel_source {
-    const char *name;   /* file name, e.g. "spd_integrate.cl" */
+    const char *name;   /* file name in kernels/, e.g. "spd_batch.cl" */
     const char *source; /* the text */
 } lx__kernel_source;
 

@@ -8,18 +8,31 @@
 
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
 #define LX__X86 1
+#include <cpuid.h>
 #else
 #define LX__X86 0
 #endif
 
 /* The extensions of each path (what its target attributes name; __builtin_cpu_supports also checks
  * that the OS saves the YMM / ZMM state). AVX2: the x86-64-v3 set; AVX-512: x86-64-v4. */
+#if LX__X86
+/* F16C, MOVBE and LZCNT straight from CPUID (clang's __builtin_cpu_supports does not name them):
+ * leaf 1 ECX bits 29 and 22, leaf 0x80000001 ECX bit 5. */
+static int cpu_v3_extras(void)
+{
+    unsigned a, b, c, d;
+    if (!__get_cpuid(1, &a, &b, &c, &d) || !(c & (1u << 29)) || !(c & (1u << 22))) return 0;
+    if (!__get_cpuid(0x80000001u, &a, &b, &c, &d) || !(c & (1u << 5))) return 0;
+    return 1;
+}
+#endif
+
 static int cpu_avx2(void)
 {
 #if LX__X86
     return __builtin_cpu_supports("avx") && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") &&
-           __builtin_cpu_supports("f16c") && __builtin_cpu_supports("bmi") && __builtin_cpu_supports("bmi2") &&
-           __builtin_cpu_supports("popcnt") && __builtin_cpu_supports("lzcnt") && __builtin_cpu_supports("movbe");
+           __builtin_cpu_supports("bmi") && __builtin_cpu_supports("bmi2") && __builtin_cpu_supports("popcnt") &&
+           cpu_v3_extras();
 #else
     return 0;
 #endif

@@ -23,10 +23,11 @@ lx_status lx_ugr(lx_ctx *ctx, double Lb, size_t n, const double *L, const double
     if (!ugr || (n && (!L || !w || !p))) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_ugr: NULL argument");
     if (!(Lb > 0) || !isfinite(Lb))
         return lx__error(ctx, LX_EINVAL, NULL, 0, "UGR: the background luminance must be positive (got %g cd/m2)", Lb);
-    double sum = 0;
-    for (size_t i = 0; i < n; i++) {
+    for (size_t i = 0; i < n; i++) /* every source checked before any output is written */
         if (!(L[i] >= 0) || !(w[i] >= 0) || !(p[i] >= 1))
             return lx__error(ctx, LX_EINVAL, NULL, 0, "UGR: source %zu: luminance and solid angle must be >= 0, p >= 1", i);
+    double sum = 0;
+    for (size_t i = 0; i < n; i++) {
         double t = L[i] * L[i] * w[i] / (p[i] * p[i]);
         if (terms) terms[i] = t;
         sum += t;

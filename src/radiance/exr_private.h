@@ -1,6 +1,6 @@
 /* exr_private.h - OpenEXRCore plumbing shared by exr_io.c and spectral_exr.c: our own pread/pwrite
  * stream (so OpenEXR never prints), status mapping, atomic writing and chunk decoding/encoding.
- * Needs <openexr.h>, so only the EXR sources include it (never lx_private.h). */
+ * Needs <openexr.h>, so only the EXR sources include it (radiance_private.h does not). */
 #ifndef LX_EXR_PRIVATE_H
 #define LX_EXR_PRIVATE_H
 

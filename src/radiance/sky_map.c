@@ -105,9 +105,12 @@ lx_status lx_sky_map(lx_ctx *ctx, const lx_sky *sky, const lx_sky_map_opts *opts
 {
     LX__NEED_CTX(ctx);
     if (!sky || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_sky_map: NULL argument");
+    *out = NULL;
     lx_sky_map_opts o;
     memset(&o, 0, sizeof o);
     if (opts) o = *opts;
+    lx_status st0 = lx__check_reserved(ctx, "sky map options", o.reserved, sizeof o.reserved);
+    if (st0) return st0;
     int W = o.width ? o.width : 1024, H = o.height ? o.height : 512, ns = o.supersample ? o.supersample : 4;
     if (W < 1 || H < 1 || W > 65536 || H > 32768 || ns < 1 || ns > 64)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "sky map: size %dx%d or supersampling %d out of range", W, H, ns);

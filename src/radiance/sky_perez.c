@@ -23,6 +23,8 @@ lx_status lx_sky_perez(lx_ctx *ctx, const lx_perez_input *in, lx_sky *out)
 {
     LX__NEED_CTX(ctx);
     if (!in || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_sky_perez: NULL argument");
+    lx_status st0 = lx__check_reserved(ctx, "Perez sky input", in->reserved, sizeof in->reserved);
+    if (st0) return st0;
     const lx__table *ct = lx__table_find("perez1993_sky_coefficients"), *et = lx__table_find("perez1990_efficacy");
     if (!ct || !et || ct->ncols != 23 || ct->nrows != 8 || et->ncols != 9 || et->nrows != 8)
         return lx__error(ctx, LX_EUNSUPPORTED, NULL, 0, "Perez sky: coefficient tables missing from this build");

@@ -80,7 +80,8 @@ lx_status lx_sun_spa(lx_ctx *ctx, const lx_sun_input *in, lx_sun_position *out)
 {
     LX__NEED_CTX(ctx);
     if (!in || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_sun_spa: NULL argument");
-    lx_status st = check_input(ctx, in);
+    lx_status st = lx__check_reserved(ctx, "sun input", in->reserved, sizeof in->reserved);
+    if (st == LX_OK) st = check_input(ctx, in);
     if (st != LX_OK) return st;
     const lx__table *et = lx__table_find("nrel_spa_earth_terms"), *nt = lx__table_find("nrel_spa_nutation");
     if (!et || !nt || et->ncols != 4 || nt->ncols != 10)

@@ -23,7 +23,7 @@ static double value_at(const lx_batch *b, size_t i, size_t j, int e)
     return e ? ldexp(v, -e) : v;
 }
 
-static double radiant_of(const lx_batch *b, size_t i)
+double lx__batch_radiant(const lx_batch *b, size_t i)
 {
     size_t stride = b->row_stride ? b->row_stride : b->n_lambda;
     double sum = 0.0;
@@ -56,7 +56,7 @@ static void work(void *arg, long i0, long i1, int t)
     if ((j->st[t] = lx_ctx_create(&ctx)) != LX_OK) return;
     for (long i = i0; i < i1 && j->st[t] == LX_OK; i++) {
         j->out[i].method = LX_METHOD_CIE15;
-        j->st[t] = lx__colorimetry_range(ctx, j->obs, j->ints + 4 * i, j->ints[4 * i + 3], radiant_of(j->b, i), j->lo_K,
+        j->st[t] = lx__colorimetry_range(ctx, j->obs, j->ints + 4 * i, j->ints[4 * i + 3], lx__batch_radiant(j->b, i), j->lo_K,
                                          j->hi_K, &j->out[i], NULL);
     }
     lx_ctx_destroy(ctx);

@@ -257,3 +257,89 @@ lx_status lx_cct_from_xy(lx_ctx *ctx, lx_observer obs, double x, double y, doubl
     }
     return lx_cct_from_uv(ctx, obs, 4 * x / d, 6 * y / d, cct_K, duv);
 }
+
+/* The point of the Hermite interpolant at s = ln T and its derivative in s. */
+static void hermite_at(const lx__locus *L, double s, double *pu, double *pv, double *qu, double *qv)
+{
+    const double *du = L->u + 2 * L->n, *dv = L->u + 3 * L->n, h = L->dlogt;
+    double f = (s - L->logt0) / h;
+    int i = (int)floor(f);
+    if (i < 0) i = 0;
+    if (i > L->n - 2) i = L->n - 2;
+    double t = f - i, t2 = t * t, t3 = t2 * t;
+    double h00 = 2 * t3 - 3 * t2 + 1, h10 = t3 - 2 * t2 + t, h01 = -2 * t3 + 3 * t2, h11 = t3 - t2;
+    double d00 = 6 * t2 - 6 * t, d10 = 3 * t2 - 4 * t + 1, d01 = -6 * t2 + 6 * t, d11 = 3 * t2 - 2 * t;
+    *pu = h00 * L->u[i] + h10 * h * du[i] + h01 * L->u[i + 1] + h11 * h * du[i + 1];
+    *pv = h00 * L->v[i] + h10 * h * dv[i] + h01 * L->v[i + 1] + h11 * h * dv[i + 1];
+    *qu = (d00 * L->u[i] + d10 * h * du[i] + d01 * L->u[i + 1] + d11 * h * du[i + 1]) / h;
+    *qv = (d00 * L->v[i] + d10 * h * dv[i] + d01 * L->v[i + 1] + d11 * h * dv[i + 1]) / h;
+}
+
+lx_status lx__cct_from_uv_table(lx_ctx *ctx, lx_observer obs, double u, double v, double *cct_K, double *duv)
+{
+    *cct_K = *duv = NAN;
+    if (!isfinite(u) || !isfinite(v)) return LX_ERANGE;
+    lx__locus *L = lx__slot_get(ctx, LX__SLOT_LOCUS);
+    if (L && (obs == LX_OBSERVER_2 || obs == LX_OBSERVER_10)) L += obs == LX_OBSERVER_2 ? 0 : 1;
+    if (!L || !L->ready) { /* the first call on this context builds the table */
+        cmf3 c;
+        lx_status st = locus(ctx, obs, &L, &c);
+        if (st != LX_OK) return st;
+    }
+    /* u falls monotonically along the locus: bisect on u, then the nearest node by distance among
+     * its neighbours (a point within Duv 0.05 is nearest to a node a few steps away at most) */
+    int lo = 0, hi = L->n - 1;
+    while (hi - lo > 1) {
+        int mid = (lo + hi) / 2;
+        if (L->u[mid] > u) lo = mid;
+        else hi = mid;
+    }
+    int best = lo, k0 = lo - 12 < 0 ? 0 : lo - 12, k1 = lo + 12 > L->n - 1 ? L->n - 1 : lo + 12;
+    double bd = INFINITY;
+    for (int k = k0; k <= k1; k++) {
+        double du = L->u[k] - u, dv = L->v[k] - v, d = du * du + dv * dv;
+        if (d < bd) bd = d, best = k;
+    }
+    if (best == k0 || best == k1) { /* not a local minimum inside the window: search them all */
+        for (int k = 0; k < L->n; k++) {
+            double du = L->u[k] - u, dv = L->v[k] - v, d = du * du + dv * dv;
+            if (d < bd) bd = d, best = k;
+        }
+    }
+    if (best == 0 || best == L->n - 1) return LX_ERANGE;
+    /* the foot of the perpendicular lies in the interval on the side the tangent at the nearest
+     * node points to: Newton steps on (P(s) - p) . P'(s) = 0 there */
+    const double *dU = L->u + 2 * L->n, *dV = L->u + 3 * L->n;
+    double dot = (u - L->u[best]) * dU[best] + (v - L->v[best]) * dV[best];
+    int i = dot > 0 ? best : best - 1;
+    double h = L->dlogt, pu, pv, qu, qv;
+    /* start from the projection onto the chord of the interval: Newton then needs two or three steps */
+    double cu = L->u[i + 1] - L->u[i], cv = L->v[i + 1] - L->v[i], cc = cu * cu + cv * cv;
+    double t = cc > 0 ? ((u - L->u[i]) * cu + (v - L->v[i]) * cv) / cc : 0.5;
+    t = t < 0 ? 0 : t > 1 ? 1 : t;
+    for (int it = 0; it < 10; it++) {
+        double s = L->logt0 + (i + t) * h;
+        hermite_at(L, s, &pu, &pv, &qu, &qv);
+        double ru, rv; /* second derivative in s, by the same cubic */
+        {
+            double e00 = 12 * t - 6, e10 = 6 * t - 4, e01 = -12 * t + 6, e11 = 6 * t - 2;
+            ru = (e00 * L->u[i] + e10 * h * dU[i] + e01 * L->u[i + 1] + e11 * h * dU[i + 1]) / (h * h);
+            rv = (e00 * L->v[i] + e10 * h * dV[i] + e01 * L->v[i + 1] + e11 * h * dV[i + 1]) / (h * h);
+        }
+        double g = (pu - u) * qu + (pv - v) * qv, gp = qu * qu + qv * qv + (pu - u) * ru + (pv - v) * rv;
+        if (!(gp > 0)) break;
+        double tn = t - g / (gp * h);
+        tn = tn < 0 ? 0 : tn > 1 ? 1 : tn;
+        double step = fabs(tn - t);
+        t = tn;
+        if (step < 1e-10) break; /* 1e-10 of a node interval: 5e-12 relative in T */
+    }
+    double s = L->logt0 + (i + t) * h, T = exp(s);
+    if (!(T >= LOCUS_T_MIN && T <= LOCUS_T_MAX)) return LX_ERANGE;
+    hermite_at(L, s, &pu, &pv, &qu, &qv);
+    double cross = qu * (v - pv) - qv * (u - pu), sgn = cross < 0 ? 1.0 : -1.0;
+    if (qu > 0) sgn = -sgn; /* as lx_cct_from_uv: + above the locus */
+    *cct_K = T;
+    *duv = sgn * hypot(u - pu, v - pv);
+    return LX_OK;
+}

@@ -141,10 +141,15 @@ static lx_status keyword_num(lx_ctx *ctx, const char *file, long line, const tok
 
 enum { ST_HEADER, ST_FORMAT, ST_DATA, ST_AFTER };
 
-lx_status lx__cgats_read(lx_ctx *ctx, const char *file, const char *text, size_t len, lx_spd_set **out)
+lx_status lx__cgats_read(lx__rd *rd, const char *text, size_t len, lx_spd_set **out)
 {
+    lx_ctx *ctx = rd->ctx;
+    const char *file = rd->file;
+    rd->format = "cgats";
     lx_status st = LX_OK;
-    lx__lines it = {text, text + len, 0};
+    lx__lines it = {text, text + len, rd->line0};
+    size_t dropped = 0; /* sets left out with skip_bad_rows */
+    int first_line = 1;
     const char *s, *e;
     toks ts = {0};
     tok *fields = NULL; /* the field names, pointing into text */
@@ -205,7 +210,12 @@ lx_status lx__cgats_read(lx_ctx *ctx, const char *file, const char *text, size_t
                         : tok_is(t0, t1, "SPECTRAL_NORM")     ? &norm
                                                               : NULL;
                 if (k && (st = keyword_num(ctx, file, it.line, &ts, k))) goto done;
-                continue; /* other keywords and the file identifier are not needed */
+                /* every keyword is a header field (not the file identifier, not KEYWORD declarations) */
+                if (!(first_line && ts.n == 1) && !tok_is(t0, t1, "KEYWORD") &&
+                    lx__rd_field(rd, it.line, t0, t1, ts.n > 1 ? ts.t[1].s : NULL, ts.n > 1 ? ts.t[ts.n - 1].e : NULL))
+                    goto nomem;
+                first_line = 0;
+                continue;
             }
         }
         if (state == ST_FORMAT) {
@@ -267,10 +277,13 @@ lx_status lx__cgats_read(lx_ctx *ctx, const char *file, const char *text, size_t
             }
             if (aligned < 0) aligned = ts.n == nfields;
             if (aligned && ts.n != nfields) {
-                st = lx__error(ctx, LX_EPARSE, file, it.line, "row has %zu fields, expected %zu (the data format)",
-                               ts.n, nfields);
-                goto done;
+                if ((st = lx__rd_bad_row(rd, it.line, "row has %zu fields, expected %zu (the data format)", ts.n,
+                                         nfields)))
+                    goto done;
+                dropped++;
+                continue;
             }
+            int bad = 0;
             for (size_t i = 0; i < ts.n; i++) {
                 if (pos == 0) { /* a new set starts */
                     if (nsets == vcap) {
@@ -295,10 +308,11 @@ lx_status lx__cgats_read(lx_ctx *ctx, const char *file, const char *text, size_t
                     nsets++;
                 }
                 size_t f = pos;
-                if (role[f] >= 0) {
+                if (role[f] >= 0 && !bad) {
                     st = lx__parse_field(ctx, file, it.line, ts.t[i].s, ts.t[i].e, 0, "value",
                                          &vals[(nsets - 1) * nspec + (size_t)role[f]]);
-                    if (st) goto done;
+                    if (st && (!aligned || (st = lx__rd_bad_field(rd, it.line, st)))) goto done;
+                    if (!st && rd->nskipped && rd->skipped[rd->nskipped - 1].line == it.line) bad = 1;
                 } else if ((int)f == name_field) {
                     size_t n = (size_t)(ts.t[i].e - ts.t[i].s);
                     char *nm = malloc(n + 1);
@@ -308,6 +322,12 @@ lx_status lx__cgats_read(lx_ctx *ctx, const char *file, const char *text, size_t
                     names[nsets - 1] = nm;
                 }
                 pos = (pos + 1) % nfields;
+            }
+            if (bad) { /* aligned: this line was one set; leave it out */
+                nsets--;
+                free(names[nsets]);
+                names[nsets] = NULL;
+                dropped++;
             }
         }
     }
@@ -337,7 +357,7 @@ lx_status lx__cgats_read(lx_ctx *ctx, const char *file, const char *text, size_t
         st = lx__error(ctx, LX_EPARSE, file, data_line, "no data sets between BEGIN_DATA and END_DATA");
         goto done;
     }
-    if (n_sets.have && n_sets.v != (double)nsets) {
+    if (n_sets.have && n_sets.v != (double)(nsets + dropped)) {
         st = lx__error(ctx, LX_EPARSE, file, n_sets.line,
                        "NUMBER_OF_SETS is %.17g but the data holds %zu sets (lines %ld-%ld)", n_sets.v, nsets,
                        data_line, end_data_line);

@@ -1,9 +1,11 @@
-/* spd_read.c - reads spectra from text: the columns layout (wavelength, value...) and the rows
- * layout (a header of wavelengths, one spectrum per row), separator detection, BOM/CRLF/comments,
- * and the lx_spd_set that owns the result. CGATS files are handed to cgats.c. */
+/* spd_read.c - the entry points of the spectrum readers: checks of the raw bytes (BOM, UTF-16, NUL),
+ * the layout by content detection or by name, the state the layout readers share (header fields,
+ * skipped rows), units of wavelength and value, and the lx_spd_set that owns the result. The
+ * layouts are in spd_text.c, spd_instruments.c, spd_tm27.c and cgats.c. */
 #include "spectral/spectral_private.h"
 
 #include <errno.h>
+#include <stdarg.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -26,6 +28,13 @@ void lx_spd_set_free(lx_spd_set *set)
             free((void *)set->spd[i].value);
         }
     }
+    for (size_t i = 0; i < set->nfields; i++) {
+        free(set->fields[i].key);
+        free(set->fields[i].value);
+    }
+    for (size_t i = 0; i < set->nskipped; i++) free(set->skipped[i].why);
+    free(set->fields);
+    free(set->skipped);
     free(set->spd);
     free(set->line);
     free(set->file);
@@ -86,6 +95,8 @@ lx_status lx__spd_set_build(lx_ctx *ctx, const char *file, size_t nlam, const do
     lx_spd_set *set = calloc(1, sizeof *set);
     if (!set) goto nomem;
     set->file = lx__strndup(file, file + strlen(file));
+    set->unit_scale = 1.0;
+    set->wavelength_scale = 1.0;
     set->spd = calloc(nspec ? nspec : 1, sizeof *set->spd);
     set->line = calloc(nspec ? nspec : 1, sizeof *set->line);
     if (!set->file || !set->spd || !set->line) goto nomem;
@@ -122,320 +133,286 @@ nomem:
 #undef LAMLINE
 }
 
-/* ---- text layouts ---- */
-
-typedef struct cell {
-    const char *s, *e;
-} cell;
-
-typedef struct cells {
-    cell *c;
-    size_t n, cap;
-} cells;
-
-static int cells_push(cells *cs, const char *s, const char *e)
+lx_status lx__spd_set_merge(lx_ctx *ctx, lx_spd_set *a, lx_spd_set *b)
 {
-    if (cs->n == cs->cap) {
-        size_t cap = cs->cap ? 2 * cs->cap : 16;
-        cell *c = realloc(cs->c, cap * sizeof *c);
-        if (!c) return -1;
-        cs->c = c;
-        cs->cap = cap;
+    size_t n = a->count + b->count;
+    lx_spd *spd = realloc(a->spd, (n ? n : 1) * sizeof *spd);
+    if (spd) a->spd = spd;
+    long *line = realloc(a->line, (n ? n : 1) * sizeof *line);
+    if (line) a->line = line;
+    if (!spd || !line) {
+        lx_spd_set_free(b);
+        return lx__error(ctx, LX_ENOMEM, a->file, 0, "out of memory");
     }
-    cs->c[cs->n].s = s;
-    cs->c[cs->n].e = e;
-    cs->n++;
+    memcpy(a->spd + a->count, b->spd, b->count * sizeof *spd);
+    memcpy(a->line + a->count, b->line, b->count * sizeof *line);
+    a->count = n;
+    b->count = 0; /* its arrays now belong to a */
+    lx_spd_set_free(b);
+    return LX_OK;
+}
+
+/* ---- the shared reader state ---- */
+
+static void trim(const char **s, const char **e)
+{
+    while (*s < *e && is_blank(**s)) (*s)++;
+    while (*e > *s && is_blank((*e)[-1])) (*e)--;
+    if (*e - *s >= 2 && **s == '"' && (*e)[-1] == '"') (*s)++, (*e)--;
+}
+
+int lx__rd_field(lx__rd *rd, long line, const char *ks, const char *ke, const char *vs, const char *ve)
+{
+    if (rd->nfields == rd->fcap) {
+        size_t cap = rd->fcap ? 2 * rd->fcap : 32;
+        lx_spd_field *f = realloc(rd->fields, cap * sizeof *f);
+        if (!f) return -1;
+        rd->fields = f;
+        rd->fcap = cap;
+    }
+    trim(&ks, &ke);
+    if (vs) trim(&vs, &ve);
+    lx_spd_field *f = &rd->fields[rd->nfields];
+    memset(f, 0, sizeof *f);
+    f->key = lx__strndup(ks, ke);
+    f->value = vs ? lx__strndup(vs, ve) : lx__strndup("", "");
+    f->line = line;
+    if (!f->key || !f->value) {
+        free(f->key);
+        free(f->value);
+        return -1;
+    }
+    rd->nfields++;
     return 0;
 }
 
-/* The end of a line's content: before a '#' outside double quotes, trailing blanks trimmed. */
-static const char *content_end(const char *s, const char *e)
+static lx_status skip_row(lx__rd *rd, long line, const char *what)
 {
-    int inq = 0;
-    const char *p = s;
-    for (; p < e; p++) {
-        if (*p == '"') inq = !inq;
-        else if (*p == '#' && !inq) break;
+    if (rd->nskipped == rd->scap) {
+        size_t cap = rd->scap ? 2 * rd->scap : 16;
+        lx_spd_skipped *k = realloc(rd->skipped, cap * sizeof *k);
+        if (!k) return lx__rd_nomem(rd);
+        rd->skipped = k;
+        rd->scap = cap;
     }
-    while (p > s && is_blank(p[-1])) p--;
-    return p;
+    char *why = lx__strndup(what, what + strlen(what));
+    if (!why) return lx__rd_nomem(rd);
+    memset(&rd->skipped[rd->nskipped], 0, sizeof rd->skipped[rd->nskipped]);
+    rd->skipped[rd->nskipped].line = line;
+    rd->skipped[rd->nskipped].why = why;
+    rd->nskipped++;
+    return LX_OK;
 }
 
-/* Splits [s, e) into cells at sep (' ' means runs of blanks); trims blanks; strips one pair of
- * double quotes around a cell. */
-static int split(const char *s, const char *e, char sep, cells *cs)
+lx_status lx__rd_bad_row(lx__rd *rd, long line, const char *fmt, ...)
 {
-    cs->n = 0;
-    const char *p = s;
-    while (p < e && is_blank(*p)) p++;
-    if (p >= e) return 0;
-    for (;;) {
-        while (p < e && is_blank(*p) && !(sep == '\t' && *p == '\t')) p++;
-        const char *cs0 = p;
-        int inq = 0;
-        while (p < e) {
-            if (*p == '"') inq = !inq;
-            else if (!inq && (sep == ' ' ? is_blank(*p) : *p == sep)) break;
-            p++;
-        }
-        const char *ce = p;
-        while (ce > cs0 && is_blank(ce[-1]) && !(sep == '\t' && ce[-1] == '\t')) ce--;
-        if (ce - cs0 >= 2 && *cs0 == '"' && ce[-1] == '"') {
-            cs0++;
-            ce--;
-        }
-        if (cells_push(cs, cs0, ce)) return -1;
-        if (p >= e) break;
-        p++; /* the separator */
-        if (sep == ' ') {
-            while (p < e && is_blank(*p)) p++;
-            if (p >= e) break;
-        }
-    }
-    return 0;
+    char what[512];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    if (rd->opts.skip_bad_rows) return skip_row(rd, line, what);
+    return lx__error(rd->ctx, LX_EPARSE, rd->file, line, "%s", what);
 }
 
-static char detect_sep(const char *s, const char *e)
+lx_status lx__rd_bad_field(lx__rd *rd, long line, lx_status st)
 {
-    if (memchr(s, ';', (size_t)(e - s))) return ';';
-    if (memchr(s, '\t', (size_t)(e - s))) return '\t';
-    if (memchr(s, ',', (size_t)(e - s))) return ',';
-    return ' ';
+    if (st != LX_EPARSE || !rd->opts.skip_bad_rows) return st;
+    /* the context holds "FILE:LINE: what": keep the what */
+    const char *m = lx_ctx_errmsg(rd->ctx);
+    char prefix[320];
+    int n = snprintf(prefix, sizeof prefix, "%s:%ld: ", rd->file, line);
+    if (n > 0 && (size_t)n < sizeof prefix && !strncmp(m, prefix, (size_t)n)) m += n;
+    return skip_row(rd, line, m);
 }
 
-/* A growable array of doubles and one of longs. */
-typedef struct dvec {
-    double *v;
-    size_t n, cap;
-} dvec;
-typedef struct lvec {
-    long *v;
-    size_t n, cap;
-} lvec;
+lx_status lx__rd_nomem(lx__rd *rd) { return lx__error(rd->ctx, LX_ENOMEM, rd->file, 0, "out of memory"); }
 
-static int dvec_reserve(dvec *d, size_t more)
+int lx__starts_ci(const char *s, const char *e, const char *w)
 {
-    if (d->n + more <= d->cap) return 0;
-    size_t cap = d->cap ? d->cap : 256;
-    while (cap < d->n + more) cap *= 2;
-    double *v = realloc(d->v, cap * sizeof *v);
-    if (!v) return -1;
-    d->v = v;
-    d->cap = cap;
-    return 0;
+    while (s < e && is_blank(*s)) s++;
+    size_t n = strlen(w);
+    if ((size_t)(e - s) < n) return 0;
+    for (size_t i = 0; i < n; i++) {
+        char a = s[i], b = w[i];
+        if (a >= 'A' && a <= 'Z') a = (char)(a - 'A' + 'a');
+        if (b >= 'A' && b <= 'Z') b = (char)(b - 'A' + 'a');
+        if (a != b) return 0;
+    }
+    return 1;
 }
 
-static int lvec_push(lvec *l, long x)
+/* nm per unit of a unit word, 0 for none */
+static double unit_scale_of(const char *s, const char *e)
 {
-    if (l->n == l->cap) {
-        size_t cap = l->cap ? 2 * l->cap : 64;
-        long *v = realloc(l->v, cap * sizeof *v);
-        if (!v) return -1;
-        l->v = v;
-        l->cap = cap;
+    size_t n = (size_t)(e - s);
+    struct {
+        const char *w;
+        double scale;
+    } const units[] = {
+        {"nm", 1.0}, {"nanometer", 1.0}, {"nanometers", 1.0}, {"nanometre", 1.0}, {"nanometres", 1.0},
+        {"um", 1000.0}, {"\xc2\xb5m", 1000.0}, {"\xce\xbcm", 1000.0}, {"micron", 1000.0}, {"microns", 1000.0},
+        {"micrometer", 1000.0}, {"micrometers", 1000.0}, {"micrometre", 1000.0}, {"micrometres", 1000.0},
+        {"A", 0.1}, {"\xc3\x85", 0.1}, {"\xe2\x84\xab", 0.1}, {"angstrom", 0.1}, {"angstroms", 0.1},
+    };
+    for (size_t i = 0; i < sizeof units / sizeof *units; i++) {
+        size_t m = strlen(units[i].w);
+        if (m != n) continue;
+        /* "A" only in capitals (a lower-case "a" is too common); the words in any case */
+        if (!strcmp(units[i].w, "A") ? !memcmp(s, "A", 1) : lx__starts_ci(s, e, units[i].w)) return units[i].scale;
     }
-    l->v[l->n++] = x;
-    return 0;
+    return 0.0;
 }
 
-/* A rows-layout header: every cell after the first is a number, and they are not just the
- * default spectrum labels 1, 2, 3, ... of a columns-layout header. */
-static int is_rows_header(const cells *h, char point)
+double lx__wl_unit_word(const char *s, const char *e)
 {
-    if (h->n < 3) return 0;
-    int counting = 1;
-    for (size_t i = 1; i < h->n; i++) {
-        double d;
-        const char *q = lx__parse_double_ex(h->c[i].s, h->c[i].e, point, &d);
-        if (!q || q != h->c[i].e) return 0;
-        if (d != (double)i) counting = 0;
+    while (s < e && is_blank(*s)) s++;
+    while (e > s && is_blank(e[-1])) e--;
+    if (s >= e) return 0.0;
+    /* a unit in brackets or parentheses anywhere: "Wavelength [nm]", "lambda (um)", "[A]" */
+    for (const char *p = s; p < e; p++) {
+        if (*p != '[' && *p != '(') continue;
+        char close = *p == '[' ? ']' : ')';
+        const char *q = memchr(p + 1, close, (size_t)(e - p - 1));
+        if (!q) break;
+        const char *a = p + 1, *b = q;
+        while (a < b && is_blank(*a)) a++;
+        while (b > a && is_blank(b[-1])) b--;
+        double k = unit_scale_of(a, b);
+        if (k > 0) return k;
     }
-    return !counting;
+    /* the whole cell, or its last word after '_', '-', ' ' or '/': "nm", "wavelength_um", "wl A" */
+    double k = unit_scale_of(s, e);
+    if (k > 0) return k;
+    for (const char *p = e; p > s; p--) {
+        if (p[-1] == '_' || p[-1] == '-' || p[-1] == ' ' || p[-1] == '/') return unit_scale_of(p, e);
+    }
+    return 0.0;
 }
 
-static lx_status read_text(lx_ctx *ctx, const char *file, const char *text, size_t len, lx_spd_set **out)
+/* ---- the layouts ---- */
+
+static const char *const formats[] = {"columns", "rows", "cgats", "oceanview", "sekonic", "uprtek",
+                                      "tm27", "avantes", "spectrawiz", NULL};
+
+const char *const *lx_spd_formats(void) { return formats; }
+
+const char *lx_spd_set_field(const lx_spd_set *set, const char *key)
 {
-    lx_status st = LX_OK;
-    lx__lines it = {text, text + len, 0};
-    const char *s, *e;
-    cells cs = {0}, hdr = {0};
-    dvec data = {0};
-    lvec rowline = {0};
-    char **names = NULL;
-    long *lines = NULL;
-    size_t nnames = 0;
-    char sep = 0, point = 0;
-    long first_line = 0, header_line = 0;
-    int header = 0, rows = 0;
-    size_t ncols = 0;
-    double *wl = NULL;
+    if (!set || !key) return NULL;
+    for (size_t i = 0; i < set->nfields; i++)
+        if (!strcmp(set->fields[i].key, key)) return set->fields[i].value;
+    return NULL;
+}
 
-    while (lx__next_line(&it, &s, &e)) {
-        e = content_end(s, e);
-        const char *t = s;
-        while (t < e && is_blank(*t)) t++;
-        if (t >= e) continue;
-        if (!sep) { /* the first line with content decides the separator and the layout */
-            sep = detect_sep(t, e);
-            point = sep == ',' ? 0 : ',';
-            first_line = it.line;
-            if (split(t, e, sep, &hdr)) goto nomem;
-            double d;
-            const char *q = lx__parse_double_ex(hdr.c[0].s, hdr.c[0].e, point, &d);
-            header = !(q && q == hdr.c[0].e);
-            ncols = hdr.n;
-            if (header) {
-                header_line = it.line;
-                rows = is_rows_header(&hdr, point);
-                if (rows) {
-                    wl = malloc((ncols - 1) * sizeof *wl);
-                    if (!wl) goto nomem;
-                    for (size_t i = 1; i < ncols; i++) {
-                        st = lx__parse_field(ctx, file, it.line, hdr.c[i].s, hdr.c[i].e, point,
-                                             "wavelength", &wl[i - 1]);
-                        if (st) goto done;
-                        if (!(wl[i - 1] > 0)) {
-                            st = lx__error(ctx, LX_EPARSE, file, it.line,
-                                           "wavelength must be positive: %.17g nm", wl[i - 1]);
-                            goto done;
-                        }
-                        if (i > 1 && !(wl[i - 1] > wl[i - 2])) {
-                            st = lx__error(ctx, LX_EPARSE, file, it.line,
-                                           "header wavelengths must increase: %.17g nm after %.17g nm "
-                                           "(column %zu)", wl[i - 1], wl[i - 2], i + 1);
-                            goto done;
-                        }
-                    }
-                }
-                if (ncols < 2) {
-                    st = lx__error(ctx, LX_EPARSE, file, it.line,
-                                   "header has 1 column; need a wavelength column and a value column");
-                    goto done;
-                }
-                continue;
-            }
-            if (ncols < 2) {
-                st = lx__error(ctx, LX_EPARSE, file, it.line,
-                               "row has 1 field; need a wavelength and at least one value");
-                goto done;
-            }
-        }
-        if (split(t, e, sep, &cs)) goto nomem;
-        if (cs.n != ncols) {
-            st = lx__error(ctx, LX_EPARSE, file, it.line, "row has %zu fields, expected %zu (as on line %ld)",
-                           cs.n, ncols, first_line);
-            goto done;
-        }
-        if (dvec_reserve(&data, ncols) || lvec_push(&rowline, it.line)) goto nomem;
-        double *row = data.v + data.n;
-        if (rows) {
-            row[0] = 0; /* the id cell is kept as the spectrum's name below */
-        } else {
-            if (cs.c[0].s == cs.c[0].e) {
-                st = lx__error(ctx, LX_EPARSE, file, it.line, "empty wavelength field");
-                goto done;
-            }
-            st = lx__parse_field(ctx, file, it.line, cs.c[0].s, cs.c[0].e, point, "wavelength", &row[0]);
-            if (st) goto done;
-            if (!(row[0] > 0)) {
-                st = lx__error(ctx, LX_EPARSE, file, it.line, "wavelength must be positive: %.17g nm", row[0]);
-                goto done;
-            }
-        }
-        for (size_t c = 1; c < ncols; c++) {
-            if (cs.c[c].s == cs.c[c].e) {
-                if (rows) {
-                    st = lx__error(ctx, LX_EPARSE, file, it.line, "empty value in column %zu", c + 1);
-                    goto done;
-                }
-                row[c] = NAN; /* checked per column below */
-                continue;
-            }
-            st = lx__parse_field(ctx, file, it.line, cs.c[c].s, cs.c[c].e, point, "value", &row[c]);
-            if (st) goto done;
-        }
-        if (rows) { /* keep the row's name */
-            char **nn = realloc(names, (nnames + 1) * sizeof *nn);
-            if (!nn) goto nomem;
-            names = nn;
-            names[nnames] = lx__strndup(cs.c[0].s, cs.c[0].e);
-            if (!names[nnames]) goto nomem;
-            nnames++;
-        }
-        data.n += ncols;
+static lx_status read_layout(lx__rd *rd, const char *text, size_t len, lx_spd_set **out)
+{
+    const char *f = rd->opts.format;
+    if (f && *f && strcmp(f, "auto") != 0) {
+        if (!strcmp(f, "columns")) return lx__text_read(rd, text, len, 1, out);
+        if (!strcmp(f, "rows")) return lx__text_read(rd, text, len, 2, out);
+        if (!strcmp(f, "avantes")) return rd->format = "avantes", lx__text_read(rd, text, len, 1, out);
+        if (!strcmp(f, "cgats")) return lx__cgats_read(rd, text, len, out);
+        if (!strcmp(f, "oceanview")) return lx__oceanview_read(rd, text, len, out);
+        if (!strcmp(f, "sekonic")) return lx__sekonic_read(rd, text, len, out);
+        if (!strcmp(f, "uprtek")) return lx__uprtek_read(rd, text, len, out);
+        if (!strcmp(f, "tm27")) return lx__tm27_read(rd, text, len, out);
+        if (!strcmp(f, "spectrawiz")) return lx__spectrawiz_read(rd, text, len, out);
+        return lx__error(rd->ctx, LX_EINVAL, rd->file, 0,
+                         "unknown input format '%s' (columns, rows, cgats, oceanview, sekonic, uprtek, tm27, "
+                         "avantes, spectrawiz)", f);
     }
+    if (lx__tm27_detect(text, len)) return lx__tm27_read(rd, text, len, out);
+    if (lx__cgats_detect(text, len)) return lx__cgats_read(rd, text, len, out);
+    if (lx__oceanview_detect(text, len)) return lx__oceanview_read(rd, text, len, out);
+    if (lx__sekonic_detect(text, len)) return lx__sekonic_read(rd, text, len, out);
+    if (lx__uprtek_detect(text, len)) return lx__uprtek_read(rd, text, len, out);
+    if (lx__spectrawiz_detect(text, len)) return lx__spectrawiz_read(rd, text, len, out);
+    return lx__text_read(rd, text, len, 0, out);
+}
 
-    size_t nrows = ncols ? data.n / ncols : 0;
-    if (!sep) {
-        st = lx__error(ctx, LX_EPARSE, file, it.line ? it.line : 1,
-                       len ? "no data: only blank or comment lines" : "empty file");
-        goto done;
+static double max_wavelength(const lx_spd_set *set)
+{
+    double m = 0;
+    for (size_t i = 0; i < set->count; i++)
+        if (set->spd[i].n && set->spd[i].lambda_nm[set->spd[i].n - 1] > m) m = set->spd[i].lambda_nm[set->spd[i].n - 1];
+    return m;
+}
+
+/* Wavelengths to nm: --wavelength-unit, else a unit a header named, else micrometres when every
+ * wavelength is below 10 (no spectrum of light is sampled below 10 nm). */
+static lx_status wavelength_units(lx__rd *rd, lx_spd_set *set)
+{
+    double k = 1.0;
+    const char *wu = rd->opts.wavelength_unit;
+    if (wu && *wu) {
+        k = unit_scale_of(wu, wu + strlen(wu));
+        if (!strcmp(wu, "a")) k = 0.1;
+        if (!(k > 0))
+            return lx__error(rd->ctx, LX_EINVAL, rd->file, 0, "unknown wavelength unit '%s' (nm, um or A)", wu);
+    } else if (rd->wl_scale > 0) {
+        k = rd->wl_scale;
+        if (k != 1.0)
+            lx__log(rd->ctx, LX_LOG_INFO, "%s: wavelengths in %s (%s): converted to nm", rd->file,
+                    k == 1000.0 ? "micrometres" : "angstrom", rd->wl_source ? rd->wl_source : "header");
+    } else if (max_wavelength(set) < 10.0) {
+        k = 1000.0;
+        lx__log(rd->ctx, LX_LOG_INFO,
+                "%s: every wavelength is below 10: read as micrometres (--wavelength-unit nm keeps them)", rd->file);
     }
-    if (nrows == 0) {
-        st = lx__error(ctx, LX_EPARSE, file, header_line, "header but no data rows");
-        goto done;
-    }
-    if (rows) {
-        st = lx__spd_set_build(ctx, file, ncols - 1, wl, 1, NULL, header_line, nrows, data.v + 1, ncols, 1,
-                               names, rowline.v, out);
-        goto done;
-    }
-    if (nrows < 2) {
-        st = lx__error(ctx, LX_EPARSE, file, rowline.v[0], "only 1 data row; a spectrum needs at least 2");
-        goto done;
-    }
-    /* columns layout: every value column must be complete */
-    for (size_t c = 1; c < ncols; c++) {
-        size_t nempty = 0, first = 0;
-        for (size_t r = 0; r < nrows; r++) {
-            if (isnan(data.v[r * ncols + c])) {
-                if (!nempty) first = r;
-                nempty++;
+    set->wavelength_scale = k;
+    if (k != 1.0)
+        for (size_t i = 0; i < set->count; i++) {
+            double *l = (double *)set->spd[i].lambda_nm;
+            for (size_t j = 0; j < set->spd[i].n; j++) l[j] *= k;
+        }
+    return LX_OK;
+}
+
+static void finish(lx__rd *rd, lx_spd_set *set)
+{
+    set->format = rd->format ? rd->format : "columns";
+    set->fields = rd->fields, set->nfields = rd->nfields;
+    set->skipped = rd->skipped, set->nskipped = rd->nskipped;
+    rd->fields = NULL, rd->nfields = rd->fcap = 0;
+    rd->skipped = NULL, rd->nskipped = rd->scap = 0;
+    if (rd->unit) {
+        set->unit = rd->unit;
+        set->unit_scale = rd->unit_scale > 0 ? rd->unit_scale : 1.0;
+        set->unit_source = rd->unit_source;
+        if (set->unit_scale != 1.0)
+            for (size_t i = 0; i < set->count; i++) {
+                double *v = (double *)set->spd[i].value;
+                for (size_t j = 0; j < set->spd[i].n; j++) v[j] *= set->unit_scale;
             }
-        }
-        if (nempty == nrows) {
-            st = lx__error(ctx, LX_EPARSE, file, header ? header_line : first_line,
-                           "column %zu%s%.*s%s is empty", c + 1, header ? " ('" : "",
-                           header ? (int)(hdr.c[c].e - hdr.c[c].s) : 0, header ? hdr.c[c].s : "",
-                           header ? "')" : "");
-            goto done;
-        }
-        if (nempty) {
-            st = lx__error(ctx, LX_EPARSE, file, rowline.v[first], "empty value in column %zu", c + 1);
-            goto done;
-        }
+        lx__log(rd->ctx, LX_LOG_INFO, "%s: values in %s (%s)%s", rd->file, set->unit,
+                rd->unit_source ? rd->unit_source : "the format", set->unit_scale != 1.0 ? ", converted" : "");
     }
-    names = calloc(ncols - 1, sizeof *names);
-    lines = malloc((ncols - 1) * sizeof *lines);
-    if (!names || !lines) goto nomem;
-    nnames = ncols - 1;
-    for (size_t c = 1; c < ncols; c++) {
-        lines[c - 1] = header ? header_line : first_line;
-        if (header && hdr.c[c].e > hdr.c[c].s) {
-            names[c - 1] = lx__strndup(hdr.c[c].s, hdr.c[c].e);
-            if (!names[c - 1]) goto nomem;
-        }
+    for (size_t i = 0; i < set->count; i++) {
+        const lx_spd *s = &set->spd[i];
+        if (s->n && (s->lambda_nm[s->n - 1] < 360.0 || s->lambda_nm[0] > 830.0))
+            lx__log(rd->ctx, LX_LOG_WARN,
+                    "%s:%ld: spectrum '%s' (%.6g-%.6g nm) has no overlap with 360-830 nm: its photometric values are 0",
+                    set->file, set->line ? set->line[i] : 0L, s->name ? s->name : "", s->lambda_nm[0],
+                    s->lambda_nm[s->n - 1]);
     }
-    st = lx__spd_set_build(ctx, file, nrows, data.v, ncols, rowline.v, 0, ncols - 1, data.v + 1, 1, ncols,
-                           names, lines, out);
-    goto done;
-nomem:
-    st = lx__error(ctx, LX_ENOMEM, file, 0, "out of memory");
-done:
-    for (size_t i = 0; i < nnames; i++) free(names[i]);
-    free(names);
-    free(lines);
-    free(cs.c);
-    free(hdr.c);
-    free(data.v);
-    free(rowline.v);
-    free(wl);
-    return st;
+}
+
+static void rd_free(lx__rd *rd)
+{
+    for (size_t i = 0; i < rd->nfields; i++) {
+        free(rd->fields[i].key);
+        free(rd->fields[i].value);
+    }
+    for (size_t i = 0; i < rd->nskipped; i++) free(rd->skipped[i].why);
+    free(rd->fields);
+    free(rd->skipped);
 }
 
 /* ---- entry points ---- */
 
-lx_status lx_spd_read_mem(lx_ctx *ctx, const char *name, const char *text, size_t len, lx_spd_set **out)
+lx_status lx_spd_read_mem_opts(lx_ctx *ctx, const char *name, const char *text, size_t len,
+                               const lx_spd_read_opts *opts, lx_spd_set **out)
 {
     LX__NEED_CTX(ctx);
     if (out) *out = NULL;
@@ -457,11 +434,41 @@ lx_status lx_spd_read_mem(lx_ctx *ctx, const char *name, const char *text, size_
         text += 3;
         len -= 3;
     }
-    if (lx__cgats_detect(text, len)) return lx__cgats_read(ctx, file, text, len, out);
-    return read_text(ctx, file, text, len, out);
+    lx__rd rd;
+    memset(&rd, 0, sizeof rd);
+    rd.ctx = ctx;
+    rd.file = file;
+    if (opts) rd.opts = *opts;
+    for (size_t k = 0; k < sizeof rd.opts.reserved / sizeof *rd.opts.reserved; k++)
+        if (rd.opts.reserved[k]) return lx__error(ctx, LX_EINVAL, file, 0, "lx_spd_read_opts: reserved must be zero");
+    if (rd.opts.skip_lines < 0)
+        return lx__error(ctx, LX_EINVAL, file, 0, "skip_lines must not be negative (%ld)", rd.opts.skip_lines);
+    for (long k = 0; k < rd.opts.skip_lines && len; k++) { /* whole lines, counted */
+        const char *nl = memchr(text, '\n', len);
+        size_t step = nl ? (size_t)(nl - text) + 1 : len;
+        text += step;
+        len -= step;
+        rd.line0++;
+    }
+    lx_spd_set *set = NULL;
+    lx_status st = read_layout(&rd, text, len, &set);
+    if (st == LX_OK) st = wavelength_units(&rd, set);
+    if (st == LX_OK) {
+        finish(&rd, set);
+        *out = set;
+    } else {
+        lx_spd_set_free(set);
+    }
+    rd_free(&rd);
+    return st;
 }
 
-lx_status lx_spd_read_file(lx_ctx *ctx, const char *path, lx_spd_set **out)
+lx_status lx_spd_read_mem(lx_ctx *ctx, const char *name, const char *text, size_t len, lx_spd_set **out)
+{
+    return lx_spd_read_mem_opts(ctx, name, text, len, NULL, out);
+}
+
+lx_status lx_spd_read_file_opts(lx_ctx *ctx, const char *path, const lx_spd_read_opts *opts, lx_spd_set **out)
 {
     LX__NEED_CTX(ctx);
     if (out) *out = NULL;
@@ -470,7 +477,12 @@ lx_status lx_spd_read_file(lx_ctx *ctx, const char *path, lx_spd_set **out)
     size_t len;
     lx_status st = lx__read_all(ctx, path, LX_INPUT_SPECTRUM, &buf, &len);
     if (st != LX_OK) return st;
-    st = lx_spd_read_mem(ctx, path, buf, len, out);
+    st = lx_spd_read_mem_opts(ctx, path, buf, len, opts, out);
     free(buf);
     return st;
+}
+
+lx_status lx_spd_read_file(lx_ctx *ctx, const char *path, lx_spd_set **out)
+{
+    return lx_spd_read_file_opts(ctx, path, NULL, out);
 }

@@ -1,5 +1,6 @@
 /* spectral_private.h - the spectral layer's internals (never installed): the spectrum-set builder
- * shared by the readers, the CGATS reader, the batch weight matrix and the vector CSV line parser. */
+ * and the reader state shared by the layout readers, the batch weight matrix, the vector CSV line
+ * parser and the table-based CCT of the binning batch. */
 #ifndef LX_SPECTRAL_PRIVATE_H
 #define LX_SPECTRAL_PRIVATE_H
 
@@ -17,9 +18,80 @@ lx_status lx__spd_set_build(lx_ctx *ctx, const char *file, size_t nlam, const do
 /* The largest |value| of spd. */
 double lx__spd_max_abs(const lx_spd *spd);
 
-/* CGATS / Argyll spectral files (cgats.c): detection by content, and the reader. */
+/* Adds b's spectra to a (both read from the same file; b is freed, also on failure). */
+lx_status lx__spd_set_merge(lx_ctx *ctx, lx_spd_set *a, lx_spd_set *b);
+
+/* ---- the readers of lx_spd_read_*: the state every layout shares (spd_read.c) ---- */
+typedef struct lx__rd {
+    lx_ctx *ctx;
+    const char *file;
+    lx_spd_read_opts opts;  /* as given (zero for defaults) */
+    long line0;             /* lines before the text (opts.skip_lines): a reader's cursor starts there */
+    const char *format;     /* the layout read (static; lx_spd_formats) */
+    lx_spd_field *fields;   /* header fields found, moved into the set at the end */
+    size_t nfields, fcap;
+    lx_spd_skipped *skipped;
+    size_t nskipped, scap;
+    const char *unit;        /* the values' unit after scaling by unit_scale (NULL: not known) */
+    double unit_scale;
+    const char *unit_source; /* static text: what the unit was taken from */
+    double wl_scale;         /* wavelength unit found in a header (nm per file unit; 0: none found) */
+    const char *wl_source;   /* static text: where */
+} lx__rd;
+
+/* Keeps a header field (key and value trimmed of blanks and one pair of double quotes). Returns 0,
+ * -1 when out of memory. */
+int lx__rd_field(lx__rd *rd, long line, const char *ks, const char *ke, const char *vs, const char *ve);
+/* A malformed data row: with opts.skip_bad_rows recorded in the skipped list and LX_OK returned (the
+ * caller drops the row), else recorded on the context as LX_EPARSE FILE:LINE: what. */
+lx_status lx__rd_bad_row(lx__rd *rd, long line, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+/* The same for an error a field parser just recorded on the context (lx__parse_field's st). */
+lx_status lx__rd_bad_field(lx__rd *rd, long line, lx_status st);
+/* LX_ENOMEM naming the file. */
+lx_status lx__rd_nomem(lx__rd *rd);
+/* The wavelength unit a header cell names ("Wavelength [nm]", "wl_um", "lambda (µm)", "[A]",
+ * "Å"): nm per unit (1, 1000, 0.1), 0 when it names none. */
+double lx__wl_unit_word(const char *s, const char *e);
+/* 1 when [s, e) starts with blanks then w (case-insensitive). */
+int lx__starts_ci(const char *s, const char *e, const char *w);
+
+/* Layout readers: detection by content (1 when the text is that layout) and the reader. The text
+ * starts after opts.skip_lines lines (rd->line0); a reader's set gets no fields (rd keeps them). */
 int lx__cgats_detect(const char *text, size_t len);
-lx_status lx__cgats_read(lx_ctx *ctx, const char *file, const char *text, size_t len, lx_spd_set **out);
+lx_status lx__cgats_read(lx__rd *rd, const char *text, size_t len, lx_spd_set **out);
+int lx__oceanview_detect(const char *text, size_t len);
+lx_status lx__oceanview_read(lx__rd *rd, const char *text, size_t len, lx_spd_set **out);
+int lx__sekonic_detect(const char *text, size_t len);
+lx_status lx__sekonic_read(lx__rd *rd, const char *text, size_t len, lx_spd_set **out);
+int lx__uprtek_detect(const char *text, size_t len);
+lx_status lx__uprtek_read(lx__rd *rd, const char *text, size_t len, lx_spd_set **out);
+int lx__spectrawiz_detect(const char *text, size_t len);
+lx_status lx__spectrawiz_read(lx__rd *rd, const char *text, size_t len, lx_spd_set **out);
+int lx__tm27_detect(const char *text, size_t len);
+lx_status lx__tm27_read(lx__rd *rd, const char *text, size_t len, lx_spd_set **out);
+/* Delimited text (spd_text.c): the columns and rows layouts, Excel CSV, a preamble of header fields
+ * above the header, AvaSoft exports. layout: 0 either, 1 columns only, 2 rows only. */
+lx_status lx__text_read(lx__rd *rd, const char *text, size_t len, int layout, lx_spd_set **out);
+
+/* PAR and hazards (photobio.c): their weighting functions, in the order of lx_par and lx_hazard, and
+ * the fraction of w's integral inside [a, b]. */
+extern const lx_function lx__par_fns[3];
+extern const lx_function lx__hazard_fns[LX_HZ_COUNT];
+double lx__coverage(const lx_spd *w, double a, double b);
+/* One chromaticity binned with the embedded tables (binning.c); -1 when they are missing. */
+int lx__bin_xy(double x, double y, double cct_K, double duv, lx_binning *out);
+
+/* The Planckian locus table's cubic Hermite interpolant (cct.c): CCT and Duv without the exact
+ * solve, for binning many spectra (LX_ERANGE outside 1000-20000 K). */
+lx_status lx__cct_from_uv_table(lx_ctx *ctx, lx_observer obs, double u, double v, double *cct_K, double *duv);
+
+/* The radiant integral of spectrum i of a batch: the trapezoid rule, as lx_spd_integrate_radiant
+ * (batch_colorimetry.c). */
+double lx__batch_radiant(const lx_batch *b, size_t i);
 
 /* The batch weight matrix: w[f * n_lambda + j] = w_f(start + j step) * step (cie15 rule). */
 lx_status lx__batch_weights(lx_ctx *ctx, const lx_function *fns, size_t k, double start_nm, double step_nm,

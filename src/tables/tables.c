@@ -53,12 +53,68 @@ static const struct {
     [LX_FN_ALPHA_LC] = {"cie_s026_alphaopic_1nm", "l_cone"},
     [LX_FN_ALPHA_RH] = {"cie_s026_alphaopic_1nm", "rod"},
     [LX_FN_ALPHA_MEL] = {"cie_s026_alphaopic_1nm", "melanopic"},
+    [LX_FN_HAZARD_BLUE] = {"iec62471_blue_thermal", "blue_B"},
+    [LX_FN_HAZARD_THERMAL] = {"iec62471_blue_thermal", "thermal_R"},
+    [LX_FN_HAZARD_ACTINIC] = {"iec62471_actinic_uv", "actinic_S"},
+    /* the photon and box functions are computed (computed_fn below) */
 };
+
+/* Functions defined by a formula rather than a table, tabulated once at 1 nm: photons per joule
+ * lambda / (h c N_A) over the PAR bands, that times McCree's relative quantum efficiency
+ * (src/data/mccree1972_rqe.csv, linear between its 25 nm rows), and the unweighted UV-A band. */
+#define PAR_N 301   /* 400-700 nm */
+#define EPAR_N 351  /* 400-750 nm */
+#define YPF_N 376   /* 350-725 nm */
+#define UVA_N 86    /* 315-400 nm */
+static double comp_l[EPAR_N + YPF_N + UVA_N], comp_v[PAR_N + EPAR_N + YPF_N + UVA_N];
+static pthread_once_t comp_once = PTHREAD_ONCE_INIT;
+static int comp_ok;
+
+static void fill_computed(void)
+{
+    double *par = comp_v, *epar = par + PAR_N, *ypf = epar + EPAR_N, *uva = ypf + YPF_N;
+    double *l_epar = comp_l, *l_ypf = l_epar + EPAR_N, *l_uva = l_ypf + YPF_N;
+    for (int i = 0; i < EPAR_N; i++) {
+        l_epar[i] = 400.0 + i;
+        epar[i] = l_epar[i] * LX__UMOL_PER_J_NM;
+        if (i < PAR_N) par[i] = epar[i];
+    }
+    const lx__table *t = lx__table_find("mccree1972_rqe");
+    int c = lx__table_col(t, "field_mean");
+    if (c < 0) return;
+    const double *tl = t->data, *tv = t->data + (size_t)c * t->nrows;
+    for (int i = 0; i < YPF_N; i++) {
+        l_ypf[i] = 350.0 + i;
+        ypf[i] = l_ypf[i] * LX__UMOL_PER_J_NM * lx__interp(tl, tv, (size_t)t->nrows, l_ypf[i]);
+    }
+    for (int i = 0; i < UVA_N; i++) l_uva[i] = 315.0 + i, uva[i] = 1.0;
+    comp_ok = 1;
+}
+
+static int computed_fn(lx_function fn, lx_spd *out)
+{
+    pthread_once(&comp_once, fill_computed);
+    if (!comp_ok) return -1;
+    static const char *const names[] = {"photon_par", "photon_epar", "ypf_mccree", "uva"};
+    double *l_epar = comp_l, *l_ypf = l_epar + EPAR_N, *l_uva = l_ypf + YPF_N;
+    double *par = comp_v, *epar = par + PAR_N, *ypf = epar + EPAR_N, *uva = ypf + YPF_N;
+    switch (fn) {
+    case LX_FN_PHOTON_PAR: *out = (lx_spd){names[0], PAR_N, l_epar, par}; return 0;
+    case LX_FN_PHOTON_EPAR: *out = (lx_spd){names[1], EPAR_N, l_epar, epar}; return 0;
+    case LX_FN_YPF_MCCREE: *out = (lx_spd){names[2], YPF_N, l_ypf, ypf}; return 0;
+    case LX_FN_UVA: *out = (lx_spd){names[3], UVA_N, l_uva, uva}; return 0;
+    default: return -1;
+    }
+}
 
 lx_status lx_function_get(lx_ctx *ctx, lx_function fn, lx_spd *out)
 {
     LX__NEED_CTX(ctx);
     if (!out || (int)fn < 0 || fn >= LX_FN_COUNT) return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown weighting function %d", (int)fn);
+    if (!fn_source[fn].table) {
+        if (computed_fn(fn, out) == 0) return LX_OK;
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "weighting function %d: its table is missing", (int)fn);
+    }
     const lx__table *t = lx__table_find(fn_source[fn].table);
     if (lx__table_view(t, lx__table_col(t, fn_source[fn].col), out) != 0)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "embedded table %s lacks column %s", fn_source[fn].table,

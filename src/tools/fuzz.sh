@@ -21,6 +21,7 @@ seeds_for() {
     ies) echo samples/ies samples/scenes/ies tests/data/ies tests/bad/ies ${LX_SHARED_DIR:-../shared}/ies ;;
     scene) echo samples/scenes tests/data/scenes tests/bad/scene ;;
     exr) echo samples/envmaps tests/bad/exr tests/data/exr ;;
+    instruments) echo tests/data/instruments/good tests/data/instruments/bad ${LX_SHARED_DIR:-../shared}/spectra/instruments ;;
   esac
   echo tests/fuzz/seeds/$1
 }

@@ -27,15 +27,24 @@ check() {
   [ "$nb" -lt 2048 ] && ok "$1 message is short ($nb bytes)" || notok "$1 message is short" "$nb bytes of stderr"
 }
 
-# the committed corpus
-n=0
+# the committed corpus. LX_BAD_SAMPLE=K (make valgrind) runs a sample of it: the file on every K-th
+# line of expected.tsv, and the first file of each format so that every reader runs; the files left
+# out are reported as one skip (make test and make asan run them all)
+K=${LX_BAD_SAMPLE:-1}
+n=0; sampled_out=0; formats=" "
 while IFS='	' read -r cmd file code line frag; do
   case $cmd in '#'*|'') continue ;; esac
   [ -f "$B/$file" ] || { notok "$file" "listed in expected.tsv but missing"; continue; }
+  n=$((n + 1))
+  fmt=${file%%/*}
+  if [ $(((n - 1) % K)) -ne 0 ] && case $formats in *" $fmt "*) true ;; *) false ;; esac; then
+    sampled_out=$((sampled_out + 1)); continue
+  fi
+  formats="$formats$fmt "
   bounded "$cmd" "$B/$file"
   check "bad/$file" "$code" "$B/$file" "$line" "$frag" "$cmd"
-  n=$((n + 1))
 done <"$B/expected.tsv"
+[ "$sampled_out" -gt 0 ] && skip "corpus sample" "$sampled_out of $n corpus files not run here (LX_BAD_SAMPLE=$K)"
 files=$(find "$B/ies" "$B/ldt" "$B/spd" "$B/scene" "$B/exr" -type f | wc -l)
 [ "$n" -eq "$files" ] && [ "$n" -ge 60 ] && ok "every corpus file is listed ($n files)" ||
   notok "every corpus file is listed" "$n listed, $files files"

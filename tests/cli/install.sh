@@ -3,6 +3,9 @@
 . tests/cli/lib.sh
 B=$(dirname "$LUXCALC")
 P="$T/prefix"
+# make install needs the build itself; make valgrind's wrapper dir holds none (building one there
+# would replace its valgrind wrappers with plain binaries for the cases that run after this one)
+if [ ! -d "$B/obj" ]; then skip "make install" "$B is not a build dir (valgrind wrappers)"; exit 0; fi
 if make -s BUILD="$B" install PREFIX="$P" >"$T/make.log" 2>&1; then ok "make install PREFIX=tmp"; else notok "make install" "$(tail -5 "$T/make.log")"; fi
 for f in bin/luxcalc include/luxcalc.h lib/libluxcalc.a lib/libluxcalc.so.0 lib/pkgconfig/luxcalc.pc \
          share/man/man1/luxcalc.1 share/man/man3/luxcalc.3 share/bash-completion/completions/luxcalc; do
