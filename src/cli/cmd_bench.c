@@ -29,6 +29,8 @@ static int bench_lab(bench_ctx *b) { return cli_bench_lab(b->out); }
 
 int cli_bench_irradiance(FILE *out); /* bench_irradiance.c */
 static int bench_irradiance(bench_ctx *b) { return cli_bench_irradiance(b->out); }
+int cli_bench_room(FILE *out); /* bench_room.c */
+static int bench_room(bench_ctx *b) { return cli_bench_room(b->out); }
 int cli_bench_accuracy(FILE *out, const char *outpath); /* bench_accuracy.c */
 static int bench_accuracy(bench_ctx *b) { return cli_bench_accuracy(b->out, b->outpath); }
 static const struct {
@@ -43,6 +45,7 @@ static const struct {
     /* ---- bench topics (one line each: irradiance, grid, accuracy) ---- */
     {"accuracy", bench_accuracy, "error against a reference vs time of every method: spectra, radiance fields, lighting, near field"},
     {"irradiance", bench_irradiance, "irradiance maps: SH9, exact (fast), brute force vs numpy, 512x256..4096x2048"},
+    {"room", bench_room, "interreflection: error of the work-plane mean and worst point against time, tolerance 1e-1..1e-4"},
     {NULL, NULL, NULL},
 };
 
