@@ -61,6 +61,13 @@ for s in office street facade spectral; do
 done
 
 echo
+echo "== A room: the office downlights in a 6 x 4 x 2.8 m room with a desk and a partition; shadows"
+echo "   and interreflection (samples/scenes/office_room.scene), its plan, the receivers, the faces"
+"$LX" scene --explain "$here/scenes/office_room.scene"
+"$LX" scene --png "$out" "$here/scenes/office_room.scene"
+"$LX" scene --surfaces --format csv "$here/scenes/office_room.scene" | cut -d, -f1-5
+
+echo
 echo "== Radiance fields: irradiance from a lat-long sky with a sun (samples/envmaps/sky_sun.exr)"
 for m in sh9 fast brute; do
   "$LX" irradiance "$here/envmaps/sky_sun.exr" --normal 0,0,1 --method $m --backend cpu --format csv | tail -n 1 | cut -d, -f1-6

@@ -64,6 +64,7 @@
 #define LUXCALC_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -182,6 +183,22 @@ LX_API size_t lx_ctx_input_limit(const lx_ctx *ctx, lx_input_kind kind);
 
 /** Frees text the library wrote to memory for the caller (lx_luminaire_write_ies). Accepts NULL. */
 LX_API void lx_text_free(char *text);
+
+/** Room lx_double_format needs, the terminating NUL included. */
+#define LX_DOUBLE_CHARS 32
+
+/** Writes value as the shortest decimal text that reads back (strtod) as exactly value, the
+ * closest such text when there are several (Ryu, Adams 2018), laid out as printf("%.*g", P) with
+ * P = max(15, digits) lays out those digits ("0.1", "1e-07", "123456789012345680", "-0"; inf,
+ * -inf and nan as printf). out needs LX_DOUBLE_CHARS bytes; returns the length (without the NUL).
+ * Thread-safe, no allocation, about 30 ns. */
+LX_API size_t lx_double_format(double value, char *out);
+
+/** Opens path for reading as every reader of the library does: "-" is standard input; a missing
+ * file or a directory is LX_EIO naming the path; a FIFO waits at most LX_FIFO_WAIT_S seconds
+ * (default 10; 0: for ever) for its first data (LX_EIO saying so after that). Close *out with
+ * fclose unless it is stdin. Errors: LX_EINVAL (a NULL context, path or out), LX_EIO. */
+LX_API lx_status lx_file_open(lx_ctx *ctx, const char *path, FILE **out);
 
 /* ============================================================================================ */
 /* 2. Backends, SIMD paths and OpenCL devices (src/core) */
@@ -460,6 +477,14 @@ typedef struct lx_vendor_results {
  * out->count is 0 for formats that carry none. Errors: LX_EINVAL (NULL set or out). */
 LX_API lx_status lx_spd_set_vendor(lx_ctx *ctx, const lx_spd_set *set, lx_vendor_results *out);
 
+/** lx_spd_read_file_opts for an open stream (a pipe; not closed) whose first prefix_len bytes at
+ * prefix the caller already read from it (prefix may be NULL when none): the rest is read as
+ * lx_spd_read_file reads "-", under the spectrum size limit (the prefix counted), binary data
+ * refused; name is used in messages and as set->file; opts may be NULL. Errors: those of
+ * lx_spd_read_file_opts. */
+LX_API lx_status lx_spd_read_stream(lx_ctx *ctx, const char *name, FILE *in, const char *prefix, size_t prefix_len,
+                                    const lx_spd_read_opts *opts, lx_spd_set **out);
+
 /** Frees a set. Accepts NULL. */
 LX_API void lx_spd_set_free(lx_spd_set *set);
 
@@ -550,6 +575,17 @@ LX_API lx_status lx_cct_from_uv(lx_ctx *ctx, lx_observer observer, double u, dou
 /** The same from CIE 1931 x, y. Errors: as lx_cct_from_uv (LX_ERANGE also where x, y has no uv). */
 LX_API lx_status lx_cct_from_xy(lx_ctx *ctx, lx_observer observer, double x, double y,
                                 double *cct_K, double *duv);
+
+/** CCT and Duv of n chromaticities (CIE 1960 u[i], v[i]) at once, fast: the Planckian locus
+ * precomputed once per process (513 nodes in ln T, 900 K - 120000 K, quintic Hermite with exact
+ * derivatives), the nearest point found by bisection and Newton steps, no exp (about 0.1 us a point).
+ * Agrees with lx_cct_from_uv to rounding (tests/test_cct_fast.c: |dT| < 1e-10 relative, |dDuv| <
+ * 1e-12); a point whose nearest locus point is outside the table or more than 0.09 from the locus
+ * is solved by lx_cct_from_uv. Where lx_cct_from_uv has no answer (LX_ERANGE) cct_K[i] and duv[i]
+ * are NaN; that is not an error. Errors: LX_EINVAL (a NULL context, an unknown observer, NULL
+ * arrays with n > 0). */
+LX_API lx_status lx_cct_from_uv_batch(lx_ctx *ctx, lx_observer observer, size_t n, const double *u,
+                                      const double *v, double *cct_K, double *duv);
 
 /** CIE 1960 u, v (either may be NULL) of the Planckian radiator at T_K with the observer's CMFs.
  * Errors: LX_EINVAL (an unknown observer, T_K not positive and finite). */
@@ -651,6 +687,45 @@ typedef lx_status (*lx_batch_chunk_fn)(void *user, const lx_batch_table *chunk, 
  * Errors: those of lx_batch_table_read, and fn's own status. */
 LX_API lx_status lx_batch_table_stream(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads,
                                        lx_batch_chunk_fn fn, void *user);
+
+/** The callbacks of lx_batch_table_stream_ex (zero-initialise, then set emit at least; ABI policy:
+ * reserved stays zero). */
+typedef struct lx_batch_stream {
+    void *user;
+    /* Optional, on the parsing threads: called for each part of the file (consecutive rows, about
+     * 512 KB of text) as soon as it is parsed, several at once, in no particular order. thread
+     * (0 .. threads - 1, below 64) is the calling thread's index, for per-thread state (a context
+     * each: contexts are one thread's); *state is the part's own pointer, kept from one part to the
+     * next that takes its place (for buffers). A non-LX_OK return stops the stream when the part
+     * comes to be emitted, and is returned by it (ctx holds no message for it). */
+    lx_status (*work)(void *user, int thread, const lx_batch_table *part, void **state);
+    /* Required, on the caller's thread, every part in file order after its work: rows row0 ..
+     * row0 + part->batch.n_spectra - 1; state as work left it. A non-LX_OK return stops the stream. */
+    lx_status (*emit)(void *user, const lx_batch_table *part, size_t row0, void *state);
+    /* Optional: frees a part's state at the end of the stream. */
+    void (*release)(void *user, void *state);
+    /* Optional, on the caller's thread after each emitted part: bytes of the input consumed so far
+     * and the input's size (0 when unknown: a pipe). */
+    void (*progress)(void *user, unsigned long long done_bytes, unsigned long long total_bytes);
+    /* Optional: read this open stream instead of opening path (path then names it in messages),
+     * after the prefix_len bytes at prefix that the caller already read from it (the start of a
+     * pipe it looked at). Not closed. */
+    FILE *input;
+    const char *prefix;
+    size_t prefix_len;
+    long long reserved[4]; /* zero: room for later options (ABI policy) */
+} lx_batch_stream;
+
+/** lx_batch_table_stream with work on the parsing threads: each part is parsed and handed to
+ * cb->work on the thread that parsed it while it is in cache, and the results come to cb->emit
+ * in file order, so the per-part work (colorimetry, formatting) runs on every core and overlaps
+ * the parsing. Memory stays bounded whatever the file's size: a regular file is memory-mapped and
+ * the pages already read are unmapped behind the reader; a pipe or standard input is read into
+ * two alternating buffers of a few MB, without the size limit of whole files (a line longer than
+ * that grows them, up to the 4 MB a batch line may hold). Errors as lx_batch_table_stream, and
+ * LX_EINVAL for a NULL context, path, cb or cb->emit, or non-zero reserved. */
+LX_API lx_status lx_batch_table_stream_ex(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads,
+                                          const lx_batch_stream *cb);
 
 /** CSV end to end: streams a rows-layout batch CSV (lx_batch_table_stream, double values) and
  * integrates each chunk as lx_batch_integrate on the CPU while the next one parses. *out gets
@@ -1820,6 +1895,12 @@ typedef struct lx_counters {
     unsigned long long nearfield_probes;       /* pairs whose point-model error was estimated (13 point
                                                 * evaluations each: the near-field decision) */
     unsigned long long closed_form_evaluations;/* disk and rectangle luminaires evaluated in closed form */
+    /* rooms: occlusion and interreflection (README "Rooms") */
+    unsigned long long visibility_tests;       /* segments tested against surfaces and obstructions (ray casts) */
+    unsigned long long form_factors;           /* point-to-polygon form factors (patch matrix and gathers) */
+    unsigned long long radiosity_patches;      /* patches of the interreflection solves */
+    unsigned long long radiosity_shots;        /* patch shots of the progressive refinement */
+    unsigned long long gather_points;          /* receiver points and element centres gathered */
     unsigned long long reserved[2];            /* zero: room for later counters (ABI policy) */
 } lx_counters;
 
@@ -1838,11 +1919,14 @@ typedef enum lx_effect {
     LX_EFFECT_SPECTRAL,           /* spectral sums: CCT and melanopic EDI at receivers */
     LX_EFFECT_ENVIRONMENT,        /* sky and ground irradiance */
     LX_EFFECT_OPENCL,             /* grid work on an OpenCL device */
+    LX_EFFECT_OCCLUSION,          /* surfaces and obstructions that cut luminaire-receiver segments */
+    LX_EFFECT_INTERREFLECTION,    /* diffuse interreflection between the faces of rooms, surfaces, obstructions */
     LX_EFFECT_COUNT
 } lx_effect;
 
 /** "inverse_square", "cosine", "spot_falloff", "goniometric", "near_field", "spectral",
- * "environment", "opencl" (static storage; NULL for a bad value). Thread-safe. */
+ * "environment", "opencl", "occlusion", "interreflection" (static storage; NULL for a bad value).
+ * Thread-safe. */
 LX_API const char *lx_effect_name(lx_effect e);
 
 /** Luminaire kinds of a scene. */
@@ -1926,6 +2010,44 @@ typedef struct lx_scene_observer {
 /** Forced state of an effect in [effects]. */
 typedef enum lx_effect_force { LX_FORCE_AUTO = 0, LX_FORCE_ON = 1, LX_FORCE_OFF = 2 } lx_effect_force;
 
+/** The faces of a room, in this order (the index of lx_scene_room.reflectance; `--surfaces` rows). */
+typedef enum lx_room_face {
+    LX_ROOM_FLOOR = 0, LX_ROOM_CEILING, LX_ROOM_WALL_XMIN, LX_ROOM_WALL_XMAX, LX_ROOM_WALL_YMIN, LX_ROOM_WALL_YMAX
+} lx_room_face;
+
+/** A room: an axis-aligned box whose six faces reflect diffusely on their inside. The luminaires
+ * and receivers inside it see its inside only (no light passes its walls). */
+typedef struct lx_scene_room {
+    char *name;
+    const char *file;         /* the scene file and line of its section header */
+    long line;
+    double min_m[3], max_m[3];
+    double reflectance[6];    /* per lx_room_face, 0 <= rho < 1 */
+    long long reserved[4];    /* zero: room for later fields (an element of lx_scene.room: ABI policy) */
+} lx_scene_room;
+
+/** A surface: the planar parallelogram corner + s edge1 + t edge2 (0 <= s, t <= 1), Lambertian on
+ * both sides with one reflectance; it blocks light. Its front is the side edge1 x edge2 points to. */
+typedef struct lx_scene_surface {
+    char *name;
+    const char *file;
+    long line;
+    double corner_m[3], edge1_m[3], edge2_m[3];
+    double reflectance;       /* 0 <= rho < 1 */
+    long long reserved[4];    /* zero: room for later fields */
+} lx_scene_surface;
+
+/** An obstruction: an axis-aligned box that blocks light; its six faces reflect diffusely. */
+typedef struct lx_scene_obstruction {
+    char *name;
+    const char *file;
+    long line;
+    double min_m[3], max_m[3];
+    double reflectance;       /* 0 <= rho < 1 */
+    long long reserved[4];    /* zero: room for later fields */
+} lx_scene_obstruction;
+
+/** A scene read from a file. Owns everything it points to. Read-only after reading. */
 /** A scene read from a file. Owns everything it points to. Read-only after reading; freed with
  * lx_scene_free (a struct only the library allocates: ABI policy). */
 typedef struct lx_scene {
@@ -1968,6 +2090,17 @@ typedef struct lx_scene {
     long sun_line;
     size_t n_obs;                         /* [observer NAME] sections */
     lx_scene_observer *obs;
+    /* rooms, surfaces and obstructions (README "Rooms") */
+    size_t n_room, n_surf, n_obst;
+    lx_scene_room *room;
+    lx_scene_surface *surf;
+    lx_scene_obstruction *obst;
+    double interreflection_tol;           /* [scene] interreflection_tolerance: relative, on every receiver's
+                                           * total illuminance (default 1e-3) */
+    double patch_size_m;                  /* [scene] patch_size: the radiosity patch size (0: the planner chooses) */
+    int patch_refinement;                 /* [scene] patch_refinement: 1 (default) splits patches near luminaires,
+                                           * shadow edges and receivers; 0 keeps them uniform */
+    long interreflection_tol_line, patch_size_line; /* their lines (0 when not given) */
 } lx_scene;
 
 /** Reads a scene file ('-' is standard input); includes are resolved relative to the including
@@ -1982,6 +2115,30 @@ LX_API lx_status lx_scene_read_mem(lx_ctx *ctx, const char *name, const char *te
 /** Frees a scene. Accepts NULL. */
 LX_API void lx_scene_free(lx_scene *scene);
 
+/** The planner's interreflection choices (all zero when interreflection is off). */
+typedef struct lx_scene_room_plan {
+    double flux_lm;            /* luminaire flux the reflecting faces can receive (in rooms, or in the open
+                                * with reflecting surfaces) */
+    double area_m2;            /* S: the exposed reflecting area */
+    double mean_reflectance;   /* the area-weighted reflectance rho */
+    double indirect_est_lx;    /* the integrating-sphere estimate rho Phi / (S (1 - rho)) */
+    double share_est;          /* the largest estimated indirect share of a receiver point's total */
+    double tolerance;          /* interreflection_tolerance */
+    double patch_size_m;       /* chosen (or given by patch_size) */
+    size_t n_patches;          /* the solve's patches */
+    size_t n_elements;         /* the gather's elements: the patches, split where the light varies fast or a
+                                * receiver is close (the final gather resolves them) */
+    size_t n_refined;          /* splits the refinement made (near luminaires, shadow edges, receivers) */
+    size_t n_nodes;            /* direct-light quadrature nodes over all elements */
+    double stop_unshot_lm;     /* the solve iterates until the unshot flux is below this */
+    double memory_bytes;       /* what the solve allocates (the form-factor matrix dominates) */
+    double memory_limit_bytes; /* the bound (1 GiB; LX_ROOM_MEMORY_MB overrides) */
+    int backend;               /* lx_backend for the form factors and gathers (AUTO: the size decides) */
+    void *mesh;                /* the patches, faces and occluders (internal; owned) */
+    long long reserved[4];     /* zero: room for later fields (embedded in lx_scene_plan: ABI policy) */
+} lx_scene_room_plan;
+
+/** The planner's decision. */
 /** Why a luminaire-receiver pair takes its path (lx_scene_plan.near_why). */
 typedef enum lx_near_why {
     LX_NEAR_NONE = 0,    /* point model: the luminaire has no luminous area */
@@ -2023,6 +2180,12 @@ typedef struct lx_scene_plan {
                                        * the point's illuminance (NaN where it was not estimated); owned */
     unsigned char *near_why;          /* n_lum x n_points: an lx_near_why; owned */
     lx_counters planning;             /* the work the planner did itself (the near-field probes) */
+    /* occlusion and interreflection (README "Rooms") */
+    unsigned char *occ;               /* n_lum x n_points (luminaire-major): 0 no surface or obstruction can cut
+                                       * the pair (bounding-volume test), 1 visibility-tested, 2 blocked (the pair
+                                       * is in different rooms); owned; NULL when occlusion is off */
+    size_t n_occ_tested, n_occ_blocked;
+    lx_scene_room_plan room;
 } lx_scene_plan;
 
 /** Plans a scene: which effects, and which pairs take the near-field path. backend: AUTO lets
@@ -2035,18 +2198,55 @@ typedef struct lx_scene_plan {
 LX_API lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *scene, lx_backend backend, lx_scene_plan **out);
 LX_API void lx_scene_plan_free(lx_scene_plan *plan);
 
+/** One face's results (`luxcalc scene --surfaces`): area-weighted averages over its exposed area
+ * (the flux it receives divided by its area). */
+typedef struct lx_scene_surface_result {
+    char *name;                 /* ROOM.floor, ROOM.ceiling, ROOM.wall_xmin ... ROOM.wall_ymax,
+                                 * SURFACE.front, SURFACE.back, OBSTRUCTION.bottom, .top, .xmin ... .ymax */
+    double area_m2;             /* exposed area (less what an obstruction standing on it covers) */
+    double direct_lx, indirect_lx, E_lx;
+    double L_cd_m2;             /* rho E / pi */
+    double reflectance;
+    long long reserved[4];      /* zero: room for later results (an element of lx_scene_result.surfaces) */
+} lx_scene_surface_result;
+
+/** What the interreflection solve did. */
+typedef struct lx_scene_room_stats {
+    size_t n_patches;
+    unsigned long long sweeps;  /* progressive-refinement sweeps over the patches */
+    unsigned long long shots;   /* patch shots */
+    double direct_lm;           /* flux the faces received directly from the sources */
+    double indirect_lm;         /* flux they received after one or more reflections */
+    double absorbed_lm;         /* (1 - rho) x received, over every face */
+    double escaped_lm;          /* reflected flux that reached no face (open scenes) */
+    double unshot_lm;           /* reflected flux not yet distributed when the solve stopped */
+    double indirect_share;      /* measured: sum of indirect / sum of total over the receiver points */
+    double gather_check;        /* rms relative difference between each patch's indirect illuminance in the
+                                 * solve and the exact-form-factor gather at its centre (discretisation) */
+    int backend;                /* lx_backend the form factors and gathers ran on */
+    double seconds_ff, seconds_solve, seconds_gather;
+    long long reserved[4];      /* zero: room for later results (embedded in lx_scene_result) */
+} lx_scene_room_stats;
+
+/** Results at every receiver point (receiver order, then point order). */
 /** Results at every receiver point (receiver order, then point order); made by lx_scene_eval,
  * freed with lx_scene_result_free (a struct only the library allocates). */
 typedef struct lx_scene_result {
     size_t n_points, n_lum;
     size_t *first;              /* n_rec + 1: receiver r has points first[r] .. first[r+1]-1 */
     double *E_lx;               /* n_points: total illuminance */
-    double *contrib_lx;         /* n_points x (n_lum + 1): each luminaire's part, last the sky's */
+    double *contrib_lx;         /* n_points x (n_lum + 1): each luminaire's part, last the sky's (direct
+                                 * light: with interreflection on, the reflected part is indirect_lx) */
     double *L_cd_m2;            /* n_points: rho E / pi (NaN without a reflectance or not asked) */
     double *cct_K, *duv;        /* n_points (NaN when spectral is off or CCT undefined) */
     double *melanopic_edi_lx;   /* n_points (NaN when spectral is off) */
     lx_counters work;           /* the work this evaluation did */
     double seconds;             /* wall-clock time of the evaluation */
+    /* interreflection (NULL and zero when it is off): E_lx = direct_lx + indirect_lx */
+    double *direct_lx, *indirect_lx;   /* n_points */
+    size_t n_surfaces;                 /* room faces, surface sides, obstruction faces */
+    lx_scene_surface_result *surfaces;
+    lx_scene_room_stats room;
 } lx_scene_result;
 
 /** Options of lx_scene_eval (zero-initialise for defaults: everything; ABI policy: reserved stays

@@ -10,8 +10,8 @@
 #include <string.h>
 
 static const char help[] =
-    "usage: luxcalc scene FILE [--explain] [--contributions] [--format table|csv|json] [-o FILE]\n"
-    "                     [--png DIR] [--backend auto|cpu|opencl]\n"
+    "usage: luxcalc scene FILE [--explain] [--contributions] [--surfaces] [--format table|csv|json]\n"
+    "                     [-o FILE] [--png DIR] [--backend auto|cpu|opencl]\n"
     "\n"
     "Computes a lighting scene (see README \"Scenes\" for the file format): luminaires (point, spot,\n"
     "disk, rect, IES/LDT file), receivers (points and grids), an optional sky, the outputs wanted.\n"
@@ -21,18 +21,24 @@ static const char help[] =
     "                    the near-field path, the estimated and the measured work (json: an object\n"
     "                    with \"effects\", \"reasons\", \"forced\", \"pairs\", \"estimated\", \"measured\")\n"
     "  --contributions   one more column per luminaire (E_NAME_lx; table: E_NAME_avg_lx, the mean over\n"
-    "                    the receiver) and, with a sky, the sky (E_sky_lx)\n"
+    "                    the receiver) and, with a sky, the sky (E_sky_lx): their direct light (with\n"
+    "                    interreflection the reflected part is indirect_lx)\n"
     "  --glare           UGR (CIE 117) at each [observer]: one row per luminaire that counts with its\n"
     "                    luminance, solid angle, position index and term L^2 w / p^2, and the UGR\n"
+    "  --surfaces        rooms: one row per room face, surface side and obstruction face instead:\n"
+    "                    surface,area_m2,direct_lx,indirect_lx,illuminance_lx,luminance_cd_m2,reflectance\n"
+    "                    (area-weighted averages: the flux each receives over its exposed area)\n"
     "  --format F        table (default: a summary per receiver), csv or json (one row per point)\n"
     "  -o FILE           write to FILE (atomically)\n"
     "  --png DIR         also draw every grid receiver as an isolux plot (contours, luminaires,\n"
     "                    legend, statistics): DIR/SCENE_RECEIVER.png (SCENE: the file name without\n"
     "                    its extension; DIR is created when missing)\n"
     "  --backend B       auto (default, also LX_BACKEND), cpu or opencl: where the far-field work of\n"
-    "                    IES luminaires on grids runs (auto: OpenCL from 1e7 evaluations)\n"
+    "                    IES luminaires on grids runs (auto: OpenCL from 1e7 evaluations), and the\n"
+    "                    form factors and gathers of rooms\n"
     "\n"
-    "csv columns: receiver,x,y,z,illuminance_lx, then luminance_cd_m2 ([output] luminance = yes),\n"
+    "csv columns: receiver,x,y,z,illuminance_lx, then direct_lx,indirect_lx (interreflection on),\n"
+    "luminance_cd_m2 ([output] luminance = yes),\n"
     "cct_K,duv (cct = yes), melanopic_edi_lx (melanopic_edi = yes)\n"
     "\n"
     "example: the office sample, its plan, then its desk grid as csv:\n"
@@ -43,15 +49,19 @@ static const char *const counter_names[] = {
     "point_evaluations",      "spot_evaluations",    "goniometric_lookups",
     "nearfield_pairs",        "nearfield_subdivisions", "environment_evaluations",
     "environment_samples",    "spectra_integrated",  "kernel_launches",
-    "nearfield_probes",       "closed_form_evaluations"};
-#define N_COUNTERS 11
+    "nearfield_probes",       "closed_form_evaluations", "visibility_tests",
+    "form_factors",           "radiosity_patches",   "radiosity_shots",
+    "gather_points"};
+#define N_COUNTERS 16
 
 static unsigned long long counter(const lx_counters *c, int i)
 {
     const unsigned long long v[N_COUNTERS] = {c->point_evaluations,     c->spot_evaluations,    c->goniometric_lookups,
                                               c->nearfield_pairs,       c->nearfield_subdivisions, c->environment_evaluations,
                                               c->environment_samples,   c->spectra_integrated,  c->kernel_launches,
-                                              c->nearfield_probes,      c->closed_form_evaluations};
+                                              c->nearfield_probes,      c->closed_form_evaluations, c->visibility_tests,
+                                              c->form_factors,          c->radiosity_patches,   c->radiosity_shots,
+                                              c->gather_points};
     return v[i];
 }
 
@@ -71,6 +81,55 @@ static void json_string(FILE *f, const char *s)
         else fputc(ch, f);
     }
     fputc('"', f);
+}
+
+static const char *backend_name(int b) { return b == LX_BACKEND_OPENCL ? "opencl" : b == LX_BACKEND_CPU ? "cpu" : "auto"; }
+
+/* The interreflection part of --explain: the planner's estimate and choices, what the solve did. */
+static void room_text(FILE *f, const lx_scene_plan *p, const lx_scene_result *res)
+{
+    const lx_scene_room_plan *R = &p->room;
+    const lx_scene_room_stats *S = &res->room;
+    fprintf(f, "\ninterreflection:\n");
+    fprintf(f, "  estimate      rho %.3g over %.4g m2, %.4g lm: indirect about %.4g lx (rho Phi / (S (1 - rho)));\n"
+               "                largest estimated indirect share of a receiver's total %.1f %%\n",
+            R->mean_reflectance, R->area_m2, R->flux_lm, R->indirect_est_lx, 100 * R->share_est);
+    fprintf(f, "  patches       %zu of <= %.3g m for the solve; %zu elements for the gather (%zu splits near\n"
+               "                luminaires, shadow edges and receivers), %zu direct-light nodes; memory %.1f MiB of\n"
+               "                the %.0f MiB bound\n",
+            R->n_patches, R->patch_size_m, R->n_elements, R->n_refined, R->n_nodes, R->memory_bytes / 1048576.0,
+            R->memory_limit_bytes / 1048576.0);
+    fprintf(f, "  solve         tolerance %.3g: stop at %.4g lm unshot; %llu sweeps, %llu shots, %.4g lm unshot left\n",
+            R->tolerance, R->stop_unshot_lm, S->sweeps, S->shots, S->unshot_lm);
+    fprintf(f, "  flux          direct %.6g lm, indirect %.6g lm, absorbed %.6g lm, escaped %.4g lm\n", S->direct_lm,
+            S->indirect_lm, S->absorbed_lm, S->escaped_lm);
+    fprintf(f, "  measured      indirect share %.1f %% of the receivers' total; the solve's patches against the\n"
+               "                exact gather at their elements %.3g %% rms\n",
+            100 * S->indirect_share, 100 * S->gather_check);
+    fprintf(f, "  backend       %s (asked %s): form factors %.3g s, solve %.3g s, gather %.3g s\n", backend_name(S->backend),
+            backend_name(R->backend), S->seconds_ff, S->seconds_solve, S->seconds_gather);
+}
+
+static void room_json(FILE *f, const lx_scene_plan *p, const lx_scene_result *res)
+{
+    const lx_scene_room_plan *R = &p->room;
+    const lx_scene_room_stats *S = &res->room;
+    const char *k[] = {"mean_reflectance", "area_m2", "flux_lm", "indirect_estimate_lx", "share_estimate", "tolerance",
+                       "patch_size_m", "stop_unshot_lm", "memory_bytes", "direct_lm", "indirect_lm", "absorbed_lm",
+                       "escaped_lm", "unshot_lm", "indirect_share", "gather_check", "seconds_form_factors",
+                       "seconds_solve", "seconds_gather"};
+    double v[] = {R->mean_reflectance, R->area_m2, R->flux_lm, R->indirect_est_lx, R->share_est, R->tolerance,
+                  R->patch_size_m, R->stop_unshot_lm, R->memory_bytes, S->direct_lm, S->indirect_lm, S->absorbed_lm,
+                  S->escaped_lm, S->unshot_lm, S->indirect_share, S->gather_check, S->seconds_ff, S->seconds_solve,
+                  S->seconds_gather};
+    fprintf(f, "  \"interreflection\": {\"patches\": %zu, \"elements\": %zu, \"refined\": %zu, \"nodes\": %zu, "
+               "\"sweeps\": %llu, \"shots\": %llu, \"backend\": \"%s\"",
+            R->n_patches, R->n_elements, R->n_refined, R->n_nodes, S->sweeps, S->shots, backend_name(S->backend));
+    for (size_t i = 0; i < sizeof v / sizeof v[0]; i++) {
+        fprintf(f, ", \"%s\": ", k[i]);
+        cli_print_exact(f, v[i]);
+    }
+    fputs("},\n", f);
 }
 
 /* Near-field points per luminaire-receiver pair. */
@@ -180,6 +239,7 @@ static void explain(FILE *f, const lx_scene *sc, const lx_scene_plan *p, const l
             fputs("},\n", f);
         }
         json_pairs(f, sc, p);
+        if (p->on[LX_EFFECT_INTERREFLECTION]) room_json(f, p, res);
         fputs("  \"seconds\": ", f);
         cli_print_exact(f, res->seconds);
         fputs("\n}\n", f);
@@ -212,6 +272,7 @@ static void explain(FILE *f, const lx_scene *sc, const lx_scene_plan *p, const l
     for (int i = 0; i < N_COUNTERS; i++)
         fprintf(f, "  %-23s %14llu %14llu\n", counter_names[i], counter(&p->estimate, i), measured(p, res, i));
     fprintf(f, "  %-22s %14s %14.3g\n", "seconds", "", res->seconds);
+    if (p->on[LX_EFFECT_INTERREFLECTION]) room_text(f, p, res);
 }
 
 /* The result columns. */
@@ -232,6 +293,7 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
         COL("illuminance_max_lx", "lx");
         COL("uniformity_u0", "");
         COL("uniformity_min_max", "");
+        if (res->indirect_lx) COL("indirect_avg_lx", "lx");
         if (sc->want_luminance) COL("luminance_avg_cd_m2", "cd/m2");
         if (sc->want_cct) COL("cct_avg_K", "K");
         if (sc->want_melanopic) COL("melanopic_edi_avg_lx", "lx");
@@ -248,6 +310,7 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
         COL("y", "m");
         COL("z", "m");
         COL("illuminance_lx", "lx");
+        if (res->indirect_lx) COL("direct_lx", "lx"), COL("indirect_lx", "lx");
         if (sc->want_luminance) COL("luminance_cd_m2", "cd/m2");
         if (sc->want_cct) COL("cct_K", "K"), COL("duv", "");
         if (sc->want_melanopic) COL("melanopic_edi_lx", "lx");
@@ -269,11 +332,12 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
     for (size_t r = 0; r < sc->n_rec; r++) {
         size_t a = res->first[r], b = res->first[r + 1];
         if (table) {
-            double sum = 0, mn = INFINITY, mx = -INFINITY, ls = 0, cs = 0, ms = 0;
+            double sum = 0, mn = INFINITY, mx = -INFINITY, ls = 0, cs = 0, ms = 0, is = 0;
             size_t cn = 0;
             for (size_t g = a; g < b; g++) {
                 double e = res->E_lx[g];
                 sum += e;
+                if (res->indirect_lx) is += res->indirect_lx[g];
                 mn = e < mn ? e : mn;
                 mx = e > mx ? e : mx;
                 ls += res->L_cd_m2[g];
@@ -292,6 +356,7 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
             cli_table_num(t, mx);
             cli_table_num(t, avg > 0 ? mn / avg : NAN);
             cli_table_num(t, mx > 0 ? mn / mx : NAN);
+            if (res->indirect_lx) cli_table_num(t, is / n);
             if (sc->want_luminance) cli_table_num(t, ls / n);
             if (sc->want_cct) cli_table_num(t, cn == b - a ? cs / (double)cn : NAN);
             if (sc->want_melanopic) cli_table_num(t, ms / n);
@@ -307,6 +372,7 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
             cli_table_str(t, sc->rec[r].name);
             for (int k = 0; k < 3; k++) cli_table_num(t, q[k]);
             cli_table_num(t, res->E_lx[g]);
+            if (res->indirect_lx) cli_table_num(t, res->direct_lx[g]), cli_table_num(t, res->indirect_lx[g]);
             if (sc->want_luminance) cli_table_num(t, res->L_cd_m2[g]);
             if (sc->want_cct) cli_table_num(t, res->cct_K[g]), cli_table_num(t, res->duv[g]);
             if (sc->want_melanopic) cli_table_num(t, res->melanopic_edi_lx[g]);
@@ -316,6 +382,27 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
     }
     *names_out = names;
     *n_names = 2 * cap;
+    return t;
+}
+
+/* --surfaces: one row per room face, surface side and obstruction face. */
+static cli_table *surfaces_table(const lx_scene_result *res)
+{
+    static const char *const names[] = {"surface", "area_m2", "direct_lx", "indirect_lx", "illuminance_lx",
+                                        "luminance_cd_m2", "reflectance"};
+    static const char *const units[] = {"", "m2", "lx", "lx", "lx", "cd/m2", ""};
+    cli_table *t = cli_table_new(7, names, units);
+    if (!t) return NULL;
+    for (size_t i = 0; i < res->n_surfaces; i++) {
+        const lx_scene_surface_result *s = &res->surfaces[i];
+        cli_table_str(t, s->name);
+        cli_table_num(t, s->area_m2);
+        cli_table_num(t, s->direct_lx);
+        cli_table_num(t, s->indirect_lx);
+        cli_table_num(t, s->E_lx);
+        cli_table_num(t, s->L_cd_m2);
+        cli_table_num(t, s->reflectance);
+    }
     return t;
 }
 
@@ -425,9 +512,10 @@ int cmd_scene(int argc, char **argv)
     static const struct option opts[] = {{"explain", no_argument, 0, 'e'},      {"contributions", no_argument, 0, 'c'},
                                          {"format", required_argument, 0, 'f'}, {"backend", required_argument, 0, 'b'},
                                          {"png", required_argument, 0, 'p'},     {"glare", no_argument, 0, 'g'},
+                                         {"surfaces", no_argument, 0, 's'},
                                          {"help", no_argument, 0, 'h'},         {0, 0, 0, 0}};
     const char *cmd = "scene", *out = NULL, *backend_text = NULL, *png_dir = NULL;
-    int do_explain = 0, contrib = 0, glare = 0, c;
+    int do_explain = 0, contrib = 0, glare = 0, do_surfaces = 0, c;
     cli_format fmt = CLI_FMT_TABLE;
     optind = 1;
     opterr = 0;
@@ -436,6 +524,7 @@ int cmd_scene(int argc, char **argv)
         case 'e': do_explain = 1; break;
         case 'c': contrib = 1; break;
         case 'g': glare = 1; break;
+        case 's': do_surfaces = 1; break;
         case 'o': out = optarg; break;
         case 'b': backend_text = optarg; break;
         case 'p': png_dir = optarg; break;
@@ -485,13 +574,22 @@ int cmd_scene(int argc, char **argv)
         return CLI_INPUT;
     }
     if (st == LX_OK && png_dir) st = write_pngs(ctx, sc, res, argv[optind], png_dir, cli_imperial());
-    if (st != LX_OK) rc = cli_fail(cmd, ctx, st);
+    if (st == LX_OK && do_surfaces && !res->surfaces) {
+        cli_error(cmd, "%s: --surfaces: interreflection is off (%s)", argv[optind], plan->reason[LX_EFFECT_INTERREFLECTION]);
+        rc = CLI_INPUT;
+    } else if (st != LX_OK) rc = cli_fail(cmd, ctx, st);
     else {
         cli_output o;
         if (cli_output_open(&o, out, cmd) != 0) rc = CLI_INPUT;
         else if (do_explain) {
             explain(o.fp, sc, plan, res, fmt);
             if (cli_output_close(&o, !ferror(o.fp), cmd) != 0) rc = CLI_RUNTIME;
+        } else if (do_surfaces) {
+            cli_table *t = surfaces_table(res);
+            int ok = t && cli_table_write(t, fmt, o.fp, 1) == 0;
+            if (!t) cli_error(cmd, "out of memory");
+            if (cli_output_close(&o, ok, cmd) != 0 || !ok) rc = t ? CLI_INPUT : CLI_RUNTIME;
+            cli_table_free(t);
         } else {
             char **names = NULL;
             size_t nn = 0;

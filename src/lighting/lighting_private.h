@@ -25,8 +25,9 @@ lx_luminaire *lx__lum_new(const char *file);
 size_t lx__area_cells(int circular, int n);
 void lx__area_cell(int circular, double w, double l, int n, size_t c, double *a, double *b);
 /* Richardson-refined midpoint rule: mean(arg, n) (the mean over the n-level cells) for n = 2, 4,
- * 8, ... n_max; returns (4 S(n) - S(n/2)) / 3 once two successive extrapolations agree within tol
- * relative (n >= 8), else the last one. *cells (may be NULL) adds the cells evaluated; *converged
+ * 8, ... n_max; returns (4 S(n) - S(n/2)) / 3 once the last change of the extrapolation and a
+ * quarter of the change before it are within tol relative (n >= 8; at n = 4 the change is taken
+ * from S(2)), else the last one. *cells (may be NULL) adds the cells evaluated; *converged
  * (may be NULL) 1 when the tolerance was met. */
 double lx__area_refine(double (*mean)(void *arg, int n), void *arg, int circular, double tol, int n_max,
                        unsigned long long *cells, int *converged);

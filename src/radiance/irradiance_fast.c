@@ -7,6 +7,7 @@
  * to bound memory. */
 #include "radiance/radiance_private.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -20,7 +21,7 @@ typedef struct fast_job {
     const lx__hz *z;
     const double *dirs;
     double *out;   /* accumulated over blocks */
-    double *pre;   /* BLOCK_ROWS rows x 3 C x (W + 1) prefix sums */
+    double *pre;   /* BLOCK_ROWS rows x (W + 1) columns x 3 C prefix sums (L, L gx, L gy per channel) */
     int j0, nrows; /* current block */
     double *alpha; /* per thread: LX__HZ_RAY_SCRATCH (the lit half-widths, the meridian cache) */
     struct block_cache *cache; /* per thread */
@@ -33,31 +34,38 @@ static void build_prefix(void *arg, long r0, long r1, int t)
     const lx_envmap *m = J->map;
     int W = m->width, C = m->channels;
     size_t stride = (size_t)W + 1;
+    size_t S = 3 * (size_t)C; /* interleaved: column k's 3 C sums together (one or two cache lines) */
     for (long r = r0; r < r1; r++) {
         const float *row = m->data + (size_t)(J->j0 + r) * W * C;
-        double *P = J->pre + (size_t)r * 3 * C * stride;
+        double *P = J->pre + (size_t)r * S * stride;
         for (int c = 0; c < C; c++) {
-            double *p0 = P + (3 * c) * stride, *px = p0 + stride, *py = px + stride;
             double s0 = 0, sx = 0, sy = 0;
-            p0[0] = px[0] = py[0] = 0;
+            P[3 * c] = P[3 * c + 1] = P[3 * c + 2] = 0;
             for (int i = 0; i < W; i++) {
                 double v = row[(size_t)i * C + c];
                 s0 += v;
                 sx += v * J->g->col_gx[i];
                 sy += v * J->g->col_gy[i];
-                p0[i + 1] = s0;
-                px[i + 1] = sx;
-                py[i + 1] = sy;
+                double *q = P + (size_t)(i + 1) * S + 3 * c;
+                q[0] = s0;
+                q[1] = sx;
+                q[2] = sy;
             }
         }
     }
 }
 
-/* prefix value at a column index k that may lie outside [0, W] (periodic continuation) */
-static inline double pref(const double *p, long W, long k)
+/* A column index k that may lie outside [0, W] as k = *kk + q W with *kk in [0, W] (the periodic
+ * continuation of a prefix sum p: p[k] = p[*kk] + q p[W]); returns q. */
+static inline double pref_split(long k, long W, long *kk)
 {
+    if (k >= 0 && k <= W) {
+        *kk = k;
+        return 0;
+    }
     long q = k >= 0 ? k / W : -((-k + W - 1) / W);
-    return p[k - q * W] + (double)q * p[W];
+    *kk = k - q * W;
+    return (double)q;
 }
 
 /* The classification and crossed-pixel weights of one block of rows for a reference normal: a
@@ -104,6 +112,25 @@ static void cache_fill(const fast_job *J, lx__hz_ray *ray, block_cache *bc)
     bc->phin = ray->phin;
 }
 
+/* whether the cache serves ray: the same n_z and sqrt(nx^2 + ny^2) */
+static inline int n_eq(const block_cache *bc, const lx__hz_ray *ray)
+{
+    return bc->valid && ray->n[2] == bc->nz && fabs(ray->st - bc->st) <= 1e-14;
+}
+
+/* column k (any integer) taken into [0, W) */
+static inline long wrap(long k, long W)
+{
+    if (k >= 0 && k < W) return k;
+    k %= W;
+    return k < 0 ? k + W : k;
+}
+
+/* Outputs that share a block cache (a lat-long output row: the same n_z and st, phi_n a whole
+ * number of columns apart) are accumulated together, row by row, so that each input row's prefix
+ * sums and pixels are read from cache once for the group rather than once per output. */
+#define GROUP_MAX 256
+
 static void accumulate(void *arg, long o0, long o1, int t)
 {
     fast_job *J = arg;
@@ -119,51 +146,78 @@ static void accumulate(void *arg, long o0, long o1, int t)
     block_cache *bc = &J->cache[t];
     bc->valid = 0;
     double last_nz = NAN, last_st = NAN;
-    for (long o = o0; o < o1; o++) {
+    long shifts[GROUP_MAX];
+    double e[GROUP_MAX][3];
+    for (long o = o0; o < o1;) {
         lx__hz_ray ray;
         lx__hz_ray_init(&ray, J->dirs + 3 * o, alpha, tz, stamp, &gen);
-        const double *n = ray.n;
-        long shift = 0;
-        int reuse = 0;
-        if (bc->valid && n[2] == bc->nz && fabs(ray.st - bc->st) <= 1e-14) {
+        if (n_eq(bc, &ray)) {
             double q = (ray.phin - bc->phin) / z->dphi, k = nearbyint(q);
-            reuse = fabs(q - k) < 1e-9;
-            shift = reuse ? (long)k : 0;
+            shifts[0] = fabs(q - k) < 1e-9 ? (long)k : LONG_MIN;
+        } else {
+            shifts[0] = LONG_MIN;
         }
-        if (!reuse) {
-            if (n[2] != last_nz || ray.st != last_st) { /* the lit half-widths depend on n_z and st only */
+        if (shifts[0] == LONG_MIN) {
+            if (ray.n[2] != last_nz || ray.st != last_st) { /* the lit half-widths depend on n_z and st only */
                 lx__hz_ray_rows(&ray, z, J->j0, J->j0 + J->nrows);
-                last_nz = n[2], last_st = ray.st;
+                last_nz = ray.n[2], last_st = ray.st;
             }
             cache_fill(J, &ray, bc);
+            shifts[0] = 0;
         }
-        double e[3] = {0, 0, 0};
+        /* the following outputs that the cache serves too */
+        long ng = 1;
+        while (ng < GROUP_MAX && o + ng < o1) {
+            const double *d = J->dirs + 3 * (o + ng);
+            double st = sqrt(d[0] * d[0] + d[1] * d[1]);
+            if (!(d[2] == bc->nz && fabs(st - bc->st) <= 1e-14 && st > 0)) break;
+            double ph = atan2(d[1], d[0]);
+            if (ph < 0) ph += 2 * LX__PI;
+            double q = (ph - bc->phin) / z->dphi, k = nearbyint(q);
+            if (!(fabs(q - k) < 1e-9)) break;
+            shifts[ng++] = (long)k;
+        }
+        for (long u = 0; u < ng; u++) e[u][0] = e[u][1] = e[u][2] = 0;
         for (int r = 0; r < J->nrows; r++) {
             const row_cache *rc = &bc->row[r];
             if (rc->kind == LX__HZ_DARK) continue;
             int j = J->j0 + r;
-            long in_lo = rc->in_lo + shift, in_hi = rc->in_hi + shift;
             const double *P = J->pre + (size_t)r * 3 * C * stride;
-            double a = g->row_s2[j], b = n[2] * g->row_sc[j] * g->dphi;
-            if (in_hi > in_lo) /* wholly lit: n . the moments, by prefix sums */
-                for (int c = 0; c < C; c++) {
-                    const double *p0 = P + (3 * c) * stride, *px = p0 + stride, *py = px + stride;
-                    double s0 = pref(p0, W, in_hi) - pref(p0, W, in_lo);
-                    double sx = pref(px, W, in_hi) - pref(px, W, in_lo);
-                    double sy = pref(py, W, in_hi) - pref(py, W, in_lo);
-                    e[c] += a * (n[0] * sx + n[1] * sy) + b * s0;
-                }
-            if (rc->kind != LX__HZ_RANGES) continue;
+            double a = g->row_s2[j], b = bc->nz * g->row_sc[j] * g->dphi;
             const float *row = m->data + (size_t)j * W * C;
-            const double *w = bc->w + rc->w0;
-            for (int part = 0; part < 2; part++)
-                for (long k = part ? rc->in_hi : rc->out_lo, k1 = part ? rc->out_hi : rc->in_lo; k < k1; k++, w++) {
-                    if (!(*w > 0)) continue;
-                    long i = ((k + shift) % W + W) % W;
-                    for (int c = 0; c < C; c++) e[c] += *w * row[(size_t)i * C + c];
+            const double *w0 = bc->w + rc->w0;
+            for (long u = 0; u < ng; u++) {
+                const double *n = J->dirs + 3 * (o + u);
+                long shift = shifts[u];
+                long in_lo = rc->in_lo + shift, in_hi = rc->in_hi + shift;
+                if (in_hi > in_lo) { /* wholly lit: n . the moments, by prefix sums */
+                    long kl, kh;
+                    double ql = pref_split(in_lo, W, &kl), qh = pref_split(in_hi, W, &kh);
+                    const double *ph = P + (size_t)kh * 3 * C, *pl = P + (size_t)kl * 3 * C, *pw = P + (size_t)W * 3 * C;
+                    for (int c = 0; c < C; c++) {
+                        double s0 = ph[3 * c] - pl[3 * c] + (qh - ql) * pw[3 * c];
+                        double sx = ph[3 * c + 1] - pl[3 * c + 1] + (qh - ql) * pw[3 * c + 1];
+                        double sy = ph[3 * c + 2] - pl[3 * c + 2] + (qh - ql) * pw[3 * c + 2];
+                        e[u][c] += a * (n[0] * sx + n[1] * sy) + b * s0;
+                    }
                 }
+                if (rc->kind != LX__HZ_RANGES) continue;
+                const double *w = w0;
+                double x0 = 0, x1 = 0, x2 = 0; /* in registers: the sums over the crossed pixels */
+                for (int part = 0; part < 2; part++)
+                    for (long k = part ? rc->in_hi : rc->out_lo, k1 = part ? rc->out_hi : rc->in_lo; k < k1; k++, w++) {
+                        if (!(*w > 0)) continue;
+                        const float *px = row + (size_t)wrap(k + shift, W) * C;
+                        x0 += *w * px[0];
+                        if (C > 1) x1 += *w * px[1], x2 += *w * px[2];
+                    }
+                e[u][0] += x0;
+                if (C > 1) e[u][1] += x1, e[u][2] += x2;
+            }
         }
-        for (int c = 0; c < C; c++) J->out[o * C + c] += e[c];
+        for (long u = 0; u < ng; u++)
+            for (int c = 0; c < C; c++) J->out[(o + u) * C + c] += e[u][c];
+        o += ng;
     }
 }
 

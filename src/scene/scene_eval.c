@@ -1,7 +1,7 @@
 /* scene_eval.c - evaluates a planned scene: each luminaire's contribution at each receiver point
  * computed once (point law or near-field patches) and summed (linearity), plus the sky, the
  * Lambertian luminance and the spectral quantities; counts the work per effect. */
-#include "scene_private.h"
+#include "scene/room_private.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -30,6 +30,10 @@ void lx_scene_result_free(lx_scene_result *res)
     free(res->cct_K);
     free(res->duv);
     free(res->melanopic_edi_lx);
+    free(res->direct_lx);
+    free(res->indirect_lx);
+    for (size_t i = 0; i < res->n_surfaces; i++) free(res->surfaces[i].name);
+    free(res->surfaces);
     free(res);
 }
 
@@ -49,7 +53,7 @@ static double dot(const double a[3], const double b[3]) { return a[0] * b[0] + a
 
 /* Intensity (cd) of the whole luminaire (frac = 1) or of a fraction of its luminous area towards
  * the unit direction u (from the luminaire to the receiver). */
-static double intensity(lx_ctx *ctx, const lum_eval *le, const double u[3], double frac)
+static double intensity(lx_counters *cnt, const lum_eval *le, const double u[3], double frac)
 {
     const lx_scene_luminaire *l = le->l;
     switch (l->kind) {
@@ -57,7 +61,7 @@ static double intensity(lx_ctx *ctx, const lum_eval *le, const double u[3], doub
     case LX_SLUM_SPOT: {
         double c = -dot(u, le->ez); /* cosine of the angle from the spot axis (aim = -ez) */
         if (!le->spot_falloff) return c > 0 ? l->intensity_cd * frac : 0;
-        ctx->counters.spot_evaluations++;
+        cnt->spot_evaluations++;
         return l->intensity_cd * frac * lx_warn_lobe(l->exponent, acos(c > 1 ? 1 : c < -1 ? -1 : c));
     }
     case LX_SLUM_DISK:
@@ -67,15 +71,17 @@ static double intensity(lx_ctx *ctx, const lum_eval *le, const double u[3], doub
     }
     case LX_SLUM_FILE:
         if (!le->gonio) return l->flux_lm / (4 * LX__PI) * frac;
-        ctx->counters.goniometric_lookups++;
+        cnt->goniometric_lookups++;
         return l->scale * frac *
                lx_luminaire_intensity_dir(l->lum, LX_INTERP_BILINEAR, dot(u, le->ex), dot(u, le->ey), dot(u, le->ez));
     }
     return 0;
 }
 
-double lx__scene_point_E(lx_ctx *ctx, const lx__scene_lum *le, const double s[3], const double q[3], const double n[3],
-                         double frac)
+/* E at receiver point q (normal n) from a point source at s with intensity I(u) scaled by frac;
+ * with vis, 0 when an occluder cuts the segment. */
+static double point_E(lx_counters *cnt, const lx__scene_lum *le, const double s[3], const double q[3], const double n[3],
+                      double frac, const lx__scene_vis *vis)
 {
     double v[3] = {q[0] - s[0], q[1] - s[1], q[2] - s[2]};
     double d2 = dot(v, v);
@@ -84,17 +90,29 @@ double lx__scene_point_E(lx_ctx *ctx, const lx__scene_lum *le, const double s[3]
     double u[3] = {v[0] / d, v[1] / d, v[2] / d};
     double cx = le->cosine ? -dot(n, u) : 1; /* cos(xi): the ray arrives against the normal */
     if (cx <= 0) return 0;
-    return intensity(ctx, le, u, frac) * cx / d2;
+    if (vis) {
+        cnt->visibility_tests++;
+        if (!lx__room_visible(vis->occ, vis->n_occ, s, q, vis->skip, -1)) return 0;
+    }
+    return intensity(cnt, le, u, frac) * cx / d2;
+}
+
+double lx__scene_point_E(lx_ctx *ctx, const lx__scene_lum *le, const double s[3], const double q[3], const double n[3],
+                         double frac)
+{
+    return point_E(&ctx->counters, le, s, q, n, frac, NULL);
 }
 
 /* The near field shares the grid engine's scheme (lx__area_cell / lx__area_refine in grid.c):
  * rectangles n x n cells, disks n rings of equal area x 2n sectors, each cell a point source
  * carrying its share of the intensity; n doubles until the Richardson-extrapolated estimate (the
- * midpoint rule's error is even in the cell size) changes by less than tol, or 512 per side. */
+ * midpoint rule's error is even in the cell size) changes by less than tol, or 512 per side.
+ * With vis, each cell's rays are tested: only the visible part of the area is integrated. */
 typedef struct near_arg {
-    lx_ctx *ctx;
+    lx_counters *cnt;
     const lum_eval *le;
     const double *q, *n;
+    const lx__scene_vis *vis;
 } near_arg;
 
 static double near_mean(void *arg, int lev)
@@ -110,30 +128,136 @@ static double near_mean(void *arg, int lev)
         double a, b, s[3];
         lx__area_cell(circular, w, len, lev, c, &a, &b);
         for (int k = 0; k < 3; k++) s[k] = l->pos_m[k] + a * A->le->ex[k] + b * A->le->ey[k];
-        sum += lx__scene_point_E(A->ctx, A->le, s, A->q, A->n, frac);
+        if (!A->vis || circular) {
+            sum += point_E(A->cnt, A->le, s, A->q, A->n, frac, A->vis);
+            continue;
+        }
+        /* a rectangle's cell: its visible fraction by the centres of its 3 x 3 sub-cells, so a
+         * shadow edge across the cell counts the part on each side (and one along its border none) */
+        double fv = 0, hw = w / (3.0 * lev), hl = len / (3.0 * lev);
+        for (int k = 0; k < 9; k++) {
+            double y[3], da = hw * (k % 3 - 1), db = hl * (k / 3 - 1);
+            for (int c3 = 0; c3 < 3; c3++) y[c3] = s[c3] + da * A->le->ex[c3] + db * A->le->ey[c3];
+            A->cnt->visibility_tests++;
+            if (lx__room_visible(A->vis->occ, A->vis->n_occ, y, A->q, A->vis->skip, -1)) fv += 1.0 / 9;
+        }
+        if (fv > 0) sum += fv * point_E(A->cnt, A->le, s, A->q, A->n, frac, NULL);
     }
     return sum;
 }
 
-static double near_E(lx_ctx *ctx, const lum_eval *le, const double q[3], const double n[3], double tol)
+static double near_E(lx_counters *cnt, const lum_eval *le, const double q[3], const double n[3], double tol,
+                     const lx__scene_vis *vis, int n_max)
 {
     unsigned long long patches = 0;
-    near_arg A = {ctx, le, q, n};
-    double x = lx__area_refine(near_mean, &A, le->l->radius_m > 0, tol, LX__NEAR_MAX_CELLS, &patches, NULL);
-    ctx->counters.nearfield_pairs++;
-    ctx->counters.nearfield_subdivisions += patches;
+    near_arg A = {cnt, le, q, n, vis};
+    double x;
+    if (!vis) x = lx__area_refine(near_mean, &A, le->l->radius_m > 0, tol, n_max, &patches, NULL);
+    else {
+        /* a shadow edge across the area: the midpoint error is first order in the cell size there,
+         * which Richardson's extrapolation would amplify; the finest plain sum instead */
+        double prev = NAN;
+        x = 0;
+        for (int lev = 2; lev <= n_max; lev *= 2) {
+            x = near_mean(&A, lev);
+            patches += lx__area_cells(le->l->radius_m > 0, lev);
+            if (lev >= 8 && fabs(x - prev) <= tol * fabs(x)) break;
+            prev = x;
+        }
+    }
+    cnt->nearfield_pairs++;
+    cnt->nearfield_subdivisions += patches;
     return x > 0 ? x : 0;
 }
 
 /* A Lambertian disk or rectangle in closed form (area_exact.c): any receiver orientation. */
-static double closed_E(lx_ctx *ctx, const lum_eval *le, const double q[3], const double n[3])
+static double closed_E(lx_counters *cnt, const lum_eval *le, const double q[3], const double n[3])
 {
     const lx_scene_luminaire *l = le->l;
     double m[3] = {-le->ez[0], -le->ez[1], -le->ez[2]}; /* the emitting normal: the aim */
-    ctx->counters.nearfield_pairs++;
-    ctx->counters.closed_form_evaluations++;
+    cnt->nearfield_pairs++;
+    cnt->closed_form_evaluations++;
     if (l->kind == LX_SLUM_DISK) return lx__lambert_disk_E(l->luminance_cd_m2, l->pos_m, le->ex, le->ey, m, l->radius_m, q, n, NULL);
     return lx__lambert_rect_E(l->luminance_cd_m2, l->pos_m, le->ex, le->ey, m, l->width_m, l->length_m, q, n);
+}
+
+/* Probe points of a luminous area for the partial-visibility test: centre, edge midpoints, corners
+ * (a disk: centre and 8 points on its rim). */
+static void probe_point(const lx__scene_lum *le, int k, double s[3])
+{
+    const lx_scene_luminaire *l = le->l;
+    double a, b, w, len;
+    lx__scene_lum_extent(l, &w, &len);
+    if (l->radius_m > 0) {
+        double t = 2 * LX__PI * (k - 1) / 8.0;
+        a = k ? l->radius_m * cos(t) : 0;
+        b = k ? l->radius_m * sin(t) : 0;
+    } else {
+        a = 0.5 * w * (k % 3 - 1);
+        b = 0.5 * len * (k / 3 - 1);
+    }
+    for (int c = 0; c < 3; c++) s[c] = l->pos_m[c] + a * le->ex[c] + b * le->ey[c];
+}
+
+double lx__scene_lum_E(lx_counters *cnt, const lx__scene_lum *le, const double q[3], const double n[3], int path,
+                       double near_tol, const lx__scene_vis *vis)
+{
+    double size = lx__scene_lum_size(le->l);
+    if (vis && size > 0) {
+        int seen = 0;
+        for (int k = 0; k < 9; k++) {
+            double s[3];
+            probe_point(le, k, s);
+            cnt->visibility_tests++;
+            seen += lx__room_visible(vis->occ, vis->n_occ, s, q, vis->skip, -1);
+        }
+        if (seen == 0) return 0;
+        /* partly hidden: integrate the visible part; wholly visible: as without occluders */
+        if (seen < 9) return near_E(cnt, le, q, n, near_tol, vis, near_tol >= 1e-4 ? 32 : 128);
+        vis = NULL;
+    }
+    if (path == LX__PATH_CLOSED) return closed_E(cnt, le, q, n);
+    if (path) return near_E(cnt, le, q, n, near_tol, NULL, LX__NEAR_MAX_CELLS);
+    cnt->point_evaluations++;
+    return point_E(cnt, le, le->l->pos_m, q, n, 1, vis);
+}
+
+/* The probe function of the near-field decision (as the planner's): the luminaire as a point at
+ * offset (a, b) on its opening. */
+typedef struct path_arg {
+    lx_counters *cnt;
+    const lx__scene_lum *le;
+    const double *q, *n;
+} path_arg;
+
+static double path_g(void *arg, double a, double b)
+{
+    const path_arg *A = arg;
+    double s[3];
+    for (int k = 0; k < 3; k++) s[k] = A->le->l->pos_m[k] + a * A->le->ex[k] + b * A->le->ey[k];
+    return point_E(A->cnt, A->le, s, A->q, A->n, 1, NULL);
+}
+
+int lx__scene_path(lx_counters *cnt, const lx_scene *sc, const lx__scene_lum *le, const double q[3], const double n[3],
+                   double tol)
+{
+    const lx_scene_luminaire *L = le->l;
+    lx_effect_force F = sc->force[LX_EFFECT_NEAR_FIELD];
+    if (!(lx__scene_lum_size(L) > 0) || F == LX_FORCE_OFF) return LX__PATH_POINT;
+    if (L->kind != LX_SLUM_FILE) return le->cosine ? LX__PATH_CLOSED : LX__PATH_AREA;
+    if (F == LX_FORCE_ON) return LX__PATH_AREA;
+    double ax, ay, d = 0;
+    lx__scene_lum_extent(L, &ax, &ay);
+    for (int c = 0; c < 3; c++) d += (q[c] - L->pos_m[c]) * (q[c] - L->pos_m[c]);
+    path_arg A = {cnt, le, q, n};
+    int circ = L->radius_m > 0;
+    lx__nf_probe pr;
+    lx__nf_probe_pair(path_g, &A, circ, ax, ay, sqrt(d), lx__nf_faces(L->pos_m, le->ex, le->ey, circ, ax, ay, q, n), &pr);
+    cnt->nearfield_probes++;
+    unsigned char near = 0;
+    size_t order = 0;
+    lx__nf_decide(1, &pr, pr.point, tol, &near, &order);
+    return near ? LX__PATH_AREA : LX__PATH_POINT;
 }
 
 static double now_s(void)
@@ -254,7 +378,7 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
     lx_scene_result *res = calloc(1, sizeof *res);
     lum_eval *le = calloc(nl ? nl : 1, sizeof *le);
     scene__spec *spec = calloc(nc, sizeof *spec);
-    void *map = NULL;
+    void *map = NULL, *occm = NULL;
     unsigned char *ondev = NULL;
     lx_status st = LX_OK;
     if (!res || !le || !spec) goto nomem;
@@ -284,6 +408,17 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
         if (sky && (st = lx__scene_spectrum_weights(ctx, sc->sky_file_at, sc->sky_line, NULL, sc->sky_cct_K, &spec[nl])) != LX_OK)
             goto fail;
     }
+    /* occlusion: the occluders the flagged pairs are tested against */
+    lx__scene_vis vis = {NULL, 0, -1};
+    if (plan->occ) {
+        lx__room_mesh *om = plan->room.mesh;
+        if (!om) {
+            if ((st = lx__room_occluders(ctx, sc, &om)) != LX_OK) goto fail;
+            occm = om;
+        }
+        vis.occ = om->occ;
+        vis.n_occ = (int)om->n_occ;
+    }
     /* every luminaire's contribution at every point, once: first the device batches */
     if (plan->on[LX_EFFECT_OPENCL] && (st = device_blocks(ctx, sc, plan, only, res->contrib_lx, &ondev)) != LX_OK) goto fail;
     size_t g = 0;
@@ -297,29 +432,45 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
             double *c = res->contrib_lx + g * nc;
             for (size_t l = 0; l < nl; l++) {
                 if ((only >= 0 && (long)l != only) || (ondev && ondev[l * sc->n_rec + r])) continue;
-                unsigned char path = plan->near[l * np + g];
-                if (path == LX__PATH_CLOSED) c[l] = closed_E(ctx, &le[l], q, rc->normal);
-                else if (path) c[l] = near_E(ctx, &le[l], q, rc->normal, sc->nearfield_tol);
-                else {
-                    ctx->counters.point_evaluations++;
-                    c[l] = lx__scene_point_E(ctx, &le[l], sc->lum[l].pos_m, q, rc->normal, 1);
-                }
+                unsigned char o = plan->occ ? plan->occ[l * np + g] : 0;
+                if (o == 2) continue; /* another room: its walls are between them */
+                c[l] = lx__scene_lum_E(&ctx->counters, &le[l], q, rc->normal, plan->near[l * np + g], sc->nearfield_tol,
+                                       o ? &vis : NULL);
             }
-            c[nl] = E_sky;
+            /* the sky does not reach inside a closed room */
+            c[nl] = sc->n_room && lx__room_cell(sc, q) >= 0 ? 0 : E_sky;
             double E = 0;
             for (size_t k = 0; k < nc; k++) E += c[k];
             res->E_lx[g] = E;
+        }
+    }
+    res->first[sc->n_rec] = g;
+    /* the interreflected part: E_lx gains indirect_lx */
+    if (plan->on[LX_EFFECT_INTERREFLECTION] && (st = lx__room_eval(ctx, sc, plan, only, res)) != LX_OK) goto fail;
+    for (size_t r = 0; r < sc->n_rec; r++) {
+        const lx_scene_receiver *rc = &sc->rec[r];
+        for (g = res->first[r]; g < res->first[r + 1]; g++) {
+            const double *c = res->contrib_lx + g * nc;
+            double E = res->E_lx[g], Eind = res->indirect_lx ? res->indirect_lx[g] : 0;
             res->L_cd_m2[g] = sc->want_luminance && rc->reflectance >= 0 ? rc->reflectance * E / LX__PI : NAN;
             res->cct_K[g] = res->duv[g] = res->melanopic_edi_lx[g] = NAN;
             if (spectral && E > 0) {
                 /* linearity: X, Y, Z and the melanopic irradiance of the summed spectral
-                 * irradiance are the sums of each source's, scaled to its illuminance */
-                double X = 0, Z = 0, mel = 0;
+                 * irradiance are the sums of each source's, scaled to its illuminance; the
+                 * indirect part has the flux-weighted mixture of the sources' spectra (neutral
+                 * reflectances) */
+                double X = 0, Z = 0, mel = 0, fl = 0, fx = 0, fz = 0, fm = 0;
                 for (size_t k = 0; k < nc; k++) {
                     X += c[k] * spec[k].x_per_lx;
                     Z += c[k] * spec[k].z_per_lx;
                     mel += c[k] * spec[k].mel_W_per_lx;
                 }
+                for (size_t l = 0; l < nl && Eind > 0; l++)
+                    if (only < 0 || (long)l == only) {
+                        double f = sc->lum[l].flux_lm;
+                        fl += f, fx += f * spec[l].x_per_lx, fz += f * spec[l].z_per_lx, fm += f * spec[l].mel_W_per_lx;
+                    }
+                if (fl > 0) X += Eind * fx / fl, Z += Eind * fz / fl, mel += Eind * fm / fl;
                 res->melanopic_edi_lx[g] = mel / lx_alphaopic_d65_efficacy(LX_AO_MEL);
                 double s = X + E + Z, T, duv;
                 if (s > 0 && lx_cct_from_xy(ctx, LX_OBSERVER_2, X / s, E / s, &T, &duv) == LX_OK && fabs(duv) <= 0.05 &&
@@ -328,10 +479,10 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
             }
         }
     }
-    res->first[sc->n_rec] = g;
     if ((st = check_finite(ctx, sc, res, nl, spectral)) != LX_OK) goto fail;
     free(ondev);
     lx__scene_sky_map_free(map);
+    lx__room_mesh_free(occm);
     free(le);
     free(spec);
     counters_diff(&ctx->counters, &before, &res->work);
@@ -344,6 +495,7 @@ nomem:
 fail:
     free(ondev);
     lx__scene_sky_map_free(map);
+    lx__room_mesh_free(occm);
     lx_scene_result_free(res);
     free(le);
     free(spec);

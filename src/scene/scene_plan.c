@@ -10,7 +10,8 @@
 #include <string.h>
 
 static const char *const effect_names[LX_EFFECT_COUNT] = {
-    "inverse_square", "cosine", "spot_falloff", "goniometric", "near_field", "spectral", "environment", "opencl"};
+    "inverse_square", "cosine", "spot_falloff", "goniometric", "near_field", "spectral", "environment", "opencl",
+    "occlusion", "interreflection"};
 
 const char *lx_effect_name(lx_effect e)
 {
@@ -78,6 +79,7 @@ void lx_scene_plan_free(lx_scene_plan *plan)
     free(plan->near_err);
     free(plan->near_why);
     free(plan->device);
+    lx__room_plan_free(plan);
     free(plan);
 }
 
@@ -400,6 +402,8 @@ lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, lx_backend backend
                         p->estimate.goniometric_lookups += near_patches(size, d, sc->nearfield_tol, sc->lum[l].radius_m > 0);
                     }
         }
+    /* occlusion and interreflection (room_plan.c) */
+    if ((st = lx__room_plan(ctx, sc, backend, p)) != LX_OK) goto fail;
     /* OpenCL: the far-field work of IES luminaires on grids can run as lx_grid_illuminance
      * batches on a device (its table kernel); only worth it when large enough to repay the
      * start-up (the grid engine's threshold: 1e7 point-luminaire evaluations), unless asked for.
@@ -415,7 +419,8 @@ lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, lx_backend backend
                     !p->on[LX_EFFECT_COSINE])
                     continue;
                 size_t k = 0;
-                for (size_t i = 0; i < rc->n; i++) k += p->near[l * p->n_points + g0 + i];
+                for (size_t i = 0; i < rc->n; i++)
+                    k += p->near[l * p->n_points + g0 + i] || (p->occ && p->occ[l * p->n_points + g0 + i]);
                 if (k == 0) p->device[l * sc->n_rec + r] = 1, eligible += (double)rc->n;
             }
             g0 += rc->n;

@@ -95,6 +95,35 @@ void lx__scene_lum_extent(const lx_scene_luminaire *l, double *along_x, double *
 /* Total flux of a file luminaire's table times its scale (lm). */
 double lx__scene_file_flux(const lx_scene_luminaire *l);
 
+/* ---- rooms: the keys of [room], [surface], [obstruction] (room_read.c) ---- */
+enum { SCENE__ROOM = 1, SCENE__SURFACE = 2, SCENE__OBSTRUCTION = 3 };
+/* Raw keys of a [room], [surface] or [obstruction] section, checked when the section ends. */
+typedef struct scene__room_raw {
+    int kind; /* SCENE__ROOM ... (0: none open) */
+    char *name;
+    const char *file;
+    long line;
+    int has_origin, has_size, has_corner, has_edge1, has_edge2, has_min, has_max, has_refl[7];
+    double origin[3], size[3], corner[3], edge1[3], edge2[3], min[3], max[3], refl[7];
+    long refl_line[7]; /* room: floor, ceiling, wall_xmin .. wall_ymax, walls; others: [0] reflectance */
+} scene__room_raw;
+lx_status lx__room_section(lx_ctx *ctx, scene__room_raw *r, int kind, const char *name, const char *file, long line);
+lx_status lx__room_key(lx_ctx *ctx, scene__room_raw *r, const char *file, long line, const char *key, const char *value);
+lx_status lx__room_section_end(lx_ctx *ctx, lx_scene *sc, scene__room_raw *r);
+void lx__room_raw_free(scene__room_raw *r);
+/* The [scene] keys interreflection_tolerance and patch_size (1 when key is one of them). */
+int lx__room_scene_key(lx_ctx *ctx, lx_scene *sc, const char *file, long line, const char *key, const char *value,
+                       lx_status *st);
+/* The whole-scene checks of rooms (luminaires and receivers inside a room and outside every
+ * obstruction, rooms not overlapping, surfaces inside one room or none). */
+lx_status lx__room_scene_check(lx_ctx *ctx, const lx_scene *sc);
+void lx__room_scene_free(lx_scene *sc);
+/* The planner's part for occlusion and interreflection (room_plan.c), after the near field. */
+lx_status lx__room_plan(lx_ctx *ctx, const lx_scene *sc, int backend, lx_scene_plan *p);
+void lx__room_plan_free(lx_scene_plan *p);
+/* Evaluation's part: the solve and the gather; adds indirect_lx to res (room_eval.c). */
+lx_status lx__room_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *plan, long only, lx_scene_result *res);
+
 /* What a luminaire needs during evaluation (and the planner's probes): its frame, area and the
  * effects that shape its intensity. */
 typedef struct lx__scene_lum {
@@ -112,6 +141,27 @@ double lx__scene_point_E(lx_ctx *ctx, const lx__scene_lum *le, const double s[3]
 /* The paths of lx_scene_plan.near: the point model, the luminous area integrated in patches, a
  * disk or rectangle in closed form. */
 enum { LX__PATH_POINT = 0, LX__PATH_AREA = 1, LX__PATH_CLOSED = 2 };
+
+/* ---- the one direct-lighting path (scene_eval.c): receiver points and room patches alike ---- */
+/* Occluders a contribution is tested against (NULL: none can cut it). */
+struct lx__room_occ;
+typedef struct lx__scene_vis {
+    const struct lx__room_occ *occ;
+    int n_occ;
+    int skip; /* an occluder the receiver is part of (never blocks it), -1 none */
+} lx__scene_vis;
+/* The illuminance (lx) luminaire le gives at q (unit normal n) by `path` (LX__PATH_*: the point
+ * model, the luminous area integrated to near_tol, a closed form). With vis every ray is tested;
+ * an area luminaire partly hidden (its 3 x 3 probe points disagree) is integrated over its
+ * luminous area with each cell's visible fraction (the visible part only), one wholly hidden gives
+ * 0. Adds its work to cnt. Thread-safe for distinct cnt. */
+double lx__scene_lum_E(lx_counters *cnt, const lx__scene_lum *le, const double q[3], const double n[3], int path,
+                       double near_tol, const lx__scene_vis *vis);
+/* The path of luminaire le for a receiver point the planner did not see (a room's patch): the
+ * planner's rule for one pair (closed forms for disks and rectangles, the point model's probed
+ * error against tol for IES/LDT openings, [effects] near_field). Counts its probes in cnt. */
+int lx__scene_path(lx_counters *cnt, const lx_scene *sc, const lx__scene_lum *le, const double q[3], const double n[3],
+                   double tol);
 
 /* Sky illuminance on a receiver with unit normal n (lx): sky plus ground. Counts its work. */
 lx_status lx__scene_sky_eval(lx_ctx *ctx, const lx_scene *sc, const void *map, const double n[3], double *E_lx);

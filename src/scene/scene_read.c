@@ -15,7 +15,7 @@
 
 #define MAX_DEPTH LX__SCENE_MAX_DEPTH
 
-enum { SEC_NONE = 0, SEC_SCENE, SEC_LUM, SEC_REC, SEC_SKY, SEC_OUTPUT, SEC_EFFECTS, SEC_SUN, SEC_OBS };
+enum { SEC_NONE = 0, SEC_SCENE, SEC_LUM, SEC_REC, SEC_SKY, SEC_OUTPUT, SEC_EFFECTS, SEC_SUN, SEC_OBS, SEC_ROOM };
 
 /* Keys given in the current section (duplicates are errors). */
 #define MAX_KEYS 32
@@ -34,6 +34,7 @@ typedef struct reader {
     /* raw values of the current luminaire / receiver, checked when its section ends */
     scene__lum_raw lraw;
     scene__rec_raw rraw;
+    scene__room_raw mraw; /* [room], [surface], [obstruction] */
 } reader;
 
 static char *xstrdup(const char *s)
@@ -147,6 +148,7 @@ static lx_status close_section(reader *r)
     lx_status st = LX_OK;
     if (r->sec == SEC_LUM) st = lx__scene_lum_finish(r->ctx, r->sc, &r->lraw);
     else if (r->sec == SEC_REC) st = lx__scene_rec_finish(r->ctx, r->sc, &r->rraw);
+    else if (r->sec == SEC_ROOM) st = lx__room_section_end(r->ctx, r->sc, &r->mraw);
     r->sec = SEC_NONE;
     r->nseen = 0;
     return st;
@@ -167,15 +169,17 @@ static lx_status open_section(reader *r, const char *file, long line, char *s, c
     char *name = sp, *ne = e;
     trim(&name, &ne);
     *ne = '\0';
-    static const char *const known[] = {"scene", "luminaire", "receiver", "sky", "output", "effects", "sun", "observer"};
+    static const char *const known[] = {"scene", "luminaire", "receiver", "sky",     "output",      "effects",
+                                        "sun",   "observer",  "room",     "surface", "obstruction"};
     int k = 0;
-    while (k < 8 && strcmp(kind, known[k])) k++;
-    if (k == 8)
+    while (k < 11 && strcmp(kind, known[k])) k++;
+    if (k == 11)
         return lx__error(r->ctx, LX_EPARSE, file, line,
                          "unknown section [%s] (sections: scene, luminaire NAME, receiver NAME, sky, sun, observer NAME, "
-                         "output, effects)",
+                         "output, effects, room NAME, surface NAME, obstruction NAME)",
                          kind);
-    int named = !strcmp(kind, "luminaire") || !strcmp(kind, "receiver") || !strcmp(kind, "observer");
+    int room_kind = k == 8 ? SCENE__ROOM : k == 9 ? SCENE__SURFACE : k == 10 ? SCENE__OBSTRUCTION : 0;
+    int named = !strcmp(kind, "luminaire") || !strcmp(kind, "receiver") || !strcmp(kind, "observer") || room_kind;
     if (named && !*name)
         return lx__error(r->ctx, LX_EPARSE, file, line, "[%s] needs a name: [%s NAME]", kind, kind);
     if (!named && *name)
@@ -189,6 +193,7 @@ static lx_status open_section(reader *r, const char *file, long line, char *s, c
     else if (!strcmp(kind, "receiver")) r->sec = SEC_REC;
     else if (!strcmp(kind, "sun")) r->sec = SEC_SUN, once = &r->sun_seen;
     else if (!strcmp(kind, "observer")) r->sec = SEC_OBS;
+    else if (room_kind) r->sec = SEC_ROOM;
     else
         return lx__error(r->ctx, LX_EPARSE, file, line,
                          "unknown section [%s] (sections: scene, luminaire NAME, receiver NAME, sky, output, effects)",
@@ -206,7 +211,19 @@ static lx_status open_section(reader *r, const char *file, long line, char *s, c
         for (size_t i = 0; i < r->sc->n_rec; i++)
             if (r->sec == SEC_REC && !strcmp(r->sc->rec[i].name, name))
                 return lx__error(r->ctx, LX_EPARSE, file, line, "receiver '%s' defined twice", name);
+        /* rooms, surfaces and obstructions share one name space (their faces are named after them) */
+        const lx_scene *sc = r->sc;
+        int dup = 0;
+        for (size_t i = 0; r->sec == SEC_ROOM && i < sc->n_room; i++) dup |= !strcmp(sc->room[i].name, name);
+        for (size_t i = 0; r->sec == SEC_ROOM && i < sc->n_surf; i++) dup |= !strcmp(sc->surf[i].name, name);
+        for (size_t i = 0; r->sec == SEC_ROOM && i < sc->n_obst; i++) dup |= !strcmp(sc->obst[i].name, name);
+        if (dup)
+            return lx__error(r->ctx, LX_EPARSE, file, line,
+                             "'%s' is already the name of a room, surface or obstruction", name);
+        if (room_kind && (strchr(name, '.') || strlen(name) > 100))
+            return lx__error(r->ctx, LX_EPARSE, file, line, "name '%s': no dots, at most 100 characters", name);
     }
+    if (room_kind) return lx__room_section(r->ctx, &r->mraw, room_kind, name, file, line);
     if (r->sec == SEC_LUM) lx__scene_lum_raw_init(&r->lraw, name, file, line);
     if (r->sec == SEC_REC) lx__scene_rec_raw_init(&r->rraw, name, file, line);
     if (r->sec == SEC_SKY) r->sc->sky_line = line, r->sc->sky_file_at = file;
@@ -272,12 +289,20 @@ static lx_status key_value(reader *r, const char *file, long line, const char *k
                 return lx__error(ctx, LX_EPARSE, file, line, "%s: must be from 1e-9 to 0.1", key);
             return st;
         }
-        return lx__error(ctx, LX_EPARSE, file, line, "unknown key '%s' in [scene] (keys: title, near_field_tolerance)", key);
+        {
+            lx_status st = LX_OK;
+            if (lx__room_scene_key(ctx, sc, file, line, key, value, &st)) return st;
+        }
+        return lx__error(ctx, LX_EPARSE, file, line,
+                         "unknown key '%s' in [scene] (keys: title, near_field_tolerance, interreflection_tolerance, "
+                         "patch_size, patch_refinement)",
+                         key);
     case SEC_LUM: return lx__scene_lum_key(ctx, &r->lraw, file, line, key, value);
     case SEC_REC: return lx__scene_rec_key(ctx, &r->rraw, file, line, key, value);
     case SEC_SKY: return lx__scene_sky_key(ctx, sc, file, line, key, value);
     case SEC_SUN: return lx__scene_sun_key(ctx, sc, &r->sun, file, line, key, value);
     case SEC_OBS: return lx__scene_obs_key(ctx, sc, file, line, key, value);
+    case SEC_ROOM: return lx__room_key(ctx, &r->mraw, file, line, key, value);
     case SEC_OUTPUT: {
         int b = 0;
         if (!strcmp(key, "illuminance")) {
@@ -311,7 +336,7 @@ static lx_status key_value(reader *r, const char *file, long line, const char *k
             }
         return lx__error(ctx, LX_EPARSE, file, line,
                          "unknown effect '%s' (effects: inverse_square, cosine, spot_falloff, goniometric, "
-                         "near_field, spectral, environment, opencl)", key);
+                         "near_field, spectral, environment, opencl, occlusion, interreflection)", key);
     }
     return lx__error(ctx, LX_EPARSE, file, line, "unknown key '%s'", key);
 }
@@ -397,6 +422,7 @@ lx_status lx_scene_read_mem(lx_ctx *ctx, const char *name, const char *text, siz
         lx__scene_lum_raw_free(&r.lraw);
         lx__scene_rec_raw_free(&r.rraw);
     }
+    lx__room_raw_free(&r.mraw);
     if (st == LX_OK) st = lx__scene_daylight_finish(ctx, r.sc, &r.sun);
     if (st == LX_OK) st = lx__scene_obs_finish(ctx, r.sc);
     if (st == LX_OK) st = lx__scene_finish(ctx, r.sc);

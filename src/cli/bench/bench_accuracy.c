@@ -600,7 +600,7 @@ int acc_spectra(lx_ctx *ctx, FILE *o, const char *png)
 
 int cli_bench_accuracy(FILE *out, const char *outpath)
 {
-    char base[1024] = "", p1[1100], p2[1100], p3[1100];
+    char base[1024] = "", p1[1100], p2[1100], p3[1100], p4[1100];
     if (outpath && strcmp(outpath, "-")) {
         snprintf(base, sizeof base, "%s", outpath);
         char *dot = strrchr(base, '.'), *slash = strrchr(base, '/');
@@ -608,6 +608,7 @@ int cli_bench_accuracy(FILE *out, const char *outpath)
         snprintf(p1, sizeof p1, "%s_spectra.png", base);
         snprintf(p2, sizeof p2, "%s_radiance.png", base);
         snprintf(p3, sizeof p3, "%s_lighting.png", base);
+        snprintf(p4, sizeof p4, "%s_nearfield.png", base);
     }
     lx_ctx *ctx = cli_ctx("bench");
     if (!ctx) return CLI_RUNTIME;
@@ -616,13 +617,14 @@ int cli_bench_accuracy(FILE *out, const char *outpath)
     int rc = acc_spectra(ctx, out, *base ? p1 : NULL);
     if (!rc) rc = acc_radiance(ctx, out, *base ? p2 : NULL);
     if (!rc) rc = acc_lighting(ctx, out, *base ? p3 : NULL);
+    if (!rc) rc = acc_nearfield(ctx, out, *base ? p4 : NULL);
     if (!rc) {
         if (*base) {
-            const char *s1 = strrchr(p1, '/'), *s2 = strrchr(p2, '/'), *s3 = strrchr(p3, '/');
-            fprintf(out, "Plots: ![spectra](%s) ![radiance](%s) ![lighting](%s)\n\n", s1 ? s1 + 1 : p1, s2 ? s2 + 1 : p2,
-                    s3 ? s3 + 1 : p3);
+            const char *s1 = strrchr(p1, '/'), *s2 = strrchr(p2, '/'), *s3 = strrchr(p3, '/'), *s4 = strrchr(p4, '/');
+            fprintf(out, "Plots: ![spectra](%s) ![radiance](%s) ![lighting](%s) ![near field](%s)\n\n", s1 ? s1 + 1 : p1,
+                    s2 ? s2 + 1 : p2, s3 ? s3 + 1 : p3, s4 ? s4 + 1 : p4);
         } else {
-            fprintf(out, "(PNG plots are written with -o DIR/NAME.md, as DIR/NAME_spectra.png, _radiance.png, _lighting.png.)\n\n");
+            fprintf(out, "(PNG plots are written with -o DIR/NAME.md, as DIR/NAME_spectra.png, _radiance.png, _lighting.png, _nearfield.png.)\n\n");
         }
         fprintf(out, "bench accuracy: %.1f s in all.\n\n", acc_now_s() - t0);
     }

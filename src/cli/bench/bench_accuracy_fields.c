@@ -48,6 +48,7 @@ typedef struct irr_job {
     lx_ctx *ctx;
     const lx_envmap *map;
     int down;          /* brute on a map downsampled by this factor (1: none) */
+    int one;           /* one call per normal (the cost rule then sees a single output) */
     lx_irr_opts opts;
     size_t n;
     const double *dirs;
@@ -64,6 +65,10 @@ static void irr_run(void *arg)
         j->ok = lx_envmap_downsample(j->ctx, j->map, j->map->width / j->down, j->map->height / j->down, &d) == LX_OK &&
                 lx_irradiance_dirs(j->ctx, d, j->n, j->dirs, &o, j->out) == LX_OK;
         lx_envmap_free(d);
+    } else if (j->one) {
+        j->ok = 1;
+        for (size_t k = 0; k < j->n && j->ok; k++)
+            j->ok = lx_irradiance_dirs(j->ctx, j->map, 1, j->dirs + 3 * k, &o, j->out + k) == LX_OK;
     } else {
         j->ok = lx_irradiance_dirs(j->ctx, j->map, j->n, j->dirs, &o, j->out) == LX_OK;
     }
@@ -71,38 +76,53 @@ static void irr_run(void *arg)
 
 int acc_radiance(lx_ctx *ctx, FILE *o, const char *png)
 {
-    enum { W = 512, DW = 48, DH = 24, NMETH = 10 };
+    enum { W = 512, DW = 48, DH = 24, NMETH = 12 };
     size_t nd = (size_t)DW * DH;
     double *dirs = malloc(nd * 3 * sizeof *dirs), *ref = malloc(nd * sizeof *ref), *got = malloc(nd * sizeof *got);
     if (!dirs || !ref || !got) return CLI_RUNTIME;
     for (int j = 0; j < DH; j++)
         for (int i = 0; i < DW; i++) lx_envmap_direction(DW, DH, j + 0.5, i + 0.5, dirs + 3 * ((size_t)j * DW + i));
-    static const char *names[NMETH] = {"SH9", "SH9 windowed (1, 6/7, 32/35)", "brute force, 1/2 res.", "brute force, 1/4 res.",
+    static const char *names0[NMETH] = {"SH9", "SH9 windowed (1, 6/7, 32/35)", "brute force, 1/2 res.", "brute force, 1/4 res.",
                                        "brute force, 1/8 res.", "brute force, 1/16 res.", "brute force, 1/32 res.",
                                        "exact fast path (row prefix sums)", "brute force, full res. (CPU, the reference)",
-                                       "brute force, full res. (OpenCL)"};
+                                       "brute force, full res. (OpenCL)", "default (auto), all normals in one call",
+                                       "default (auto), one normal per call"};
+    char names[NMETH][160];
+    for (int m = 0; m < NMETH; m++) snprintf(names[m], sizeof names[m], "%s", names0[m]);
     static const char *labels[NMETH] = {"SH9", "SH9 windowed", "brute 1/2", "brute 1/4", "brute 1/8", "brute 1/16",
-                                        "brute 1/32", "fast", "brute", "brute CL"};
+                                        "brute 1/32", "fast", "brute", "brute CL", "auto", "auto, 1 per call"};
     double emax[2][NMETH], erms[2][NMETH], tt[2][NMETH];
     fprintf(o, "## bench accuracy: radiance fields\n\n");
     fprintf(o, "Irradiance E(n) for %zu normals (a %dx%d lat-long set of directions) from a %dx%d one-channel map: a smooth "
                "sky (gradient, 0.2 below the horizon) and the same sky with a sun (one pixel, normal irradiance 5x the "
-               "sky's horizontal irradiance). Reference: brute force at full resolution on the CPU (every pixel's exact "
-               "first moment, sum L max(0, n . m)). Errors |dE|/E over all normals (max and RMS); time for all normals "
+               "sky's horizontal irradiance). Reference: brute force at full resolution on the CPU: every pixel's exact "
+               "first moment, sum L max(0, n . m), the pixels the receiver's horizon crosses integrated exactly over "
+               "their lit part (the map as piecewise-constant radiance, to rounding). The fast path is exact in the "
+               "same sense. `default (auto)` is what `lx_irr_opts.method = LX_IRR_AUTO` (the CLI's default) runs: the "
+               "fast path unless its estimated cost exceeds 10 x SH9's for the job (the projection of the whole map "
+               "counts against SH9 once per call, so many normals in one call pick SH9, one normal per call picks "
+               "the fast path). Errors |dE|/E over all normals (max and RMS); time for all normals "
                "(downsampling included), median of 5.\n\n", nd, DW, DH, W, W / 2);
     for (int s = 0; s < 2; s++) {
         lx_envmap *map = sky(ctx, W, s);
         if (!map) return cli_fail("bench", ctx, LX_ENOMEM);
-        irr_job rj = {ctx, map, 1, {.method = LX_IRR_BRUTE, .backend = LX_BACKEND_CPU}, nd, dirs, ref, 0};
+        irr_job rj = {ctx, map, 1, 0, {.method = LX_IRR_BRUTE, .backend = LX_BACKEND_CPU}, nd, dirs, ref, 0};
         irr_run(&rj);
         if (!rj.ok) return cli_fail("bench", ctx, LX_EINVAL);
         for (int m = 0; m < NMETH; m++) {
-            irr_job j = {ctx, map, 1, {0}, nd, dirs, got, 0};
+            irr_job j = {ctx, map, 1, 0, {0}, nd, dirs, got, 0};
             if (m == 0 || m == 1) j.opts.method = LX_IRR_SH9, j.opts.window = m ? LX_SH9_WINDOW_NONNEG : LX_SH9_WINDOW_NONE;
             else if (m <= 6) j.opts.method = LX_IRR_BRUTE, j.opts.backend = LX_BACKEND_CPU, j.down = 1 << (m - 1);
             else if (m == 7) j.opts.method = LX_IRR_FAST;
-            else j.opts.method = LX_IRR_BRUTE, j.opts.backend = m == 8 ? LX_BACKEND_CPU : LX_BACKEND_OPENCL;
+            else if (m <= 9) j.opts.method = LX_IRR_BRUTE, j.opts.backend = m == 8 ? LX_BACKEND_CPU : LX_BACKEND_OPENCL;
+            else j.opts.method = LX_IRR_AUTO, j.one = m == 11;
             irr_run(&j);
+            if (m >= 10 && j.ok && s == 0) { /* what the cost rule picked (the same for both skies) */
+                double ratio;
+                lx_irr_method used = lx_ctx_irradiance_method(ctx, &ratio);
+                snprintf(names[m], sizeof names[m], "%s: ran %s (fast / SH9 cost estimated %.3g)", names0[m],
+                         used == LX_IRR_FAST ? "fast" : used == LX_IRR_SH9 ? "SH9" : "brute force", ratio);
+            }
             emax[s][m] = erms[s][m] = tt[s][m] = NAN;
             if (!j.ok) continue;
             tt[s][m] = acc_time(irr_run, &j, 1000);
@@ -200,7 +220,8 @@ int acc_lighting(lx_ctx *ctx, FILE *o, const char *png)
     fprintf(o, "Point model against the exact area source (closed-form configuration factors, `lx_disk_illuminance` / "
                "`lx_rect_illuminance`), receiver on the axis, parallel, at distance d; size: the disk's diameter (1 m), "
                "the square's diagonal (1 x 1 m). Signed error point/exact - 1. Time per call (each call computes both "
-               "models; the five-times rule is d/size >= 5).\n\n");
+               "models; the result's near_field flag is set where |point error| > 1e-4, the default model is the "
+               "closed form at every distance).\n\n");
     fprintf(o, "| d / size | disk: point error | rectangle: point error | time exact (disk) | time point (disk) |\n|---|---|---|---|---|\n");
     for (int k = 0; k < 8; k++) {
         src_job dj = {.ctx = ctx, .rect = 0, .d = ratio[k] * 1.0, .model = LX_MODEL_EXACT};
@@ -235,12 +256,13 @@ int acc_lighting(lx_ctx *ctx, FILE *o, const char *png)
                "of points over 1.2 x 1.2 m (d / size 0.35 to 0.9); the panel cut into k x k cells, each a point source "
                "(`lx_grid_illuminance`, point model, one placement per cell), against the closed-form rectangle at every "
                "point. The intensity table is the Lambertian model sampled every 0.25 deg (interpolation error ~2e-6). "
-               "`auto` is the library's own choice (k = floor(5 size / d) + 1 per point, at most 64). Max |dE|/E over the "
-               "points; time per point.\n\n", A, A, F, h, NP, NP);
+               "`auto` is the library's default (`LX_MODEL_AUTO`, tolerance 1e-4): the point model's error estimated per "
+               "pair, and the opening integrated (2, 4, 8 ... cells per side, to the tolerance) where the estimate asks for "
+               "it, here at every point; `area` integrates every pair. Max |dE|/E over the points; time per point.\n\n", A, A, F, h, NP, NP);
     fprintf(o, "| cells | max \\|dE\\|/E | time per point |\n|---|---|---|\n");
-    static const int ks[7] = {1, 2, 4, 8, 16, 32, 0};
-    for (int q = 0; q < 7; q++) {
-        int k = ks[q];
+    static const int ks[8] = {1, 2, 4, 8, 16, 32, 0, -1};
+    for (int q = 0; q < 8; q++) {
+        int k = ks[q] > 0 ? ks[q] : 0, area = ks[q] < 0;
         lx_lum_model mdl = {.kind = LX_LUM_MODEL_LAMBERT, .flux_lm = k ? F / (k * k) : F, .step_deg = 0.25};
         if (!k) mdl.width_m = mdl.length_m = A;
         lx_luminaire *lum = NULL;
@@ -256,19 +278,19 @@ int acc_lighting(lx_ctx *ctx, FILE *o, const char *png)
                 x->pos_m[2] = h;
                 x->aim[2] = -1;
             }
-        grid_job gj = {ctx, pl, (size_t)m, NP * NP, P, {.model = k ? LX_MODEL_POINT : LX_MODEL_AUTO, .backend = LX_BACKEND_CPU, .threads = 1}, E, 0};
+        grid_job gj = {ctx, pl, (size_t)m, NP * NP, P, {.model = k ? LX_MODEL_POINT : area ? LX_MODEL_AREA : LX_MODEL_AUTO, .backend = LX_BACKEND_CPU, .threads = 1}, E, 0};
         grid_run(&gj);
         if (!gj.ok) return cli_fail("bench", ctx, LX_EINVAL);
         double t = acc_time(grid_run, &gj, 10000) / (NP * NP), mx = 0;
         for (int i = 0; i < NP * NP; i++) mx = fmax(mx, fabs(E[i] / Ex[i] - 1));
         acc_fmt_err(a, sizeof a, mx);
         acc_fmt_time(b, sizeof b, t);
-        char *lab = malloc(24);
-        if (k) snprintf(lab, 24, "%d\u00d7%d cells", k, k);
-        else snprintf(lab, 24, "auto");
+        char *lab = malloc(32);
+        if (k) snprintf(lab, 32, "%d\u00d7%d cells", k, k);
+        else snprintf(lab, 32, area ? "area" : "auto");
         char row[32];
         if (k) snprintf(row, sizeof row, "%d x %d", k, k);
-        fprintf(o, "| %s | %s | %s |\n", k ? row : "auto (library)", a, b);
+        fprintf(o, "| %s | %s | %s |\n", k ? row : area ? "area (every pair integrated)" : "auto (the default)", a, b);
         pts[np++] = (lx_plot_point){t, mx, lab, 1};
         free(pl);
         lx_luminaire_free(lum);
