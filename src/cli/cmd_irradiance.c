@@ -197,7 +197,7 @@ int cmd_irradiance(int argc, char **argv)
     }
     if (optind + 1 != argc) return cli_error(cmd, "give exactly one input map (see --help)"), CLI_USAGE;
     const char *in = argv[optind];
-    double n[3];
+    double n[3] = {0, 0, 0}; /* "X,Y" leaves n[2] unparsed: the checks below read it */
     if (normal) {
         char *end;
         n[0] = strtod(normal, &end);

@@ -4,7 +4,8 @@
 # (exit 99 from valgrind). tests/valgrind.supp holds the loader's and the OpenCL stack's own noise.
 # Two jobs at a time (LX_TEST_JOBS, default 2), and a sample of the bad-input corpora
 # (LX_BAD_SAMPLE, default 3: every third file and the first of each format; make test and make asan
-# read them all). The CLI cases run luxcalc and tests/luxcalc-faults through valgrind wrappers.
+# read them all, and the 16-256 MB streams of bounded.sh); time bounds 20 times longer
+# (LX_TEST_SLOW). The CLI cases run luxcalc and tests/luxcalc-faults through valgrind wrappers.
 # Usage: sh src/tools/valgrind.sh BUILD_DIR TEST_BIN...
 set -u
 B=$1; shift
@@ -29,7 +30,7 @@ start=$(date +%s)
 # LX_UNDER_VALGRIND: the cases that time or measure a process (its peak memory is valgrind's) skip
 # those checks; LX_DTOA_COUNT: 1e5 doubles for the number printer instead of 1e6
 LX_UNDER_VALGRIND=1 LX_DTOA_COUNT=${LX_DTOA_COUNT:-1e5} \
-LX_TEST_JOBS=${LX_TEST_JOBS:-2} LX_BAD_SAMPLE=${LX_BAD_SAMPLE:-3} \
+LX_TEST_JOBS=${LX_TEST_JOBS:-2} LX_BAD_SAMPLE=${LX_BAD_SAMPLE:-3} LX_TEST_SLOW=${LX_TEST_SLOW:-20} \
   sh tests/run.sh "$W" $(for t in "$@"; do echo "$W/tests/${t##*/}"; done) >"$W/run.log" 2>&1
 rc=$?
 # the suite's own closing line ("tests: N passed, N failed, N skipped") stays the last line

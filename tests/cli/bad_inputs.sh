@@ -9,16 +9,17 @@ re_escape() { printf '%s' "$1" | sed 's/[][\.*^$+?(){}|/]/\\&/g'; }
 # sanitizer and valgrind builds reserve far more address space than they use: no memory bound there
 if sh -c 'ulimit -v "$1" && "$2" --version' sh $MEM_KB "$LUXCALC" >/dev/null 2>&1; then memlim=$MEM_KB; else memlim=unlimited
   skip "memory bound (ulimit -v)" "this luxcalc cannot run under ulimit -v (sanitizer build?)"; fi
-# bounded COMMAND ARGS...: run with a 10 s and 1 GiB bound; sets $out, $err, $rc, $ms
+# bounded COMMAND ARGS...: run with a 10 s (x LX_TEST_SLOW, lib.sh) and 1 GiB bound; sets $out, $err, $rc, $ms
+tmax=$((10 * slow))
 bounded() {
   t0=$(date +%s%N)
-  (ulimit -v $memlim; exec timeout 10 "$LUXCALC" "$@") >"$T/out" 2>"$T/err"; rc=$?
+  (ulimit -v $memlim; exec timeout $tmax "$LUXCALC" "$@") >"$T/out" 2>"$T/err"; rc=$?
   ms=$(( ($(date +%s%N) - t0) / 1000000 ))
   out=$(head -c 4096 "$T/out"); err=$(head -c 4096 "$T/err")
 }
 # check NAME EXIT FILE LINE FRAGMENT COMMAND: the last run exited EXIT, named FILE (and LINE unless '-')
 check() {
-  if [ "$rc" -eq 124 ]; then notok "$1" "timed out after 10 s"; return; fi
+  if [ "$rc" -eq 124 ]; then notok "$1" "timed out after $tmax s"; return; fi
   expect_rc "$2" "$1 exits $2"
   if [ "$4" = - ]; then pat="^luxcalc: $6: $(re_escape "$3"): "; else pat="^luxcalc: $6: $(re_escape "$3"):$4: "; fi
   expect_err_match "$pat" "$1 names ${3##*/}${4:+ line $4}"
@@ -105,7 +106,7 @@ for c in spd ies scene; do
   LX_FIFO_WAIT_S=1 bounded $c "$G/fifo"
   frag="a FIFO with no data after 1 s"
   check "$c: a FIFO without a writer" 2 "$G/fifo" - "$frag" $c
-  [ "$ms" -lt 5000 ] && ok "$c: a FIFO without a writer fails in ${ms} ms" || notok "$c: FIFO wait bounded" "${ms} ms"
+  [ "$ms" -lt $((5000 * slow)) ] && ok "$c: a FIFO without a writer fails in ${ms} ms" || notok "$c: FIFO wait bounded" "${ms} ms"
 done
 ( printf 'nm,v\n500,1\n510,2\n520,1\n' >"$G/fifo" ) &
 wpid=$!

@@ -15,16 +15,17 @@ load=$(cut -d' ' -f1 /proc/loadavg 2>/dev/null || echo 0)
 if awk -v l="$load" -v c="$cores" 'BEGIN { exit !(l > c) }'; then
   limit_ms=5000; echo "# load $load on $cores cores: the 1 s bound is relaxed to 5 s"
 else limit_ms=1000; fi
-# bounded COMMAND ARGS...: under the memory bound and timeout 10; sets $out, $err, $rc, $ms
+limit_ms=$((limit_ms * slow)); tmax=$((10 * slow)) # LX_TEST_SLOW (lib.sh): valgrind
+# bounded COMMAND ARGS...: under the memory bound and timeout 10 (x slow); sets $out, $err, $rc, $ms
 bounded() {
   t0=$(date +%s%N)
-  (ulimit -v $memlim; exec timeout 10 "$LUXCALC" "$@") >"$T/out" 2>"$T/err"; rc=$?
+  (ulimit -v $memlim; exec timeout $tmax "$LUXCALC" "$@") >"$T/out" 2>"$T/err"; rc=$?
   ms=$(( ($(date +%s%N) - t0) / 1000000 ))
   out=$(head -c 65536 "$T/out"); err=$(head -c 4096 "$T/err")
 }
 # refused NAME FRAGMENT: the last run was refused in time with FRAGMENT (a regular expression) on stderr
 refused() {
-  if [ "$rc" -eq 124 ]; then notok "$1" "timed out after 10 s"; return; fi
+  if [ "$rc" -eq 124 ]; then notok "$1" "timed out after $tmax s"; return; fi
   expect_rc 2 "$1 exits 2"
   expect_err_match "$2" "$1 says why"
   [ "$ms" -lt "$limit_ms" ] && ok "$1 refused in ${ms} ms" || notok "$1 refused in time" "${ms} ms (bound ${limit_ms} ms)"
@@ -62,7 +63,10 @@ else
 fi
 
 # ---- a FIFO fed for ever by a writer ----
-if mkfifo "$G/fifo" 2>/dev/null && command -v yes >/dev/null; then
+# (reading up to 256 MB: not in the sampled runs, LX_BAD_SAMPLE > 1, which make valgrind is)
+if [ "${LX_BAD_SAMPLE:-1}" -gt 1 ]; then
+  skip "FIFO fed for ever" "streams of 16 to 256 MB are not read here (LX_BAD_SAMPLE=$LX_BAD_SAMPLE; make test and make asan read them)"
+elif mkfifo "$G/fifo" 2>/dev/null && command -v yes >/dev/null; then
   for c in spd ies; do
     (yes 500,1 >"$G/fifo" 2>/dev/null) &
     wpid=$!
@@ -81,7 +85,7 @@ if mkfifo "$G/fifo" 2>/dev/null && command -v yes >/dev/null; then
   kill $wpid 2>/dev/null; wait $wpid 2>/dev/null
   # standard input from a pipe that never ends
   t0=$(date +%s%N)
-  yes | (ulimit -v $memlim; exec timeout 10 "$LUXCALC" spd -) >"$T/out" 2>"$T/err"; rc=$?
+  yes | (ulimit -v $memlim; exec timeout $tmax "$LUXCALC" spd -) >"$T/out" 2>"$T/err"; rc=$?
   ms=$(( ($(date +%s%N) - t0) / 1000000 )); err=$(head -c 4096 "$T/err")
   refused "spd - (yes |)" "^luxcalc: spd: -: larger than 256 MB, the limit for a spectrum file"
 else
