@@ -94,8 +94,8 @@ void lx__daylight_at(const lx__daylight *d, const double x[3], const double n[3]
  * `order` x `order` Gauss nodes with visibility. */
 double lx__daylight_sun_flux(const lx__daylight *d, const lx__room_patch *e, int order);
 /* The illuminance (lx) on the outer side of opening k from the sky, the ground and the sun, through
- * its glazing: its flux in is this times its area. Quadrature (64 x 64 nodes per piece, split at the
- * horizon). */
+ * its glazing: its flux in is this times its area. Gauss-Legendre, 64 nodes in the angle from the
+ * opening's normal x 64 in azimuth per arc (split where the horizon cuts). */
 double lx__daylight_opening_E(const lx__daylight *d, size_t k);
 /* 1 when the ray from q towards the sun meets no occluder (but skip) and no room other than `cell`. */
 int lx__daylight_sun_visible(const lx__daylight *d, const double q[3], int cell, int skip);

@@ -380,11 +380,12 @@ double lx__daylight_opening_E(const lx__daylight *d, size_t k)
     double la = sqrt(dot3(a, a));
     for (int i = 0; i < 3; i++) a[i] /= la;
     b[0] = m[1] * a[2] - m[2] * a[1], b[1] = m[2] * a[0] - m[0] * a[2], b[2] = m[0] * a[1] - m[1] * a[0];
-    /* c = cos(theta) from m over [c_neg, 1] (the clamped glazing transmits nothing below c_neg); for
-     * each c the azimuth in arcs of sky and ground: w_z = s R cos(phi - ph0) + c m_z */
-    double c0 = op->c_neg, E = 0, R = hypot(a[2], b[2]), ph0 = atan2(b[2], a[2]);
+    /* theta from m over [0, acos(c_neg)] (the clamped glazing transmits nothing beyond; in theta, not
+     * cos(theta), the integrand is smooth at the normal); for each theta the azimuth in arcs of sky and
+     * ground: w_z = sin(theta) R cos(phi - ph0) + cos(theta) m_z */
+    double t1 = acos(op->c_neg), E = 0, R = hypot(a[2], b[2]), ph0 = atan2(b[2], a[2]);
     for (int i = 0; i < NC; i++) {
-        double c = c0 + 0.5 * (1 - c0) * (xc[i] + 1), wci = 0.5 * (1 - c0) * wc[i], s = sqrt(fmax(0, 1 - c * c));
+        double th = 0.5 * t1 * (xc[i] + 1), wti = 0.5 * t1 * wc[i], c = cos(th), s = sin(th);
         double tc = tau_c(op, c), arcs[3];
         if (!(tc > 0)) continue;
         double r = R * s > 0 ? -c * m[2] / (R * s) : (c * m[2] >= 0 ? -2 : 2);
@@ -400,7 +401,7 @@ double lx__daylight_opening_E(const lx__daylight *d, size_t k)
                 for (int l = 0; l < 3; l++) w[l] = s * (cos(ph) * a[l] + sin(ph) * b[l]) + c * m[l];
                 sum += wp[j] * (w[2] >= 0 ? lx__daylight_sky_L(d, w) : d->Lg);
             }
-            E += wci * tc * c * 0.5 * (p1 - p0) * sum;
+            E += wti * s * tc * c * 0.5 * (p1 - p0) * sum;
         }
     }
     double ms = dot3(m, d->sun);
