@@ -131,7 +131,7 @@ static run must_run(lx_ctx *ctx, const char *text)
     return r;
 }
 
-static const char ROOF[] = "[scene]\n%s\n[room r]\nsize = 4, 4, 3 m\nceiling = %g\nwalls = %g\nfloor = %g\n"
+static const char ROOF[] = "[scene]\npatch_size = 0.6 m\n%s\n[room r]\nsize = 4, 4, 3 m\nceiling = %g\nwalls = %g\nfloor = %g\n"
                            "[opening R]\ncorner = 1.5, 1.5, 3 m\nedge1 = 1, 0, 0 m\nedge2 = 0, 1, 0 m\n%s"
                            "[sky]\ntype = uniform\nluminance = 1000 cd/m2\n"
                            "[receiver a]\ntype = point\nposition = 2, 2, 0 m\n"
@@ -182,7 +182,7 @@ static void test_flux_conserved(void **state)
     /* a facade opening under the overcast sky with the ground (rho 0.2): on its outer (vertical) side
      * E = Lz (pi / 6 + 4 / 9) from the sky (the closed form of README "Scenes") and Lg pi / 2 from the
      * ground, Lg = 0.2 (7 pi Lz / 9) / pi */
-    const char *fac = "[scene]\ninterreflection_tolerance = 1e-4\n[room r]\nsize = 4, 4, 3 m\n"
+    const char *fac = "[scene]\ninterreflection_tolerance = 1e-4\npatch_size = 0.5 m\n[room r]\nsize = 4, 4, 3 m\n"
                       "[opening W]\ncorner = 1, 0, 1 m\nedge1 = 2, 0, 0 m\nedge2 = 0, 0, 1 m\n"
                       "[sky]\ntype = overcast\nluminance = 1000 cd/m2\nground_reflectance = 0.2\n"
                       "[receiver a]\ntype = point\nposition = 2, 2, 0.85 m\n";
@@ -193,7 +193,7 @@ static void test_flux_conserved(void **state)
     run_free(&r);
     /* with clear glass the flux in is the hemisphere's integral with tau(theta), below the unglazed
      * flux by between the glass's normal (0.879) and its hemispherical (about 0.8) transmittance */
-    const char *gl = "[scene]\ninterreflection_tolerance = 1e-4\n[room r]\nsize = 4, 4, 3 m\n"
+    const char *gl = "[scene]\ninterreflection_tolerance = 1e-4\npatch_size = 0.5 m\n[room r]\nsize = 4, 4, 3 m\n"
                      "[opening W]\ncorner = 1, 0, 1 m\nedge1 = 2, 0, 0 m\nedge2 = 0, 0, 1 m\nglazing = clear\n"
                      "[sky]\ntype = overcast\nluminance = 1000 cd/m2\nground_reflectance = 0.2\n"
                      "[receiver a]\ntype = point\nposition = 2, 2, 0.85 m\n";
@@ -250,7 +250,7 @@ static void test_sun_through_opening(void **state)
     lx_ctx *ctx = *state;
     /* s = (0.3, 0.2, 1) / |.|: the 1 x 1 m roof opening's beam lands on the floor at x 0.6..1.6, y
      * 0.9..1.9 (shifted by -3 s_xy / s_z) */
-    static const char *tmpl = "[room r]\nsize = 4, 4, 3 m\n"
+    static const char *tmpl = "[scene]\npatch_size = 0.6 m\n[room r]\nsize = 4, 4, 3 m\n"
                               "[opening R]\ncorner = 1.5, 1.5, 3 m\nedge1 = 1, 0, 0 m\nedge2 = 0, 1, 0 m\n%s"
                               "[sun]\ndirection = 0.3, 0.2, 1\nilluminance = 80000 lx\n%s"
                               "[receiver lit]\ntype = point\nposition = 1.1, 1.4, 0 m\n"
@@ -410,7 +410,7 @@ static void test_opening_errors(void **state)
 static void test_ugr_background_from_room(void **state)
 {
     lx_ctx *ctx = *state;
-    static const char *tmpl = "[room r]\nsize = 6, 4, 3 m\n"
+    static const char *tmpl = "[scene]\npatch_size = 0.5 m\n[room r]\nsize = 6, 4, 3 m\n"
                               "[luminaire panel]\ntype = rect\nposition = 4, 2, 2.95 m\nluminance = 6000 cd/m2\n"
                               "width = 0.6 m\nlength = 0.6 m\n"
                               "[observer eye]\nposition = 0.5, 2, 1.2 m\nview = 1, 0, 0\n%s"

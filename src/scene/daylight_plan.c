@@ -337,11 +337,19 @@ lx_status lx__daylight_plan(lx_ctx *ctx, const lx_scene *sc, lx_scene_plan *p)
 lx_status lx__daylight_plan_after(lx_ctx *ctx, const lx_scene *sc, lx_scene_plan *p)
 {
     (void)ctx;
+    if (!p->on[LX_EFFECT_ENVIRONMENT]) /* the rooms' rule may have turned it off after its estimate */
+        p->estimate.environment_evaluations = p->estimate.environment_samples = 0;
     if (!p->on[LX_EFFECT_DAYLIGHT]) return LX_OK;
     /* the rooms' rule turned the sky off for receivers inside rooms: it reaches them through openings */
     if (!p->on[LX_EFFECT_ENVIRONMENT] && !strncmp(p->reason[LX_EFFECT_ENVIRONMENT], "every receiver is inside", 24))
         snprintf(p->reason[LX_EFFECT_ENVIRONMENT], sizeof p->reason[LX_EFFECT_ENVIRONMENT],
                  "every receiver is inside a room: the sky reaches them through the openings only (daylight)");
+    if (p->on[LX_EFFECT_INTERREFLECTION]) {
+        char *r = p->reason[LX_EFFECT_INTERREFLECTION];
+        size_t l = strlen(r);
+        snprintf(r + l, sizeof p->reason[LX_EFFECT_INTERREFLECTION] - l, "; and the daylight's %.4g lm (reflected share <= %.0f%%)",
+                 p->daylight.flux_in_lm, 100 * p->daylight.share_est);
+    }
     const lx__room_mesh *m = p->room.mesh;
     if (p->on[LX_EFFECT_INTERREFLECTION] && m && m->elem) {
         double tq = 0.25 * sc->interreflection_tol;
