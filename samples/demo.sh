@@ -61,6 +61,13 @@ for s in office street facade spectral; do
 done
 
 echo
+echo "== Daylight (issue 21): a side-lit office, two clear-glazed windows, the CIE overcast sky"
+"$LX" scene --explain "$here/scenes/daylight_room.scene" -o "$out/daylight_room_explain.txt"
+sed -n '/^effects:/,/^pairs:/p' "$out/daylight_room_explain.txt" | sed '$d'
+sed -n '/^daylight:/,$p' "$out/daylight_room_explain.txt"
+"$LX" scene --png "$out" "$here/scenes/daylight_room.scene"
+
+echo
 echo "== Radiance fields: irradiance from a lat-long sky with a sun (samples/envmaps/sky_sun.exr)"
 for m in sh9 fast brute; do
   "$LX" irradiance "$here/envmaps/sky_sun.exr" --normal 0,0,1 --method $m --backend cpu --format csv | tail -n 1 | cut -d, -f1-6
