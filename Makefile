@@ -1,4 +1,4 @@
-# luxcalc - one plain Makefile. Targets: all test demo bench asan install uninstall clean deps.
+# luxcalc - one plain Makefile. Targets: all test test-simd demo bench asan install uninstall clean deps.
 # LX_OPENCL=0 builds without OpenCL. Sources are found by wildcard: src/LAYER/*.c is the library
 # (one folder per layer), src/cli/*.c and src/cli/bench/*.c the command-line tool, tests/test_*.c
 # one cmocka binary each, kernels/*.cl embedded.
@@ -35,7 +35,7 @@ TEST_SRC := $(wildcard tests/test_*.c tests/hard_cases/test_*.c)
 DATA := $(sort $(wildcard src/data/*.csv))
 KERNELS := $(sort $(wildcard kernels/*.cl))
 
-GEN_SRC := $(BUILD)/gen/tables/lx_tables.c $(BUILD)/gen/core/lx_kernels.c
+GEN_SRC := $(BUILD)/gen/tables/lx_tables.c $(BUILD)/gen/core/lx_kernels.c $(BUILD)/gen/core/lx_pow5.c
 LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/obj/%.o) $(GEN_SRC:$(BUILD)/gen/%.c=$(BUILD)/obj/%.o)
 CLI_OBJ := $(CLI_SRC:src/cli/%.c=$(BUILD)/obj/cli/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
@@ -54,7 +54,7 @@ SONAME := libluxcalc.so.$(firstword $(subst ., ,$(VERSION)))
 SHARED := $(BUILD)/$(SONAME)
 CLI := $(BUILD)/luxcalc
 
-.PHONY: all test test-nofp64 demo bench asan tsan valgrind install uninstall clean deps fuzz
+.PHONY: all test test-simd test-nofp64 demo bench asan tsan valgrind install uninstall clean deps fuzz
 
 all: $(STATIC) $(SHARED) $(CLI) $(BUILD)/libs.txt
 
@@ -106,6 +106,10 @@ $(BUILD)/gen/tables/lx_tables.c: $(BUILD)/lxgen $(DATA)
 $(BUILD)/gen/core/lx_kernels.c: $(BUILD)/lxgen $(KERNELS) Makefile
 	@mkdir -p $(dir $@)
 	$(BUILD)/lxgen kernels $@ $(KERNELS)
+
+$(BUILD)/gen/core/lx_pow5.c: $(BUILD)/lxgen
+	@mkdir -p $(dir $@)
+	$(BUILD)/lxgen pow5 $@
 
 $(BUILD):
 	@mkdir -p $@
@@ -161,13 +165,24 @@ test: deps
 	@LX_SHARED_DIR=$${LX_SHARED_DIR:-$(CURDIR)/../shared} POCL_CACHE_DIR=$(CURDIR)/$(BUILD)/pocl-cache \
 	  sh tests/run.sh $(BUILD) $(TEST_BIN)
 
+# the suite again with the SIMD paths capped, as an AVX2-only and a plain x86-64 CPU run it (the
+# binaries of `make test`, not rebuilt); the tests of the paths above the cap report SKIPPED
+SIMD_CAPS ?= avx2 scalar
+test-simd: deps
+	@$(MAKE) --no-print-directory all $(TEST_BIN) $(FAULT_CLI)
+	@for s in $(SIMD_CAPS); do log=$$(mktemp); \
+	  LX_SIMD=$$s LX_SHARED_DIR=$${LX_SHARED_DIR:-$(CURDIR)/../shared} POCL_CACHE_DIR=$(CURDIR)/$(BUILD)/pocl-cache \
+	  sh tests/run.sh $(BUILD) $(TEST_BIN) > $$log 2>&1; rc=$$?; \
+	  grep -E '^\[  (FAILED|SKIPPED) \] [a-z]|^not ok|: not ok|^failing' $$log | sort -u; \
+	  echo "LX_SIMD=$$s: $$(tail -n 1 $$log)"; rm -f $$log; [ $$rc -eq 0 ] || exit 1; done
+
 demo: deps
 	@$(MAKE) --no-print-directory all
 	@POCL_CACHE_DIR=$(CURDIR)/$(BUILD)/pocl-cache sh samples/demo.sh $(CLI)
 
 bench: deps
 	@$(MAKE) --no-print-directory all
-	@POCL_CACHE_DIR=$(CURDIR)/$(BUILD)/pocl-cache $(CLI) bench
+	@POCL_CACHE_DIR=$(CURDIR)/$(BUILD)/pocl-cache $(CLI) bench --dir samples/bench
 
 asan: deps
 	@LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 \

@@ -2,14 +2,15 @@
  * form-factor matrix (one work-item per shooting patch i and receiving patch j) and the gather
  * (one work-item per point). CPU twins: ff_pair, lx__room_gather_cpu (src/scene/room_solve.c) and
  * the geometry of src/scene/room_geom.c, the same operations in the same order, contraction off.
- * Patch records of 18 doubles: o[3] u[3] v[3] n[3] lo[3] hi[3]; ints: cell, occluder, face, shoot.
+ * Patch records of 21 doubles: o[3] u[3] v[3] n[3] lo[3] hi[3] c[3], and their radii apart; ints: cell,
+ * occluder, face, shoot.
  * Occluder records of 22 doubles: lo[3] hi[3] o[3] u[3] v[3] n[3] uu uv vv det; ints: kind.
  * gauss: nodes then weights of orders 1..8 on [0, 1], 8 per order. */
 #if LX_FP64
 #pragma OPENCL EXTENSION cl_khr_fp64 : enable
 #pragma OPENCL FP_CONTRACT OFF
 
-#define RP 18
+#define RP 21 /* o u v n lo hi, c (18..20); rad is passed apart */
 #define RO 22
 
 static double r_dot(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
@@ -139,16 +140,6 @@ static int r_visible(__global const double *occ, __global const int *okind, int 
     return 1;
 }
 
-static int r_bv(__global const double *occ, int nocc, const double *lo, const double *hi, int skip, int skip2)
-{
-    for (int k = 0; k < nocc; k++) {
-        if (k == skip || k == skip2) continue;
-        __global const double *oc = occ + RO * k;
-        if (lo[0] < oc[3] && oc[0] < hi[0] && lo[1] < oc[4] && oc[1] < hi[1] && lo[2] < oc[5] && oc[2] < hi[2]) return 1;
-    }
-    return 0;
-}
-
 static int r_vis9(__global const double *occ, __global const int *okind, int nocc, const double *x, const double *o,
                   const double *u, const double *v, int skip, int skip2, double *w)
 {
@@ -169,6 +160,38 @@ static int r_vis9(__global const double *occ, __global const int *okind, int noc
 }
 
 /* pj: a patch record; the same depth-first subdivision as lx__room_ff_vis */
+static int r_shaft(__global const double *occ, int nocc, const double *lo, const double *hi, const double *p,
+                   const double *q, double r, int skip, int skip2)
+{
+    double d[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
+    for (int k = 0; k < nocc; k++) {
+        if (k == skip || k == skip2) continue;
+        __global const double *oc = occ + RO * k;
+        if (!(lo[0] < oc[3] && oc[0] < hi[0] && lo[1] < oc[4] && oc[1] < hi[1] && lo[2] < oc[5] && oc[2] < hi[2]))
+            continue;
+        double tmin = 0, tmax = 1;
+        int meets = 1;
+        for (int c = 0; c < 3 && meets; c++) {
+            double a = oc[c] - r, b = oc[3 + c] + r;
+            if (d[c] == 0) {
+                meets = p[c] >= a && p[c] <= b;
+                continue;
+            }
+            double ta = (a - p[c]) / d[c], tb = (b - p[c]) / d[c];
+            if (ta > tb) {
+                double t = ta;
+                ta = tb;
+                tb = t;
+            }
+            if (ta > tmin) tmin = ta;
+            if (tb < tmax) tmax = tb;
+            meets = tmin <= tmax;
+        }
+        if (meets) return 1;
+    }
+    return 0;
+}
+
 static double r_ff_vis(__global const double *occ, __global const int *okind, int nocc, const double *x,
                        const double *n, const double *pj, int skip, int skip2, double f, int levels)
 {
@@ -216,7 +239,7 @@ static void r_load(__global const double *P, uint i, double *pr)
 }
 
 /* F[i][j] for rows row0 .. row0 + rows - 1 (out: rows x n, row-major). */
-__kernel void lx_room_ff(__global const double *P, __global const int *PI, __global const double *occ,
+__kernel void lx_room_ff(__global const double *P, __global const double *RAD, __global const int *PI, __global const double *occ,
                          __global const int *okind, int nocc, __global const double *gauss, uint n, uint row0,
                          uint rows, __global double *out)
 {
@@ -232,7 +255,8 @@ __kernel void lx_room_ff(__global const double *P, __global const int *PI, __glo
     if (ci == cj && fi != fj) {
         double lo[3], hi[3];
         for (int c = 0; c < 3; c++) lo[c] = fmin(pi[12 + c], pj[12 + c]), hi[c] = fmax(pi[15 + c], pj[15 + c]);
-        int bv = nocc && r_bv(occ, nocc, lo, hi, oi, oj);
+        double ci[3] = {pi[18], pi[19], pi[20]}, cj[3] = {pj[18], pj[19], pj[20]};
+        int bv = nocc && r_shaft(occ, nocc, lo, hi, ci, cj, fmax(RAD[i], RAD[j]), oi, oj);
         __global const double *gx = gauss + 8 * (shoot - 1), *gw = gauss + 64 + 8 * (shoot - 1);
         double n[3] = {pi[9], pi[10], pi[11]};
         for (int a = 0; a < shoot; a++)
@@ -248,7 +272,7 @@ __kernel void lx_room_ff(__global const double *P, __global const int *PI, __glo
 }
 
 /* The illuminance at point i (skip: an occluder that never blocks its rays) from the patches of exitance B. */
-__kernel void lx_room_gather(__global const double *P, __global const int *PI, __global const double *occ,
+__kernel void lx_room_gather(__global const double *P, __global const double *RAD, __global const int *PI, __global const double *occ,
                              __global const int *okind, int nocc, __global const double *B, uint npatch,
                              __global const double *pts, __global const double *nrm, __global const int *cell,
                              __global const int *skip, int levels, uint npts, __global double *out)
@@ -266,7 +290,9 @@ __kernel void lx_room_gather(__global const double *P, __global const int *PI, _
         if (nocc) {
             double lo[3], hi[3];
             for (int c = 0; c < 3; c++) lo[c] = fmin(x[c], pj[12 + c]), hi[c] = fmax(x[c], pj[15 + c]);
-            if (r_bv(occ, nocc, lo, hi, sk, PI[4 * j + 1])) f = r_ff_vis(occ, okind, nocc, x, n, pj, sk, PI[4 * j + 1], f, levels);
+            double cj[3] = {pj[18], pj[19], pj[20]};
+            if (r_shaft(occ, nocc, lo, hi, x, cj, RAD[j], sk, PI[4 * j + 1]))
+                f = r_ff_vis(occ, okind, nocc, x, n, pj, sk, PI[4 * j + 1], f, levels);
         }
         e += B[j] * f;
     }

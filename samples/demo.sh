@@ -61,6 +61,13 @@ for s in office street facade spectral; do
 done
 
 echo
+echo "== A room: the office downlights in a 6 x 4 x 2.8 m room with a desk and a partition; shadows"
+echo "   and interreflection (samples/scenes/office_room.scene), its plan, the receivers, the faces"
+"$LX" scene --explain "$here/scenes/office_room.scene"
+"$LX" scene --png "$out" "$here/scenes/office_room.scene"
+"$LX" scene --surfaces --format csv "$here/scenes/office_room.scene" | cut -d, -f1-5
+
+echo
 echo "== Daylight (issue 21): a side-lit office, two clear-glazed windows, the CIE overcast sky"
 "$LX" scene --explain "$here/scenes/daylight_room.scene" -o "$out/daylight_room_explain.txt"
 sed -n '/^effects:/,/^pairs:/p' "$out/daylight_room_explain.txt" | sed '$d'

@@ -64,6 +64,7 @@
 #define LUXCALC_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -182,6 +183,22 @@ LX_API size_t lx_ctx_input_limit(const lx_ctx *ctx, lx_input_kind kind);
 
 /** Frees text the library wrote to memory for the caller (lx_luminaire_write_ies). Accepts NULL. */
 LX_API void lx_text_free(char *text);
+
+/** Room lx_double_format needs, the terminating NUL included. */
+#define LX_DOUBLE_CHARS 32
+
+/** Writes value as the shortest decimal text that reads back (strtod) as exactly value, the
+ * closest such text when there are several (Ryu, Adams 2018), laid out as printf("%.*g", P) with
+ * P = max(15, digits) lays out those digits ("0.1", "1e-07", "123456789012345680", "-0"; inf,
+ * -inf and nan as printf). out needs LX_DOUBLE_CHARS bytes; returns the length (without the NUL).
+ * Thread-safe, no allocation, about 30 ns. */
+LX_API size_t lx_double_format(double value, char *out);
+
+/** Opens path for reading as every reader of the library does: "-" is standard input; a missing
+ * file or a directory is LX_EIO naming the path; a FIFO waits at most LX_FIFO_WAIT_S seconds
+ * (default 10; 0: for ever) for its first data (LX_EIO saying so after that). Close *out with
+ * fclose unless it is stdin. Errors: LX_EINVAL (a NULL context, path or out), LX_EIO. */
+LX_API lx_status lx_file_open(lx_ctx *ctx, const char *path, FILE **out);
 
 /* ============================================================================================ */
 /* 2. Backends, SIMD paths and OpenCL devices (src/core) */
@@ -460,6 +477,14 @@ typedef struct lx_vendor_results {
  * out->count is 0 for formats that carry none. Errors: LX_EINVAL (NULL set or out). */
 LX_API lx_status lx_spd_set_vendor(lx_ctx *ctx, const lx_spd_set *set, lx_vendor_results *out);
 
+/** lx_spd_read_file_opts for an open stream (a pipe; not closed) whose first prefix_len bytes at
+ * prefix the caller already read from it (prefix may be NULL when none): the rest is read as
+ * lx_spd_read_file reads "-", under the spectrum size limit (the prefix counted), binary data
+ * refused; name is used in messages and as set->file; opts may be NULL. Errors: those of
+ * lx_spd_read_file_opts. */
+LX_API lx_status lx_spd_read_stream(lx_ctx *ctx, const char *name, FILE *in, const char *prefix, size_t prefix_len,
+                                    const lx_spd_read_opts *opts, lx_spd_set **out);
+
 /** Frees a set. Accepts NULL. */
 LX_API void lx_spd_set_free(lx_spd_set *set);
 
@@ -550,6 +575,17 @@ LX_API lx_status lx_cct_from_uv(lx_ctx *ctx, lx_observer observer, double u, dou
 /** The same from CIE 1931 x, y. Errors: as lx_cct_from_uv (LX_ERANGE also where x, y has no uv). */
 LX_API lx_status lx_cct_from_xy(lx_ctx *ctx, lx_observer observer, double x, double y,
                                 double *cct_K, double *duv);
+
+/** CCT and Duv of n chromaticities (CIE 1960 u[i], v[i]) at once, fast: the Planckian locus
+ * precomputed once per process (513 nodes in ln T, 900 K - 120000 K, quintic Hermite with exact
+ * derivatives), the nearest point found by bisection and Newton steps, no exp (about 0.1 us a point).
+ * Agrees with lx_cct_from_uv to rounding (tests/test_cct_fast.c: |dT| < 1e-10 relative, |dDuv| <
+ * 1e-12); a point whose nearest locus point is outside the table or more than 0.09 from the locus
+ * is solved by lx_cct_from_uv. Where lx_cct_from_uv has no answer (LX_ERANGE) cct_K[i] and duv[i]
+ * are NaN; that is not an error. Errors: LX_EINVAL (a NULL context, an unknown observer, NULL
+ * arrays with n > 0). */
+LX_API lx_status lx_cct_from_uv_batch(lx_ctx *ctx, lx_observer observer, size_t n, const double *u,
+                                      const double *v, double *cct_K, double *duv);
 
 /** CIE 1960 u, v (either may be NULL) of the Planckian radiator at T_K with the observer's CMFs.
  * Errors: LX_EINVAL (an unknown observer, T_K not positive and finite). */
@@ -651,6 +687,45 @@ typedef lx_status (*lx_batch_chunk_fn)(void *user, const lx_batch_table *chunk, 
  * Errors: those of lx_batch_table_read, and fn's own status. */
 LX_API lx_status lx_batch_table_stream(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads,
                                        lx_batch_chunk_fn fn, void *user);
+
+/** The callbacks of lx_batch_table_stream_ex (zero-initialise, then set emit at least; ABI policy:
+ * reserved stays zero). */
+typedef struct lx_batch_stream {
+    void *user;
+    /* Optional, on the parsing threads: called for each part of the file (consecutive rows, about
+     * 512 KB of text) as soon as it is parsed, several at once, in no particular order. thread
+     * (0 .. threads - 1, below 64) is the calling thread's index, for per-thread state (a context
+     * each: contexts are one thread's); *state is the part's own pointer, kept from one part to the
+     * next that takes its place (for buffers). A non-LX_OK return stops the stream when the part
+     * comes to be emitted, and is returned by it (ctx holds no message for it). */
+    lx_status (*work)(void *user, int thread, const lx_batch_table *part, void **state);
+    /* Required, on the caller's thread, every part in file order after its work: rows row0 ..
+     * row0 + part->batch.n_spectra - 1; state as work left it. A non-LX_OK return stops the stream. */
+    lx_status (*emit)(void *user, const lx_batch_table *part, size_t row0, void *state);
+    /* Optional: frees a part's state at the end of the stream. */
+    void (*release)(void *user, void *state);
+    /* Optional, on the caller's thread after each emitted part: bytes of the input consumed so far
+     * and the input's size (0 when unknown: a pipe). */
+    void (*progress)(void *user, unsigned long long done_bytes, unsigned long long total_bytes);
+    /* Optional: read this open stream instead of opening path (path then names it in messages),
+     * after the prefix_len bytes at prefix that the caller already read from it (the start of a
+     * pipe it looked at). Not closed. */
+    FILE *input;
+    const char *prefix;
+    size_t prefix_len;
+    long long reserved[4]; /* zero: room for later options (ABI policy) */
+} lx_batch_stream;
+
+/** lx_batch_table_stream with work on the parsing threads: each part is parsed and handed to
+ * cb->work on the thread that parsed it while it is in cache, and the results come to cb->emit
+ * in file order, so the per-part work (colorimetry, formatting) runs on every core and overlaps
+ * the parsing. Memory stays bounded whatever the file's size: a regular file is memory-mapped and
+ * the pages already read are unmapped behind the reader; a pipe or standard input is read into
+ * two alternating buffers of a few MB, without the size limit of whole files (a line longer than
+ * that grows them, up to the 4 MB a batch line may hold). Errors as lx_batch_table_stream, and
+ * LX_EINVAL for a NULL context, path, cb or cb->emit, or non-zero reserved. */
+LX_API lx_status lx_batch_table_stream_ex(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads,
+                                          const lx_batch_stream *cb);
 
 /** CSV end to end: streams a rows-layout batch CSV (lx_batch_table_stream, double values) and
  * integrates each chunk as lx_batch_integrate on the CPU while the next one parses. *out gets

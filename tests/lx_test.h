@@ -72,6 +72,26 @@ static inline const char *lx_test_build_dir(void)
     return d && *d ? d : "build";
 }
 
+/* SIMD twins, one test per path: lx_test_simd_begin(path) skips the test (cmocka skip(), reported
+ * SKIPPED) when this machine cannot run that path, i.e. when the CPU lacks it or the environment
+ * the suite runs in caps it (LX_SIMD=scalar|avx2, as CI runs the suite), and otherwise selects it
+ * with LX_SIMD; lx_test_simd_end() puts the environment back. */
+static char lx_test_simd_saved[32];
+static int lx_test_simd_had;
+static inline void lx_test_simd_begin(lx_simd path)
+{
+    if (lx_simd_level() < path) skip(); /* before anything is allocated: skip() leaves the test */
+    const char *e = getenv("LX_SIMD");
+    lx_test_simd_had = e != NULL;
+    snprintf(lx_test_simd_saved, sizeof lx_test_simd_saved, "%s", e ? e : "");
+    setenv("LX_SIMD", lx_simd_name(path), 1);
+}
+static inline void lx_test_simd_end(void)
+{
+    if (lx_test_simd_had) setenv("LX_SIMD", lx_test_simd_saved, 1);
+    else unsetenv("LX_SIMD");
+}
+
 /* Rewrites the box2i attribute `name` ("dataWindow", "displayWindow") of the OpenEXR header in
  * path to (0, 0)-(xmax, ymax), in place: a header that declares what the file cannot hold.
  * Returns 0, or -1 when the attribute is not found. */

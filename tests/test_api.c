@@ -166,6 +166,24 @@ static void t_lx_spd_read_mem(void)
     EXPECT_EINVAL(lx_spd_read_mem(NULL, "a.csv", SPD_TEXT, strlen(SPD_TEXT), &s));
     assert_ptr_equal(s, PSENT);
 }
+static void t_lx_spd_read_stream(void)
+{
+    lx_spd_set *s = PSENT;
+    EXPECT_EINVAL(lx_spd_read_stream(NULL, "-", stdin, NULL, 0, NULL, &s));
+    assert_ptr_equal(s, PSENT);
+}
+static void t_lx_file_open(void)
+{
+    FILE *f = PSENT;
+    EXPECT_EINVAL(lx_file_open(NULL, BATCH_FILE, &f));
+    assert_ptr_equal(f, PSENT);
+}
+static void t_lx_cct_from_uv_batch(void)
+{
+    double u = 0.1978, v = 0.3122, t = -1, d = -1;
+    EXPECT_EINVAL(lx_cct_from_uv_batch(NULL, LX_OBSERVER_2, 1, &u, &v, &t, &d));
+    assert_true(t == -1 && d == -1);
+}
 static void t_lx_spd_check(void) { EXPECT_EINVAL(lx_spd_check(NULL, &D65)); }
 static void t_lx_spd_integrate(void)
 {
@@ -246,6 +264,19 @@ static void t_lx_batch_table_stream(void)
 {
     int calls = 0;
     EXPECT_EINVAL(lx_batch_table_stream(NULL, BATCH_FILE, LX_F64, 1, count_chunk, &calls));
+    assert_int_equal(calls, 0);
+}
+static lx_status emit_count(void *user, const lx_batch_table *chunk, size_t row0, void *state)
+{
+    (void)chunk, (void)row0, (void)state;
+    ++*(int *)user;
+    return LX_OK;
+}
+static void t_lx_batch_table_stream_ex(void)
+{
+    int calls = 0;
+    lx_batch_stream cb = {.user = &calls, .emit = emit_count};
+    EXPECT_EINVAL(lx_batch_table_stream_ex(NULL, BATCH_FILE, LX_F64, 1, &cb));
     assert_int_equal(calls, 0);
 }
 static void t_lx_batch_table_integrate_file(void)
@@ -828,7 +859,8 @@ static const struct api_case {
     CASE(lx_ctx_set_log), CASE(lx_ctx_backend_used), CASE(lx_cl_ready), CASE(lx_ctx_counters),
     CASE(lx_ctx_counters_reset), CASE(lx_backend_parse), CASE(lx_simd_parse), CASE(lx_cl_select), CASE(lx_cl_borrow),
     CASE(lx_cl_devices), CASE(lx_cl_info), CASE(lx_function_get), CASE(lx_illuminant_get), CASE(lx_tcs_get),
-    CASE(lx_daylight), CASE(lx_daylight_xy), CASE(lx_spd_read_file), CASE(lx_spd_read_mem), CASE(lx_spd_check),
+    CASE(lx_daylight), CASE(lx_daylight_xy), CASE(lx_spd_read_file), CASE(lx_spd_read_mem), CASE(lx_spd_read_stream),
+    CASE(lx_file_open), CASE(lx_cct_from_uv_batch), CASE(lx_batch_table_stream_ex), CASE(lx_spd_check),
     CASE(lx_spd_integrate), CASE(lx_spd_integrate_radiant), CASE(lx_spd_colorimetry),
     CASE(lx_colorimetry_from_integrals), CASE(lx_cct_from_uv), CASE(lx_cct_from_xy), CASE(lx_planck_uv),
     CASE(lx_batch_integrate), CASE(lx_batch_table_read), CASE(lx_batch_table_read_mem), CASE(lx_batch_table_stream),

@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 static const lx_function XYZ[3] = {LX_FN_XBAR_2, LX_FN_YBAR_2, LX_FN_ZBAR_2};
@@ -120,7 +121,7 @@ static void fill(double *v, size_t ns, size_t n, size_t stride, double start, do
     }
 }
 
-static void parity_case(lx_ctx *ctx, size_t ns, size_t n, size_t stride, double start, double step,
+static void parity_case(lx_ctx *ctx, lx_simd path, size_t ns, size_t n, size_t stride, double start, double step,
                         const lx_function *fns, size_t k)
 {
     double *v = malloc(ns * stride * sizeof *v + 1);
@@ -130,10 +131,9 @@ static void parity_case(lx_ctx *ctx, size_t ns, size_t n, size_t stride, double 
     for (size_t i = 0; i < ns * stride; i++) vf[i] = (float)v[i];
     lx_batch b = {.n_spectra = ns, .n_lambda = n, .row_stride = stride, .start_nm = start, .step_nm = step,
                   .dtype = LX_F64, .values = v};
-    /* widest vector path (AVX-512 where the CPU has it) on 2 threads and on 1, AVX2, scalar */
-    for (int mode = 0; mode < 4; mode++) {
-        if (mode == 2) setenv("LX_SIMD", "avx2", 1);
-        if (mode == 3) setenv("LX_SIMD", "scalar", 1);
+    /* this path on 2 threads and on 1 */
+    for (int mode = 0; mode < 2; mode++) {
+        setenv("LX_SIMD", lx_simd_name(path), 1);
         lx_batch_opts o = {.backend = LX_BACKEND_CPU, .threads = mode == 1 ? 1 : 2};
         b.dtype = LX_F64;
         b.values = v;
@@ -141,7 +141,6 @@ static void parity_case(lx_ctx *ctx, size_t ns, size_t n, size_t stride, double 
         b.dtype = LX_F32;
         b.values = vf;
         lx_assert_ok(ctx, lx_batch_integrate(ctx, &b, fns, k, &o, out2));
-        unsetenv("LX_SIMD");
         for (size_t i = 0; i < ns; i += (ns > 50 ? 7 : 1))
             for (size_t f = 0; f < k; f++) {
                 double ref = (double)oracle(ctx, v + i * stride, n, start, step, fns[f]);
@@ -155,18 +154,26 @@ static void parity_case(lx_ctx *ctx, size_t ns, size_t n, size_t stride, double 
     free(out2);
 }
 
-static void test_parity_with_oracle(void **state)
+/* The integration loops of one SIMD path (tests/lx_test.h: SKIPPED where this machine cannot run
+ * it) against the long double oracle: 1e-12 relative for double input, 1e-6 for float. */
+static void parity_with_oracle(void **state, lx_simd path)
 {
     lx_ctx *ctx = *state;
+    lx_test_simd_begin(path);
     lx_function all[LX_FN_COUNT];
     for (int f = 0; f < LX_FN_COUNT; f++) all[f] = (lx_function)f;
-    parity_case(ctx, 1, 471, 471, 360, 1, XYZ, 3);
-    parity_case(ctx, 2049, 471, 480, 360, 1, all, LX_FN_COUNT); /* stride padding, K = 12 */
-    parity_case(ctx, 37, 3, 3, 550, 1, XYZ, 3);                  /* only a tail block */
-    parity_case(ctx, 5, 1, 1, 555, 1, all, 5);                   /* one wavelength */
-    parity_case(ctx, 1000, 81, 81, 380, 5, all, 7);              /* 5 nm, K not a multiple of 4 */
-    parity_case(ctx, 64, 400, 401, 340.25, 1.25, XYZ, 3);        /* off-grid: interpolated weights */
+    parity_case(ctx, path, 1, 471, 471, 360, 1, XYZ, 3);
+    parity_case(ctx, path, 2049, 471, 480, 360, 1, all, LX_FN_COUNT); /* stride padding, K = 12 */
+    parity_case(ctx, path, 37, 3, 3, 550, 1, XYZ, 3);                  /* only a tail block */
+    parity_case(ctx, path, 5, 1, 1, 555, 1, all, 5);                   /* one wavelength */
+    parity_case(ctx, path, 1000, 81, 81, 380, 5, all, 7);              /* 5 nm, K not a multiple of 4 */
+    parity_case(ctx, path, 64, 400, 401, 340.25, 1.25, XYZ, 3);        /* off-grid: interpolated weights */
+    lx_test_simd_end();
 }
+
+static void test_parity_avx512(void **state) { parity_with_oracle(state, LX_SIMD_AVX512); }
+static void test_parity_avx2(void **state) { parity_with_oracle(state, LX_SIMD_AVX2); }
+static void test_parity_scalar(void **state) { parity_with_oracle(state, LX_SIMD_SCALAR); }
 
 static void test_empty_and_errors(void **state)
 {
@@ -409,6 +416,163 @@ static void test_batch_stream(void **state)
     unlink(path);
 }
 
+/* ---- lx_batch_table_stream_ex: work on the parsing threads, read mode, long lines ---- */
+
+static lx_status plain_count(void *user, const lx_batch_table *part, size_t row0, void *state)
+{
+    (void)state;
+    return check_chunk_count(user, part, row0);
+}
+
+typedef struct long_check {
+    size_t rows;
+    int bad;
+} long_check;
+
+static lx_status long_emit(void *user, const lx_batch_table *part, size_t row0, void *state)
+{
+    (void)state;
+    long_check *c = user;
+    const double *v = part->batch.values;
+    if (part->batch.n_lambda != 400000 || part->batch.start_nm != 100 || part->batch.step_nm != 1) c->bad++;
+    for (size_t i = 0; i < part->batch.n_spectra; i++)
+        for (size_t j = 0; j < part->batch.n_lambda; j += 997)
+            if (v[i * part->batch.n_lambda + j] != (double)((j + row0 + i) % 10) + 0.5) c->bad++;
+    c->rows += part->batch.n_spectra;
+    return LX_OK;
+}
+
+
+typedef struct ex_check {
+    stream_check c;   /* the emitted rows, as check_chunk checks them */
+    _Atomic int works, bad_thread, threads;
+    size_t progress_calls;
+    unsigned long long last_done, total;
+} ex_check;
+
+/* work: the sum of each row into the part's state (a buffer kept from part to part) */
+static lx_status ex_work(void *user, int thread, const lx_batch_table *part, void **state)
+{
+    ex_check *e = user;
+    if (thread < 0 || thread >= e->threads) e->bad_thread++;
+    double *sum = realloc(*state, (part->batch.n_spectra + 1) * sizeof *sum);
+    if (!sum) return LX_ENOMEM;
+    *state = sum;
+    const double *v = part->batch.values;
+    sum[0] = (double)part->batch.n_spectra;
+    for (size_t i = 0; i < part->batch.n_spectra; i++) {
+        double a = 0;
+        for (size_t j = 0; j < part->batch.n_lambda; j++) a += v[i * part->batch.n_lambda + j];
+        sum[i + 1] = a;
+    }
+    e->works++;
+    return LX_OK;
+}
+
+static lx_status ex_emit(void *user, const lx_batch_table *part, size_t row0, void *state)
+{
+    ex_check *e = user;
+    const double *sum = state, *v = part->batch.values;
+    if (!sum || sum[0] != (double)part->batch.n_spectra) e->c.bad++;
+    for (size_t i = 0; sum && i < part->batch.n_spectra; i++) {
+        double a = 0;
+        for (size_t j = 0; j < part->batch.n_lambda; j++) a += v[i * part->batch.n_lambda + j];
+        if (a != sum[i + 1]) e->c.bad++; /* the work saw this very part */
+    }
+    return check_chunk(&e->c, part, row0);
+}
+
+static void ex_progress(void *user, unsigned long long done, unsigned long long total)
+{
+    ex_check *e = user;
+    if (done < e->last_done) e->c.bad++;
+    e->last_done = done;
+    e->total = total;
+    e->progress_calls++;
+}
+
+static void ex_release(void *user, void *state)
+{
+    (void)user;
+    free(state);
+}
+
+static void test_batch_stream_ex(void **state)
+{
+    lx_ctx *ctx = *state;
+    char path[] = "/tmp/lx_test_streamex_XXXXXX";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    close(fd);
+    size_t rows = 1500;
+    double *want = write_stream_csv(path, rows, -1);
+    struct stat sb;
+    assert_int_equal(stat(path, &sb), 0);
+    /* mode 0: the map; 1: read from an open stream (a pipe's path); 2: the same after a prefix the
+     * caller read itself; on 1 and 2 threads */
+    for (int mode = 0; mode < 6; mode++) {
+        int threads = 1 + mode % 2, how = mode / 2;
+        ex_check e;
+        memset(&e, 0, sizeof e);
+        e.c = (stream_check){want, 471, 0, 0, 0};
+        e.threads = threads;
+        lx_batch_stream cb = {.user = &e, .work = ex_work, .emit = ex_emit, .release = ex_release, .progress = ex_progress};
+        FILE *f = NULL;
+        char prefix[5000];
+        if (how) {
+            f = fopen(path, "rb");
+            assert_non_null(f);
+            cb.input = f;
+            if (how == 2) { /* a prefix that ends inside the header line */
+                cb.prefix_len = fread(prefix, 1, sizeof prefix, f);
+                cb.prefix = prefix;
+            }
+        }
+        lx_assert_ok(ctx, lx_batch_table_stream_ex(ctx, path, LX_F64, threads, &cb));
+        if (f) fclose(f);
+        assert_int_equal(e.c.bad, 0);
+        assert_int_equal(e.bad_thread, 0);
+        assert_int_equal(e.c.rows_seen, rows);
+        assert_true(e.works >= 2 && e.c.calls == (size_t)e.works);
+        assert_true(e.progress_calls >= 2);
+        assert_true(e.last_done == (unsigned long long)sb.st_size); /* the whole input consumed */
+        assert_true(e.total == (how ? 0 : (unsigned long long)sb.st_size)); /* a stream has no size */
+    }
+    free(want);
+    /* a bad row: the same line from the map and from a stream */
+    want = write_stream_csv(path, rows, 1234);
+    free(want);
+    for (int how = 0; how < 2; how++) {
+        ex_check e;
+        memset(&e, 0, sizeof e);
+        e.c = (stream_check){NULL, 471, 0, 0, 0};
+        e.threads = 2;
+        lx_batch_stream cb = {.user = &e, .emit = plain_count, .input = how ? fopen(path, "rb") : NULL};
+        assert_int_equal(lx_batch_table_stream_ex(ctx, path, LX_F64, 2, &cb), LX_EPARSE);
+        assert_int_equal(lx_ctx_errline(ctx), 1 + 1 + 1234 + 13 + 1);
+        if (cb.input) fclose(cb.input);
+    }
+    /* lines longer than a round of text (one thread: 4 parts of 512 KB): a header of 400000
+     * wavelengths (2.7 MB) and rows of 400000 values, read from a stream */
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs("id", f);
+    for (int j = 0; j < 400000; j++) fprintf(f, ",%d", 100 + j);
+    for (int r = 0; r < 3; r++) {
+        fprintf(f, "\nr%d", r);
+        for (int j = 0; j < 400000; j++) fprintf(f, ",%d.5", (j + r) % 10);
+    }
+    fputc('\n', f);
+    assert_int_equal(fclose(f), 0);
+    long_check lc = {0, 0};
+    lx_batch_stream cb = {.user = &lc, .emit = long_emit, .input = fopen(path, "rb")};
+    lx_assert_ok(ctx, lx_batch_table_stream_ex(ctx, path, LX_F64, 1, &cb));
+    fclose(cb.input);
+    assert_int_equal(lc.rows, 3);
+    assert_int_equal(lc.bad, 0);
+    unlink(path);
+}
+
 /* A line longer than the documented maximum (4 MB, README "Robustness") is refused with its
  * line, after every row before it was handed on; a line of exactly 4 MB is read. So is a header
  * line that long; lx_batch_table_read (the whole file in memory) keeps the spectrum-file limit. */
@@ -493,13 +657,16 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_table_sums, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(test_half_nm_grid_is_trapezoid, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(test_illuminant_a, lx_test_ctx_setup, lx_test_ctx_teardown),
-        cmocka_unit_test_setup_teardown(test_parity_with_oracle, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(test_parity_avx512, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(test_parity_avx2, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(test_parity_scalar, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(test_empty_and_errors, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(test_backend_names, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(test_auto_small_batch_stays_on_cpu, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(test_resample_cpu, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(test_batch_csv, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(test_batch_stream, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(test_batch_stream_ex, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(test_batch_line_limit, lx_test_ctx_setup, lx_test_ctx_teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -112,6 +112,26 @@ static void fill_blackbody(double T, double *wl, double *v)
 }
 
 /* CCT round trip against Planck's law: |dT| < 0.1 K from 1000 K to 100000 K, |Duv| < 1e-6. */
+/* linear1nm on a spectrum that spans 1 nm to 1e9 nm (a file in the wrong unit, a fuzz input): only
+ * the nanometres where the weight is defined are summed, so it takes microseconds, not 1e9 steps,
+ * and equals the sum of the linear spectrum times ybar at the table's whole nanometres (closed
+ * form of the interpolant: v(k) = 1 + 2e-9 (k - 1) on the straight line between the samples). */
+static void test_linear1nm_wide_range(void **state)
+{
+    lx_ctx *ctx = *state;
+    double lam[2] = {1, 1e9}, val[2] = {1, 3};
+    lx_spd s = {.n = 2, .lambda_nm = lam, .value = val, .name = "wide"};
+    lx_spd ybar;
+    lx_assert_ok(ctx, lx_function_get(ctx, LX_FN_YBAR_2, &ybar));
+    double got = 0, want = 0;
+    lx_assert_ok(ctx, lx_spd_integrate(ctx, &s, &ybar, LX_METHOD_LINEAR1NM, &got));
+    for (size_t k = 0; k < ybar.n; k++) {
+        double l = ybar.lambda_nm[k];
+        want += (1 + (l - 1) * (2.0 / (1e9 - 1))) * ybar.value[k];
+    }
+    lx_assert_near(got, want, 0, 1e-14);
+}
+
 static void test_cct_round_trip(void **state)
 {
     lx_ctx *ctx = *state;
@@ -362,6 +382,7 @@ int main(void)
         cmocka_unit_test(test_scotopic_and_ler),     cmocka_unit_test(test_bad_views),
         cmocka_unit_test(test_ler_flat),
         cmocka_unit_test(test_cct_range_ends),
+        cmocka_unit_test(test_linear1nm_wide_range),
     };
     return cmocka_run_group_tests_name("colorimetry", tests, lx_test_ctx_setup, lx_test_ctx_teardown);
 }

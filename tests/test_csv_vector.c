@@ -1,11 +1,29 @@
-/* test_csv_vector.c - the vector line parser of the batch CSV reader (src/csv_vector.c) against
- * the C library's strtod (ISO C 7.22.1.3: correctly rounded), bit for bit (so -0 stays -0.0),
- * on a million random short decimals of every length 1-15, every '.' position and sign, mixed
- * with fields it must leave to the general parser (exponents, 16+ characters, '+', spaces) and
- * with bad fields, which must give the same error line with and without it (LX_SIMD=scalar).
- * Row widths 1-471 put fields across the parser's 64-byte blocks and 64-field batches; some lines
- * end in CRLF. */
+/* test_csv_vector.c - the vector line parser of the batch CSV reader (src/spectral/csv_vector.c),
+ * each of its twins on its own (AVX-512 with BITALG, AVX2; SKIPPED where this machine cannot run
+ * it) and the general parser (LX_SIMD=scalar), against the C library's strtod (ISO C 7.22.1.3:
+ * correctly rounded), bit for bit (so -0 stays -0.0), on a million random short decimals of every
+ * length 1-15, every '.' position and sign, mixed with fields it must leave to the general parser
+ * (exponents, 16+ characters, '+', spaces) and with bad fields, which must give the same error
+ * line as the general parser. Row widths 1-471 put fields across the parser's 64-byte blocks and
+ * 64-field batches; some lines end in CRLF. Each path's test also checks that the path ran: the
+ * vector parser takes every line of vector-only fields (its row counter, lx__csv_fast_rows). */
 #include "lx_test.h"
+
+/* internals of src/spectral (the static library exports them): which vector parser runs, and
+ * how many rows it has taken */
+int lx__csv_fast_level(void);
+unsigned long long lx__csv_fast_rows(void);
+
+/* Selects a path (skip() when this machine cannot run it; AVX-512 also needs BITALG). */
+static void path_begin(lx_simd path)
+{
+    lx_test_simd_begin(path);
+    int want = path == LX_SIMD_AVX512 ? 2 : path == LX_SIMD_AVX2 ? 1 : 0;
+    if (lx__csv_fast_level() != want) {
+        lx_test_simd_end();
+        skip(); /* an AVX-512 CPU without BITALG runs the AVX2 twin: that test covers it */
+    }
+}
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -83,31 +101,45 @@ static size_t bit_mismatches(const lx_batch_table *t, const double *want, size_t
     return bad;
 }
 
-static void test_million_against_strtod(void **state)
+static void million_against_strtod(void **state, lx_simd path)
 {
     lx_ctx *ctx = *state;
+    path_begin(path);
     size_t rows = 2200, n = 471, len; /* 1,036,200 values */
     double *want = malloc(rows * n * sizeof *want);
     for (int vector_only = 1; vector_only >= 0; vector_only--) {
         char *text = table(rows, n, vector_only, want, &len);
         for (int f32 = 0; f32 <= 1; f32++) {
             lx_batch_table *t = NULL;
+            unsigned long long fast0 = lx__csv_fast_rows();
             lx_assert_ok(ctx, lx_batch_table_read_mem(ctx, "v.csv", text, len, f32 ? LX_F32 : LX_F64, 2, &t));
+            unsigned long long fast = lx__csv_fast_rows() - fast0;
             assert_int_equal(t->batch.n_spectra, rows);
             size_t bad = bit_mismatches(t, want, rows * n, f32);
-            print_message("%s fields, %s: %zu of %zu values differ from strtod\n", vector_only ? "vector-parser" : "mixed",
-                          f32 ? "float" : "double", bad, rows * n);
+            print_message("%s, %s fields, %s: %zu of %zu values differ from strtod; %llu of %zu rows by the vector parser\n",
+                          lx_simd_name(path), vector_only ? "vector-parser" : "mixed", f32 ? "float" : "double", bad,
+                          rows * n, fast, rows);
             assert_int_equal(bad, 0);
+            /* the path ran: every row of short decimals (the last ones, within 64 bytes of the
+             * end of the text, go to the general parser) */
+            if (path == LX_SIMD_SCALAR) assert_int_equal(fast, 0);
+            else if (vector_only) assert_true(fast >= rows - 2);
             lx_batch_table_free(t);
         }
         free(text);
     }
     free(want);
+    lx_test_simd_end();
 }
 
-static void test_widths_and_edges(void **state)
+static void test_million_avx512(void **state) { million_against_strtod(state, LX_SIMD_AVX512); }
+static void test_million_avx2(void **state) { million_against_strtod(state, LX_SIMD_AVX2); }
+static void test_million_general(void **state) { million_against_strtod(state, LX_SIMD_SCALAR); }
+
+static void widths_and_edges(void **state, lx_simd path)
 {
     lx_ctx *ctx = *state;
+    path_begin(path);
     static const size_t widths[] = {1, 2, 3, 4, 5, 7, 8, 9, 31, 63, 64, 65, 66, 127, 128, 129, 200};
     for (size_t w = 0; w < sizeof widths / sizeof *widths; w++) {
         size_t n = widths[w], rows = 300, len;
@@ -137,27 +169,35 @@ static void test_widths_and_edges(void **state)
         }
         lx_batch_table_free(t);
     }
+    lx_test_simd_end();
 }
 
-/* A bad field in row 25 (file line 28): the same error, with and without the vector parser. */
-static void test_bad_fields_same_error(void **state)
+static void test_widths_avx512(void **state) { widths_and_edges(state, LX_SIMD_AVX512); }
+static void test_widths_avx2(void **state) { widths_and_edges(state, LX_SIMD_AVX2); }
+static void test_widths_general(void **state) { widths_and_edges(state, LX_SIMD_SCALAR); }
+
+/* A bad field in row 25 (file line 28): the same error from the vector parser of this path as
+ * from the general one. */
+static void bad_fields_same_error(void **state, lx_simd path)
 {
     lx_ctx *ctx = *state;
+    path_begin(path);
+    lx_test_simd_end();
     static const char *bad[] = {"1.2.3", "--1", "1-", ".", "-", "", "1..", "1.-2", "0x10", "1,5", "١٢٣", "12a", "-.",
                                 "1 2"};
     for (size_t b = 0; b < sizeof bad / sizeof *bad; b++) {
         long line[2];
         char msg[2][256];
-        for (int novec = 0; novec <= 1; novec++) {
-            if (novec) setenv("LX_SIMD", "scalar", 1);
+        for (int general = 0; general <= 1; general++) {
+            lx_test_simd_begin(general ? LX_SIMD_SCALAR : path);
             char text[8192];
             int o = sprintf(text, "# c\nid,1,2,3,4\n");
             for (int r = 0; r < 60; r++) o += sprintf(text + o, "r%d,0.5,%s,1.25,3\n", r, r == 25 ? bad[b] : "2.75");
             lx_batch_table *t = NULL;
             assert_int_equal(lx_batch_table_read_mem(ctx, "b.csv", text, (size_t)o, LX_F64, 1, &t), LX_EPARSE);
-            line[novec] = lx_ctx_errline(ctx);
-            snprintf(msg[novec], sizeof msg[novec], "%s", lx_ctx_errmsg(ctx));
-            unsetenv("LX_SIMD");
+            line[general] = lx_ctx_errline(ctx);
+            snprintf(msg[general], sizeof msg[general], "%s", lx_ctx_errmsg(ctx));
+            lx_test_simd_end();
         }
         assert_int_equal(line[0], 28);
         assert_int_equal(line[1], 28);
@@ -165,12 +205,16 @@ static void test_bad_fields_same_error(void **state)
     }
 }
 
+static void test_bad_fields_avx512(void **state) { bad_fields_same_error(state, LX_SIMD_AVX512); }
+static void test_bad_fields_avx2(void **state) { bad_fields_same_error(state, LX_SIMD_AVX2); }
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_million_against_strtod),
-        cmocka_unit_test(test_widths_and_edges),
-        cmocka_unit_test(test_bad_fields_same_error),
+        cmocka_unit_test(test_million_avx512), cmocka_unit_test(test_million_avx2),
+        cmocka_unit_test(test_million_general), cmocka_unit_test(test_widths_avx512),
+        cmocka_unit_test(test_widths_avx2),    cmocka_unit_test(test_widths_general),
+        cmocka_unit_test(test_bad_fields_avx512), cmocka_unit_test(test_bad_fields_avx2),
     };
     return cmocka_run_group_tests(tests, lx_test_ctx_setup, lx_test_ctx_teardown);
 }

@@ -64,7 +64,8 @@ static void test_scene_inputs(void **state)
     (void)state;
     int n = replay_dir("tests/fuzz/regressions/scene", fuzz_scene_one) + replay_dir("samples/scenes", fuzz_scene_one);
     n += replay_dir("tests/data/scenes", fuzz_scene_one) + replay_dir("tests/bad/scene", fuzz_scene_one);
-    assert_true(n >= 15);
+    n += replay_dir("tests/fuzz/seeds/scene", fuzz_scene_one); /* rooms, surfaces, obstructions */
+    assert_true(n >= 19);
 }
 
 static void test_batch_inputs(void **state)

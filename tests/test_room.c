@@ -171,6 +171,27 @@ static void test_black_room(void **state)
     run_free(&r);
 }
 
+/* A closed room with a desk standing on its floor: every ray from the source ends on a face (the
+ * room's or the desk's; the floor under the desk is no face, the desk's shadow gets nothing), so
+ * the faces' direct flux is Phi; and the faces the desk hides from the source get none of it. */
+static void test_closed_room_with_desk(void **state)
+{
+    lx_ctx *ctx = *state;
+    run r = must_run(ctx, "[scene]\ninterreflection_tolerance = 1e-3\n[room hall]\nsize = 10, 6, 3 m\n"
+                          "[obstruction desk]\nmin = 4.2, 2.6, 0 m\nmax = 5.8, 3.4, 0.75 m\nreflectance = 0.3\n"
+                          "[luminaire l]\ntype = point\nposition = 1.25, 1.5, 2.5 m\nflux = 3000 lm\n"
+                          "[receiver wp]\ntype = grid\nx = 0.5 m, 9.5 m\ny = 0.5 m, 5.5 m\nz = 0.8 m\nspacing = 0.5 m\n");
+    assert_true(r.plan->on[LX_EFFECT_OCCLUSION]); /* no receiver pair is cut, but the desk shadows the floor */
+    lx_assert_near(r.res->room.direct_lm, 3000, 0, 1e-3);
+    /* the desk's faces: exactly I times their solid angles (the rectangle formula), 17.2208574793 lm
+     * for top, xmin and ymin; xmax and ymax face away */
+    const lx_scene_surface_result *s = r.res->surfaces;
+    double desk = s[7].direct_lx * s[7].area_m2 + s[8].direct_lx * s[8].area_m2 + s[10].direct_lx * s[10].area_m2;
+    lx_assert_near(desk, 17.220857479297308, 0, 1e-3);
+    assert_true(s[9].direct_lx == 0 && s[11].direct_lx == 0);
+    run_free(&r);
+}
+
 /* A 4 x 4 floor of exitance M seen from a ceiling point and a wall point: E = M F (closed forms,
  * superposition of Howell's corner rectangles), gathered from the floor's patches. */
 static void test_floor_exitance_gather(void **state)
@@ -550,6 +571,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_floor_exitance_gather, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(test_flux_balance, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(test_black_room, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(test_closed_room_with_desk, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(test_occlusion_umbra, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(test_half_hidden_area_source, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(test_convergence_order, lx_test_ctx_setup, lx_test_ctx_teardown),

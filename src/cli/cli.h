@@ -107,6 +107,17 @@ int cli_table_write(cli_table *t, cli_format fmt, FILE *out, int json_array);
  * output, as cli_table_write). For large batches, so results need not all sit in memory. */
 int cli_table_flush(cli_table *t, cli_format fmt, FILE *out, int json_array, int final);
 void cli_table_free(cli_table *t);
+/* csv: writes the header line unless written already (other formats: nothing). 0, or -1 on a
+ * write error. For rows a command writes itself (cli_csv_field, lx_double_format), which it then
+ * counts with cli_table_count_written. */
+int cli_table_header(cli_table *t, cli_format fmt, FILE *out);
+/* 1 when the table's csv is its first n columns as they are (no unit scaling, no column left
+ * out) and nothing more: a command writing rows itself may then write those n cells. */
+int cli_table_plain_csv(cli_table *t, int n);
+void cli_table_count_written(cli_table *t, size_t rows);
+/* One csv cell of len bytes at s into dst (room for 2 len + 2), quoted as cli_table quotes it
+ * (when it holds , " CR or LF; quotes doubled). Returns the end of what it wrote. */
+char *cli_csv_field(char *dst, const char *s, size_t len);
 int cli_table_rows(const cli_table *t); /* rows added so far, written or not */
 /* A cell holding JSON text, written as it is in json (never NULL: "null" for none). */
 void cli_table_json(cli_table *t, const char *json);
@@ -117,7 +128,7 @@ void cli_table_set_units(cli_table *t, const char *const *units);
 /* Writes s as a JSON string (quoted, escaped). */
 void cli_json_string(FILE *out, const char *s);
 
-/* Prints a double in the shortest form that reads back exactly ("%.17g" trimmed). */
+/* Prints a double in the shortest form that reads back exactly (lx_double_format). */
 void cli_print_exact(FILE *out, double v);
 
 /* ---- atomic output: -o FILE ---- */

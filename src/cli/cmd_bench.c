@@ -1,20 +1,14 @@
 /* cmd_bench.c - `luxcalc bench [TOPIC...]`: measured performance tables (markdown), one function
- * per topic in a table; `spd`: batch integration in memory (CPU and OpenCL) against this machine's
- * read bandwidth, CSV end to end against C strtod and the Python peers, one-file start-up time. */
+ * per topic in a table (src/cli/bench/), each topic's tables printed and, with --dir, written to
+ * DIR/TOPIC.md under a header naming the date, the CPU and the SIMD path. */
 #include "cli.h"
 
 #include <getopt.h>
-#include <math.h>
-#include <pthread.h>
-#include <spawn.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
-
-extern char **environ;
 
 typedef struct bench_ctx {
     FILE *out;       /* the markdown report (stdout or -o FILE) */
@@ -24,7 +18,8 @@ typedef struct bench_ctx {
     const char *outpath; /* -o FILE (accuracy writes its PNG plots beside it) */
 } bench_ctx;
 
-static int bench_spd(bench_ctx *b);
+int cli_bench_spd(FILE *out, const char *tmp, const size_t *sizes, int nsizes); /* bench_spd.c */
+static int bench_spd(bench_ctx *b) { return cli_bench_spd(b->out, b->tmp, b->sizes, b->nsizes); }
 int cli_bench_grid(FILE *out); /* bench_grid.c */
 static int bench_grid(bench_ctx *b) { return cli_bench_grid(b->out); }
 int cli_bench_metrics(FILE *out); /* bench_metrics.c */
@@ -34,6 +29,8 @@ static int bench_lab(bench_ctx *b) { return cli_bench_lab(b->out); }
 
 int cli_bench_irradiance(FILE *out); /* bench_irradiance.c */
 static int bench_irradiance(bench_ctx *b) { return cli_bench_irradiance(b->out); }
+int cli_bench_room(FILE *out); /* bench_room.c */
+static int bench_room(bench_ctx *b) { return cli_bench_room(b->out); }
 int cli_bench_daylight(FILE *out); /* bench_daylight.c */
 static int bench_daylight(bench_ctx *b) { return cli_bench_daylight(b->out); }
 int cli_bench_accuracy(FILE *out, const char *outpath); /* bench_accuracy.c */
@@ -50,514 +47,84 @@ static const struct {
     /* ---- bench topics (one line each: irradiance, grid, accuracy) ---- */
     {"accuracy", bench_accuracy, "error against a reference vs time of every method: spectra, radiance fields, lighting, near field"},
     {"irradiance", bench_irradiance, "irradiance maps: SH9, exact (fast), brute force vs numpy, 512x256..4096x2048"},
+    {"room", bench_room, "interreflection: error of the work-plane mean and worst point against time, tolerance 1e-1..1e-4"},
     {"daylight", bench_daylight, "daylight factor in a 10 x 6 x 3 m room with two windows: error against a converged reference vs time"},
     {NULL, NULL, NULL},
 };
 
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int cmp_d(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : x > y;
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp_d);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-/* ---- read bandwidth: sum a buffer of floats with T threads ---- */
-typedef struct rd_job {
-    const float *p;
-    size_t n;
-    float sum;
-} rd_job;
-
-static void rd_scalar(rd_job *j)
-{
-    float s = 0;
-    for (size_t i = 0; i < j->n; i++) s += j->p[i];
-    j->sum = s;
-}
-
-#if defined(__GNUC__) && defined(__x86_64__)
-typedef float v8f __attribute__((vector_size(32)));
-__attribute__((target("avx2"))) static void rd_avx2(rd_job *j)
-{
-    v8f a = {0}, b = {0}, c = {0}, d = {0};
-    size_t i = 0;
-    for (; i + 32 <= j->n; i += 32) {
-        v8f x, y, z, w;
-        memcpy(&x, j->p + i, 32);
-        memcpy(&y, j->p + i + 8, 32);
-        memcpy(&z, j->p + i + 16, 32);
-        memcpy(&w, j->p + i + 24, 32);
-        a += x, b += y, c += z, d += w;
-    }
-    a += b + c + d;
-    float s = 0;
-    for (int l = 0; l < 8; l++) s += a[l];
-    for (; i < j->n; i++) s += j->p[i];
-    j->sum = s;
-}
-#endif
-
-/* The reader: 4 x 8 floats a step where the CPU has AVX2 (asked of the library's dispatcher: the
- * bandwidth measured is the machine's, whatever LX_SIMD caps), else the plain loop. */
-static void *rd_thread(void *arg)
-{
-#if defined(__GNUC__) && defined(__x86_64__)
-    if (lx_simd_cpu() >= LX_SIMD_AVX2) {
-        rd_avx2(arg);
-        return NULL;
-    }
-#endif
-    rd_scalar(arg);
-    return NULL;
-}
-
-static double read_bandwidth(const float *p, size_t n, int T)
-{
-    double t[5];
-    for (int r = 0; r < 6; r++) {
-        rd_job jobs[16];
-        pthread_t tid[16];
-        double t0 = now_s();
-        for (int i = 0; i < T; i++) {
-            jobs[i].p = p + n * (size_t)i / (size_t)T;
-            jobs[i].n = n * (size_t)(i + 1) / (size_t)T - n * (size_t)i / (size_t)T;
-            if (i) pthread_create(&tid[i], NULL, rd_thread, &jobs[i]);
-        }
-        rd_thread(&jobs[0]);
-        for (int i = 1; i < T; i++) pthread_join(tid[i], NULL);
-        if (r) t[r - 1] = now_s() - t0; /* the first pass warms up */
-        if (jobs[0].sum == -1.0f) fputc(' ', stderr); /* keep the sum alive */
-    }
-    return (double)n * sizeof(float) / median(t, 5);
-}
-
-/* One timed pass of the bandwidth reader over p[0, n) on T threads (threads created per pass, as
- * lx_batch_integrate creates its own): the same data, the same threads and the same front-to-back
- * split as the batch it is compared with. */
-static double read_pass_s(const float *p, size_t n, int T)
-{
-    rd_job jobs[16];
-    pthread_t tid[16];
-    double t0 = now_s();
-    for (int i = 0; i < T; i++) {
-        jobs[i].p = p + n * (size_t)i / (size_t)T;
-        jobs[i].n = n * (size_t)(i + 1) / (size_t)T - n * (size_t)i / (size_t)T;
-        if (i) pthread_create(&tid[i], NULL, rd_thread, &jobs[i]);
-    }
-    rd_thread(&jobs[0]);
-    for (int i = 1; i < T; i++) pthread_join(tid[i], NULL);
-    double t = now_s() - t0;
-    if (jobs[0].sum == -1.0f) fputc(' ', stderr); /* keep the sum alive */
-    return t;
-}
-
-/* ---- data ---- */
-#define NL 471
-/* Smooth spectra 360-830 nm: 64 distinct shapes (two Gaussians and a pedestal), each row scaled. */
-static void make_spectra(float *v, size_t ns)
-{
-    static float base[64][NL];
-    unsigned s = 1;
-    for (int q = 0; q < 64; q++) {
-        double p[5];
-        for (int k = 0; k < 5; k++) {
-            s = s * 1103515245u + 12345u;
-            p[k] = (double)(s >> 8) / 16777216.0;
-        }
-        for (int j = 0; j < NL; j++) {
-            double x = 360 + j;
-            base[q][j] = (float)(p[4] * exp(-0.5 * pow((x - 400 - 350 * p[0]) / (15 + 100 * p[1]), 2)) +
-                                 exp(-0.5 * pow((x - 400 - 350 * p[2]) / (20 + 80 * p[3]), 2)) + 0.05);
-        }
-    }
-    for (size_t i = 0; i < ns; i++) {
-        float k = 0.5f + (float)(i % 997) / 997.0f;
-        const float *bq = base[i % 64];
-        for (int j = 0; j < NL; j++) v[i * NL + j] = bq[j] * k;
-    }
-}
-
-static const lx_function FNS[4] = {LX_FN_XBAR_2, LX_FN_YBAR_2, LX_FN_ZBAR_2, LX_FN_VPRIME};
-
-/* Median seconds of lx_batch_integrate over reps runs after one warm-up; -1 on failure. */
-static double time_batch(lx_ctx *ctx, const lx_batch *bt, lx_backend be, double *out, int reps)
-{
-    double t[9];
-    for (int r = 0; r <= reps; r++) {
-        lx_batch_opts o = {.backend = be};
-        double t0 = now_s();
-        if (lx_batch_integrate(ctx, bt, FNS, 4, &o, out) != LX_OK) return -1;
-        if (r) t[r - 1] = now_s() - t0;
-    }
-    return median(t, reps);
-}
-
-/* Runs a command; returns its standard output (malloc'ed, NULL on failure). */
-static char *capture(char *const argv[], const char *envset)
-{
-    char path[512];
-    snprintf(path, sizeof path, "%s", "/tmp/lxbench-capXXXXXX");
-    int fd = mkstemp(path);
-    if (fd < 0) return NULL;
-    posix_spawn_file_actions_t fa;
-    posix_spawn_file_actions_init(&fa);
-    posix_spawn_file_actions_adddup2(&fa, fd, 1);
-    posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", 0, 0);
-    if (envset) setenv("PERF_DATA", envset, 1);
-    pid_t pid;
-    int rc = posix_spawnp(&pid, argv[0], &fa, NULL, argv, environ);
-    posix_spawn_file_actions_destroy(&fa);
-    int status = 1;
-    if (rc == 0) waitpid(pid, &status, 0);
-    char *buf = NULL;
-    if (rc == 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0) {
-        off_t len = lseek(fd, 0, SEEK_END);
-        buf = malloc((size_t)len + 1);
-        if (buf && pread(fd, buf, (size_t)len, 0) == len) buf[len] = 0;
-        else {
-            free(buf);
-            buf = NULL;
-        }
-    }
-    close(fd);
-    unlink(path);
-    return buf;
-}
-
-static double json_num(const char *js, const char *key)
-{
-    char pat[64];
-    snprintf(pat, sizeof pat, "\"%s\": ", key);
-    const char *p = js ? strstr(js, pat) : NULL;
-    return p ? strtod(p + strlen(pat), NULL) : NAN;
-}
-
-/* Writes N spectra as a numpy-style CSV: a header of wavelengths, then N rows of 471 values. */
-static int write_csv(const char *path, const float *v, size_t ns)
-{
-    FILE *f = fopen(path, "w");
-    if (!f) return -1;
-    for (int j = 0; j < NL; j++) fprintf(f, "%s%d", j ? "," : "", 360 + j);
-    fputc('\n', f);
-    for (size_t i = 0; i < ns; i++)
-        for (int j = 0; j < NL; j++) fprintf(f, "%.6g%c", (double)v[i * NL + j], j == NL - 1 ? '\n' : ',');
-    return fclose(f);
-}
-
-/* The baseline a C programmer writes: fgets + strtod per value, then the cie15 sums. */
-static double strtod_e2e(const char *path, const double *w, size_t *rows)
-{
-    double t0 = now_s();
-    FILE *f = fopen(path, "r");
-    if (!f) return -1;
-    size_t cap = 1 << 16;
-    char *line = malloc(cap);
-    double acc = 0;
-    *rows = 0;
-    int first = 1;
-    while (fgets(line, (int)cap, f)) {
-        if (first) {
-            first = 0;
-            continue;
-        }
-        char *p = line;
-        double s[4] = {0, 0, 0, 0};
-        for (int j = 0; j < NL; j++) {
-            double x = strtod(p, &p);
-            if (*p == ',') p++;
-            for (int k = 0; k < 4; k++) s[k] += x * w[k * NL + j];
-        }
-        acc += s[1];
-        (*rows)++;
-    }
-    fclose(f);
-    free(line);
-    if (acc < 0) fputc(' ', stderr);
-    return now_s() - t0;
-}
-
-static const char *find_peers(char *buf, size_t cap)
-{
-    const char *sd = getenv("LX_SHARED_DIR");
-    const char *cands[3] = {sd, "../shared", "/work/shared"};
-    for (int i = 0; i < 3; i++) {
-        if (!cands[i] || !*cands[i]) continue;
-        snprintf(buf, cap, "%s/peers/spd_text_peers.py", cands[i]);
-        if (access(buf, R_OK) == 0) {
-            snprintf(buf, cap, "%s/peers", cands[i]);
-            return buf;
-        }
-    }
-    return NULL;
-}
-
-static int bench_spd(bench_ctx *b)
-{
-    FILE *o = b->out;
-    size_t nmax = 0;
-    for (int i = 0; i < b->nsizes; i++)
-        if (b->sizes[i] > nmax) nmax = b->sizes[i];
-    float *v = malloc(nmax * NL * sizeof *v);
-    double *out = malloc(nmax * 4 * sizeof *out);
-    if (!v || !out) {
-        cli_error("bench", "out of memory for %zu spectra", nmax);
-        return CLI_RUNTIME;
-    }
-    make_spectra(v, nmax);
-    int cores = (int)sysconf(_SC_NPROCESSORS_ONLN);
-    if (cores < 1) cores = 1;
-    if (cores > 16) cores = 16;
-    size_t bw_n = nmax * NL < (size_t)64 << 20 ? (size_t)64 << 20 : nmax * NL; /* at least 256 MB */
-    float *bw_buf = bw_n > nmax * NL ? malloc(bw_n * sizeof *bw_buf) : v;
-    if (!bw_buf) bw_buf = v, bw_n = nmax * NL;
-    if (bw_buf != v)
-        for (size_t i = 0; i < bw_n; i++) bw_buf[i] = (float)(i & 1023); /* real pages, not the zero page */
-    double bw1 = read_bandwidth(bw_buf, bw_n, 1), bwT = read_bandwidth(bw_buf, bw_n, cores);
-    if (bw_buf != v) free(bw_buf);
-    fprintf(o, "## bench spd: spectra of %d samples (360-830 nm, 1 nm) -> X, Y, Z, V' (float input, double sums)\n\n", NL);
-    fprintf(o, "Read bandwidth measured in this run (sum of floats, %zu MB): %.1f GB/s on 1 thread, %.1f GB/s on %d.\n\n",
-            bw_n * 4 >> 20, bw1 / 1e9, bwT / 1e9, cores);
-
-    lx_ctx *ctx = cli_ctx("bench");
-    if (!ctx) return CLI_RUNTIME;
-    /* OpenCL cold start on a fresh context: device, context, queue, program build, first call */
-    double cold = -1;
-    lx_cl_device_info info;
-    memset(&info, 0, sizeof info);
-    {
-        lx_batch one = {.n_spectra = 1, .n_lambda = NL, .start_nm = 360, .step_nm = 1, .dtype = LX_F32, .values = v};
-        lx_batch_opts oo = {.backend = LX_BACKEND_OPENCL};
-        double t0 = now_s();
-        if (lx_batch_integrate(ctx, &one, FNS, 4, &oo, out) == LX_OK) cold = now_s() - t0;
-        lx_cl_info(ctx, &info);
-    }
-    /* In memory: for each N, 9 interleaved pairs (read the batch's own buffer with the bandwidth
-     * reader, then integrate it), so both see the same data, threads and load; the ratio column
-     * is the median of the 9 per-pair ratios (robust to load changing during the run). */
-    fprintf(o, "| N | CPU spectra/s | CPU GB/s | read GB/s (same buffer) | CPU / read (median of pairs) | CPU / bandwidth above | "
-               "OpenCL spectra/s | OpenCL / bandwidth above | OpenCL compensated float |\n");
-    fprintf(o, "|---|---|---|---|---|---|---|---|---|\n");
-    double last_cpu = 0, last_cl = 0;
-    for (int i = 0; i < b->nsizes; i++) {
-        size_t n = b->sizes[i];
-        lx_batch bt = {.n_spectra = n, .n_lambda = NL, .start_nm = 360, .step_nm = 1, .dtype = LX_F32, .values = v};
-        double bytes = (double)n * NL * sizeof(float);
-        enum { PAIRS = 9 };
-        double tcs[PAIRS], trs[PAIRS], ratio[PAIRS];
-        int failed = 0;
-        time_batch(ctx, &bt, LX_BACKEND_CPU, out, 1); /* warm-up */
-        for (int r = 0; r < PAIRS && !failed; r++) {
-            trs[r] = read_pass_s(v, n * NL, cores);
-            lx_batch_opts oc = {.backend = LX_BACKEND_CPU};
-            double t0 = now_s();
-            failed = lx_batch_integrate(ctx, &bt, FNS, 4, &oc, out) != LX_OK;
-            tcs[r] = now_s() - t0;
-            ratio[r] = trs[r] / tcs[r];
-        }
-        double tc = median(tcs, PAIRS), tr = median(trs, PAIRS), rr = median(ratio, PAIRS);
-        double tg = cold >= 0 ? time_batch(ctx, &bt, LX_BACKEND_OPENCL, out, 5) : -1;
-        setenv("LX_CL_ACCUM", "kahan", 1);
-        double tk = cold >= 0 ? time_batch(ctx, &bt, LX_BACKEND_OPENCL, out, 5) : -1;
-        unsetenv("LX_CL_ACCUM");
-        fprintf(o, "| %.0e | %.3g M | %.1f | %.1f | %.0f %% | %.0f %% |", (double)n, n / tc / 1e6, bytes / tc / 1e9,
-                bytes / tr / 1e9, 100 * rr, 100 * bytes / tc / bwT);
-        if (tg > 0) fprintf(o, " %.3g M | %.0f %% | %.3g M |\n", n / tg / 1e6, 100 * bytes / tg / bwT, n / tk / 1e6);
-        else fprintf(o, " no OpenCL | | |\n");
-        last_cpu = tc / (double)n;
-        last_cl = tg > 0 ? tg / (double)n : 0;
-    }
-    fprintf(o, "\n");
-    if (cold >= 0) {
-        fprintf(o, "OpenCL device: %s (%s), %u compute units, fp64 %s. Cold start (context, queue, program build, "
-                   "first call): %.3f s (PoCL kernel cache in POCL_CACHE_DIR makes later starts faster).\n",
-                info.device_name, info.platform_name, info.compute_units, info.fp64 ? "yes" : "no", cold);
-        if (last_cl > 0 && last_cl < last_cpu)
-            fprintf(o, "Break-even for `auto` (cold): N = %.3g spectra (start-up / per-spectrum saving).\n\n",
-                    cold / (last_cpu - last_cl));
-        else
-            fprintf(o, "Break-even for `auto`: never on this device: OpenCL is not faster per spectrum than the CPU "
-                       "path (%.3g vs %.3g us per spectrum at the largest N), so `auto` keeps the CPU.\n\n",
-                    last_cl * 1e6, last_cpu * 1e6);
-    } else {
-        fprintf(o, "OpenCL: not available (%s).\n\n", lx_ctx_errmsg(ctx));
-    }
-
-    /* ---- CSV end to end ---- */
-    char pbuf[512], path[600], cmf[600];
-    const char *peers = find_peers(pbuf, sizeof pbuf);
-    const char *py = getenv("LX_PEERS_PYTHON");
-    if (!py || !*py) py = "python3";
-    char *const pycheck[] = {(char *)py, "-c", "import numpy, colour; print(1)", NULL};
-    char *ok = peers ? capture(pycheck, NULL) : NULL;
-    int have_py = ok != NULL;
-    free(ok);
-    /* the CMF table the peer scripts read (cmf_1931_2.bin: 471 x 3 doubles) */
-    snprintf(cmf, sizeof cmf, "%s/cmf_1931_2.bin", b->tmp);
-    {
-        FILE *f = fopen(cmf, "wb");
-        lx_spd fx[3];
-        for (int k = 0; k < 3; k++) lx_function_get(ctx, FNS[k], &fx[k]);
-        for (int j = 0; f && j < NL; j++)
-            for (int k = 0; k < 3; k++) fwrite(&fx[k].value[j], sizeof(double), 1, f);
-        if (f) fclose(f);
-    }
-    double w[4 * NL];
-    for (int k = 0; k < 4; k++) {
-        lx_spd fx;
-        lx_function_get(ctx, FNS[k], &fx);
-        for (int j = 0; j < NL; j++) w[k * NL + j] = 0;
-        for (size_t j = 0; j < fx.n; j++) w[k * NL + (int)(fx.lambda_nm[j] - 360)] = fx.value[j];
-    }
-    fprintf(o, "CSV end to end (file in the page cache -> X, Y, Z, V'), medians of 3, seconds:\n\n");
-    fprintf(o, "| N | MB | luxcalc | MB/s | C strtod | numpy loadtxt + matmul | colour msds_to_XYZ (in memory) | vs strtod | vs numpy |\n");
-    fprintf(o, "|---|---|---|---|---|---|---|---|---|\n");
-    for (int i = 0; i < b->nsizes; i++) {
-        size_t n = b->sizes[i];
-        if (n > 100000) continue; /* a 4 GB text file says nothing more */
-        snprintf(path, sizeof path, "%s/spd_%zu.csv", b->tmp, n);
-        if (write_csv(path, v, n) != 0) {
-            cli_error("bench", "%s: cannot write", path);
-            break;
-        }
-        struct stat stt;
-        stat(path, &stt);
-        double tl[3], ts[3];
-        size_t rows = 0;
-        for (int r = 0; r < 3; r++) {
-            /* the library's CSV path end to end: mapped file, parsed on every core chunk by
-             * chunk, each chunk integrated while the next one parses */
-            double t0 = now_s(), *res = NULL;
-            size_t got = 0;
-            if (lx_batch_table_integrate_file(ctx, path, FNS, 4, 0, &res, &got) != LX_OK || got != n) {
-                cli_fail("bench", ctx, LX_EPARSE);
-                lx_batch_results_free(res);
-                break;
-            }
-            tl[r] = now_s() - t0;
-            lx_batch_results_free(res);
-            ts[r] = strtod_e2e(path, w, &rows);
-        }
-        double ml = median(tl, 3), ms = median(ts, 3);
-        double np_s = NAN, col = NAN;
-        if (have_py) {
-            char script[600], nbuf[32];
-            snprintf(script, sizeof script, "%s/spd_text_peers.py", peers);
-            snprintf(nbuf, sizeof nbuf, "%zu", n);
-            char *const a1[] = {(char *)py, script, "csv_np_loadtxt", nbuf, NULL};
-            char *js = capture(a1, b->tmp);
-            np_s = json_num(js, "total_s");
-            free(js);
-            /* colour-science on the same spectra in memory (its binary input file) */
-            char bin[600];
-            snprintf(bin, sizeof bin, "%s/spd_%zu_f32.bin", b->tmp, n);
-            FILE *f = fopen(bin, "wb");
-            if (f) {
-                fwrite(v, sizeof(float), n * NL, f);
-                fclose(f);
-                snprintf(script, sizeof script, "%s/spd_xyz_peers.py", peers);
-                char *const a2[] = {(char *)py, script, "colour_msds_nd", nbuf, "f32", "3", NULL};
-                js = capture(a2, b->tmp);
-                col = json_num(js, "median_s");
-                free(js);
-                unlink(bin);
-            }
-        }
-        fprintf(o, "| %.0e | %.1f | %.4f | %.0f | %.4f |", (double)n, stt.st_size / 1e6, ml, stt.st_size / ml / 1e6, ms);
-        if (isnan(np_s)) fprintf(o, " not installed |");
-        else fprintf(o, " %.4f |", np_s);
-        if (isnan(col)) fprintf(o, " not installed |");
-        else fprintf(o, " %.4f |", col);
-        fprintf(o, " %.1fx |", ms / ml);
-        if (isnan(np_s)) fprintf(o, " - |\n");
-        else fprintf(o, " %.1fx |\n", np_s / ml);
-        unlink(path);
-    }
-    unlink(cmf);
-    fprintf(o, "\n");
-
-    /* ---- one small file, whole process ---- */
-    char self[512];
-    ssize_t sl = readlink("/proc/self/exe", self, sizeof self - 1);
-    if (sl > 0) {
-        self[sl] = 0;
-        snprintf(path, sizeof path, "%s/one.csv", b->tmp);
-        FILE *f = fopen(path, "w");
-        if (f) {
-            fprintf(f, "wavelength_nm,value\n");
-            for (int j = 0; j < 81; j++) fprintf(f, "%d,%.6g\n", 380 + 5 * j, lx_illuminant_a(380 + 5 * j));
-            fclose(f);
-            double t[11];
-            int good = 1;
-            for (int r = 0; r < 11 && good; r++) {
-                char *const a[] = {self, "spd", "--format", "csv", path, NULL};
-                double t0 = now_s();
-                char *res = capture(a, NULL);
-                t[r] = now_s() - t0;
-                good = res != NULL;
-                free(res);
-            }
-            if (good) fprintf(o, "`luxcalc spd` on one 81-sample file, whole process (spawn to exit), median of 11: %.2f ms.\n",
-                              median(t, 11) * 1e3);
-            else fprintf(o, "`luxcalc spd` on one small file: the command failed.\n");
-            /* the peer's start-up alone: what a one-off calculation costs in Python */
-            double tp[3];
-            int have = 1;
-            for (int r = 0; r < 3 && have; r++) {
-                char *const a[] = {(char *)py, "-c", "import colour", NULL};
-                double t0 = now_s();
-                char *res = capture(a, NULL);
-                tp[r] = now_s() - t0;
-                have = res != NULL;
-                free(res);
-            }
-            if (have) fprintf(o, "Beside it, `%s -c 'import colour'` (colour-science start-up alone), median of 3: %.0f ms.\n\n", py,
-                              median(tp, 3) * 1e3);
-            else fprintf(o, "Beside it, `%s -c 'import colour'`: colour-science not installed.\n\n", py);
-            unlink(path);
-        }
-    }
-    lx_ctx_destroy(ctx);
-    free(v);
-    free(out);
-    return CLI_OK;
-}
-
 static const char help[] =
     "usage: luxcalc bench [OPTIONS] [TOPIC...]\n"
     "\n"
-    "Measures and prints performance tables as markdown (all topics when none is named).\n"
+    "Measures and prints performance tables as markdown (all topics when none is named), each topic\n"
+    "under a header naming the date, the CPU model, its cores and the SIMD path in use.\n"
     "\n"
     "options:\n"
     "  --sizes N,N,...   batch sizes for spd (default 1e4,1e5,1e6)\n"
-    "  -o FILE           also write the tables to FILE (atomically)\n"
+    "  --dir DIR         also write each topic to DIR/TOPIC.md (atomically; make bench: samples/bench)\n"
+    "  -o FILE           also write all the tables to FILE (atomically)\n"
     "  -h, --help        this help\n"
     "\n"
     "environment: LX_SHARED_DIR (the peers' folder: LX_SHARED_DIR/peers, else ../shared/peers),\n"
-    "LX_PEERS_PYTHON (a python with numpy and colour-science; default python3).\n"
+    "LX_PEERS_PYTHON (a python with numpy and colour-science; default python3), LX_SIMD (caps the\n"
+    "path; spd measures every path the CPU has in any case).\n"
     "\n"
     "example:\n"
-    "  luxcalc bench spd --sizes 1e4,1e5 -o bench.md\n";
+    "  luxcalc bench spd --sizes 1e4,1e5 -o bench.md\n"
+    "  luxcalc bench --dir samples/bench\n";
+
+/* "AMD EPYC 9R45 ..." from /proc/cpuinfo ("unknown CPU" elsewhere) */
+static void cpu_model(char *buf, size_t cap)
+{
+    snprintf(buf, cap, "unknown CPU");
+    FILE *f = fopen("/proc/cpuinfo", "r");
+    if (!f) return;
+    char line[512];
+    while (fgets(line, sizeof line, f)) {
+        char *c = strchr(line, ':');
+        if (strncmp(line, "model name", 10) != 0 || !c) continue;
+        c++;
+        while (*c == ' ' || *c == '\t') c++;
+        c[strcspn(c, "\n")] = 0;
+        snprintf(buf, cap, "%s", c);
+        break;
+    }
+    fclose(f);
+}
+
+/* The header of a topic's tables: what ran, when, on what. */
+static void topic_header(FILE *o, const char *topic)
+{
+    char cpu[256], when[64];
+    cpu_model(cpu, sizeof cpu);
+    time_t now = time(NULL);
+    struct tm tmv;
+    gmtime_r(&now, &tmv);
+    strftime(when, sizeof when, "%Y-%m-%d %H:%M UTC", &tmv);
+    double load = -1;
+    FILE *f = fopen("/proc/loadavg", "r");
+    if (f) {
+        if (fscanf(f, "%lf", &load) != 1) load = -1;
+        fclose(f);
+    }
+    const char *cap = getenv("LX_SIMD");
+    fprintf(o, "# luxcalc bench %s\n\n", topic);
+    fprintf(o, "Measured %s by `luxcalc bench %s` (luxcalc %s) on %s, %ld cores online; SIMD path %s (the CPU's "
+               "widest: %s%s%s%s)",
+            when, topic, lx_version(), cpu, sysconf(_SC_NPROCESSORS_ONLN), lx_simd_name(lx_simd_level()),
+            lx_simd_name(lx_simd_cpu()), cap && *cap ? "; LX_SIMD=" : "", cap && *cap ? cap : "", "");
+    if (load >= 0) fprintf(o, "; load average %.2f at the start", load);
+    fprintf(o, ".\n\n");
+}
 
 int cmd_bench(int argc, char **argv)
 {
     static const struct option opts[] = {
         {"sizes", required_argument, NULL, 's'}, {"output", required_argument, NULL, 'o'},
-        {"format", required_argument, NULL, 'f'}, {"help", no_argument, NULL, 'h'}, {NULL, 0, NULL, 0},
+        {"format", required_argument, NULL, 'f'}, {"dir", required_argument, NULL, 'd'},
+        {"help", no_argument, NULL, 'h'},         {NULL, 0, NULL, 0},
     };
     bench_ctx b = {.out = stdout, .sizes = {10000, 100000, 1000000}, .nsizes = 3};
-    const char *outpath = NULL;
+    const char *outpath = NULL, *dir = NULL;
     int c;
     optind = 1;
     while ((c = getopt_long(argc, argv, ":o:h", opts, NULL)) != -1) {
@@ -575,6 +142,7 @@ int cmd_bench(int argc, char **argv)
             break;
         }
         case 'o': outpath = b.outpath = optarg; break;
+        case 'd': dir = optarg; break;
         case 'f': break; /* the report is markdown in every format */
         case 'h':
             cli_print_help(help);
@@ -589,43 +157,58 @@ int cmd_bench(int argc, char **argv)
         for (int t = 0; topics[t].name; t++) found |= !strcmp(argv[i], topics[t].name);
         if (!found) return cli_error("bench", "unknown topic '%s' (luxcalc bench --help lists them)", argv[i]), CLI_USAGE;
     }
+    struct stat sb;
+    if (dir && (stat(dir, &sb) != 0 || !S_ISDIR(sb.st_mode)) && mkdir(dir, 0777) != 0)
+        return cli_error("bench", "--dir %s: cannot create the directory", dir), CLI_USAGE;
     char tmp[] = "/tmp/luxcalc-bench-XXXXXX";
     if (!mkdtemp(tmp)) return cli_error("bench", "cannot create a scratch directory in /tmp"), CLI_RUNTIME;
     b.tmp = tmp;
-    cli_output file = {0};
-    FILE *mem = NULL;
-    char *membuf = NULL;
-    size_t memlen = 0;
-    if (outpath) {
-        mem = open_memstream(&membuf, &memlen);
-        if (!mem) return CLI_RUNTIME;
-    }
+    FILE *all = NULL; /* -o: every topic */
+    char *allbuf = NULL;
+    size_t alllen = 0;
+    if (outpath && !(all = open_memstream(&allbuf, &alllen))) return CLI_RUNTIME;
     int rc = CLI_OK;
-    size_t shown = 0;
     for (int t = 0; topics[t].name; t++) {
         int wanted = optind >= argc;
         for (int i = optind; i < argc; i++) wanted |= !strcmp(argv[i], topics[t].name);
         if (!wanted) continue;
-        b.out = mem ? mem : stdout;
+        /* each topic into memory, then to stdout, -o and DIR/TOPIC.md */
+        char *buf = NULL;
+        size_t len = 0;
+        FILE *mem = open_memstream(&buf, &len);
+        if (!mem) return CLI_RUNTIME;
+        topic_header(mem, topics[t].name);
+        b.out = mem;
         int r = topics[t].run(&b);
         if (r) rc = r;
-        if (mem) {
-            fflush(mem);
-            fwrite(membuf + shown, 1, memlen - shown, stdout);
-            shown = memlen;
-            fflush(stdout);
+        fclose(mem);
+        fwrite(buf, 1, len, stdout);
+        fflush(stdout);
+        if (all) fwrite(buf, 1, len, all);
+        if (dir && r == CLI_OK) {
+            char path[1024];
+            snprintf(path, sizeof path, "%s/%s.md", dir, topics[t].name);
+            cli_output file = {0};
+            if (cli_output_open(&file, path, "bench") == 0) {
+                fwrite(buf, 1, len, file.fp);
+                if (cli_output_close(&file, 1, "bench")) rc = CLI_RUNTIME;
+            } else {
+                rc = CLI_RUNTIME;
+            }
         }
+        free(buf);
     }
     rmdir(tmp);
-    if (mem) {
-        fclose(mem);
+    if (all) {
+        fclose(all);
+        cli_output file = {0};
         if (cli_output_open(&file, outpath, "bench") == 0) {
-            fwrite(membuf, 1, memlen, file.fp);
+            fwrite(allbuf, 1, alllen, file.fp);
             if (cli_output_close(&file, 1, "bench")) rc = CLI_RUNTIME;
         } else {
             rc = CLI_RUNTIME;
         }
-        free(membuf);
+        free(allbuf);
     }
     return rc;
 }

@@ -134,6 +134,13 @@ static int spd_open(spd_out *so)
     return 0;
 }
 
+static FILE *spd_out_fp(void *arg)
+{
+    spd_out *so = arg;
+    if (!so->opened && !so->failed) spd_open(so);
+    return so->failed ? NULL : so->o.fp;
+}
+
 static void spd_flush(void *arg)
 {
     spd_out *so = arg;
@@ -402,18 +409,19 @@ static void do_file(spd_run *R, const char *arg, double g_start, double g_step, 
         spd_flush(&R->so);
         return;
     }
-    /* rows-layout files: streamed, integrated chunk by chunk (spd_batch.c); else the general reader */
+    /* rows-layout files: streamed, part by part on every core (spd_stream.c); else the general
+     * reader (a pipe the stream looked at comes back read) */
     set_unit(R, a->unit);
     R->B.unit = units[a->unit].name;
+    lx_spd_set *set = NULL;
     int streamed = (!a->msel.any || cli_metrics_batchable(&a->msel)) && !a->report_dir && !a->reader_opts
-                       ? cli_spd_batch_file(&R->B, arg) : 0;
+                       ? cli_spd_batch_file(&R->B, arg, &set) : 0;
     if (streamed < 0 && -streamed > R->rc) R->rc = -streamed;
     if (streamed) {
         spd_flush(&R->so);
         return;
     }
-    lx_spd_set *set = NULL;
-    lx_status st = lx_spd_read_file_opts(R->ctx, arg, &a->ropts, &set);
+    lx_status st = set ? LX_OK : lx_spd_read_file_opts(R->ctx, arg, &a->ropts, &set);
     if (st != LX_OK) {
         fail(R, st);
         return;
@@ -482,7 +490,8 @@ int cmd_spd(int argc, char **argv)
     R->table_unit = a.unit;
     R->so.t = R->t, R->so.fmt = (cli_format)a.fmt, R->so.cmd = cmd, R->so.path = a.outpath;
     cli_spd_batch B = {ctx, cmd, R->t, a.obs, a.method, backend, a.backend_given, spd_flush, &R->so, 0,
-                       a.msel.any ? &a.msel : NULL, units[a.unit].name, NULL, NULL};
+                       a.msel.any ? &a.msel : NULL, units[a.unit].name, NULL, NULL, (cli_format)a.fmt,
+                       spd_out_fp, a.outpath && strcmp(a.outpath, "-") != 0, &a.ropts};
     R->B = B;
     R->reports.cmd = cmd, R->reports.dir = a.report_dir;
     R->reports.opts.observer = a.obs, R->reports.opts.unit = units[a.unit].name, R->reports.opts.diagram = a.diagram;

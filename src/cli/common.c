@@ -109,12 +109,9 @@ void cli_print_help(const char *text) { fputs(text, stdout); }
 
 void cli_print_exact(FILE *out, double v)
 {
-    char buf[64];
-    for (int prec = 15; prec <= 17; prec++) { /* shortest of %.15g..%.17g that reads back exactly */
-        snprintf(buf, sizeof buf, "%.*g", prec, v);
-        if (strtod(buf, NULL) == v) break;
-    }
-    fputs(buf, out);
+    char buf[LX_DOUBLE_CHARS];
+    size_t n = lx_double_format(v, buf); /* the shortest text that reads back exactly */
+    fwrite(buf, 1, n, out);
 }
 
 /* ---- the result table ---- */
@@ -216,18 +213,32 @@ void cli_table_free(cli_table *t)
     free(t);
 }
 
+char *cli_csv_field(char *dst, const char *s, size_t len)
+{
+    if (memchr(s, ',', len) || memchr(s, '"', len) || memchr(s, '\n', len) || memchr(s, '\r', len)) {
+        *dst++ = '"';
+        for (size_t i = 0; i < len; i++) {
+            if (s[i] == '"') *dst++ = '"';
+            *dst++ = s[i];
+        }
+        *dst++ = '"';
+    } else {
+        memcpy(dst, s, len);
+        dst += len;
+    }
+    return dst;
+}
+
 static void csv_str(FILE *out, const char *s)
 {
-    if (strpbrk(s, ",\"\n\r")) {
-        fputc('"', out);
-        for (; *s; s++) {
-            if (*s == '"') fputc('"', out);
-            fputc(*s, out);
-        }
-        fputc('"', out);
-    } else {
-        fputs(s, out);
+    size_t n = strlen(s);
+    char stack[256], *b = 2 * n + 2 <= sizeof stack ? stack : malloc(2 * n + 2);
+    if (!b) {
+        fprintf(stderr, "luxcalc: out of memory\n");
+        exit(CLI_RUNTIME);
     }
+    fwrite(b, 1, (size_t)(cli_csv_field(b, s, n) - b), out);
+    if (b != stack) free(b);
 }
 
 static void tsv_str(FILE *out, const char *s)
@@ -336,6 +347,27 @@ int cli_table_flush(cli_table *t, cli_format fmt, FILE *out, int json_array, int
     if (final && fmt == CLI_FMT_JSON && t->json_array) fputs(t->emitted ? "\n]\n" : "]\n", out);
     return ferror(out) ? -1 : 0;
 }
+
+int cli_table_header(cli_table *t, cli_format fmt, FILE *out)
+{
+    if (fmt != CLI_FMT_CSV || t->header_done) return 0;
+    if (make_columns(t)) return -1;
+    for (int c = 0, k = 0; c < t->ncols; c++)
+        if (shown(t, c, fmt)) fprintf(out, "%s%s", k++ ? "," : "", t->col[c].name);
+    fputc('\n', out);
+    t->header_done = 1;
+    return ferror(out) ? -1 : 0;
+}
+
+int cli_table_plain_csv(cli_table *t, int n)
+{
+    if (make_columns(t) || n > t->ncols) return 0;
+    for (int c = 0; c < t->ncols; c++)
+        if ((c < n && (t->col[c].scale != 1 || !shown(t, c, CLI_FMT_CSV))) || (c >= n && shown(t, c, CLI_FMT_CSV))) return 0;
+    return 1;
+}
+
+void cli_table_count_written(cli_table *t, size_t rows) { t->emitted += rows; }
 
 int cli_table_write(cli_table *t, cli_format fmt, FILE *out, int json_array)
 {

@@ -1,5 +1,6 @@
 /* progress.c - a progress bar on stderr for long batches: only when stderr is a terminal and not
- * with -q, redrawn with '\r' at most ~10 times a second, coloured unless NO_COLOR is set. */
+ * with -q, redrawn with '\r' at most ~10 times a second, coloured unless NO_COLOR is set; counts
+ * units (spectra) or bytes read (then the rate and the time left too). */
 #include "progress.h"
 
 #include "cli.h"
@@ -14,7 +15,7 @@
 #define REDRAW_S 0.1
 
 static struct {
-    int on, colour;
+    int on, colour, bytes;
     size_t total, done;
     double t0, last;
     char label[48];
@@ -27,8 +28,53 @@ static double now_s(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+/* "4.23 GB", "812 MB", "12.5 kB" */
+static void human(char *buf, size_t cap, double b)
+{
+    static const char *u[] = {"B", "kB", "MB", "GB", "TB"};
+    int k = 0;
+    while (b >= 1000 && k < 4) b /= 1000, k++;
+    snprintf(buf, cap, b >= 99.95 || k == 0 ? "%.0f %s" : b >= 9.995 ? "%.1f %s" : "%.2f %s", b, u[k]);
+}
+
+static void draw_bytes(void)
+{
+    double el = now_s() - P.t0, rate = el > 0 ? (double)P.done / el : 0;
+    char done[32], total[32], r[32], left[32] = "";
+    human(done, sizeof done, (double)P.done);
+    human(r, sizeof r, rate);
+    if (!P.total) { /* a pipe: no size, no bar */
+        fprintf(stderr, "\r%s %s read, %s/s, %.0f s ", P.label, done, r, el);
+        fflush(stderr);
+        return;
+    }
+    double f = (double)P.done / (double)P.total;
+    if (f > 1) f = 1;
+    human(total, sizeof total, (double)P.total);
+    if (rate > 0 && P.done < P.total) {
+        double s = (double)(P.total - P.done) / rate;
+        if (s < 90) snprintf(left, sizeof left, ", %.0f s left", s);
+        else snprintf(left, sizeof left, ", %.0f min left", s / 60);
+    }
+    int fill = (int)(f * BAR_WIDTH + 0.5);
+    char bar[BAR_WIDTH + 1];
+    memset(bar, '#', (size_t)fill);
+    memset(bar + fill, '-', (size_t)(BAR_WIDTH - fill));
+    bar[BAR_WIDTH] = 0;
+    if (P.colour)
+        fprintf(stderr, "\r%s \033[32m%.*s\033[2m%s\033[0m %5.1f%% %s of %s, %s/s%s ", P.label, fill, bar, bar + fill,
+                100 * f, done, total, r, left);
+    else
+        fprintf(stderr, "\r%s [%s] %5.1f%% %s of %s, %s/s%s ", P.label, bar, 100 * f, done, total, r, left);
+    fflush(stderr);
+}
+
 static void draw(void)
 {
+    if (P.bytes) {
+        draw_bytes();
+        return;
+    }
     double f = P.total ? (double)P.done / (double)P.total : 1.0;
     if (f > 1) f = 1;
     int fill = (int)(f * BAR_WIDTH + 0.5);
@@ -45,10 +91,11 @@ static void draw(void)
     fflush(stderr);
 }
 
-void cli_progress_start(size_t total, const char *label)
+static void start(size_t total, const char *label, int bytes)
 {
     P.on = 0;
-    if (total == 0 || cli_quiet || !isatty(STDERR_FILENO)) return;
+    P.bytes = bytes;
+    if ((total == 0 && !bytes) || cli_quiet || !isatty(STDERR_FILENO)) return;
     const char *nc = getenv("NO_COLOR");
     P.colour = !(nc && *nc);
     P.total = total;
@@ -61,6 +108,11 @@ void cli_progress_start(size_t total, const char *label)
     P.on = 1;
     draw();
 }
+
+void cli_progress_start_bytes(unsigned long long total, const char *label) { start((size_t)total, label, 1); }
+
+void cli_progress_start(size_t total, const char *label) { start(total, label, 0); }
+
 
 void cli_progress_update(size_t done)
 {
@@ -75,10 +127,10 @@ void cli_progress_update(size_t done)
 void cli_progress_end(void)
 {
     if (!P.on) return;
-    P.done = P.total;
+    if (!P.bytes) P.done = P.total;
     draw();
     /* erase the line with spaces (no escape codes, so NO_COLOR output stays plain) */
-    size_t n = strlen(P.label) + BAR_WIDTH + 48;
+    size_t n = strlen(P.label) + BAR_WIDTH + (P.bytes ? 80 : 48);
     fputc('\r', stderr);
     for (size_t i = 0; i < n; i++) fputc(' ', stderr);
     fputc('\r', stderr);

@@ -1,6 +1,7 @@
 /* spd_batch.c - the batch paths of `luxcalc spd`: many spectra on one uniform grid go through
  * lx_batch_colorimetry (vectorised, threaded, OpenCL when asked or large), and raw float32 input
- * (--input-format f32 --grid START:END:STEP) for pipelines whose data is already numeric. */
+ * (--input-format f32 --grid START:END:STEP) for pipelines whose data is already numeric.
+ * Rows-layout CSV files are streamed by spd_stream.c. */
 #include "spd_batch.h"
 #include "progress.h"
 
@@ -12,8 +13,8 @@
 
 #define CHUNK 65536 /* spectra per batch call: bounds memory, lets output stream */
 
-static void add_row(cli_spd_batch *B, const char *file, const char *name, const lx_colorimetry *r, const lx_par *par,
-                    const lx_hazard *hz, const lx_binning *bin)
+void cli_spd_add_row(cli_spd_batch *B, const char *file, const char *name, const lx_colorimetry *r, const lx_par *par,
+                     const lx_hazard *hz, const lx_binning *bin)
 {
     cli_table *t = B->table;
     cli_table_str(t, file);
@@ -27,17 +28,12 @@ static void add_row(cli_spd_batch *B, const char *file, const char *name, const 
     cli_table_json(t, B->instrument);
 }
 
-/* The metric integrals of a batch for rows [0, n) (each array NULL when not needed). */
-typedef struct lab {
-    lx_par *par;
-    lx_hazard *hz;
-    lx_binning *bin;
-} lab;
+typedef cli_spd_lab lab;
 
-static void lab_free(lab *L) { free(L->par), free(L->hz), free(L->bin); }
+void cli_spd_lab_free(cli_spd_lab *L) { free(L->par), free(L->hz), free(L->bin); }
 
-static lx_status lab_compute(cli_spd_batch *B, const lx_batch *b, const lx_colorimetry *res, lx_batch_opts *opts,
-                             lab *L)
+lx_status cli_spd_lab_compute(cli_spd_batch *B, const lx_batch *b, const lx_colorimetry *res, lx_batch_opts *opts,
+                              cli_spd_lab *L)
 {
     memset(L, 0, sizeof *L);
     const cli_metrics *m = B->metrics;
@@ -58,7 +54,7 @@ static lx_status lab_compute(cli_spd_batch *B, const lx_batch *b, const lx_color
 }
 
 /* The largest |value| of spectrum i of b (for the overflow message). */
-static double row_max_abs(const lx_batch *b, size_t i)
+double cli_spd_row_max_abs(const lx_batch *b, size_t i)
 {
     size_t stride = b->row_stride ? b->row_stride : b->n_lambda;
     double m = 0;
@@ -84,12 +80,12 @@ static lx_status run_chunk(cli_spd_batch *B, const lx_batch *b, const char *file
     opts.backend = B->backend;
     lab L = {0};
     lx_status st = lx_batch_colorimetry(B->ctx, b, B->observer, &opts, res);
-    if (st == LX_OK) st = lab_compute(B, b, res, &opts, &L);
+    if (st == LX_OK) st = cli_spd_lab_compute(B, b, res, &opts, &L);
     if (st == LX_OK) {
         char idx[32];
         for (size_t i = 0; i < b->n_spectra; i++) {
             const char *name = names ? names[i] : (snprintf(idx, sizeof idx, "%zu", i0 + i + 1), idx);
-            if (lx_colorimetry_check(B->ctx, &res[i], row_max_abs(b, i)) != LX_OK) {
+            if (lx_colorimetry_check(B->ctx, &res[i], cli_spd_row_max_abs(b, i)) != LX_OK) {
                 if (lines) cli_error(B->cmd, "%s:%ld: spectrum '%s': %s", file, lines[i], name, lx_ctx_errmsg(B->ctx));
                 else cli_error(B->cmd, "%s: spectrum %s: %s", file, name, lx_ctx_errmsg(B->ctx));
                 B->rejected++;
@@ -99,11 +95,11 @@ static lx_status run_chunk(cli_spd_batch *B, const lx_batch *b, const char *file
                 }
                 continue;
             }
-            add_row(B, file, name, &res[i], L.par ? &L.par[i] : NULL, L.hz ? &L.hz[i] : NULL, L.bin ? &L.bin[i] : NULL);
+            cli_spd_add_row(B, file, name, &res[i], L.par ? &L.par[i] : NULL, L.hz ? &L.hz[i] : NULL, L.bin ? &L.bin[i] : NULL);
         }
         if (B->flush) B->flush(B->flush_arg);
     }
-    lab_free(&L);
+    cli_spd_lab_free(&L);
     free(res);
     return st;
 }
@@ -152,200 +148,6 @@ lx_status cli_spd_batch_set(cli_spd_batch *B, const lx_spd_set *set)
     }
     cli_progress_end();
     return st;
-}
-
-/* ---- rows-layout files streamed (lx_batch_table_stream) ---- */
-
-typedef struct stream_acc {
-    cli_spd_batch *B;
-    const char *path;
-    int over_cap;      /* the file is larger than the general reader takes */
-    unsigned char *bad; /* per row: refused by lx_colorimetry_check (reported, no row) */
-    lx_colorimetry *res;
-    lx_par *par;
-    lx_hazard *hz;
-    lx_binning *bin;
-    char *names;       /* NUL-separated, in row order */
-    size_t rows, cap, names_len, names_cap;
-    int checked;       /* the grid was checked on the first chunk */
-} stream_acc;
-
-/* 1 when the file's first content line is a header the general reader also reads as a rows
- * layout with names: one kind of separator (, ; or tab), a first cell that is not a number,
- * at least two more cells, no quotes. Anything else goes to the general reader. */
-static int plain_rows_header(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return 0;
-    static char buf[1 << 16];
-    size_t len = fread(buf, 1, sizeof buf - 1, f);
-    fclose(f);
-    buf[len] = 0;
-    char *s = buf;
-    if (len >= 3 && !memcmp(s, "\xEF\xBB\xBF", 3)) s += 3;
-    for (;;) { /* skip blank and comment lines */
-        char *e = strchr(s, '\n');
-        char *t = s;
-        while (*t == ' ' || *t == '\t' || *t == '\r') t++;
-        if (*t && *t != '\n' && *t != '#') break;
-        if (!e) return 0;
-        s = e + 1;
-    }
-    char *e = strchr(s, '\n');
-    if (!e) return 0; /* the header must end within the first 64 KB */
-    *e = 0;
-    int kinds = (strchr(s, ',') != NULL) + (strchr(s, ';') != NULL) + (strchr(s, '\t') != NULL);
-    if (kinds != 1 || strchr(s, '"')) return 0;
-    char sep = strchr(s, ',') ? ',' : strchr(s, ';') ? ';' : '\t';
-    char *c1 = strchr(s, sep);
-    char *end;
-    strtod(s, &end);
-    if (end == c1 || s == c1) return 0; /* a numeric or empty first cell */
-    char *c2 = strchr(c1 + 1, sep);
-    return c2 != NULL;
-}
-
-/* A file within the spectrum-file limit: every result is kept until the whole file parsed (so a
- * problem falls back to the general reader, which names lines). A larger file, which the general
- * reader cannot take: each chunk's rows are printed as it completes (memory stays a chunk), and a
- * spectrum that fails is reported and skipped. */
-static lx_status stream_chunk(void *user, const lx_batch_table *chunk, size_t row0)
-{
-    stream_acc *A = user;
-    cli_spd_batch *B = A->B;
-    const lx_batch *b = &chunk->batch;
-    size_t n = b->n_lambda, base = A->over_cap ? 0 : row0; /* where this chunk's results go */
-    if (!A->checked) {
-        double *lam = malloc(n * sizeof *lam);
-        if (!lam) return LX_ENOMEM;
-        for (size_t j = 0; j < n; j++) lam[j] = b->start_nm + (double)j * b->step_nm;
-        lx_spd s0 = {NULL, n, lam, lam};
-        int ok = n >= 2 && lx_method_resolve(&s0, B->method) == LX_METHOD_CIE15;
-        free(lam);
-        if (!ok) return LX_EUNSUPPORTED;
-        A->checked = 1;
-    }
-    if (base + b->n_spectra > A->cap) {
-        size_t cap = 2 * (base + b->n_spectra);
-        lx_colorimetry *r = realloc(A->res, cap * sizeof *r);
-        if (r) A->res = r;
-        unsigned char *f = r ? realloc(A->bad, cap) : NULL;
-        if (!f) return LX_ENOMEM;
-        A->bad = f;
-        lx_par *p = realloc(A->par, cap * sizeof *p);
-        if (!p) return LX_ENOMEM;
-        A->par = p;
-        lx_hazard *h = realloc(A->hz, cap * sizeof *h);
-        if (!h) return LX_ENOMEM;
-        A->hz = h;
-        lx_binning *g = realloc(A->bin, cap * sizeof *g);
-        if (!g) return LX_ENOMEM;
-        A->bin = g;
-        A->cap = cap;
-    }
-    memset(A->bad + base, 0, b->n_spectra);
-    for (size_t i = 0; i < b->n_spectra; i++) { /* names as the general reader keeps them */
-        const char *nm = chunk->names + chunk->name_at[i];
-        size_t l = strlen(nm);
-        /* the checks of the general path (cli_spd_batchable): each spectrum as lx_spd_check sees it */
-        const double *v = (const double *)b->values + i * n;
-        size_t j = 0;
-        while (j < n && isfinite(v[j])) j++;
-        if (A->over_cap) {
-            if (j < n) {
-                cli_error(B->cmd, "%s: spectrum '%s' (data row %zu): value %zu (%g nm) is not finite", A->path, nm, row0 + i + 1,
-                          j + 1, b->start_nm + (double)j * b->step_nm);
-                A->bad[i] = 1;
-                B->rejected++;
-            }
-            continue;
-        }
-        if (j < n || (l && (nm[0] == ' ' || nm[l - 1] == ' ' || nm[l - 1] == '\t' || nm[0] == '\t'))) return LX_EUNSUPPORTED;
-        if (A->names_len + l + 1 > A->names_cap) {
-            size_t cap = 2 * (A->names_len + l + 1) + 4096;
-            char *q = realloc(A->names, cap);
-            if (!q) return LX_ENOMEM;
-            A->names = q;
-            A->names_cap = cap;
-        }
-        memcpy(A->names + A->names_len, nm, l + 1);
-        A->names_len += l + 1;
-    }
-    lx_batch_opts opts;
-    memset(&opts, 0, sizeof opts);
-    opts.backend = B->backend;
-    opts.threads = 1; /* the other cores parse the next chunk meanwhile */
-    lx_status st = lx_batch_colorimetry(B->ctx, b, B->observer, &opts, A->res + base);
-    lab L = {0};
-    if (st == LX_OK) st = lab_compute(B, b, A->res + base, &opts, &L);
-    if (st == LX_OK) {
-        if (L.par) memcpy(A->par + base, L.par, b->n_spectra * sizeof *L.par);
-        if (L.hz) memcpy(A->hz + base, L.hz, b->n_spectra * sizeof *L.hz);
-        if (L.bin) memcpy(A->bin + base, L.bin, b->n_spectra * sizeof *L.bin);
-    }
-    lab_free(&L);
-    A->rows = row0 + b->n_spectra;
-    for (size_t i = 0; st == LX_OK && i < b->n_spectra; i++) {
-        if (A->bad[base + i] || lx_colorimetry_check(B->ctx, &A->res[base + i], row_max_abs(b, i)) == LX_OK) continue;
-        if (!A->over_cap) return LX_EUNSUPPORTED; /* the general reader reports it with its line */
-        cli_error(B->cmd, "%s: spectrum '%s' (data row %zu): %s", A->path, chunk->names + chunk->name_at[i], row0 + i + 1,
-                  lx_ctx_errmsg(B->ctx));
-        A->bad[base + i] = 1;
-        B->rejected++;
-    }
-    if (st == LX_OK && A->over_cap) {
-        const cli_metrics *m = B->metrics;
-        int par = m && cli_metrics_need_par(m), hz = m && cli_metrics_need_hazard(m), bin = m && cli_metrics_need_binning(m);
-        for (size_t i = 0; i < b->n_spectra; i++)
-            if (!A->bad[i])
-                add_row(B, A->path, chunk->names + chunk->name_at[i], &A->res[i], par ? &A->par[i] : NULL,
-                        hz ? &A->hz[i] : NULL, bin ? &A->bin[i] : NULL);
-        if (B->flush) B->flush(B->flush_arg);
-    }
-    return st;
-}
-
-int cli_spd_batch_file(cli_spd_batch *B, const char *path)
-{
-    /* only regular files: a FIFO or a device must be read once, by the general reader */
-    struct stat sb;
-    if (!strcmp(path, "-") || stat(path, &sb) != 0 || !S_ISREG(sb.st_mode) || !plain_rows_header(path)) return 0;
-    stream_acc A;
-    memset(&A, 0, sizeof A);
-    A.B = B;
-    A.path = path;
-    A.over_cap = (unsigned long long)sb.st_size > lx_ctx_input_limit(B->ctx, LX_INPUT_SPECTRUM);
-    lx_status st = lx_batch_table_stream(B->ctx, path, LX_F64, 0, stream_chunk, &A);
-    int done = st == LX_OK && A.rows > 0 && (B->forced || A.over_cap || A.rows >= CLI_SPD_BATCH_MIN);
-    /* a file the general reader would refuse for its size: the stream's own error stands (and
-     * the rows before it were printed) */
-    if (st != LX_OK && (st != LX_EUNSUPPORTED || A.rows > 0) && A.over_cap) {
-        free(A.res);
-        free(A.par);
-        free(A.hz);
-        free(A.bin);
-        free(A.names);
-        free(A.bad);
-        return -cli_fail(B->cmd, B->ctx, st);
-    }
-    if (done && !A.over_cap) {
-        size_t off = 0;
-        const cli_metrics *m = B->metrics;
-        int par = m && cli_metrics_need_par(m), hz = m && cli_metrics_need_hazard(m), bin = m && cli_metrics_need_binning(m);
-        for (size_t i = 0; i < A.rows; i++) {
-            if (!A.bad[i]) add_row(B, path, A.names + off, &A.res[i], par ? &A.par[i] : NULL, hz ? &A.hz[i] : NULL, bin ? &A.bin[i] : NULL);
-            off += strlen(A.names + off) + 1;
-            if (B->flush && (i + 1) % CHUNK == 0) B->flush(B->flush_arg); /* the table holds a chunk at most */
-        }
-        if (B->flush) B->flush(B->flush_arg);
-    }
-    free(A.res);
-    free(A.par);
-    free(A.hz);
-    free(A.bin);
-    free(A.names);
-    free(A.bad);
-    return done ? 1 : 0;
 }
 
 int cli_spd_parse_grid(const char *s, double *start, double *step, size_t *n)

@@ -96,6 +96,10 @@ lx_status lx__open_read(lx_ctx *ctx, const char *path, FILE **out);
  * control bytes. Memory stays within the limit plus one block. Errors name the file: LX_EIO,
  * LX_EPARSE, LX_ENOMEM, LX_EINVAL (an unknown kind), and lx__open_read's. */
 lx_status lx__read_all(lx_ctx *ctx, const char *path, lx_input_kind kind, char **text, size_t *len);
+/* The same on a stream the caller opened (not closed), after the prefix_len bytes at prefix it
+ * already read from it (they count towards the limit and are checked as the rest). */
+lx_status lx__read_stream(lx_ctx *ctx, const char *path, lx_input_kind kind, FILE *fp, const char *prefix,
+                          size_t prefix_len, char **text, size_t *len);
 /* For readers that map a file instead (the streamed batch CSV): LX_OK when size is within kind's
  * limit, else lx__read_all's "larger than" error; and lx__read_all's binary-data checks on the
  * first block [buf, buf + n) of a text (only its first LX__TEXT_PROBE_BYTES are looked at). */

@@ -190,7 +190,8 @@ lx_status lx__text_check(lx_ctx *ctx, const char *path, const char *buf, size_t 
 
 /* ---- the whole-file reader ---- */
 
-lx_status lx__read_all(lx_ctx *ctx, const char *path, lx_input_kind kind, char **text, size_t *len)
+lx_status lx__read_stream(lx_ctx *ctx, const char *path, lx_input_kind kind, FILE *fp, const char *prefix,
+                          size_t prefix_len, char **text, size_t *len)
 {
     *text = NULL;
     *len = 0;
@@ -198,23 +199,21 @@ lx_status lx__read_all(lx_ctx *ctx, const char *path, lx_input_kind kind, char *
         return lx__error(ctx, LX_EINVAL, path, 0, "lx__read_all: unknown input kind %d", (int)kind);
     size_t limit = lx_ctx_input_limit(ctx, kind);
     if (limit > SIZE_MAX / 4) limit = SIZE_MAX / 4;
-    FILE *fp = NULL;
-    lx_status st = lx__open_read(ctx, path, &fp);
-    if (st) return st;
+    if (!prefix) prefix_len = 0;
     /* a regular file is sized once (and refused unread when too large); a stream grows by doubling */
     struct stat sb;
     size_t cap = 1 << 16;
-    if (fstat(fileno(fp), &sb) == 0 && S_ISREG(sb.st_mode) && sb.st_size > 0) {
-        if ((unsigned long long)sb.st_size > limit) {
-            if (fp != stdin) fclose(fp);
-            return too_large(ctx, path, kind, limit);
-        }
+    if (!prefix_len && fstat(fileno(fp), &sb) == 0 && S_ISREG(sb.st_mode) && sb.st_size > 0) {
+        if ((unsigned long long)sb.st_size > limit) return too_large(ctx, path, kind, limit);
         cap = (size_t)sb.st_size + 1; /* + 1: the end of file in the first read */
     }
+    if (cap < prefix_len + 1) cap = prefix_len + 1;
     if (cap > limit + 1) cap = limit + 1;
-    size_t n = 0, checked = 0;
+    size_t n = prefix_len < cap ? prefix_len : cap, checked = 0;
     int probed = 0;
+    lx_status st = LX_OK;
     char *buf = malloc(cap);
+    if (buf && n) memcpy(buf, prefix, n);
     while (buf) {
         if (n == cap) {
             if (n > limit) break;
@@ -230,7 +229,7 @@ lx_status lx__read_all(lx_ctx *ctx, const char *path, lx_input_kind kind, char *
         }
         size_t want = cap - n; /* the first block alone, to refuse binary data before reading on */
         if (!probed && n < LX__TEXT_PROBE_BYTES && want > LX__TEXT_PROBE_BYTES - n) want = LX__TEXT_PROBE_BYTES - n;
-        size_t got = fread(buf + n, 1, want, fp);
+        size_t got = n < prefix_len ? 0 : fread(buf + n, 1, want, fp); /* a prefix beyond the limit: refused below */
         n += got;
         /* the new bytes, before reading on: binary input stops here, whatever follows */
         const char *nul = n == checked ? NULL : memchr(buf + checked, 0, n - checked);
@@ -243,9 +242,8 @@ lx_status lx__read_all(lx_ctx *ctx, const char *path, lx_input_kind kind, char *
         if (st || got == 0) break;
     }
     if (!buf) st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory reading %zu bytes", n);
-    else if (!st && n > limit) st = too_large(ctx, path, kind, limit);
+    else if (!st && (n > limit || prefix_len > limit)) st = too_large(ctx, path, kind, limit);
     else if (!st && ferror(fp)) st = lx__error(ctx, LX_EIO, path, 0, "read error: %s", strerror(errno));
-    if (fp != stdin) fclose(fp);
     if (st != LX_OK) {
         free(buf);
         return st;
@@ -253,4 +251,26 @@ lx_status lx__read_all(lx_ctx *ctx, const char *path, lx_input_kind kind, char *
     *text = buf;
     *len = n;
     return LX_OK;
+}
+
+lx_status lx__read_all(lx_ctx *ctx, const char *path, lx_input_kind kind, char **text, size_t *len)
+{
+    *text = NULL;
+    *len = 0;
+    if ((unsigned)kind >= LX_INPUT_KIND_COUNT)
+        return lx__error(ctx, LX_EINVAL, path, 0, "lx__read_all: unknown input kind %d", (int)kind);
+    FILE *fp = NULL;
+    lx_status st = lx__open_read(ctx, path, &fp);
+    if (st) return st;
+    st = lx__read_stream(ctx, path, kind, fp, NULL, 0, text, len);
+    if (fp != stdin) fclose(fp);
+    return st;
+}
+
+lx_status lx_file_open(lx_ctx *ctx, const char *path, FILE **out)
+{
+    LX__NEED_CTX(ctx);
+    if (out) *out = NULL;
+    if (!path || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "file open: NULL argument");
+    return lx__open_read(ctx, path, out);
 }

@@ -278,7 +278,9 @@ void lx__daylight_at(const lx__daylight *d, const double x[3], const double n[3]
         cnt->daylight_evaluations++;
         double lo[3], hi[3], sg[2];
         for (int i = 0; i < 3; i++) lo[i] = fmin(x[i], op->lo[i]), hi[i] = fmax(x[i], op->hi[i]);
-        int test = op->outside_occ || (d->n_occ && lx__room_bv(d->occ, d->n_occ, lo, hi, skip, -1));
+        double oc[3];
+        for (int i = 0; i < 3; i++) oc[i] = op->o[i] + 0.5 * (op->u[i] + op->v[i]);
+        int test = op->outside_occ || (d->n_occ && lx__room_shaft(d->occ, d->n_occ, lo, hi, x, oc, 0.5 * op->size_m, skip, -1));
         if (test) piece_vis(d, op, x, n, cell, skip, LX__ROOM_VIS_RECEIVERS, sg, &ev);
         else piece(d, op, x, n, op->o, op->u, op->v, sg, &ev);
         out[0] += sg[0];
@@ -336,7 +338,10 @@ double lx__daylight_sun_flux(const lx__daylight *d, const lx__room_patch *e, int
         if (op->room != e->cell || !(ms > 0)) continue;
         double lo[3], hi[3];
         for (int i = 0; i < 3; i++) lo[i] = fmin(e->lo[i], op->lo[i]), hi[i] = fmax(e->hi[i], op->hi[i]);
-        int test = op->outside_occ || (d->n_occ && lx__room_bv(d->occ, d->n_occ, lo, hi, e->occluder, -1));
+        double oc[3];
+        for (int i = 0; i < 3; i++) oc[i] = op->o[i] + 0.5 * (op->u[i] + op->v[i]);
+        int test = op->outside_occ ||
+                   (d->n_occ && lx__room_shaft(d->occ, d->n_occ, lo, hi, e->c, oc, fmax(e->rad, 0.5 * op->size_m), e->occluder, -1));
         if (!test) {
             /* the opening's corners carried along -s onto the element's plane */
             double p[4][3];

@@ -11,13 +11,14 @@
 
 /* The device copies of the patches, their ints, the occluders and the Gauss table. */
 typedef struct cl_mesh {
-    cl_mem P, PI, occ, okind, gauss;
+    cl_mem P, RAD, PI, occ, okind, gauss;
     int nocc;
 } cl_mesh;
 
 static void cl_mesh_release(cl_mesh *c)
 {
     if (c->P) clReleaseMemObject(c->P);
+    if (c->RAD) clReleaseMemObject(c->RAD);
     if (c->PI) clReleaseMemObject(c->PI);
     if (c->occ) clReleaseMemObject(c->occ);
     if (c->okind) clReleaseMemObject(c->okind);
@@ -42,20 +43,23 @@ static lx_status upload(lx_ctx *ctx, lx__cl *cl, const lx__room_mesh *m, const l
                         cl_mesh *c)
 {
     size_t no = m->n_occ;
-    double *P = malloc((n ? n : 1) * 18 * sizeof *P), *O = malloc((no ? no : 1) * 22 * sizeof *O), G[128];
+    double *P = malloc((n ? n : 1) * 21 * sizeof *P), *O = malloc((no ? no : 1) * 22 * sizeof *O), G[128];
+    double *R = malloc((n ? n : 1) * sizeof *R);
     int *PI = malloc((n ? n : 1) * 4 * sizeof *PI), *K = malloc((no ? no : 1) * sizeof *K);
     lx_status st = LX_OK;
-    if (!P || !O || !PI || !K) st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    if (!P || !O || !PI || !K || !R) st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t i = 0; st == LX_OK && i < n; i++) {
         const lx__room_patch *p = &src[i];
         for (int k = 0; k < 3; k++) {
-            P[18 * i + k] = p->o[k];
-            P[18 * i + 3 + k] = p->u[k];
-            P[18 * i + 6 + k] = p->v[k];
-            P[18 * i + 9 + k] = p->n[k];
-            P[18 * i + 12 + k] = p->lo[k];
-            P[18 * i + 15 + k] = p->hi[k];
+            P[21 * i + k] = p->o[k];
+            P[21 * i + 3 + k] = p->u[k];
+            P[21 * i + 6 + k] = p->v[k];
+            P[21 * i + 9 + k] = p->n[k];
+            P[21 * i + 12 + k] = p->lo[k];
+            P[21 * i + 15 + k] = p->hi[k];
+            P[21 * i + 18 + k] = p->c[k];
         }
+        R[i] = p->rad;
         PI[4 * i] = p->cell;
         PI[4 * i + 1] = p->occluder;
         PI[4 * i + 2] = p->face;
@@ -81,12 +85,14 @@ static lx_status upload(lx_ctx *ctx, lx__cl *cl, const lx__room_mesh *m, const l
         for (int i = 0; i < 8; i++) G[8 * (q - 1) + i] = i < q ? x[i] : 0, G[64 + 8 * (q - 1) + i] = i < q ? w[i] : 0;
     }
     c->nocc = (int)no;
-    if (st == LX_OK) st = buffer(ctx, cl, n * 18 * sizeof *P, P, &c->P, "patches");
+    if (st == LX_OK) st = buffer(ctx, cl, n * 21 * sizeof *P, P, &c->P, "patches");
+    if (st == LX_OK) st = buffer(ctx, cl, n * sizeof *R, R, &c->RAD, "patch radii");
     if (st == LX_OK) st = buffer(ctx, cl, n * 4 * sizeof *PI, PI, &c->PI, "patch ints");
     if (st == LX_OK) st = buffer(ctx, cl, no * 22 * sizeof *O, O, &c->occ, "occluders");
     if (st == LX_OK) st = buffer(ctx, cl, no * sizeof *K, K, &c->okind, "occluder kinds");
     if (st == LX_OK) st = buffer(ctx, cl, sizeof G, G, &c->gauss, "gauss");
     free(P);
+    free(R);
     free(O);
     free(PI);
     free(K);
@@ -127,15 +133,16 @@ lx_status lx__room_cl_ff(lx_ctx *ctx, const lx__room_mesh *m, double *F)
     for (size_t r0 = 0; r0 < n; r0 += rows) {
         cl_uint ur0 = (cl_uint)r0, urows = (cl_uint)(r0 + rows <= n ? rows : n - r0);
         err = clSetKernelArg(k, 0, sizeof c.P, &c.P);
-        err |= clSetKernelArg(k, 1, sizeof c.PI, &c.PI);
-        err |= clSetKernelArg(k, 2, sizeof c.occ, &c.occ);
-        err |= clSetKernelArg(k, 3, sizeof c.okind, &c.okind);
-        err |= clSetKernelArg(k, 4, sizeof c.nocc, &c.nocc);
-        err |= clSetKernelArg(k, 5, sizeof c.gauss, &c.gauss);
-        err |= clSetKernelArg(k, 6, sizeof un, &un);
-        err |= clSetKernelArg(k, 7, sizeof ur0, &ur0);
-        err |= clSetKernelArg(k, 8, sizeof urows, &urows);
-        err |= clSetKernelArg(k, 9, sizeof out, &out);
+        err |= clSetKernelArg(k, 1, sizeof c.RAD, &c.RAD);
+        err |= clSetKernelArg(k, 2, sizeof c.PI, &c.PI);
+        err |= clSetKernelArg(k, 3, sizeof c.occ, &c.occ);
+        err |= clSetKernelArg(k, 4, sizeof c.okind, &c.okind);
+        err |= clSetKernelArg(k, 5, sizeof c.nocc, &c.nocc);
+        err |= clSetKernelArg(k, 6, sizeof c.gauss, &c.gauss);
+        err |= clSetKernelArg(k, 7, sizeof un, &un);
+        err |= clSetKernelArg(k, 8, sizeof ur0, &ur0);
+        err |= clSetKernelArg(k, 9, sizeof urows, &urows);
+        err |= clSetKernelArg(k, 10, sizeof out, &out);
         if ((st = lx__cl_check(ctx, err, "clSetKernelArg(lx_room_ff)")) != LX_OK) goto done;
         size_t local[2] = {1, 64}, global[2] = {urows, (n + 63) / 64 * 64};
         err = clEnqueueNDRangeKernel(cl->queue, k, 2, NULL, global, local, 0, NULL, NULL);
@@ -178,20 +185,21 @@ lx_status lx__room_cl_gather(lx_ctx *ctx, const lx__room_gather_job *g, double *
     if ((st = lx__cl_check(ctx, err, "clCreateBuffer(gather)")) != LX_OK) goto done;
     cl_uint unp = (cl_uint)g->n_src, un = (cl_uint)n;
     err = clSetKernelArg(k, 0, sizeof c.P, &c.P);
-    err |= clSetKernelArg(k, 1, sizeof c.PI, &c.PI);
-    err |= clSetKernelArg(k, 2, sizeof c.occ, &c.occ);
-    err |= clSetKernelArg(k, 3, sizeof c.okind, &c.okind);
-    err |= clSetKernelArg(k, 4, sizeof c.nocc, &c.nocc);
-    err |= clSetKernelArg(k, 5, sizeof bB, &bB);
-    err |= clSetKernelArg(k, 6, sizeof unp, &unp);
-    err |= clSetKernelArg(k, 7, sizeof bp, &bp);
-    err |= clSetKernelArg(k, 8, sizeof bn, &bn);
-    err |= clSetKernelArg(k, 9, sizeof bc, &bc);
+    err |= clSetKernelArg(k, 1, sizeof c.RAD, &c.RAD);
+    err |= clSetKernelArg(k, 2, sizeof c.PI, &c.PI);
+    err |= clSetKernelArg(k, 3, sizeof c.occ, &c.occ);
+    err |= clSetKernelArg(k, 4, sizeof c.okind, &c.okind);
+    err |= clSetKernelArg(k, 5, sizeof c.nocc, &c.nocc);
+    err |= clSetKernelArg(k, 6, sizeof bB, &bB);
+    err |= clSetKernelArg(k, 7, sizeof unp, &unp);
+    err |= clSetKernelArg(k, 8, sizeof bp, &bp);
+    err |= clSetKernelArg(k, 9, sizeof bn, &bn);
+    err |= clSetKernelArg(k, 10, sizeof bc, &bc);
     cl_int lev = g->vis_levels;
-    err |= clSetKernelArg(k, 10, sizeof bs, &bs);
-    err |= clSetKernelArg(k, 11, sizeof lev, &lev);
-    err |= clSetKernelArg(k, 12, sizeof un, &un);
-    err |= clSetKernelArg(k, 13, sizeof out, &out);
+    err |= clSetKernelArg(k, 11, sizeof bs, &bs);
+    err |= clSetKernelArg(k, 12, sizeof lev, &lev);
+    err |= clSetKernelArg(k, 13, sizeof un, &un);
+    err |= clSetKernelArg(k, 14, sizeof out, &out);
     if ((st = lx__cl_check(ctx, err, "clSetKernelArg(lx_room_gather)")) != LX_OK) goto done;
     size_t local = 64, global = (n + 63) / 64 * 64;
     if (n) {

@@ -117,21 +117,57 @@ static lx_status surfaces(lx_ctx *ctx, const lx__room_mesh *m, const double *phi
     return LX_OK;
 }
 
-/* Gather job arrays for the element centres. */
-static lx_status element_points(const lx__room_mesh *m, double **pts, double **nrm, int **cell, int **skip)
+/* The solve's account: fluxes, and the discretisation check (each patch's indirect illuminance in
+ * the solve against the area-weighted mean of the exact gathers at its elements). */
+static lx_status stats(lx_ctx *ctx, const lx__room_mesh *m, const double *phi0, const lx__room_solution *sol,
+                       const double *Ei, lx_scene_room_stats *R)
 {
-    size_t n = m->n_elem ? m->n_elem : 1;
+    size_t n = m->n_patch;
+    R->n_patches = n;
+    R->sweeps = sol->sweeps;
+    R->shots = sol->shots;
+    R->unshot_lm = sol->unshot_lm;
+    R->escaped_lm = sol->escaped_lm;
+    for (size_t i = 0; i < n; i++) {
+        R->direct_lm += phi0[i];
+        R->indirect_lm += sol->phi_ind_lm[i];
+        R->absorbed_lm += (1 - m->patch[i].rho) * (phi0[i] + sol->phi_ind_lm[i]);
+    }
+    double *ga = calloc(n ? n : 1, sizeof *ga), w = 0, e2 = 0;
+    if (!ga) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    for (size_t e = 0; e < m->n_elem; e++) ga[m->elem[e].parent] += Ei[e] * m->elem[e].area_m2;
+    for (size_t i = 0; i < n; i++) {
+        double A = m->patch[i].area_m2, s = sol->phi_ind_lm[i] / A, d = ga[i] / A - s;
+        e2 += A * d * d;
+        w += A * s * s;
+    }
+    free(ga);
+    R->gather_check = w > 0 ? sqrt(e2 / w) : 0;
+    return LX_OK;
+}
+
+/* Gather job arrays for the element centres (*list: their indices, *count of them). Every element
+ * is gathered, an unrefined patch's one too: the exact gather at its centre is the better
+ * exitance for the receivers' gather than the solve's patch mean (bench room: the work-plane
+ * mean 2e-5 from the reference against 1.7e-4; README "Rooms"). */
+static lx_status element_points(const lx__room_mesh *m, double **pts, double **nrm, int **cell, int **skip,
+                                size_t **list, size_t *count)
+{
+    size_t n = m->n_elem ? m->n_elem : 1, k = 0;
     *pts = malloc(3 * n * sizeof **pts);
     *nrm = malloc(3 * n * sizeof **nrm);
     *cell = malloc(n * sizeof **cell);
     *skip = malloc(n * sizeof **skip);
-    if (!*pts || !*nrm || !*cell || !*skip) return LX_ENOMEM;
+    *list = malloc(n * sizeof **list);
+    if (!*pts || !*nrm || !*cell || !*skip || !*list) return LX_ENOMEM;
     for (size_t e = 0; e < m->n_elem; e++) {
-        memcpy(*pts + 3 * e, m->elem[e].c, 3 * sizeof **pts);
-        memcpy(*nrm + 3 * e, m->elem[e].n, 3 * sizeof **nrm);
-        (*cell)[e] = m->elem[e].cell;
-        (*skip)[e] = m->elem[e].occluder;
+        memcpy(*pts + 3 * k, m->elem[e].c, 3 * sizeof **pts);
+        memcpy(*nrm + 3 * k, m->elem[e].n, 3 * sizeof **nrm);
+        (*cell)[k] = m->elem[e].cell;
+        (*skip)[k] = m->elem[e].occluder;
+        (*list)[k++] = e;
     }
+    *count = k;
     return LX_OK;
 }
 
@@ -144,15 +180,16 @@ lx_status lx__room_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
     double *phi0 = calloc(n ? n : 1, sizeof *phi0), *F = NULL, *Ed = malloc((ne ? ne : 1) * sizeof *Ed);
     double *Ei = malloc((ne ? ne : 1) * sizeof *Ei), *Be = malloc((ne ? ne : 1) * sizeof *Be);
     double *pts = malloc(3 * (np ? np : 1) * sizeof *pts), *nrm = malloc(3 * (np ? np : 1) * sizeof *nrm);
-    double *ept = NULL, *enr = NULL;
+    double *ept = NULL, *enr = NULL, *Eg = malloc((ne ? ne : 1) * sizeof *Eg);
     int *cell = malloc((np ? np : 1) * sizeof *cell), *ecell = NULL, *eskip = NULL;
+    size_t *elist = NULL, n_eg = 0;
     res->direct_lx = malloc((np ? np : 1) * sizeof *res->direct_lx);
     res->indirect_lx = malloc((np ? np : 1) * sizeof *res->indirect_lx);
     lx__room_solution sol;
     memset(&sol, 0, sizeof sol);
     lx_status st = LX_OK;
-    if (!phi0 || !Ed || !Ei || !Be || !pts || !nrm || !cell || !res->direct_lx || !res->indirect_lx ||
-        element_points(m, &ept, &enr, &ecell, &eskip) != LX_OK) {
+    if (!phi0 || !Ed || !Ei || !Be || !Eg || !pts || !nrm || !cell || !res->direct_lx || !res->indirect_lx ||
+        element_points(m, &ept, &enr, &ecell, &eskip, &elist, &n_eg) != LX_OK) {
         st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
         goto out;
     }
@@ -169,11 +206,16 @@ lx_status lx__room_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
     if (day && (st = lx__daylight_room(ctx, day, m, F)) != LX_OK) goto out; /* its own solve, the same F */
     free(F);
     F = NULL;
-    /* 3. the gather at every element centre from the patches: its exitance resolves what varies
-     * within a patch (its own direct light, the indirect light arriving there) */
+    /* 3. the gather at the centre of every element from the patches: its exitance resolves what
+     * varies within a patch (its own direct light, the indirect light arriving there) */
     double t3 = now_s();
-    lx__room_gather_job ge = {m, m->patch, n, sol.B, ne, ept, enr, ecell, eskip, LX__ROOM_VIS_ELEMENTS};
-    if ((st = lx__room_gather(ctx, &ge, backend, Ei, &gu1)) != LX_OK) goto out;
+    lx__room_gather_job ge = {m, m->patch, n, sol.B, n_eg, ept, enr, ecell, eskip, LX__ROOM_VIS_ELEMENTS};
+    if (n_eg && (st = lx__room_gather(ctx, &ge, backend, Eg, &gu1)) != LX_OK) goto out;
+    for (size_t e = 0; e < ne; e++) {
+        size_t i = m->elem[e].parent;
+        Ei[e] = sol.phi_ind_lm[i] / m->patch[i].area_m2;
+    }
+    for (size_t k = 0; k < n_eg; k++) Ei[elist[k]] = Eg[k];
     for (size_t e = 0; e < ne; e++) Be[e] = m->elem[e].rho * (Ed[e] + Ei[e]);
     if (sc->n_obs && (st = lx__glare_room_background(ctx, sc, m, Be, backend, res)) != LX_OK) goto out; /* UGR's Lb */
     /* 4. the gather at the receiver points from the elements */
@@ -194,31 +236,7 @@ lx_status lx__room_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
         sum_all += res->E_lx[g];
     }
     if ((st = surfaces(ctx, m, phi0, &sol, res)) != LX_OK) goto out;
-    R->n_patches = n;
-    R->sweeps = sol.sweeps;
-    R->shots = sol.shots;
-    R->unshot_lm = sol.unshot_lm;
-    R->escaped_lm = sol.escaped_lm;
-    for (size_t i = 0; i < n; i++) {
-        R->direct_lm += phi0[i];
-        R->indirect_lm += sol.phi_ind_lm[i];
-        R->absorbed_lm += (1 - m->patch[i].rho) * (phi0[i] + sol.phi_ind_lm[i]);
-    }
-    /* the discretisation check: each patch's indirect illuminance in the solve against the
-     * area-weighted mean of the exact gathers at its elements */
-    double *ga = calloc(n ? n : 1, sizeof *ga), w = 0, e2 = 0;
-    if (!ga) {
-        st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
-        goto out;
-    }
-    for (size_t e = 0; e < ne; e++) ga[m->elem[e].parent] += Ei[e] * m->elem[e].area_m2;
-    for (size_t i = 0; i < n; i++) {
-        double A = m->patch[i].area_m2, s = sol.phi_ind_lm[i] / A, d = ga[i] / A - s;
-        e2 += A * d * d;
-        w += A * s * s;
-    }
-    free(ga);
-    R->gather_check = w > 0 ? sqrt(e2 / w) : 0;
+    if ((st = stats(ctx, m, phi0, &sol, Ei, R)) != LX_OK) goto out;
     R->indirect_share = sum_all > 0 ? sum_ind / sum_all : 0;
     R->backend = used == LX_BACKEND_OPENCL || gu1 == LX_BACKEND_OPENCL || gu2 == LX_BACKEND_OPENCL ? LX_BACKEND_OPENCL
                                                                                                     : LX_BACKEND_CPU;
@@ -244,5 +262,7 @@ out:
     free(enr);
     free(ecell);
     free(eskip);
+    free(elist);
+    free(Eg);
     return st;
 }

@@ -144,6 +144,40 @@ int lx__room_bv(const lx__room_occ *occ, int n_occ, const double lo[3], const do
     return 0;
 }
 
+int lx__room_shaft(const lx__room_occ *occ, int n_occ, const double lo[3], const double hi[3], const double p[3],
+                   const double q[3], double r, int skip, int skip2)
+{
+    double d[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
+    for (int k = 0; k < n_occ; k++) {
+        if (k == skip || k == skip2) continue;
+        const lx__room_occ *oc = &occ[k];
+        if (!(lo[0] < oc->hi[0] && oc->lo[0] < hi[0] && lo[1] < oc->hi[1] && oc->lo[1] < hi[1] && lo[2] < oc->hi[2] &&
+              oc->lo[2] < hi[2]))
+            continue;
+        /* the segment against the box grown by r (closed: conservative) */
+        double tmin = 0, tmax = 1;
+        int meets = 1;
+        for (int c = 0; c < 3 && meets; c++) {
+            double a = oc->lo[c] - r, b = oc->hi[c] + r;
+            if (d[c] == 0) {
+                meets = p[c] >= a && p[c] <= b;
+                continue;
+            }
+            double ta = (a - p[c]) / d[c], tb = (b - p[c]) / d[c];
+            if (ta > tb) {
+                double t = ta;
+                ta = tb;
+                tb = t;
+            }
+            if (ta > tmin) tmin = ta;
+            if (tb < tmax) tmax = tb;
+            meets = tmin <= tmax;
+        }
+        if (meets) return 1;
+    }
+    return 0;
+}
+
 /* ---- quadrature ---- */
 
 #define GAUSS_MAX 8

@@ -288,6 +288,9 @@ static void set_patch(lx__room_patch *p, const lx__room_face *f, int fi, double 
                     p->u[0] * p->v[1] - p->u[1] * p->v[0]};
     p->area_m2 = sqrt(dot3(cr, cr));
     p->size_m = fmax(sqrt(dot3(p->u, p->u)), sqrt(dot3(p->v, p->v)));
+    double d1[3] = {p->u[0] + p->v[0], p->u[1] + p->v[1], p->u[2] + p->v[2]};
+    double d2[3] = {p->u[0] - p->v[0], p->u[1] - p->v[1], p->u[2] - p->v[2]};
+    p->rad = 0.5 * fmax(sqrt(dot3(d1, d1)), sqrt(dot3(d2, d2)));
     p->rho = f->rho;
     p->face = fi;
     p->cell = f->cell;

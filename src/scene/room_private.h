@@ -43,6 +43,11 @@ int lx__room_visible(const lx__room_occ *occ, int n_occ, const double p[3], cons
  * other than skip and skip2. The bounding-volume test: 0 means no occluder can cut any segment
  * between points of lo..hi. */
 int lx__room_bv(const lx__room_occ *occ, int n_occ, const double lo[3], const double hi[3], int skip, int skip2);
+/* The same, tighter, for the shaft between two convex pieces whose points lie within r of centres
+ * p and q (the convex hull of both lies within r of the segment p-q): 1 when some occluder's box
+ * overlaps lo..hi and its box grown by r meets the segment. 0: nothing can cut the shaft. */
+int lx__room_shaft(const lx__room_occ *occ, int n_occ, const double lo[3], const double hi[3], const double p[3],
+                   const double q[3], double r, int skip, int skip2);
 
 /* Area-to-area form factor F from parallelogram 1 (o1, u1, v1, unit normal n1) to parallelogram 2:
  * the exact point-to-polygon form factor integrated over 1 by tensor tanh-sinh quadrature (which
@@ -83,6 +88,7 @@ typedef struct lx__room_patch {
     double o[3], u[3], v[3], c[3], n[3]; /* corner, edges, centre, unit normal */
     double lo[3], hi[3];                 /* bounding box */
     double area_m2, rho, size_m;         /* size: the longer edge */
+    double rad;                          /* half its longer diagonal: every point within rad of c */
     int face, cell, occluder;
     int order;                           /* elements: Gauss-Legendre nodes per side of the direct light */
     int shoot;                           /* patches: Gauss-Legendre nodes per side it shoots from (1: centre) */
@@ -215,8 +221,12 @@ lx_status lx__room_cl_ff(lx_ctx *ctx, const lx__room_mesh *m, double *F);
 lx_status lx__room_cl_gather(lx_ctx *ctx, const lx__room_gather_job *g, double *E_lx);
 #endif
 
-/* OpenCL break-even of the form-factor and gather jobs, in form factors (measured: README). */
-#define LX__ROOM_CL_COLD 4e8
-#define LX__ROOM_CL_WARM 2e7
+/* OpenCL break-even of the form-factor and gather jobs, in form factors (README "Rooms"): the
+ * measured start-up on a cold context (7.6 s with PoCL's compile, an empty kernel cache) over the
+ * measured CPU cost (0.46 us a pair of patches, 2 threads under load), and a warm context's 0.1 s
+ * of uploads and launches over it; a device at least as fast per pair as these 2 cores is
+ * assumed (PoCL's CPU device is not: 2.7 us, so the rule's CPU-device exclusion applies). */
+#define LX__ROOM_CL_COLD 2e7
+#define LX__ROOM_CL_WARM 2e5
 
 #endif /* LX_ROOM_PRIVATE_H */

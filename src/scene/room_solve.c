@@ -86,7 +86,8 @@ static double ff_pair(const lx__room_mesh *m, const lx__room_patch *pi, const lx
     if (pi->cell != pj->cell || pi->face == pj->face) return 0;
     double lo[3], hi[3];
     for (int c = 0; c < 3; c++) lo[c] = fmin(pi->lo[c], pj->lo[c]), hi[c] = fmax(pi->hi[c], pj->hi[c]);
-    int bv = m->n_occ && lx__room_bv(m->occ, (int)m->n_occ, lo, hi, pi->occluder, pj->occluder);
+    int bv = m->n_occ && lx__room_shaft(m->occ, (int)m->n_occ, lo, hi, pi->c, pj->c, fmax(pi->rad, pj->rad), pi->occluder,
+                                        pj->occluder);
     const double *gx, *gw;
     lx__room_gauss(pi->shoot, &gx, &gw);
     double s = 0;
@@ -283,7 +284,7 @@ static void gather_rows(const lx__room_gather_job *g, size_t i0, size_t i1, doub
             if (m->n_occ) {
                 double lo[3], hi[3];
                 for (int c = 0; c < 3; c++) lo[c] = fmin(x[c], pj->lo[c]), hi[c] = fmax(x[c], pj->hi[c]);
-                if (lx__room_bv(m->occ, (int)m->n_occ, lo, hi, skip, pj->occluder))
+                if (lx__room_shaft(m->occ, (int)m->n_occ, lo, hi, x, pj->c, pj->rad, skip, pj->occluder))
                     f = lx__room_ff_vis(m, x, n, pj, skip, f, g->vis_levels, ff, rays);
             }
             e += g->B[j] * f;

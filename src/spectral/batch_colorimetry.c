@@ -1,8 +1,10 @@
 /* batch_colorimetry.c - every colorimetric quantity for a batch of spectra on one grid: the
- * integrals at once (lx_batch_integrate), then CCT/Duv and the rest per spectrum on threads. */
+ * integrals at once (lx_batch_integrate), then CCT/Duv (the fast solver, cct_fast.c) and the rest
+ * per spectrum on threads. */
 #include "spectral/spectral_private.h"
 
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 
 typedef struct job {
@@ -48,6 +50,37 @@ double lx__batch_radiant(const lx_batch *b, size_t i)
     return ldexp(0.5 * b->step_nm * sum, e);
 }
 
+/* The range ends of the last grids seen in this process (they depend on the grid and observer
+ * only; computing them takes two blackbody integrations and exact CCT solves, about 100 us, which
+ * a stream of parts of 120 spectra would otherwise pay for every part). */
+static struct range_entry {
+    int obs;
+    size_t n;
+    double start, step, lo, hi;
+} ranges[4];
+static int ranges_next;
+static pthread_mutex_t ranges_lock = PTHREAD_MUTEX_INITIALIZER;
+
+static int range_cached(lx_observer obs, const lx_batch *b, double *lo, double *hi)
+{
+    int hit = 0;
+    pthread_mutex_lock(&ranges_lock);
+    for (int i = 0; i < 4 && !hit; i++)
+        if (ranges[i].n == b->n_lambda && ranges[i].obs == (int)obs && ranges[i].start == b->start_nm &&
+            ranges[i].step == b->step_nm)
+            *lo = ranges[i].lo, *hi = ranges[i].hi, hit = 1;
+    pthread_mutex_unlock(&ranges_lock);
+    return hit;
+}
+
+static void range_keep(lx_observer obs, const lx_batch *b, double lo, double hi)
+{
+    pthread_mutex_lock(&ranges_lock);
+    ranges[ranges_next] = (struct range_entry){(int)obs, b->n_lambda, b->start_nm, b->step_nm, lo, hi};
+    ranges_next = (ranges_next + 1) % 4;
+    pthread_mutex_unlock(&ranges_lock);
+}
+
 /* Spectra [i0, i1) on thread t, with a context of its own (a context is one thread's). */
 static void work(void *arg, long i0, long i1, int t)
 {
@@ -56,8 +89,8 @@ static void work(void *arg, long i0, long i1, int t)
     if ((j->st[t] = lx_ctx_create(&ctx)) != LX_OK) return;
     for (long i = i0; i < i1 && j->st[t] == LX_OK; i++) {
         j->out[i].method = LX_METHOD_CIE15;
-        j->st[t] = lx__colorimetry_range(ctx, j->obs, j->ints + 4 * i, j->ints[4 * i + 3], lx__batch_radiant(j->b, i), j->lo_K,
-                                         j->hi_K, &j->out[i], NULL);
+        j->st[t] = lx__colorimetry_fast(ctx, j->obs, j->ints + 4 * i, j->ints[4 * i + 3], lx__batch_radiant(j->b, i), j->lo_K,
+                                        j->hi_K, &j->out[i]);
     }
     lx_ctx_destroy(ctx);
 }
@@ -85,12 +118,15 @@ lx_status lx_batch_colorimetry(lx_ctx *ctx, const lx_batch *b, lx_observer obs, 
     job J = {.b = b, .obs = obs, .lo_K = 1000.0, .hi_K = 100000.0, .ints = ints, .out = out};
     /* the range ends through the grid's own sampling (the batch sums at the grid's step, the CIE 015
      * rule), as lx_spd_colorimetry takes them: a blackbody at an end is in the range */
-    double *grid = malloc(b->n_lambda * sizeof *grid);
-    if (grid) {
-        for (size_t k = 0; k < b->n_lambda; k++) grid[k] = b->start_nm + (double)k * b->step_nm;
-        lx_spd g = {.n = b->n_lambda, .lambda_nm = grid, .value = grid, .name = "grid"};
-        lx__cct_range_ends(ctx, &g, obs, LX_METHOD_CIE15, &J.lo_K, &J.hi_K);
-        free(grid);
+    if (!range_cached(obs, b, &J.lo_K, &J.hi_K)) {
+        double *grid = malloc(b->n_lambda * sizeof *grid);
+        if (grid) {
+            for (size_t k = 0; k < b->n_lambda; k++) grid[k] = b->start_nm + (double)k * b->step_nm;
+            lx_spd g = {.n = b->n_lambda, .lambda_nm = grid, .value = grid, .name = "grid"};
+            lx__cct_range_ends(ctx, &g, obs, LX_METHOD_CIE15, &J.lo_K, &J.hi_K);
+            free(grid);
+            range_keep(obs, b, J.lo_K, J.hi_K);
+        }
     }
     lx__parallel_for(ctx, nt, (long)b->n_spectra, work, &J);
     free(ints);

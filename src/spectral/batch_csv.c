@@ -1,10 +1,9 @@
 /* batch_csv.c - reads a rows-layout batch CSV (header "id,380,381,...": one spectrum per line on a
- * uniform grid) into a float or double batch in parallel, whole (lx_batch_table_read) or streamed
- * chunk by chunk (lx_batch_table_stream, lx_batch_table_integrate_file); lines of short decimals by
- * the AVX-512 line parser of csv_vector.c, others by a SWAR number parser and lx__parse_double
- * (all exact, as strtod). */
-#define _DEFAULT_SOURCE /* madvise (MADV_DONTNEED): the streamed text read so far leaves memory */
-#include "spectral/spectral_private.h"
+ * uniform grid) into a float or double batch in parallel (lx_batch_table_read; streamed chunk by
+ * chunk in batch_stream.c): the header, and the parser of a part of the text, lines of short
+ * decimals by the vector line parser of csv_vector.c, others by a SWAR number parser and
+ * lx__parse_double (all exact, as strtod). */
+#include "spectral/batch_csv.h"
 
 #include <errno.h>
 #include <float.h>
@@ -19,26 +18,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-typedef struct part {
-    const char *s, *e;   /* whole lines */
-    size_t rows, lines;  /* data rows and all lines in the part (pass 1) */
-    size_t row0;         /* first row index (pass 2) */
-    long line0;          /* line number of its first line */
-    const char *lim;     /* end of the readable text (for 8-byte loads) */
-    size_t rows_cap;     /* rows the part's destination and name_at can hold */
-    void *values;        /* the destination of its first row (pass 2) */
-    size_t rows_done;    /* rows parsed (pass 2) */
-    long lines_done;     /* lines consumed before stopping (pass 2; the bad line on error) */
-    /* pass 2 */
-    const lx_batch_table *t;
-    char sep;
-    int named;           /* rows start with a name cell */
-    char *names;         /* this part's names, NUL-separated */
-    size_t names_len, names_cap, name_at_cap;
-    size_t *name_at;     /* local offsets */
-    long err_line;       /* 0: no error */
-    char err[256];
-} part;
+typedef lx__csv_part part;
 
 static int is_skip_line(const char *s, const char *e)
 {
@@ -48,14 +28,14 @@ static int is_skip_line(const char *s, const char *e)
 
 /* The end of the line at s (its '\n', or end), or NULL when it is longer than LX__BATCH_LINE_MAX
  * bytes (without its '\n'): the search never looks further than that. */
-static const char *line_end_bounded(const char *s, const char *end)
+const char *lx__csv_line_end(const char *s, const char *end)
 {
     size_t room = (size_t)(end - s);
     const char *nl = memchr(s, '\n', room > LX__BATCH_LINE_MAX ? LX__BATCH_LINE_MAX + 1 : room);
     return nl ? nl : room > LX__BATCH_LINE_MAX ? NULL : end;
 }
 
-static lx_status line_too_long(lx_ctx *ctx, const char *file, long line)
+lx_status lx__csv_line_too_long(lx_ctx *ctx, const char *file, long line)
 {
     return lx__error(ctx, LX_EPARSE, file, line, "line longer than %zu MB, the longest line of a batch CSV file",
                      LX__BATCH_LINE_MAX >> 20);
@@ -201,15 +181,19 @@ static int keep_name(part *p, const char *s, size_t len, size_t *r, long line)
     return 1;
 }
 
-static void *parse_part(void *arg)
+static _Atomic unsigned long long fast_rows_total; /* rows the vector line parser took, for the tests */
+
+unsigned long long lx__csv_fast_rows(void) { return atomic_load(&fast_rows_total); }
+
+void lx__csv_parse_part(part *p)
 {
-    part *p = arg;
     const lx_batch_table *t = p->t;
     size_t n = t->batch.n_lambda, row = 0;
     long line = p->line0;
     char sep = p->sep;
     int f32 = t->batch.dtype == LX_F32;
-    int fast = lx__csv_have_fast_line();
+    int fast = lx__csv_fast_level();
+    unsigned long long fast_rows = 0;
     size_t names_cap = (size_t)(p->e - p->s) / 8 + p->rows_cap + 16, r = 0;
     if (p->names_cap < names_cap) { /* buffers are kept from one chunk to the next when streaming */
         free(p->names);
@@ -226,7 +210,7 @@ static void *parse_part(void *arg)
     if (!p->names || !p->name_at) {
         p->err_line = line;
         snprintf(p->err, sizeof p->err, "out of memory");
-        return NULL;
+        return;
     }
     const char *s = p->s;
     /* the vector parser's 64-byte loads stay inside the text: lines it reads end before stop */
@@ -239,9 +223,10 @@ static void *parse_part(void *arg)
             if (p->named)
                 for (c = s; c < stop && *c != sep && *c != '\n'; c++) continue;
             if (c < stop && (!p->named || *c == sep) &&
-                lx__csv_fast_line(c + 1, stop, whole, sep, n, f32, (char *)p->values + row * n * (f32 ? 4 : 8), &le)) {
-                if (!keep_name(p, s, p->named ? (size_t)(c - s) : 0, &r, line)) return NULL;
+                lx__csv_fast_line(fast, c + 1, stop, whole, sep, n, f32, (char *)p->values + row * n * (f32 ? 4 : 8), &le)) {
+                if (!keep_name(p, s, p->named ? (size_t)(c - s) : 0, &r, line)) return;
                 row++;
+                fast_rows++;
                 p->rows_done = row;
                 s = le < p->e ? le + 1 : p->e;
                 continue;
@@ -258,10 +243,10 @@ static void *parse_part(void *arg)
         if (!c) {
             p->err_line = line;
             snprintf(p->err, sizeof p->err, "a row needs a name and %zu values", n);
-            return NULL;
+            return;
         }
         size_t nl_len = p->named ? (size_t)(c - s) : 0;
-        if (!keep_name(p, s, nl_len, &r, line)) return NULL;
+        if (!keep_name(p, s, nl_len, &r, line)) return;
         const char *q = c + 1;
         float *of = (float *)p->values + row * n;
         double *od = (double *)p->values + row * n;
@@ -273,14 +258,14 @@ static void *parse_part(void *arg)
                 p->err_line = line;
                 snprintf(p->err, sizeof p->err, "value %zu of row '%.*s' is not a finite number%s", j + 1,
                          (int)(nl_len < 60 ? nl_len : 60), s, z && isfinite(v) ? " in float range" : "");
-                return NULL;
+                return;
             }
             while (z < le && *z == ' ') z++;
             if (j + 1 < n ? (z >= le || *z != sep) : z != le) {
                 p->err_line = line;
                 snprintf(p->err, sizeof p->err, "row '%.*s' has %s than %zu values", (int)(nl_len < 60 ? nl_len : 60), s,
                          j + 1 < n ? "fewer" : "more", n);
-                return NULL;
+                return;
             }
             if (f32) of[j] = (float)v;
             else od[j] = v;
@@ -291,7 +276,7 @@ static void *parse_part(void *arg)
         s = next;
     }
     p->lines_done = line - p->line0;
-    return NULL;
+    atomic_fetch_add(&fast_rows_total, fast_rows);
 }
 
 void lx_batch_table_free(lx_batch_table *t)
@@ -303,30 +288,21 @@ void lx_batch_table_free(lx_batch_table *t)
     free(t);
 }
 
-/* The header: the first line that is not blank or a comment; its separator, whether rows start
- * with a name cell, and the uniform grid. *body: the text after it, *line: its line number. */
-typedef struct csv_header {
-    const char *body;
-    long line;
-    char sep;
-    int named;
-    size_t n;
-    double start, step;
-} csv_header;
+typedef lx__csv_header csv_header;
 
 /* count_part / parse_part on part t of an array, as thread t of lx__parallel_run */
 static void count_each(void *arg, int t) { count_part((part *)arg + t); }
-static void parse_each(void *arg, int t) { parse_part((part *)arg + t); }
+static void parse_each(void *arg, int t) { lx__csv_parse_part((part *)arg + t); }
 
-static lx_status read_header(lx_ctx *ctx, const char *file, const char *text, size_t len, csv_header *H)
+lx_status lx__csv_read_header(lx_ctx *ctx, const char *file, const char *text, size_t len, csv_header *H)
 {
     const char *end = text + len, *s = text;
     if (len >= 3 && !memcmp(s, "\xEF\xBB\xBF", 3)) s += 3;
     long line = 1;
     const char *hs = NULL, *he = NULL;
     while (s < end) { /* the header: the first line that is not blank or a comment */
-        const char *le = line_end_bounded(s, end), *nl = le && le < end ? le : NULL;
-        if (!le) return line_too_long(ctx, file, line);
+        const char *le = lx__csv_line_end(s, end), *nl = le && le < end ? le : NULL;
+        if (!le) return lx__csv_line_too_long(ctx, file, line);
         if (!is_skip_line(s, le)) {
             hs = s;
             he = le > s && le[-1] == '\r' ? le - 1 : le;
@@ -402,7 +378,7 @@ lx_status lx_batch_table_read_mem(lx_ctx *ctx, const char *file, const char *tex
     *out = NULL;
     if (dtype != LX_F32 && dtype != LX_F64) return lx__error(ctx, LX_EINVAL, file, 0, "batch csv: unknown dtype");
     csv_header H;
-    lx_status hst = read_header(ctx, file, text, len, &H);
+    lx_status hst = lx__csv_read_header(ctx, file, text, len, &H);
     if (hst) return hst;
     const char *end = text + len, *s = H.body;
     long line = H.line;
@@ -453,7 +429,7 @@ lx_status lx_batch_table_read_mem(lx_ctx *ctx, const char *file, const char *tex
         parts[i].rows_cap = parts[i].rows;
         parts[i].values = (char *)vals + parts[i].row0 * n * es;
     }
-    for (int i = lx__parallel_run(T, parse_each, parts); i < T; i++) parse_part(&parts[i]);
+    for (int i = lx__parallel_run(T, parse_each, parts); i < T; i++) lx__csv_parse_part(&parts[i]);
     lx_status st = LX_OK;
     size_t names_len = 0;
     for (int i = 0; i < T && !st; i++) {
@@ -548,199 +524,4 @@ lx_status lx_batch_table_read(lx_ctx *ctx, const char *path, lx_dtype dtype, int
     st = lx_batch_table_read_mem(ctx, path, tf.text, tf.len, dtype, threads, out);
     text_close(&tf);
     return st;
-}
-
-/* ---- streaming: parse the next chunk on threads while the caller handles this one ---- */
-
-/* A round parses up to STREAM_PARTS_PER_THREAD parts a thread of this much text each; threads take parts from a
- * counter, so one kept off its core by another process delays a round by one part at most. */
-#define STREAM_PART_BYTES ((size_t)512 << 10)
-/* parts in flight per thread: 4 measured 14 % faster than 8 (42 MB, 2 threads): the values of a
- * smaller chunk are still in cache when they are integrated, and fewer buffers are first-touched */
-#define STREAM_PARTS_PER_THREAD 4
-
-typedef struct part_set {
-    part p[64];
-    size_t cap[64]; /* rows each p[i].values holds */
-    int count;
-    _Atomic int next; /* the next part to parse */
-    long first_line;  /* line number of the first line of p[0] */
-} part_set;
-
-/* Parts of a set, taken one at a time from its counter by each thread of a team. */
-static void parse_set(void *arg, int t)
-{
-    (void)t;
-    part_set *S = arg;
-    for (int i; (i = atomic_fetch_add_explicit(&S->next, 1, memory_order_relaxed)) < S->count;) parse_part(&S->p[i]);
-}
-
-lx_status lx_batch_table_stream(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads, lx_batch_chunk_fn fn,
-                                void *user)
-{
-    LX__NEED_CTX(ctx);
-    if (!path || !fn) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch csv: NULL argument");
-    if (dtype != LX_F32 && dtype != LX_F64) return lx__error(ctx, LX_EINVAL, path, 0, "batch csv: unknown dtype");
-    text_file tf;
-    lx_status st = text_open(ctx, path, 0, &tf);
-    if (st) return st;
-    csv_header H;
-    if ((st = read_header(ctx, path, tf.text, tf.len, &H))) {
-        text_close(&tf);
-        return st;
-    }
-    int T = lx__threads(threads, 0);
-    size_t n = H.n, es = dtype == LX_F32 ? sizeof(float) : sizeof(double);
-    /* end: where cutting stops (moved back to a line longer than LX__BATCH_LINE_MAX, whose
-     * number is reported once every row before it was handed on); lim: the end of the text */
-    const char *lim = tf.text + tf.len, *end = lim, *pos = H.body, *too_long = NULL;
-    const char *released = tf.text; /* mapped text before this has been handed back (madvise) */
-    /* the table parse_part reads its grid and dtype from */
-    lx_batch_table tmpl = {.batch = {.n_lambda = n, .start_nm = H.start, .step_nm = H.step, .dtype = dtype}};
-    part_set *sets = calloc(2, sizeof *sets);
-    if (!sets) {
-        text_close(&tf);
-        return lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
-    }
-    long next_line = H.line + 1;
-    size_t row0 = 0;
-    int cur = 0, have_prev = 0;
-    while (!st && (pos < end || have_prev)) {
-        part_set *S = &sets[cur], *P = &sets[cur ^ 1];
-        S->count = 0;
-        S->first_line = next_line;
-        lx__team team = {.started = 0};
-        int max_parts = STREAM_PARTS_PER_THREAD * T < 64 ? STREAM_PARTS_PER_THREAD * T : 64;
-        const char *set_start = pos;
-        /* cut the next chunk into parts at line boundaries (a set holds about max_parts parts'
-         * worth of text, however long its lines, so memory stays bounded) */
-        while (pos < end && S->count < max_parts && (size_t)(pos - set_start) < (size_t)max_parts * STREAM_PART_BYTES) {
-            part *q = &S->p[S->count];
-            const char *pe = (size_t)(end - pos) > STREAM_PART_BYTES ? pos + STREAM_PART_BYTES : end;
-            if (pe < end) { /* the end of the line at the cut: the only line of the part that can be long */
-                const char *nl = line_end_bounded(pe, end), *ls = NULL;
-                if (!nl || (size_t)(nl - pos) > LX__BATCH_LINE_MAX) {
-                    for (ls = pe; ls > pos && ls[-1] != '\n'; ls--) continue;
-                    if (nl && (size_t)(nl - ls) <= LX__BATCH_LINE_MAX) ls = NULL;
-                }
-                if (ls) too_long = end = pe = ls; /* the rows before it are parsed; then the error */
-                else pe = nl < end ? nl + 1 : end;
-            }
-            if (pe == pos) break;
-            /* a row takes at least 2 n - 1 bytes (n one-character values and their separators) */
-            size_t cap = (size_t)(pe - pos) / (2 * n - 1 + (n == 1)) + 1;
-            if (cap > S->cap[S->count]) {
-                free(q->values);
-                q->values = malloc(cap * n * es);
-                S->cap[S->count] = q->values ? cap : 0;
-                if (!q->values) {
-                    st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory for a chunk of %zu spectra", cap);
-                    break;
-                }
-            }
-            q->s = pos;
-            q->e = pe;
-            q->lim = lim;
-            q->t = &tmpl;
-            q->sep = H.sep;
-            q->named = H.named;
-            q->line0 = 0;
-            q->rows_cap = cap;
-            q->rows_done = 0;
-            q->lines_done = 0;
-            pos = pe;
-            S->count++;
-        }
-        if (st) break;
-        atomic_store(&S->next, 0);
-        if (S->count) lx__team_start(&team, T, 0, parse_set, S);
-        /* meanwhile: the previous chunk, in file order, on this thread */
-        if (have_prev) {
-            for (int i = 0; i < P->count && !st; i++) {
-                part *q = &P->p[i];
-                lx_batch_table view = {.batch = tmpl.batch, .names = q->names, .name_at = q->name_at};
-                view.batch.n_spectra = q->rows_done;
-                view.batch.values = q->values;
-                if (q->rows_done) st = fn(user, &view, row0);
-                row0 += q->rows_done;
-            }
-            have_prev = 0;
-            /* its text is no longer needed: resident memory stays a few chunks, not the file */
-            const char *done = P->count ? P->p[P->count - 1].e : released;
-            size_t page = (size_t)sysconf(_SC_PAGESIZE);
-            size_t drop = page ? ((size_t)(done - released) / page) * page : 0;
-            if (tf.map && drop) {
-                madvise((void *)released, drop, MADV_DONTNEED);
-                released += drop;
-            }
-        }
-        lx__team_join(&team);
-        parse_set(S, 0); /* parts no thread took (none started, say) */
-        if (st) break;
-        long line = S->first_line;
-        for (int i = 0; i < S->count && !st; i++) {
-            part *q = &S->p[i];
-            if (q->err_line) st = lx__error(ctx, LX_EPARSE, path, line + q->err_line, "%s", q->err);
-            line += q->lines_done;
-        }
-        next_line = line;
-        have_prev = S->count > 0;
-        cur ^= 1;
-    }
-    if (!st && too_long) st = line_too_long(ctx, path, next_line); /* every row before it went to fn */
-    for (int k = 0; k < 2; k++)
-        for (int i = 0; i < 64; i++) {
-            free(sets[k].p[i].values);
-            free(sets[k].p[i].names);
-            free(sets[k].p[i].name_at);
-        }
-    free(sets);
-    text_close(&tf);
-    return st;
-}
-
-/* lx_batch_table_integrate_file: every chunk integrated into a growing result on the caller's thread */
-typedef struct integ {
-    lx_ctx *ctx;
-    const lx_function *fns;
-    size_t k, cap, rows;
-    double *out;
-} integ;
-
-static lx_status integ_chunk(void *user, const lx_batch_table *chunk, size_t row0)
-{
-    integ *I = user;
-    size_t need = (row0 + chunk->batch.n_spectra) * I->k;
-    if (need > I->cap) {
-        size_t cap = need > 2 * I->cap ? need : 2 * I->cap;
-        double *o = realloc(I->out, cap * sizeof *o);
-        if (!o) return lx__error(I->ctx, LX_ENOMEM, NULL, 0, "out of memory for the results");
-        I->out = o;
-        I->cap = cap;
-    }
-    /* one thread: the other cores are parsing the next chunk */
-    lx_batch_opts o = {.backend = LX_BACKEND_CPU, .threads = 1};
-    I->rows = row0 + chunk->batch.n_spectra;
-    return lx_batch_integrate(I->ctx, &chunk->batch, I->fns, I->k, &o, I->out + row0 * I->k);
-}
-
-void lx_batch_results_free(double *results) { free(results); }
-
-lx_status lx_batch_table_integrate_file(lx_ctx *ctx, const char *path, const lx_function *fns, size_t k, int threads,
-                                        double **out, size_t *n_spectra)
-{
-    LX__NEED_CTX(ctx);
-    if (!path || !fns || !k || !out || !n_spectra) return lx__error(ctx, LX_EINVAL, NULL, 0, "batch csv: NULL argument");
-    *out = NULL;
-    integ I = {ctx, fns, k, 0, 0, NULL};
-    /* double values: the same numbers strtod gives, summed in double */
-    lx_status st = lx_batch_table_stream(ctx, path, LX_F64, threads, integ_chunk, &I);
-    if (!st && !I.out && !(I.out = malloc(sizeof(double)))) st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
-    if (st) {
-        free(I.out);
-        return st;
-    }
-    *out = I.out;
-    *n_spectra = I.rows;
-    return LX_OK;
 }

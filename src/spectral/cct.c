@@ -26,9 +26,11 @@ static lx_status get_cmf(lx_ctx *ctx, lx_observer obs, cmf3 *c)
     return st;
 }
 
-/* uv of the Planckian radiator at T and, when du/dv are non-NULL, their derivatives in T. The
- * spectrum is scaled by exp(c2/(lambda_ref T)) so it neither under- nor overflows at any T. */
-static void planck_uv(const cmf3 *c, double T, double *u, double *v, double *du, double *dv)
+/* uv of the Planckian radiator at T and, when du/dv are non-NULL, their derivatives in T, from
+ * every `stride`-th wavelength of the CMFs (1: the exact sums; the solver's guide table takes 5,
+ * good to 1e-6 in uv, as the table only brackets the root and starts the search). The spectrum is
+ * scaled by exp(c2/(lambda_ref T)) so it neither under- nor overflows at any T. */
+static void planck_uv_every(const cmf3 *c, size_t stride, double T, double *u, double *v, double *du, double *dv)
 {
     double X = 0, Y = 0, Z = 0, dX = 0, dY = 0, dZ = 0;
     /* scale by exp(c2 / (lambda_last T)) so the longest wavelength has factor 1: no underflow */
@@ -37,7 +39,7 @@ static void planck_uv(const cmf3 *c, double T, double *u, double *v, double *du,
      * (xref < 58) and 1 - exp(-x) keeps full precision while x > 0.01 (eps / x < 3e-14). */
     int fast = T >= 300.0;
     double exref = fast ? exp(xref) : 0.0;
-    for (size_t i = 0; i < c->y.n; i++) {
+    for (size_t i = 0; i < c->y.n; i += stride) {
         double l = c->y.lambda_nm[i];
         double x = LX__C2_NM_K / (l * T);
         double l5 = l * l * l * l * l;
@@ -57,6 +59,63 @@ static void planck_uv(const cmf3 *c, double T, double *u, double *v, double *du,
     *v = 6 * Y / D;
     if (du) *du = 4 * (dX * D - X * dD) / (D * D);
     if (dv) *dv = 6 * (dY * D - Y * dD) / (D * D);
+}
+
+static void planck_uv(const cmf3 *c, double T, double *u, double *v, double *du, double *dv)
+{
+    planck_uv_every(c, 1, T, u, v, du, dv);
+}
+
+/* The same uv with their first three derivatives in s = ln T, for the fast solver's table
+ * (cct_fast.c). With B = f(x) = 1 / (e^x - 1) per wavelength (up to its constant factor),
+ * x = c2 / (lambda T) and r = 1 / (1 - e^-x): dB/ds = x r B, d2B/ds2 = x r B (x (2r - 1) - 1),
+ * d3B/ds3 = x r B (1 - 3x (2r - 1) + x^2 (6r^2 - 6r + 1)); then u = N / D by u' = (N' - u D') / D,
+ * u'' = (N'' - 2u' D' - u D'') / D, u''' = (N''' - 3u'' D' - 3u' D'' - u D''') / D. */
+static void planck_uv_ds3(const cmf3 *c, const double *c2_l, const double *inv_l5, double T, double o[8])
+{
+    double S[4][3] = {{0}};
+    double xref = LX__C2_NM_K / (c->y.lambda_nm[c->y.n - 1] * T), exref = exp(xref), iT = 1 / T;
+    const double *w[3] = {c->x.value, c->y.value, c->z.value};
+    for (size_t i = 0; i < c->y.n; i++) {
+        double x = c2_l[i] * iT;
+        double e = exp(-x);
+        double r = 1 / (x > 0.01 ? 1 - e : -expm1(-x));
+        double b = exref * e * r * inv_l5[i], xr = x * r, tr = 2 * r - 1;
+        double d[4] = {b, xr * b, xr * b * (x * tr - 1), xr * b * (1 - 3 * x * tr + x * x * (6 * r * r - 6 * r + 1))};
+        for (int m = 0; m < 4; m++)
+            for (int k = 0; k < 3; k++) S[m][k] += d[m] * w[k][i];
+    }
+    double D[4];
+    for (int m = 0; m < 4; m++) D[m] = S[m][0] + 15 * S[m][1] + 3 * S[m][2];
+    static const double a[2] = {4, 6};
+    for (int q = 0; q < 2; q++) {
+        double N0 = a[q] * S[0][q], N1 = a[q] * S[1][q], N2 = a[q] * S[2][q], N3 = a[q] * S[3][q];
+        double f0 = N0 / D[0];
+        double f1 = (N1 - f0 * D[1]) / D[0];
+        double f2 = (N2 - 2 * f1 * D[1] - f0 * D[2]) / D[0];
+        double f3 = (N3 - 3 * f2 * D[1] - 3 * f1 * D[2] - f0 * D[3]) / D[0];
+        o[q] = f0, o[2 + q] = f1, o[4 + q] = f2, o[6 + q] = f3;
+    }
+}
+
+lx_status lx__planck_uv_ds3(lx_observer obs, size_t n, const double *T, double (*out)[8])
+{
+    cmf3 c;
+    lx_ctx *tmp = NULL; /* the views of the embedded CMFs need a context (for errors only) */
+    lx_status st = lx_ctx_create(&tmp);
+    if (st == LX_OK) st = get_cmf(tmp, obs, &c);
+    lx_ctx_destroy(tmp);
+    if (st != LX_OK) return st;
+    double *c2_l = malloc(2 * c.y.n * sizeof *c2_l), *inv_l5 = c2_l ? c2_l + c.y.n : NULL;
+    if (!c2_l) return LX_ENOMEM;
+    for (size_t i = 0; i < c.y.n; i++) {
+        double l = c.y.lambda_nm[i];
+        c2_l[i] = LX__C2_NM_K / l;
+        inv_l5[i] = 1 / (l * l * l * l * l);
+    }
+    for (size_t k = 0; k < n; k++) planck_uv_ds3(&c, c2_l, inv_l5, T[k], out[k]);
+    free(c2_l);
+    return LX_OK;
 }
 
 /* The locus cache of a context (its LX__SLOT_LOCUS): CIE 1960 uv of the Planckian radiator at
@@ -97,7 +156,7 @@ static lx_status locus(lx_ctx *ctx, lx_observer obs, lx__locus **out, cmf3 *c)
         double *du = L->u + 2 * L->n, *dv = L->u + 3 * L->n;
         for (int k = 0; k < L->n; k++) {
             double T = exp(L->logt0 + k * L->dlogt);
-            planck_uv(c, T, &L->u[k], &L->v[k], &du[k], &dv[k]);
+            planck_uv_every(c, 5, T, &L->u[k], &L->v[k], &du[k], &dv[k]); /* a guide: the solve is exact */
             du[k] *= T, dv[k] *= T;
         }
         L->ready = 1;
@@ -258,88 +317,13 @@ lx_status lx_cct_from_xy(lx_ctx *ctx, lx_observer obs, double x, double y, doubl
     return lx_cct_from_uv(ctx, obs, 4 * x / d, 6 * y / d, cct_K, duv);
 }
 
-/* The point of the Hermite interpolant at s = ln T and its derivative in s. */
-static void hermite_at(const lx__locus *L, double s, double *pu, double *pv, double *qu, double *qv)
-{
-    const double *du = L->u + 2 * L->n, *dv = L->u + 3 * L->n, h = L->dlogt;
-    double f = (s - L->logt0) / h;
-    int i = (int)floor(f);
-    if (i < 0) i = 0;
-    if (i > L->n - 2) i = L->n - 2;
-    double t = f - i, t2 = t * t, t3 = t2 * t;
-    double h00 = 2 * t3 - 3 * t2 + 1, h10 = t3 - 2 * t2 + t, h01 = -2 * t3 + 3 * t2, h11 = t3 - t2;
-    double d00 = 6 * t2 - 6 * t, d10 = 3 * t2 - 4 * t + 1, d01 = -6 * t2 + 6 * t, d11 = 3 * t2 - 2 * t;
-    *pu = h00 * L->u[i] + h10 * h * du[i] + h01 * L->u[i + 1] + h11 * h * du[i + 1];
-    *pv = h00 * L->v[i] + h10 * h * dv[i] + h01 * L->v[i + 1] + h11 * h * dv[i + 1];
-    *qu = (d00 * L->u[i] + d10 * h * du[i] + d01 * L->u[i + 1] + d11 * h * du[i + 1]) / h;
-    *qv = (d00 * L->v[i] + d10 * h * dv[i] + d01 * L->v[i + 1] + d11 * h * dv[i + 1]) / h;
-}
-
 lx_status lx__cct_from_uv_table(lx_ctx *ctx, lx_observer obs, double u, double v, double *cct_K, double *duv)
 {
     *cct_K = *duv = NAN;
     if (!isfinite(u) || !isfinite(v)) return LX_ERANGE;
-    lx__locus *L = lx__slot_get(ctx, LX__SLOT_LOCUS);
-    if (L && (obs == LX_OBSERVER_2 || obs == LX_OBSERVER_10)) L += obs == LX_OBSERVER_2 ? 0 : 1;
-    if (!L || !L->ready) { /* the first call on this context builds the table */
-        cmf3 c;
-        lx_status st = locus(ctx, obs, &L, &c);
-        if (st != LX_OK) return st;
-    }
-    /* u falls monotonically along the locus: bisect on u, then the nearest node by distance among
-     * its neighbours (a point within Duv 0.05 is nearest to a node a few steps away at most) */
-    int lo = 0, hi = L->n - 1;
-    while (hi - lo > 1) {
-        int mid = (lo + hi) / 2;
-        if (L->u[mid] > u) lo = mid;
-        else hi = mid;
-    }
-    int best = lo, k0 = lo - 12 < 0 ? 0 : lo - 12, k1 = lo + 12 > L->n - 1 ? L->n - 1 : lo + 12;
-    double bd = INFINITY;
-    for (int k = k0; k <= k1; k++) {
-        double du = L->u[k] - u, dv = L->v[k] - v, d = du * du + dv * dv;
-        if (d < bd) bd = d, best = k;
-    }
-    if (best == k0 || best == k1) { /* not a local minimum inside the window: search them all */
-        for (int k = 0; k < L->n; k++) {
-            double du = L->u[k] - u, dv = L->v[k] - v, d = du * du + dv * dv;
-            if (d < bd) bd = d, best = k;
-        }
-    }
-    if (best == 0 || best == L->n - 1) return LX_ERANGE;
-    /* the foot of the perpendicular lies in the interval on the side the tangent at the nearest
-     * node points to: Newton steps on (P(s) - p) . P'(s) = 0 there */
-    const double *dU = L->u + 2 * L->n, *dV = L->u + 3 * L->n;
-    double dot = (u - L->u[best]) * dU[best] + (v - L->v[best]) * dV[best];
-    int i = dot > 0 ? best : best - 1;
-    double h = L->dlogt, pu, pv, qu, qv;
-    /* start from the projection onto the chord of the interval: Newton then needs two or three steps */
-    double cu = L->u[i + 1] - L->u[i], cv = L->v[i + 1] - L->v[i], cc = cu * cu + cv * cv;
-    double t = cc > 0 ? ((u - L->u[i]) * cu + (v - L->v[i]) * cv) / cc : 0.5;
-    t = t < 0 ? 0 : t > 1 ? 1 : t;
-    for (int it = 0; it < 10; it++) {
-        double s = L->logt0 + (i + t) * h;
-        hermite_at(L, s, &pu, &pv, &qu, &qv);
-        double ru, rv; /* second derivative in s, by the same cubic */
-        {
-            double e00 = 12 * t - 6, e10 = 6 * t - 4, e01 = -12 * t + 6, e11 = 6 * t - 2;
-            ru = (e00 * L->u[i] + e10 * h * dU[i] + e01 * L->u[i + 1] + e11 * h * dU[i + 1]) / (h * h);
-            rv = (e00 * L->v[i] + e10 * h * dV[i] + e01 * L->v[i + 1] + e11 * h * dV[i + 1]) / (h * h);
-        }
-        double g = (pu - u) * qu + (pv - v) * qv, gp = qu * qu + qv * qv + (pu - u) * ru + (pv - v) * rv;
-        if (!(gp > 0)) break;
-        double tn = t - g / (gp * h);
-        tn = tn < 0 ? 0 : tn > 1 ? 1 : tn;
-        double step = fabs(tn - t);
-        t = tn;
-        if (step < 1e-10) break; /* 1e-10 of a node interval: 5e-12 relative in T */
-    }
-    double s = L->logt0 + (i + t) * h, T = exp(s);
-    if (!(T >= LOCUS_T_MIN && T <= LOCUS_T_MAX)) return LX_ERANGE;
-    hermite_at(L, s, &pu, &pv, &qu, &qv);
-    double cross = qu * (v - pv) - qv * (u - pu), sgn = cross < 0 ? 1.0 : -1.0;
-    if (qu > 0) sgn = -sgn; /* as lx_cct_from_uv: + above the locus */
-    *cct_K = T;
-    *duv = sgn * hypot(u - pu, v - pv);
-    return LX_OK;
+    /* the one fast solver (cct_fast.c: the exact answer to rounding, 0.15 us); where it does not
+     * answer (the nearest point outside 900 K - 120000 K) the exact solve, on ctx */
+    if (lx__cct_fast(obs, u, v, cct_K, duv)) return LX_OK;
+    lx_status st = lx_cct_from_uv(ctx, obs, u, v, cct_K, duv);
+    return st == LX_OK ? LX_OK : LX_ERANGE;
 }

@@ -30,8 +30,26 @@ static double solve_cct(lx_ctx *ctx, lx_observer obs, double u, double v, double
     return T;
 }
 
-lx_status lx__colorimetry_range(lx_ctx *ctx, lx_observer obs, const double xyz[3], double vprime, double radiant,
-                                double lo_K, double hi_K, lx_colorimetry *out, double *solved_K)
+/* The CCT of u, v by the fast table (cct_fast.c): 1 with *T, *duv when the answer is clear of the
+ * validity edges (|Duv| 0.05, lo_K, hi_K: there the two solvers' last bits could disagree, so the
+ * exact one decides), 1 with T NaN when the fast answer says there is no CCT to report, 0 when the
+ * exact solver must decide. An invalid fast answer is final: within 0.1 of the locus the root it
+ * finds is the only one (cct_fast.c), so a point it puts farther than 0.05 from the locus, or whose
+ * root it finds outside its table (900 K - 120000 K, beyond the range ends), has no CCT in the
+ * range within 0.05 either. */
+static int fast_cct(lx_observer obs, double u, double v, double lo_K, double hi_K, double *T, double *duv)
+{
+    double t, d;
+    *T = *duv = NAN;
+    if (!lx__cct_fast(obs, u, v, &t, &d)) return 1; /* beyond the table: CCT outside the range, or |Duv| > 0.1 */
+    double ad = fabs(d);
+    if (fabs(ad - 0.05) < 1e-9 || fabs(t / lo_K - 1) < 1e-7 || fabs(t / hi_K - 1) < 1e-7) return 0;
+    if (ad <= 0.05) *T = t, *duv = d;
+    return 1;
+}
+
+static lx_status colorimetry(lx_ctx *ctx, lx_observer obs, const double xyz[3], double vprime, double radiant,
+                             double lo_K, double hi_K, int fast, lx_colorimetry *out, double *solved_K)
 {
     LX__NEED_CTX(ctx);
     if (!out || !xyz) return lx__error(ctx, LX_EINVAL, NULL, 0, "integrals and output are required");
@@ -63,14 +81,28 @@ lx_status lx__colorimetry_range(lx_ctx *ctx, lx_observer obs, const double xyz[3
     r.sp_ratio = r.Y != 0 ? r.scotopic_Y / r.Y : NAN;
     r.cct_K = r.duv = NAN;
     r.cct_valid = 0;
-    double T = NAN, duv = NAN;
-    if (d != 0 && isfinite(r.u_prime)) T = solve_cct(ctx, obs, r.u_prime, r.v_prime * 2.0 / 3.0, &duv);
+    double T = NAN, duv = NAN, u = r.u_prime, v = r.v_prime * 2.0 / 3.0;
+    /* solved_K asks for a CCT outside the range too: only the exact solver has the whole locus */
+    if (d != 0 && isfinite(u) && !(fast && !solved_K && fast_cct(obs, u, v, lo_K, hi_K, &T, &duv)))
+        T = solve_cct(ctx, obs, u, v, &duv);
     /* the range ends are inclusive to the solver's precision */
     r.cct_valid = isfinite(T) && fabs(duv) <= 0.05 && T >= lo_K * (1 - 1e-9) && T <= hi_K * (1 + 1e-9);
     if (r.cct_valid) r.cct_K = T, r.duv = duv;
     if (solved_K) *solved_K = isfinite(T) && fabs(duv) <= 0.05 ? T : NAN;
     *out = r;
     return LX_OK;
+}
+
+lx_status lx__colorimetry_range(lx_ctx *ctx, lx_observer obs, const double xyz[3], double vprime, double radiant,
+                                double lo_K, double hi_K, lx_colorimetry *out, double *solved_K)
+{
+    return colorimetry(ctx, obs, xyz, vprime, radiant, lo_K, hi_K, 0, out, solved_K);
+}
+
+lx_status lx__colorimetry_fast(lx_ctx *ctx, lx_observer obs, const double xyz[3], double vprime, double radiant,
+                               double lo_K, double hi_K, lx_colorimetry *out)
+{
+    return colorimetry(ctx, obs, xyz, vprime, radiant, lo_K, hi_K, 1, out, NULL);
 }
 
 lx_status lx_colorimetry_from_integrals(lx_ctx *ctx, lx_observer obs, const double xyz[3], double vprime,

@@ -1,5 +1,6 @@
 /* csv_vector.c - the vector line parser of the batch CSV reader (batch_csv.c): a whole line of
- * short decimals ("0.123456", "-12.5", "3") parsed with AVX-512, four fields per instruction.
+ * short decimals ("0.123456", "-12.5", "3") parsed with AVX-512, four fields per instruction, or
+ * by its AVX2 twin (csv_vector_avx2.h, two fields per instruction).
  * Anything else (exponents, 16+ characters, spaces, a bad byte) answers 0 and the general parser
  * redoes the line, so this file decides speed, never meaning: every value it returns is the
  * correctly rounded one strtod gives (tests/test_batch.c checks bit for bit).
@@ -118,8 +119,8 @@ __attribute__((target(LX_AVX512_LINE))) static int flush(const char *q, uint32_t
     return 1;
 }
 
-__attribute__((target(LX_AVX512_LINE))) int lx__csv_fast_line(const char *q, const char *stop, int whole, char sep,
-                                                             size_t n, int f32, void *dst, const char **line_end)
+__attribute__((target(LX_AVX512_LINE))) static int line_avx512(const char *q, const char *stop, int whole, char sep,
+                                                               size_t n, int f32, void *dst, const char **line_end)
 {
     if ((size_t)(stop - q) >= 0xffff0000u) stop = q + 0xffff0000u, whole = 0; /* offsets are 32-bit */
     const __m512i vsep = _mm512_set1_epi8(sep), vnl = _mm512_set1_epi8('\n');
@@ -168,17 +169,179 @@ __attribute__((target(LX_AVX512_LINE))) int lx__csv_fast_line(const char *q, con
     return 1;
 }
 
-int lx__csv_have_fast_line(void) { return lx_simd_level() == LX_SIMD_AVX512 && lx__cpu_has_bitalg(); }
 
-#else
+/* ---- the AVX2 twin (x86-64-v3: AVX2, BMI1, BMI2, POPCNT): the same three passes, pass 1 on two
+ * 32-byte halves of each 64-byte block, pass 2 two fields per instruction (one per 128-bit lane)
+ * with byte masks in place of the mask registers and the checks on their movemasks, pass 3 four
+ * values per division, m converted exactly through the 2^52 bias (m < 10^15 < 2^52) ---- */
+#define LX_AVX2_LINE "avx2,fma,bmi,bmi2,popcnt"
 
-int lx__csv_fast_line(const char *q, const char *stop, int whole, char sep, size_t n, int f32, void *dst,
+static inline uint64_t lo_pair(uint32_t a, uint32_t b) { return (uint64_t)a | (uint64_t)b << 32; }
+
+/* Pass 2 for two fields (ends e[0], e[1]; the one before at e[-1]); lanes from `real` on are
+ * padding and read as "0". As convert4. */
+__attribute__((target(LX_AVX2_LINE))) static inline int convert2(const char *q, const uint32_t *e, int real, int64_t *m,
+                                                                uint8_t *nf)
+{
+    uint32_t s0 = e[-1] + 1, s1 = e[0] + 1, L0 = e[0] - s0, L1 = e[1] - s1;
+    if (real < 1) L0 = 1;
+    if (real < 2) L1 = 1;
+    if (L0 > 15 || L1 > 15) return 0; /* 16+ characters (an empty field wraps round: also refused) */
+    const __m256i iota = _mm256_setr_epi8(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9,
+                                          10, 11, 12, 13, 14, 15);
+    __m256i x = _mm256_inserti128_si256(_mm256_castsi128_si256(_mm_loadu_si128((const __m128i *)(const void *)(q + s0))),
+                                        _mm_loadu_si128((const __m128i *)(const void *)(q + s1)), 1);
+    if (real < 1) x = _mm256_set1_epi8('0');
+    else if (real < 2) x = _mm256_blend_epi32(x, _mm256_set1_epi8('0'), 0xF0);
+    __m256i Lv = _mm256_inserti128_si256(_mm256_castsi128_si256(_mm_set1_epi8((char)L0)), _mm_set1_epi8((char)L1), 1);
+    __m256i valid = _mm256_cmpgt_epi8(Lv, iota);
+    __m256i d = _mm256_sub_epi8(x, _mm256_set1_epi8('0'));
+    __m256i dig = _mm256_and_si256(_mm256_cmpeq_epi8(_mm256_min_epu8(d, _mm256_set1_epi8(9)), d), valid);
+    uint32_t vm = (uint32_t)_mm256_movemask_epi8(valid), gm = (uint32_t)_mm256_movemask_epi8(dig);
+    uint32_t pm = (uint32_t)_mm256_movemask_epi8(_mm256_cmpeq_epi8(x, _mm256_set1_epi8('.'))) & vm;
+    uint32_t nm = (uint32_t)_mm256_movemask_epi8(_mm256_cmpeq_epi8(x, _mm256_set1_epi8('-'))) & vm & 0x00010001u;
+    /* every byte a digit, but a leading '-' and a '.' with a digit before it */
+    if ((gm | pm | nm) != vm || (pm & (0x00010001u | nm << 1))) return 0;
+    uint32_t p0 = pm & 0xffff, p1 = pm >> 16;
+    /* per lane at most one '.', at least one digit */
+    if ((p0 & (p0 - 1)) || (p1 & (p1 - 1)) || !(gm & 0xffff) || !(gm >> 16)) return 0;
+    int d0 = p0 ? __builtin_ctz(p0) : -1, d1 = p1 ? __builtin_ctz(p1) : -1;
+    /* nf: fraction digits, the sign in bit 7 (applied to the double, so "-0" gives -0.0) */
+    nf[0] = (uint8_t)((d0 >= 0 ? (int)L0 - d0 - 1 : 0) | (int)(nm & 1) << 7);
+    nf[1] = (uint8_t)((d1 >= 0 ? (int)L1 - d1 - 1 : 0) | (int)(nm >> 16 & 1) << 7);
+    /* the digits: others to 0, the '.' closed up (bytes 0..'.' take their left neighbour), the
+     * last digit moved to byte 15 of its lane, then 2, 4, 8 and 16 digits at a time */
+    __m256i upto = _mm256_cmpgt_epi8(
+        _mm256_inserti128_si256(_mm256_castsi128_si256(_mm_set1_epi8((char)(d0 + 1))), _mm_set1_epi8((char)(d1 + 1)), 1), iota);
+    d = _mm256_and_si256(d, dig);
+    d = _mm256_blendv_epi8(d, _mm256_slli_si256(d, 1), upto);
+    d = _mm256_shuffle_epi8(d, _mm256_add_epi8(iota, _mm256_sub_epi8(Lv, _mm256_set1_epi8(16))));
+    __m256i t = _mm256_maddubs_epi16(d, _mm256_set1_epi16(0x010a));          /* 10 a + b */
+    t = _mm256_madd_epi16(t, _mm256_set1_epi32(0x00010064));                 /* 100 a + b */
+    t = _mm256_packus_epi32(t, t);                                           /* 4-digit words */
+    t = _mm256_madd_epi16(t, _mm256_set1_epi32(0x00012710));                 /* 10^4 a + b */
+    __m256i v = _mm256_add_epi64(_mm256_mul_epu32(t, _mm256_set1_epi64x(100000000)), _mm256_srli_epi64(t, 32));
+    v = _mm256_permute4x64_epi64(v, 0x08); /* qword 0 of each lane */
+    _mm_storeu_si128((__m128i *)(void *)m, _mm256_castsi256_si128(v));
+    return 1;
+}
+
+/* Pass 3: dst[0..k) = -+m[i] / 10^nf[i] (as float when f32), four at a time. */
+__attribute__((target(LX_AVX2_LINE))) static void divide4(const int64_t *m, const uint8_t *nf, size_t k, int f32, void *dst)
+{
+    const __m256i bias = _mm256_set1_epi64x(0x4330000000000000ll); /* 2^52 as a double */
+    for (size_t i = 0; i < k; i += 4) {
+        size_t c = k - i < 4 ? k - i : 4;
+        __m256i mi = _mm256_loadu_si256((const __m256i *)(const void *)(m + i));
+        __m256d v = _mm256_sub_pd(_mm256_castsi256_pd(_mm256_or_si256(mi, bias)), _mm256_castsi256_pd(bias));
+        int32_t n4;
+        memcpy(&n4, nf + i, 4);
+        __m128i nb = _mm_cvtsi32_si128(n4);
+        __m256d p = _mm256_i32gather_pd(pow10_exact, _mm_and_si128(_mm_cvtepu8_epi32(nb), _mm_set1_epi32(15)), 8);
+        v = _mm256_div_pd(v, p);
+        __m256i sg = _mm256_slli_epi64(_mm256_and_si256(_mm256_cvtepu8_epi64(nb), _mm256_set1_epi64x(0x80)), 56);
+        v = _mm256_castsi256_pd(_mm256_xor_si256(_mm256_castpd_si256(v), sg));
+        __m256i keep = _mm256_cmpgt_epi64(_mm256_set1_epi64x((long long)c), _mm256_setr_epi64x(0, 1, 2, 3));
+        if (f32) {
+            __m128i k32 = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(keep, _mm256_setr_epi32(0, 2, 4, 6, 0, 0, 0, 0)));
+            _mm_maskstore_ps((float *)dst + i, k32, _mm256_cvtpd_ps(v));
+        } else {
+            _mm256_maskstore_pd((double *)dst + i, keep, v);
+        }
+    }
+}
+
+/* Passes 2 and 3 on the k fields whose ends are e[0..k) (e[-1]: the end before the first). */
+__attribute__((target(LX_AVX2_LINE))) static int flush2(const char *q, uint32_t *e, size_t k, int f32, void *dst)
+{
+    int64_t m[PEND_MAX + 4];
+    uint8_t nf[PEND_MAX + 12] = {0};
+    for (size_t i = k; i % 4; i++) e[i] = e[i - 1] + 2; /* padding lanes: 1 byte each, inside the readable 64 */
+    for (size_t i = 0; i < k; i += 2) {
+        int real = k - i < 2 ? (int)(k - i) : 2;
+        if (!convert2(q, e + i, real, m + i, nf + i)) return 0;
+    }
+    divide4(m, nf, k, f32, dst);
+    return 1;
+}
+
+__attribute__((target(LX_AVX2_LINE))) static int line_avx2(const char *q, const char *stop, int whole, char sep, size_t n,
+                                                          int f32, void *dst, const char **line_end)
+{
+    if ((size_t)(stop - q) >= 0xffff0000u) stop = q + 0xffff0000u, whole = 0; /* offsets are 32-bit */
+    const __m256i vsep = _mm256_set1_epi8(sep), vnl = _mm256_set1_epi8('\n');
+    uint32_t ends[PEND_MAX + 1], *e = ends + 1; /* e[-1]: the end before the first field */
+    size_t j = 0, k = 0, es = f32 ? sizeof(float) : sizeof(double);
+    const char *le = NULL;
+    e[-1] = 0xffffffffu; /* + 1 wraps to offset 0 */
+    for (const char *b = q; b < stop && !le; b += 64) {
+        uint64_t in = _bzhi_u64(~0ull, (unsigned)((size_t)(stop - b) < 64 ? (size_t)(stop - b) : 64));
+        __m256i x0 = _mm256_loadu_si256((const __m256i *)(const void *)b);
+        __m256i x1 = _mm256_loadu_si256((const __m256i *)(const void *)(b + 32));
+        uint64_t sm = lo_pair((uint32_t)_mm256_movemask_epi8(_mm256_cmpeq_epi8(x0, vsep)),
+                              (uint32_t)_mm256_movemask_epi8(_mm256_cmpeq_epi8(x1, vsep))) & in;
+        uint64_t nm = lo_pair((uint32_t)_mm256_movemask_epi8(_mm256_cmpeq_epi8(x0, vnl)),
+                              (uint32_t)_mm256_movemask_epi8(_mm256_cmpeq_epi8(x1, vnl))) & in;
+        if (nm) { /* the line ends in this block: separators after it belong to the next line */
+            le = b + _tzcnt_u64(nm);
+            sm &= _blsmsk_u64(nm) >> 1;
+        }
+        /* pass 1: each separator ends a field; 8 slots written whatever the count */
+        uint32_t base = (uint32_t)(b - q);
+        int cnt = __builtin_popcountll(sm);
+        uint32_t *w = e + k;
+        for (int i = 0; i < 8; i++) {
+            w[i] = base + (uint32_t)_tzcnt_u64(sm);
+            sm = _blsr_u64(sm);
+        }
+        for (int i = 8; i < cnt; i++) {
+            w[i] = base + (uint32_t)_tzcnt_u64(sm);
+            sm = _blsr_u64(sm);
+        }
+        k += (size_t)cnt;
+        if (k >= PEND) { /* convert a multiple of 8; the rest moves to the front */
+            size_t c = k / 8 * 8;
+            if (j + c >= n || !flush2(q, e, c, f32, (char *)dst + j * es)) return 0;
+            e[-1] = e[c - 1];
+            memmove(e, e + c, (k - c) * sizeof *e);
+            j += c, k -= c;
+        }
+    }
+    if (!le) { /* no newline before stop: the line ends there only if that is the end of the text */
+        if (!whole) return 0;
+        le = stop;
+    }
+    const char *fe = le > q && le[-1] == '\r' ? le - 1 : le; /* CRLF */
+    e[k++] = (uint32_t)(fe - q);
+    if (j + k != n || !flush2(q, e, k, f32, (char *)dst + j * es)) return 0;
+    *line_end = le;
+    return 1;
+}
+
+int lx__csv_fast_line(int level, const char *q, const char *stop, int whole, char sep, size_t n, int f32, void *dst,
                       const char **line_end)
 {
-    (void)q, (void)stop, (void)whole, (void)sep, (void)n, (void)f32, (void)dst, (void)line_end;
+    if (level == 2) return line_avx512(q, stop, whole, sep, n, f32, dst, line_end);
+    if (level == 1) return line_avx2(q, stop, whole, sep, n, f32, dst, line_end);
     return 0;
 }
 
-int lx__csv_have_fast_line(void) { return 0; }
+int lx__csv_fast_level(void)
+{
+    lx_simd l = lx_simd_level();
+    if (l == LX_SIMD_AVX512 && lx__cpu_has_bitalg()) return 2;
+    return l >= LX_SIMD_AVX2 ? 1 : 0; /* AVX-512 without BITALG runs the AVX2 twin */
+}
+
+#else
+
+int lx__csv_fast_line(int level, const char *q, const char *stop, int whole, char sep, size_t n, int f32, void *dst,
+                      const char **line_end)
+{
+    (void)level, (void)q, (void)stop, (void)whole, (void)sep, (void)n, (void)f32, (void)dst, (void)line_end;
+    return 0;
+}
+
+int lx__csv_fast_level(void) { return 0; }
 
 #endif

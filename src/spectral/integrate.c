@@ -175,7 +175,11 @@ static lx_status weighted(lx_ctx *ctx, const lx_spd *spd, const void *arg, doubl
         sum *= step;
     } else if (method == LX_METHOD_LINEAR1NM) {
         int ug = is_unit_grid(w);
-        double k0 = ceil(spd->lambda_nm[0]), k1 = floor(spd->lambda_nm[spd->n - 1]);
+        /* only the whole nanometres where the weight is defined (it is zero outside): the work is
+         * bounded by the weight's range, whatever the spectrum's (a file in the wrong unit can span
+         * 1e9 nm) */
+        double k0 = fmax(ceil(spd->lambda_nm[0]), ceil(w->lambda_nm[0]));
+        double k1 = fmin(floor(spd->lambda_nm[spd->n - 1]), floor(w->lambda_nm[w->n - 1]));
         size_t i = 0;
         for (double k = k0; k <= k1; k += 1.0) {
             while (i + 2 < spd->n && spd->lambda_nm[i + 1] <= k) i++;

@@ -486,3 +486,19 @@ lx_status lx_spd_read_file(lx_ctx *ctx, const char *path, lx_spd_set **out)
 {
     return lx_spd_read_file_opts(ctx, path, NULL, out);
 }
+
+lx_status lx_spd_read_stream(lx_ctx *ctx, const char *name, FILE *in, const char *prefix, size_t prefix_len,
+                             const lx_spd_read_opts *opts, lx_spd_set **out)
+{
+    LX__NEED_CTX(ctx);
+    if (out) *out = NULL;
+    if (!in || !out || (!prefix && prefix_len)) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_spd_read_stream: NULL argument");
+    const char *file = name ? name : "(stream)";
+    char *buf;
+    size_t len;
+    lx_status st = lx__read_stream(ctx, file, LX_INPUT_SPECTRUM, in, prefix, prefix_len, &buf, &len);
+    if (st != LX_OK) return st;
+    st = lx_spd_read_mem_opts(ctx, file, buf, len, opts, out);
+    free(buf);
+    return st;
+}

@@ -85,8 +85,8 @@ double lx__coverage(const lx_spd *w, double a, double b);
 /* One chromaticity binned with the embedded tables (binning.c); -1 when they are missing. */
 int lx__bin_xy(double x, double y, double cct_K, double duv, lx_binning *out);
 
-/* The Planckian locus table's cubic Hermite interpolant (cct.c): CCT and Duv without the exact
- * solve, for binning many spectra (LX_ERANGE outside 1000-20000 K). */
+/* CCT and Duv for binning many spectra (cct.c): the fast solver (cct_fast.c), the exact solve where
+ * it does not answer; LX_ERANGE where neither finds one (the exact solver's range 500 K - 1e6 K). */
 lx_status lx__cct_from_uv_table(lx_ctx *ctx, lx_observer obs, double u, double v, double *cct_K, double *duv);
 
 /* The radiant integral of spectrum i of a batch: the trapezoid rule, as lx_spd_integrate_radiant
@@ -102,11 +102,31 @@ lx_status lx__batch_weights(lx_ctx *ctx, const lx_function *fns, size_t k, doubl
  * when whole (stop is the end of the text); 64 bytes past stop are readable. The values go to dst
  * (float when f32), each correctly rounded as strtod; *line_end gets the line's end (its '\n', or
  * stop). 0 when any field is not "-?D+(.D*)?" of at most 15 characters, the count is not n, or no
- * line end comes before stop (the general parser then reads the line). lx__csv_have_fast_line: 1
- * when this CPU runs it (lx_simd_level() is AVX-512 and lx__cpu_has_bitalg()). */
-int lx__csv_fast_line(const char *q, const char *stop, int whole, char sep, size_t n, int f32, void *dst,
+ * line end comes before stop (the general parser then reads the line). level: what
+ * lx__csv_fast_level() says this CPU runs: 2 AVX-512 (with BITALG), 1 AVX2 (+FMA, BMI1/2), 0 none
+ * (lx_simd_level() capped). */
+int lx__csv_fast_line(int level, const char *q, const char *stop, int whole, char sep, size_t n, int f32, void *dst,
                       const char **line_end);
-int lx__csv_have_fast_line(void);
+int lx__csv_fast_level(void);
+/* Rows the vector line parser has taken in this process (the tests check that a path ran). */
+unsigned long long lx__csv_fast_rows(void);
+
+/* CIE 1960 uv of the Planckian radiator at T[k], k < n (cct.c, the exact solver's sums) with
+ * their first three derivatives in s = ln T: out[k] = {u, v, u', v', u'', v'', u''', v'''}.
+ * LX_ENOMEM (no message) when out of memory. */
+lx_status lx__planck_uv_ds3(lx_observer obs, size_t n, const double *T, double (*out)[8]);
+
+/* The fast CCT solver (cct_fast.c) for one chromaticity: the precomputed locus of the observer,
+ * no exp. Returns 1 with *cct_K and *duv when the nearest locus point lies inside its table
+ * (LX__CCT_FAST_T_MIN..MAX), else 0 (the caller runs lx_cct_from_uv). Thread-safe. */
+#define LX__CCT_FAST_T_MIN 900.0
+#define LX__CCT_FAST_T_MAX 120000.0
+int lx__cct_fast(lx_observer obs, double u, double v, double *cct_K, double *duv);
+
+/* lx__colorimetry_range with the CCT by the fast solver (colorimetry.c): the same columns to 1e-10
+ * relative; the exact solver where the fast one does not answer or the answer lies at an edge. */
+lx_status lx__colorimetry_fast(lx_ctx *ctx, lx_observer obs, const double xyz[3], double vprime, double radiant,
+                               double lo_K, double hi_K, lx_colorimetry *out);
 
 /* Colorimetry from integrals with the CCT range [lo_K, hi_K] (inclusive to 1e-9 relative);
  * *solved_K (may be NULL) the solved CCT when |Duv| <= 0.05 whatever the range, else NaN

@@ -1,7 +1,9 @@
 /* fuzz_scene.c - fuzz target: the scene reader (sections, keys with units, includes, references to
  * IES/LDT/SPD/EXR files) on any bytes through lx_scene_read_mem, then the planner on what it accepts.
  * The name puts the scene in samples/scenes so that the seeds' references and includes resolve.
- * Properties: never crash; a parse error names a file; an accepted scene has what its reader promises. */
+ * Properties: never crash; a parse error names a file; an accepted scene has what its reader promises
+ * (rooms, surfaces and obstructions too: reflectances in [0, 1), boxes with volume), and a room's
+ * plan stays within its memory bound. Seeds with rooms: tests/fuzz/seeds/scene. */
 #include "luxcalc.h"
 
 #include <math.h>
@@ -29,9 +31,27 @@ int fuzz_scene_one(const uint8_t *data, size_t size)
                 if (!isfinite(r->points[k])) abort();
             points += r->n;
         }
+        /* rooms, surfaces, obstructions: what the reader promises */
+        for (size_t i = 0; i < sc->n_room; i++)
+            for (int k = 0; k < 6; k++)
+                if (!(sc->room[i].reflectance[k] >= 0 && sc->room[i].reflectance[k] < 1) ||
+                    !(sc->room[i].max_m[k % 3] > sc->room[i].min_m[k % 3]))
+                    abort();
+        for (size_t i = 0; i < sc->n_surf; i++)
+            if (!(sc->surf[i].reflectance >= 0 && sc->surf[i].reflectance < 1)) abort();
+        for (size_t i = 0; i < sc->n_obst; i++)
+            if (!(sc->obst[i].reflectance >= 0 && sc->obst[i].reflectance < 1)) abort();
         if (points * (sc->n_lum + 1) <= 100000) { /* the planner's near-field test is per pair */
             lx_scene_plan *plan = NULL;
-            if (lx_scene_plan_make(ctx, sc, LX_BACKEND_CPU, &plan) == LX_OK) lx_scene_plan_free(plan);
+            if (lx_scene_plan_make(ctx, sc, LX_BACKEND_CPU, &plan) == LX_OK) {
+                /* interreflection: a mesh within the memory bound, a stopping point that is a number */
+                if (plan->on[LX_EFFECT_INTERREFLECTION] &&
+                    (!plan->room.mesh || !(plan->room.memory_bytes <= plan->room.memory_limit_bytes) ||
+                     !(plan->room.stop_unshot_lm >= 0)))
+                    abort();
+                if (plan->on[LX_EFFECT_OCCLUSION] && !plan->room.mesh) abort();
+                lx_scene_plan_free(plan);
+            }
         }
         lx_scene_free(sc);
     } else {

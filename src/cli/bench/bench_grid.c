@@ -1,7 +1,8 @@
 /* bench_grid.c - the `luxcalc bench grid` topic: point-luminaires per second for 1e6 points x 10
- * luminaires (CPU exact bilinear, CPU table twin at 1024, 256 and 128 rows, OpenCL table in float
- * and double), each table run's largest error against the exact bilinear result, beside the numpy
- * peer ../shared/peers/illum_numpy.py run in the same process tree. */
+ * luminaires (CPU exact bilinear, the CPU table twin at 1024 rows on each SIMD path the CPU has and
+ * at 256 and 128 rows, OpenCL table in float and double), each table run's largest error against
+ * the exact bilinear result, beside the numpy peer ../shared/peers/illum_numpy.py run in the same
+ * process tree. */
 #include "cli/cli.h"
 
 #include <math.h>
@@ -24,6 +25,13 @@ static int cmp_d(const void *a, const void *b)
 {
     double x = *(const double *)a, y = *(const double *)b;
     return x < y ? -1 : x > y;
+}
+
+static double cpu_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
 /* Median seconds of reps runs (after one warm-up); NaN when the computation fails. */
@@ -120,27 +128,42 @@ int cli_bench_grid(FILE *out)
     }
     double nz[3] = {0, 0, 1};
     fprintf(out, "## grid: illuminance, %zu points x %d luminaires (point model), median of 5\n\n", n, M);
-    fprintf(out, "| luminaire | path | backend | s | M point-luminaires/s | max error vs exact (of E max) | load (1 min) |\n"
-                 "|---|---|---|---|---|---|---|\n");
+    fprintf(out, "| luminaire | path | backend | s | M point-luminaires/s | M per CPU-second (all threads) | max error vs exact (of E max) | load (1 min) |\n"
+                 "|---|---|---|---|---|---|---|---|\n");
+    const char *se = getenv("LX_SIMD");
+    char simd_env[32] = "";
+    if (se) snprintf(simd_env, sizeof simd_env, "%s", se);
     double *Ex = malloc(n * sizeof *Ex); /* the exact bilinear result of each luminaire: the reference */
     static const char *names[2] = {"axial Warn (37 gamma)", "asymmetric (37 gamma x 25 C)"};
     for (int L = 0; L < 2; L++) {
         struct {
             const char *path;
             lx_grid_opts o;
+            const char *simd; /* LX_SIMD for this run (NULL: as the environment says) */
         } runs[] = {
-            {"exact bilinear (acos, atan2)", {.model = LX_MODEL_POINT, .backend = LX_BACKEND_CPU}},
-            {"table (CPU twin, double, AVX-512 or AVX2 where present)", {.model = LX_MODEL_POINT, .interp = LX_INTERP_TABLE, .backend = LX_BACKEND_CPU}},
-            {"table, 256 rows (CPU)", {.model = LX_MODEL_POINT, .interp = LX_INTERP_TABLE, .backend = LX_BACKEND_CPU, .table_n = 256}},
-            {"table, 128 rows (CPU)", {.model = LX_MODEL_POINT, .interp = LX_INTERP_TABLE, .backend = LX_BACKEND_CPU, .table_n = 128}},
-            {"table, OpenCL double", {.model = LX_MODEL_POINT, .interp = LX_INTERP_TABLE, .backend = LX_BACKEND_OPENCL}},
-            {"table, OpenCL float", {.model = LX_MODEL_POINT, .interp = LX_INTERP_TABLE, .backend = LX_BACKEND_OPENCL, .fp32 = 1}},
+            {"exact bilinear (acos, atan2)", {.model = LX_MODEL_POINT, .backend = LX_BACKEND_CPU}, NULL},
+            {"table (CPU twin, double), AVX-512", {.model = LX_MODEL_POINT, .interp = LX_INTERP_TABLE, .backend = LX_BACKEND_CPU}, "avx512"},
+            {"table (CPU twin, double), AVX2", {.model = LX_MODEL_POINT, .interp = LX_INTERP_TABLE, .backend = LX_BACKEND_CPU}, "avx2"},
+            {"table (CPU twin, double), scalar", {.model = LX_MODEL_POINT, .interp = LX_INTERP_TABLE, .backend = LX_BACKEND_CPU}, "scalar"},
+            {"table, 256 rows (CPU)", {.model = LX_MODEL_POINT, .interp = LX_INTERP_TABLE, .backend = LX_BACKEND_CPU, .table_n = 256}, NULL},
+            {"table, 128 rows (CPU)", {.model = LX_MODEL_POINT, .interp = LX_INTERP_TABLE, .backend = LX_BACKEND_CPU, .table_n = 128}, NULL},
+            {"table, OpenCL double", {.model = LX_MODEL_POINT, .interp = LX_INTERP_TABLE, .backend = LX_BACKEND_OPENCL}, NULL},
+            {"table, OpenCL float", {.model = LX_MODEL_POINT, .interp = LX_INTERP_TABLE, .backend = LX_BACKEND_OPENCL, .fp32 = 1}, NULL},
         };
         for (size_t r = 0; r < sizeof runs / sizeof runs[0]; r++) {
             int used = 0;
+            lx_simd want = LX_SIMD_SCALAR;
+            if (runs[r].simd && (lx_simd_parse(ctx, runs[r].simd, &want) != LX_OK || want > lx_simd_cpu())) continue;
+            if (runs[r].simd) setenv("LX_SIMD", runs[r].simd, 1); /* the twin of this path (restored below) */
+            double c0 = cpu_s();
             double t = time_grid(ctx, pl[L], M, pts, n, nz, runs[r].o, E, 5, &used);
+            double cs = (cpu_s() - c0) / 6; /* the warm-up and 5 runs */
+            if (runs[r].simd) {
+                if (simd_env[0]) setenv("LX_SIMD", simd_env, 1);
+                else unsetenv("LX_SIMD");
+            }
             if (isnan(t)) {
-                fprintf(out, "| %s | %s | - | failed: %s | | | |\n", names[L], runs[r].path, lx_ctx_errmsg(ctx));
+                fprintf(out, "| %s | %s | - | failed: %s | | | | |\n", names[L], runs[r].path, lx_ctx_errmsg(ctx));
                 fflush(out);
                 continue;
             }
@@ -153,8 +176,9 @@ int cli_bench_grid(FILE *out)
                 for (size_t i = 0; i < n; i++) w = fmax(w, fabs(E[i] - Ex[i]));
                 snprintf(err, sizeof err, "%.1e", em > 0 ? w / em : 0);
             }
-            fprintf(out, "| %s | %s | %s | %.3f | %.1f | %s | %.2f |\n", names[L], runs[r].path,
-                    used == LX_BACKEND_OPENCL ? "opencl" : "cpu", t, n * (double)M / t / 1e6, err, loadavg1());
+            fprintf(out, "| %s | %s | %s | %.3f | %.1f | %.1f | %s | %.2f |\n", names[L], runs[r].path,
+                    used == LX_BACKEND_OPENCL ? "opencl" : "cpu", t, n * (double)M / t / 1e6, n * (double)M / cs / 1e6, err,
+                    loadavg1());
             fflush(out);
         }
     }
