@@ -68,6 +68,13 @@ echo "   and interreflection (samples/scenes/office_room.scene), its plan, the r
 "$LX" scene --surfaces --format csv "$here/scenes/office_room.scene" | cut -d, -f1-5
 
 echo
+echo "== Daylight (issue 21): a side-lit office, two clear-glazed windows, the CIE overcast sky"
+"$LX" scene --explain "$here/scenes/daylight_room.scene" -o "$out/daylight_room_explain.txt"
+sed -n '/^effects:/,/^pairs:/p' "$out/daylight_room_explain.txt" | sed '$d'
+sed -n '/^daylight:/,$p' "$out/daylight_room_explain.txt"
+"$LX" scene --png "$out" "$here/scenes/daylight_room.scene"
+
+echo
 echo "== Radiance fields: irradiance from a lat-long sky with a sun (samples/envmaps/sky_sun.exr)"
 for m in sh9 fast brute; do
   "$LX" irradiance "$here/envmaps/sky_sun.exr" --normal 0,0,1 --method $m --backend cpu --format csv | tail -n 1 | cut -d, -f1-6

@@ -1901,7 +1901,10 @@ typedef struct lx_counters {
     unsigned long long radiosity_patches;      /* patches of the interreflection solves */
     unsigned long long radiosity_shots;        /* patch shots of the progressive refinement */
     unsigned long long gather_points;          /* receiver points and element centres gathered */
-    unsigned long long reserved[2];            /* zero: room for later counters (ABI policy) */
+    /* daylight (README "Daylight") */
+    unsigned long long daylight_evaluations;   /* point-opening evaluations of the sky (and ground) seen through an
+                                                * opening: receiver points and element nodes */
+    unsigned long long reserved[1];            /* zero: room for later counters (ABI policy) */
 } lx_counters;
 
 /** Copies the context's counters into *out (zeros for a NULL ctx; nothing for a NULL out). */
@@ -1921,11 +1924,13 @@ typedef enum lx_effect {
     LX_EFFECT_OPENCL,             /* grid work on an OpenCL device */
     LX_EFFECT_OCCLUSION,          /* surfaces and obstructions that cut luminaire-receiver segments */
     LX_EFFECT_INTERREFLECTION,    /* diffuse interreflection between the faces of rooms, surfaces, obstructions */
+    LX_EFFECT_DAYLIGHT,           /* sky, ground and sun through the openings of rooms (daylight factor) */
     LX_EFFECT_COUNT
 } lx_effect;
 
 /** "inverse_square", "cosine", "spot_falloff", "goniometric", "near_field", "spectral",
- * "environment", "opencl", "occlusion", "interreflection" (static storage; NULL for a bad value).
+ * "environment", "opencl", "occlusion", "interreflection", "daylight" (static storage; NULL for a
+ * bad value).
  * Thread-safe. */
 LX_API const char *lx_effect_name(lx_effect e);
 
@@ -2047,7 +2052,38 @@ typedef struct lx_scene_obstruction {
     long long reserved[4];    /* zero: room for later fields */
 } lx_scene_obstruction;
 
-/** A scene read from a file. Owns everything it points to. Read-only after reading. */
+/** The glazing of an opening ([opening] glazing). */
+typedef enum lx_glazing {
+    LX_GLAZING_NONE = 0, /* an open hole, or a transmittance that does not depend on the angle */
+    LX_GLAZING_CLEAR     /* clear glass: the normal-incidence transmittance times the angular dependence of
+                          * 6 mm clear float glass (lx_glazing_transmittance) */
+} lx_glazing;
+
+/** The directional transmittance of glazing g at incidence cos_incidence = cos(theta) (0..1, from the
+ * glazing's normal) for the normal-incidence transmittance tau_normal. NONE: tau_normal. CLEAR:
+ * tau_normal P(c) / P(1) with the 6 mm clear-glass polynomial of CIE 171:2006 (test cases 5.10, 5.12;
+ * Tregenza & Sharples, Daylighting Algorithms, 1993, algorithm 2.34) P(c) = -0.028378 + 3.156075 c
+ * - 3.058376 c^2 - 1.428919 c^3 + 4.014235 c^4 - 1.775827 c^5, P(1) = 0.878810; 0 where P < 0 (within
+ * 0.52 deg of grazing). 0 for cos_incidence outside 0..1 or NaN. Pure, thread-safe. */
+LX_API double lx_glazing_transmittance(lx_glazing g, double tau_normal, double cos_incidence);
+
+/** An opening ([opening NAME]): the rectangle corner + s edge1 + t edge2 (0 <= s, t <= 1) in a wall or
+ * the ceiling of a room, a hole in that face: it reflects nothing, lets the room's light out (lost)
+ * and, with a sky or the sun, daylight in, times its glazing's transmittance. An element of
+ * lx_scene.open (ABI policy: reserved space, as results). */
+typedef struct lx_scene_opening {
+    char *name;
+    const char *file;         /* the scene file and line of its section header */
+    long line;
+    double corner_m[3], edge1_m[3], edge2_m[3];
+    size_t room;              /* the room (index into lx_scene.room) */
+    lx_room_face face;        /* its face: a wall or the ceiling */
+    double area_m2;
+    double transmittance;     /* normal-incidence tau, 0..1 (1: unglazed; CLEAR without a value: P(1)) */
+    lx_glazing glazing;
+    long long reserved[4];    /* zero: room for later fields */
+} lx_scene_opening;
+
 /** A scene read from a file. Owns everything it points to. Read-only after reading; freed with
  * lx_scene_free (a struct only the library allocates: ABI policy). */
 typedef struct lx_scene {
@@ -2101,6 +2137,9 @@ typedef struct lx_scene {
     int patch_refinement;                 /* [scene] patch_refinement: 1 (default) splits patches near luminaires,
                                            * shadow edges and receivers; 0 keeps them uniform */
     long interreflection_tol_line, patch_size_line; /* their lines (0 when not given) */
+    /* openings in the faces of rooms (README "Daylight") */
+    size_t n_open;
+    lx_scene_opening *open;
 } lx_scene;
 
 /** Reads a scene file ('-' is standard input); includes are resolved relative to the including
@@ -2137,6 +2176,22 @@ typedef struct lx_scene_room_plan {
     void *mesh;                /* the patches, faces and occluders (internal; owned) */
     long long reserved[4];     /* zero: room for later fields (embedded in lx_scene_plan: ABI policy) */
 } lx_scene_room_plan;
+
+/** The planner's daylight choices (all zero when daylight is off). */
+typedef struct lx_scene_daylight_plan {
+    int df;                    /* 1 when the daylight factor is defined: a uniform, overcast or CIE 1..5 sky
+                                * without sun illuminance */
+    int closed_form;           /* 1 when every sky component takes a closed form (uniform or overcast sky:
+                                * exact moments of the opening's directions); 0: numerical integration */
+    double outside_lx;         /* E_h: the unobstructed sky's horizontal illuminance outside (the daylight
+                                * factor's denominator; without the sun) */
+    double ground_cd_m2;       /* the ground's luminance rho_g (E_h + the sun's) / pi, seen below the horizon */
+    double flux_in_lm;         /* the flux entering through every opening: the sky's, the ground's and the
+                                * sun's light on its outer side, times its glazing (integrated exactly) */
+    double share_est;          /* the largest estimated interreflected share of a receiver's daylight */
+    double quad_tol;           /* relative tolerance of the numerical sky integrations */
+    long long reserved[4];     /* zero: room for later fields (embedded in lx_scene_plan: ABI policy) */
+} lx_scene_daylight_plan;
 
 /** The planner's decision. */
 /** Why a luminaire-receiver pair takes its path (lx_scene_plan.near_why). */
@@ -2186,6 +2241,8 @@ typedef struct lx_scene_plan {
                                        * is in different rooms); owned; NULL when occlusion is off */
     size_t n_occ_tested, n_occ_blocked;
     lx_scene_room_plan room;
+    /* daylight through openings (README "Daylight") */
+    lx_scene_daylight_plan daylight;
 } lx_scene_plan;
 
 /** Plans a scene: which effects, and which pairs take the near-field path. backend: AUTO lets
@@ -2228,6 +2285,19 @@ typedef struct lx_scene_room_stats {
     long long reserved[4];      /* zero: room for later results (embedded in lx_scene_result) */
 } lx_scene_room_stats;
 
+/** What the daylight evaluation did (zero when daylight is off). */
+typedef struct lx_scene_daylight_stats {
+    double flux_in_lm;          /* entering through the openings (lx_scene_daylight_plan.flux_in_lm) */
+    double direct_lm;           /* what the faces received directly (flux_in_lm less what leaves at once by
+                                 * another opening, up to the quadrature of the faces' direct light) */
+    double indirect_lm;         /* what they received after reflections */
+    double escaped_lm;          /* reflected daylight that left through the openings */
+    double unshot_lm;           /* reflected daylight not yet distributed when the solve stopped */
+    unsigned long long sweeps;  /* the daylight solve's sweeps */
+    double seconds;             /* the daylight's own time (direct at the points and faces, solve, gathers) */
+    long long reserved[4];      /* zero: room for later results (embedded in lx_scene_result) */
+} lx_scene_daylight_stats;
+
 /** Results at every receiver point (receiver order, then point order). */
 /** Results at every receiver point (receiver order, then point order); made by lx_scene_eval,
  * freed with lx_scene_result_free (a struct only the library allocates). */
@@ -2247,6 +2317,18 @@ typedef struct lx_scene_result {
     size_t n_surfaces;                 /* room faces, surface sides, obstruction faces */
     lx_scene_surface_result *surfaces;
     lx_scene_room_stats room;
+    /* daylight through openings (NULL when daylight is off): daylight_lx is part of E_lx, its direct
+     * part is the sky's column of contrib_lx and its interreflected part is in indirect_lx */
+    double *daylight_lx;        /* n_points: sky, ground and sun through the openings, direct and reflected */
+    double *daylight_factor;    /* n_points: DF (%) = sky_component + externally_reflected +
+                                 * internally_reflected (NaN everywhere when plan.daylight.df is 0) */
+    double *sky_component;      /* n_points: SC (%): the sky seen through the openings */
+    double *externally_reflected; /* n_points: ERC (%): the ground seen through the openings */
+    double *internally_reflected; /* n_points: IRC (%): the daylight reflected in the room */
+    double *observer_indirect_lx; /* n_obs: the luminaires' interreflected illuminance at each observer's eye on
+                                 * the plane facing the line of sight (NULL without interreflection or
+                                 * observers) */
+    lx_scene_daylight_stats daylight;
 } lx_scene_result;
 
 /** Options of lx_scene_eval (zero-initialise for defaults: everything; ABI policy: reserved stays
@@ -2283,13 +2365,19 @@ typedef struct lx_scene_glare {
     double *ugr;                /* n_obs: UGR (NaN when no luminaire counts) */
     double *background_cd_m2;   /* n_obs: Lb used */
     lx_glare_term *terms;       /* n_obs x n_lum, observer-major */
+    /* appended (ABI policy) */
+    double *indirect_lx;        /* n_obs: the interreflected illuminance at the eye Lb came from (Lb = E_ind / pi);
+                                 * NaN where the scene file's background_luminance was used */
 } lx_scene_glare;
 
 /** UGR (CIE 117-1995) at every [observer]: UGR = 8 log10(0.25 / Lb sum L^2 omega / p^2) over the
  * luminaires with a luminous area (disk, rect, file luminaires with an opening; points and spots
- * have none and are left out). Lb is the observer's background_luminance (LX_EPARSE naming the
- * observer when it has none: the background from a room's indirect illuminance needs rooms). Free
- * with lx_scene_glare_free. */
+ * have none and are left out). Lb is the observer's background_luminance when the scene gives one;
+ * otherwise, for an observer inside a room, E_ind / pi (CIE 117) with E_ind the luminaires'
+ * interreflected illuminance at the eye on the plane facing the line of sight: the scene is then
+ * planned (LX_BACKEND_AUTO) and evaluated for it. Errors: LX_EPARSE naming the observer when it has
+ * no background_luminance and no room to take it from (outside every room, or interreflection
+ * forced off); the scene's evaluation errors. Free with lx_scene_glare_free. */
 LX_API lx_status lx_scene_glare_eval(lx_ctx *ctx, const lx_scene *scene, lx_scene_glare **out);
 LX_API void lx_scene_glare_free(lx_scene_glare *glare);
 

@@ -51,8 +51,8 @@ static const char *const counter_names[] = {
     "environment_samples",    "spectra_integrated",  "kernel_launches",
     "nearfield_probes",       "closed_form_evaluations", "visibility_tests",
     "form_factors",           "radiosity_patches",   "radiosity_shots",
-    "gather_points"};
-#define N_COUNTERS 16
+    "gather_points",          "daylight_evaluations"};
+#define N_COUNTERS 17
 
 static unsigned long long counter(const lx_counters *c, int i)
 {
@@ -61,7 +61,7 @@ static unsigned long long counter(const lx_counters *c, int i)
                                               c->environment_samples,   c->spectra_integrated,  c->kernel_launches,
                                               c->nearfield_probes,      c->closed_form_evaluations, c->visibility_tests,
                                               c->form_factors,          c->radiosity_patches,   c->radiosity_shots,
-                                              c->gather_points};
+                                              c->gather_points,         c->daylight_evaluations};
     return v[i];
 }
 
@@ -130,6 +130,63 @@ static void room_json(FILE *f, const lx_scene_plan *p, const lx_scene_result *re
         cli_print_exact(f, v[i]);
     }
     fputs("},\n", f);
+}
+
+static const char *const face_names[6] = {"floor", "ceiling", "wall_xmin", "wall_xmax", "wall_ymin", "wall_ymax"};
+
+/* The daylight part of --explain: the sky the daylight factor refers to, the openings, the flux. */
+static void daylight_text(FILE *f, const lx_scene *sc, const lx_scene_plan *p, const lx_scene_result *res)
+{
+    const lx_scene_daylight_plan *D = &p->daylight;
+    const lx_scene_daylight_stats *S = &res->daylight;
+    fprintf(f, "\ndaylight:\n");
+    fprintf(f, "  outside       E_h %.6g lx (the sky alone, horizontal, unobstructed); ground %.4g cd/m2\n", D->outside_lx,
+            D->ground_cd_m2);
+    fprintf(f, "  factor        %s\n", D->df ? "DF = 100 (sky + ground through the openings + interreflected) / E_h"
+                                          : "none: defined under an overcast or uniform sky without the sun");
+    for (size_t k = 0; k < sc->n_open; k++) {
+        const lx_scene_opening *o = &sc->open[k];
+        fprintf(f, "  opening       %s: %s.%s, %.4g m2, %s, tau %.4g\n", o->name, sc->room[o->room].name, face_names[o->face],
+                o->area_m2, o->glazing == LX_GLAZING_CLEAR ? "clear glass (CIE 171 6 mm angular dependence)" : "no angular dependence",
+                o->transmittance);
+    }
+    fprintf(f, "  sky component %s\n", D->closed_form ? "closed form (exact moments of each opening's directions)"
+                                                     : "integrated numerically over each opening's directions");
+    fprintf(f, "  flux          in %.6g lm; the faces received %.6g lm directly, %.6g lm after reflections; %.4g lm "
+               "left by the openings\n",
+            S->flux_in_lm, S->direct_lm, S->indirect_lm, S->escaped_lm);
+    fprintf(f, "  solve         %llu sweeps, %.4g lm unshot left; %.3g s for the daylight\n", S->sweeps, S->unshot_lm, S->seconds);
+}
+
+static void daylight_json(FILE *f, const lx_scene *sc, const lx_scene_plan *p, const lx_scene_result *res)
+{
+    const lx_scene_daylight_plan *D = &p->daylight;
+    const lx_scene_daylight_stats *S = &res->daylight;
+    const char *k[] = {"outside_lx", "ground_cd_m2", "flux_in_lm", "share_estimate", "direct_lm", "indirect_lm", "escaped_lm",
+                       "unshot_lm", "seconds"};
+    double v[] = {D->outside_lx, D->ground_cd_m2, D->flux_in_lm, D->share_est, S->direct_lm, S->indirect_lm, S->escaped_lm,
+                  S->unshot_lm, S->seconds};
+    fprintf(f, "  \"daylight\": {\"daylight_factor\": %s, \"closed_form\": %s, \"sweeps\": %llu", D->df ? "true" : "false",
+            D->closed_form ? "true" : "false", S->sweeps);
+    for (size_t i = 0; i < sizeof v / sizeof v[0]; i++) {
+        fprintf(f, ", \"%s\": ", k[i]);
+        cli_print_exact(f, v[i]);
+    }
+    fputs(", \"openings\": [", f);
+    for (size_t i = 0; i < sc->n_open; i++) {
+        const lx_scene_opening *o = &sc->open[i];
+        fputs(i ? ", {\"name\": " : "{\"name\": ", f);
+        json_string(f, o->name);
+        fputs(", \"room\": ", f);
+        json_string(f, sc->room[o->room].name);
+        fprintf(f, ", \"face\": \"%s\", \"glazing\": \"%s\", \"area_m2\": ", face_names[o->face],
+                o->glazing == LX_GLAZING_CLEAR ? "clear" : "none");
+        cli_print_exact(f, o->area_m2);
+        fputs(", \"transmittance\": ", f);
+        cli_print_exact(f, o->transmittance);
+        fputc('}', f);
+    }
+    fputs("]},\n", f);
 }
 
 /* Near-field points per luminaire-receiver pair. */
@@ -240,6 +297,7 @@ static void explain(FILE *f, const lx_scene *sc, const lx_scene_plan *p, const l
         }
         json_pairs(f, sc, p);
         if (p->on[LX_EFFECT_INTERREFLECTION]) room_json(f, p, res);
+        if (p->on[LX_EFFECT_DAYLIGHT]) daylight_json(f, sc, p, res);
         fputs("  \"seconds\": ", f);
         cli_print_exact(f, res->seconds);
         fputs("\n}\n", f);
@@ -273,18 +331,41 @@ static void explain(FILE *f, const lx_scene *sc, const lx_scene_plan *p, const l
         fprintf(f, "  %-23s %14llu %14llu\n", counter_names[i], counter(&p->estimate, i), measured(p, res, i));
     fprintf(f, "  %-22s %14s %14.3g\n", "seconds", "", res->seconds);
     if (p->on[LX_EFFECT_INTERREFLECTION]) room_text(f, p, res);
+    if (p->on[LX_EFFECT_DAYLIGHT]) daylight_text(f, sc, p, res);
 }
 
 /* The result columns. */
-static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_format fmt, int contrib, char ***names_out,
-                          size_t *n_names)
+static int cmp_double(const void *a, const void *b)
 {
-    size_t nn = 0, cap = 2 * (16 + sc->n_lum);
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+/* The daylight factor's mean, minimum and median over points a..b-1 (NaN when undefined). */
+static void df_stats(const lx_scene_result *res, size_t a, size_t b, double out[3])
+{
+    out[0] = out[1] = out[2] = NAN;
+    double *v = malloc((b - a + 1) * sizeof *v), s = 0;
+    size_t n = 0;
+    for (size_t g = a; v && g < b; g++)
+        if (isfinite(res->daylight_factor[g])) v[n++] = res->daylight_factor[g], s += res->daylight_factor[g];
+    if (n) {
+        qsort(v, n, sizeof *v, cmp_double);
+        out[0] = s / (double)n, out[1] = v[0], out[2] = n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+    }
+    free(v);
+}
+
+static cli_table *results(const lx_scene *sc, const lx_scene_plan *plan, const lx_scene_result *res, cli_format fmt,
+                          int contrib, char ***names_out, size_t *n_names)
+{
+    size_t nn = 0, cap = 2 * (24 + sc->n_lum);
     char **names = calloc(2 * cap, sizeof *names); /* the names, then the units */
     if (!names) return NULL;
     char **units = names + cap;
 #define COL(n, u) (names[nn] = strdup(n), units[nn] = strdup(u), nn++)
-    int table = fmt == CLI_FMT_TABLE, sky = sc->sky != LX_SKY_NONE;
+    int table = fmt == CLI_FMT_TABLE, sky = sc->sky != LX_SKY_NONE, day = res->daylight_lx != NULL,
+        df = day && plan->daylight.df;
     COL("receiver", "");
     if (table) {
         COL("points", "");
@@ -294,6 +375,8 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
         COL("uniformity_u0", "");
         COL("uniformity_min_max", "");
         if (res->indirect_lx) COL("indirect_avg_lx", "lx");
+        if (day) COL("daylight_avg_lx", "lx");
+        if (df) COL("daylight_factor_avg", "%"), COL("daylight_factor_min", "%"), COL("daylight_factor_median", "%");
         if (sc->want_luminance) COL("luminance_avg_cd_m2", "cd/m2");
         if (sc->want_cct) COL("cct_avg_K", "K");
         if (sc->want_melanopic) COL("melanopic_edi_avg_lx", "lx");
@@ -311,6 +394,10 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
         COL("z", "m");
         COL("illuminance_lx", "lx");
         if (res->indirect_lx) COL("direct_lx", "lx"), COL("indirect_lx", "lx");
+        if (day) COL("daylight_lx", "lx");
+        if (df)
+            COL("daylight_factor", "%"), COL("sky_component", "%"), COL("externally_reflected", "%"),
+                COL("internally_reflected", "%");
         if (sc->want_luminance) COL("luminance_cd_m2", "cd/m2");
         if (sc->want_cct) COL("cct_K", "K"), COL("duv", "");
         if (sc->want_melanopic) COL("melanopic_edi_lx", "lx");
@@ -332,12 +419,13 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
     for (size_t r = 0; r < sc->n_rec; r++) {
         size_t a = res->first[r], b = res->first[r + 1];
         if (table) {
-            double sum = 0, mn = INFINITY, mx = -INFINITY, ls = 0, cs = 0, ms = 0, is = 0;
+            double sum = 0, mn = INFINITY, mx = -INFINITY, ls = 0, cs = 0, ms = 0, is = 0, ds = 0;
             size_t cn = 0;
             for (size_t g = a; g < b; g++) {
                 double e = res->E_lx[g];
                 sum += e;
                 if (res->indirect_lx) is += res->indirect_lx[g];
+                if (day) ds += res->daylight_lx[g];
                 mn = e < mn ? e : mn;
                 mx = e > mx ? e : mx;
                 ls += res->L_cd_m2[g];
@@ -357,6 +445,12 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
             cli_table_num(t, avg > 0 ? mn / avg : NAN);
             cli_table_num(t, mx > 0 ? mn / mx : NAN);
             if (res->indirect_lx) cli_table_num(t, is / n);
+            if (day) cli_table_num(t, ds / n);
+            if (df) {
+                double st3[3];
+                df_stats(res, a, b, st3);
+                for (int k = 0; k < 3; k++) cli_table_num(t, st3[k]);
+            }
             if (sc->want_luminance) cli_table_num(t, ls / n);
             if (sc->want_cct) cli_table_num(t, cn == b - a ? cs / (double)cn : NAN);
             if (sc->want_melanopic) cli_table_num(t, ms / n);
@@ -373,6 +467,13 @@ static cli_table *results(const lx_scene *sc, const lx_scene_result *res, cli_fo
             for (int k = 0; k < 3; k++) cli_table_num(t, q[k]);
             cli_table_num(t, res->E_lx[g]);
             if (res->indirect_lx) cli_table_num(t, res->direct_lx[g]), cli_table_num(t, res->indirect_lx[g]);
+            if (day) cli_table_num(t, res->daylight_lx[g]);
+            if (df) {
+                cli_table_num(t, res->daylight_factor[g]);
+                cli_table_num(t, res->sky_component[g]);
+                cli_table_num(t, res->externally_reflected[g]);
+                cli_table_num(t, res->internally_reflected[g]);
+            }
             if (sc->want_luminance) cli_table_num(t, res->L_cd_m2[g]);
             if (sc->want_cct) cli_table_num(t, res->cct_K[g]), cli_table_num(t, res->duv[g]);
             if (sc->want_melanopic) cli_table_num(t, res->melanopic_edi_lx[g]);
@@ -593,7 +694,7 @@ int cmd_scene(int argc, char **argv)
         } else {
             char **names = NULL;
             size_t nn = 0;
-            cli_table *t = results(sc, res, fmt, contrib, &names, &nn);
+            cli_table *t = results(sc, plan, res, fmt, contrib, &names, &nn);
             int ok = t && cli_table_write(t, fmt, o.fp, 1) == 0;
             if (!t) cli_error(cmd, "out of memory");
             if (cli_output_close(&o, ok, cmd) != 0 || !ok) rc = CLI_RUNTIME;

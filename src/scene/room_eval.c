@@ -171,7 +171,8 @@ static lx_status element_points(const lx__room_mesh *m, double **pts, double **n
     return LX_OK;
 }
 
-lx_status lx__room_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *plan, long only, lx_scene_result *res)
+lx_status lx__room_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *plan, long only, struct lx__daylight *day,
+                        lx_scene_result *res)
 {
     const lx__room_mesh *m = plan->room.mesh;
     size_t n = m->n_patch, ne = m->n_elem, np = res->n_points;
@@ -202,6 +203,7 @@ lx_status lx__room_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
     if ((st = lx__room_ff_matrix(ctx, m, backend, &F, &used)) != LX_OK) goto out;
     double t2 = now_s();
     if ((st = lx__room_solve(ctx, m, F, phi0, plan->room.stop_unshot_lm, &sol)) != LX_OK) goto out;
+    if (day && (st = lx__daylight_room(ctx, day, m, F)) != LX_OK) goto out; /* its own solve, the same F */
     free(F);
     F = NULL;
     /* 3. the gather at the centre of every element from the patches: its exitance resolves what
@@ -215,6 +217,7 @@ lx_status lx__room_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
     }
     for (size_t k = 0; k < n_eg; k++) Ei[elist[k]] = Eg[k];
     for (size_t e = 0; e < ne; e++) Be[e] = m->elem[e].rho * (Ed[e] + Ei[e]);
+    if (sc->n_obs && (st = lx__glare_room_background(ctx, sc, m, Be, backend, res)) != LX_OK) goto out; /* UGR's Lb */
     /* 4. the gather at the receiver points from the elements */
     size_t g = 0;
     for (size_t r = 0; r < sc->n_rec; r++)

@@ -309,6 +309,7 @@ static double probe_E(builder *b, const lx__room_patch *p, const double x[3])
         if (b->lum_cell[l] != p->cell) continue;
         E += lx__scene_lum_E(&b->probe, &b->le[l], x, p->n, 0, 1e-3, vis.n_occ ? &vis : NULL);
     }
+    if (b->o->probe_extra) E += b->o->probe_extra(b->o->probe_arg, p, x);
     return E;
 }
 

@@ -3,7 +3,7 @@
  * `interreflection` (the integrating-sphere estimate of the indirect light chooses the patch size,
  * the refinement and the stopping point that meet interreflection_tolerance; the mesh is built
  * here, so every evaluation of the plan uses the same patches). */
-#include "scene/room_private.h"
+#include "scene/daylight_private.h" /* the openings (holes) and the daylight's share */
 
 #include <math.h>
 #include <stdarg.h>
@@ -210,6 +210,7 @@ static lx_status plan_interreflection(lx_ctx *ctx, const lx_scene *sc, lx_scene_
     R->tolerance = sc->interreflection_tol;
     R->indirect_est_lx = S > 0 ? rho * flux / (S * (1 - rho)) : 0;
     R->share_est = share_max(sc, p, occ, le, R->indirect_est_lx);
+    R->share_est = fmax(R->share_est, p->daylight.share_est); /* daylight through openings (daylight_plan.c) */
     /* the tolerance on the indirect part that meets tol on the total of the receiver whose
      * indirect share is largest */
     double t_ind = fmin(0.3, R->tolerance / fmax(R->share_est, 1e-3)), D = extent_m(sc);
@@ -230,7 +231,10 @@ static lx_status plan_interreflection(lx_ctx *ctx, const lx_scene *sc, lx_scene_
                  : sc->n_room                 ? sc->room[0].line
                                               : 0;
     lx__room_mesh *m = NULL;
-    lx_status st = lx__room_mesh_build(ctx, sc, p, &o, &m);
+    void *day = NULL; /* the openings as holes, the daylight the refinement's probes see */
+    lx_status st = occ ? lx__daylight_mesh_begin(ctx, sc, p, occ, &o, &day) : LX_OK;
+    if (st == LX_OK) st = lx__room_mesh_build(ctx, sc, p, &o, &m);
+    lx__daylight_mesh_end(&o, day);
     if (st != LX_OK) return st;
     add_counters(&p->planning, &m->probe);
     if (!p->on[LX_EFFECT_OCCLUSION]) m->n_occ = 0; /* occlusion off: nothing blocks, faces still reflect */

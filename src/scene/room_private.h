@@ -127,6 +127,9 @@ typedef struct lx__room_mesh_opts {
     long max_line;
     const lx__room_opening *open;/* holes (may be NULL) */
     size_t n_open;
+    /* more direct light for the refinement's probes to see (daylight through openings; NULL: none) */
+    double (*probe_extra)(void *arg, const lx__room_patch *p, const double x[3]);
+    void *probe_arg;
 } lx__room_mesh_opts;
 
 /* The occluders of a scene (every surface and obstruction), without patches: for occlusion alone. */

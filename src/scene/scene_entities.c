@@ -69,6 +69,7 @@ void lx_scene_free(lx_scene *sc)
     free(sc->sky_path);
     lx_envmap_free(sc->sky_map);
     lx__room_scene_free(sc);
+    lx__daylight_scene_free(sc);
     for (size_t i = 0; i < sc->n_obs; i++) free(sc->obs[i].name);
     free(sc->obs);
     free(sc->title);
@@ -666,6 +667,7 @@ lx_status lx__scene_finish(lx_ctx *ctx, lx_scene *sc)
     if (sc->n_lum == 0 && sc->sky == LX_SKY_NONE && !(sc->has_sun && sc->sun_normal_lx > 0))
         return lx__error(ctx, LX_EPARSE, sc->file, 0, "the scene has neither a luminaire nor a sky (nor a sun)");
     lx_status rst = lx__room_scene_check(ctx, sc);
+    if (rst == LX_OK) rst = lx__daylight_scene_check(ctx, sc);
     if (rst != LX_OK) return rst;
     if (sc->want_luminance) {
         size_t k = 0;

@@ -1,7 +1,7 @@
 /* scene_eval.c - evaluates a planned scene: each luminaire's contribution at each receiver point
  * computed once (point law or near-field patches) and summed (linearity), plus the sky, the
  * Lambertian luminance and the spectral quantities; counts the work per effect. */
-#include "scene/room_private.h"
+#include "scene/daylight_private.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -32,6 +32,12 @@ void lx_scene_result_free(lx_scene_result *res)
     free(res->melanopic_edi_lx);
     free(res->direct_lx);
     free(res->indirect_lx);
+    free(res->daylight_lx);
+    free(res->daylight_factor);
+    free(res->sky_component);
+    free(res->externally_reflected);
+    free(res->internally_reflected);
+    free(res->observer_indirect_lx);
     for (size_t i = 0; i < res->n_surfaces; i++) free(res->surfaces[i].name);
     free(res->surfaces);
     free(res);
@@ -380,6 +386,7 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
     scene__spec *spec = calloc(nc, sizeof *spec);
     void *map = NULL, *occm = NULL;
     unsigned char *ondev = NULL;
+    lx__daylight *day = NULL, *sun = NULL; /* daylight through openings; the sun's shade outside rooms */
     lx_status st = LX_OK;
     if (!res || !le || !spec) goto nomem;
     res->n_points = np;
@@ -405,7 +412,8 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
                                                  sc->lum[l].spd ? &sc->lum[l].spd->spd[sc->lum[l].spd_index] : NULL,
                                                  sc->lum[l].cct_K, &spec[l])) != LX_OK)
                 goto fail;
-        if (sky && (st = lx__scene_spectrum_weights(ctx, sc->sky_file_at, sc->sky_line, NULL, sc->sky_cct_K, &spec[nl])) != LX_OK)
+        if ((sky || (plan->on[LX_EFFECT_DAYLIGHT] && only < 0)) &&
+            (st = lx__scene_spectrum_weights(ctx, sc->sky_file_at, sc->sky_line, NULL, sc->sky_cct_K, &spec[nl])) != LX_OK)
             goto fail;
     }
     /* occlusion: the occluders the flagged pairs are tested against */
@@ -419,6 +427,8 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
         vis.occ = om->occ;
         vis.n_occ = (int)om->n_occ;
     }
+    if (only < 0 && (st = lx__daylight_begin(ctx, sc, plan, &day)) != LX_OK) goto fail;
+    if (sky && (st = lx__daylight_sun_only(ctx, sc, plan, &sun)) != LX_OK) goto fail;
     /* every luminaire's contribution at every point, once: first the device batches */
     if (plan->on[LX_EFFECT_OPENCL] && (st = device_blocks(ctx, sc, plan, only, res->contrib_lx, &ondev)) != LX_OK) goto fail;
     size_t g = 0;
@@ -437,21 +447,28 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
                 c[l] = lx__scene_lum_E(&ctx->counters, &le[l], q, rc->normal, plan->near[l * np + g], sc->nearfield_tol,
                                        o ? &vis : NULL);
             }
-            /* the sky does not reach inside a closed room */
-            c[nl] = sc->n_room && lx__room_cell(sc, q) >= 0 ? 0 : E_sky;
+            /* the sky does not reach inside a room (but through its openings: daylight); outside, the
+             * sun is shaded by rooms, surfaces and obstructions */
+            int cell = sc->n_room ? lx__room_cell(sc, q) : -1;
+            c[nl] = cell >= 0 ? 0 : E_sky;
+            if (cell < 0 && sun && !lx__daylight_sun_visible(sun, q, -1, -1)) c[nl] -= lx__scene_sun_part(sc, rc->normal);
             double E = 0;
             for (size_t k = 0; k < nc; k++) E += c[k];
             res->E_lx[g] = E;
         }
     }
     res->first[sc->n_rec] = g;
-    /* the interreflected part: E_lx gains indirect_lx */
-    if (plan->on[LX_EFFECT_INTERREFLECTION] && (st = lx__room_eval(ctx, sc, plan, only, res)) != LX_OK) goto fail;
+    /* daylight through the openings at the points (the sky's column) */
+    if (day && (st = lx__daylight_points(ctx, day, res)) != LX_OK) goto fail;
+    /* the interreflected part: E_lx gains indirect_lx (the daylight's too) */
+    if (plan->on[LX_EFFECT_INTERREFLECTION] && (st = lx__room_eval(ctx, sc, plan, only, day, res)) != LX_OK) goto fail;
+    if (day && (st = lx__daylight_finish(ctx, day, res)) != LX_OK) goto fail;
     for (size_t r = 0; r < sc->n_rec; r++) {
         const lx_scene_receiver *rc = &sc->rec[r];
         for (g = res->first[r]; g < res->first[r + 1]; g++) {
             const double *c = res->contrib_lx + g * nc;
-            double E = res->E_lx[g], Eind = res->indirect_lx ? res->indirect_lx[g] : 0;
+            double Eday = day ? day->ind_lx[g] : 0; /* interreflected daylight: the sky's spectrum */
+            double E = res->E_lx[g], Eind = res->indirect_lx ? res->indirect_lx[g] - Eday : 0;
             res->L_cd_m2[g] = sc->want_luminance && rc->reflectance >= 0 ? rc->reflectance * E / LX__PI : NAN;
             res->cct_K[g] = res->duv[g] = res->melanopic_edi_lx[g] = NAN;
             if (spectral && E > 0) {
@@ -471,6 +488,7 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
                         fl += f, fx += f * spec[l].x_per_lx, fz += f * spec[l].z_per_lx, fm += f * spec[l].mel_W_per_lx;
                     }
                 if (fl > 0) X += Eind * fx / fl, Z += Eind * fz / fl, mel += Eind * fm / fl;
+                X += Eday * spec[nl].x_per_lx, Z += Eday * spec[nl].z_per_lx, mel += Eday * spec[nl].mel_W_per_lx;
                 res->melanopic_edi_lx[g] = mel / lx_alphaopic_d65_efficacy(LX_AO_MEL);
                 double s = X + E + Z, T, duv;
                 if (s > 0 && lx_cct_from_xy(ctx, LX_OBSERVER_2, X / s, E / s, &T, &duv) == LX_OK && fabs(duv) <= 0.05 &&
@@ -480,6 +498,8 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
         }
     }
     if ((st = check_finite(ctx, sc, res, nl, spectral)) != LX_OK) goto fail;
+    lx__daylight_free(day);
+    lx__daylight_free(sun);
     free(ondev);
     lx__scene_sky_map_free(map);
     lx__room_mesh_free(occm);
@@ -493,6 +513,8 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
 nomem:
     st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
 fail:
+    lx__daylight_free(day);
+    lx__daylight_free(sun);
     free(ondev);
     lx__scene_sky_map_free(map);
     lx__room_mesh_free(occm);

@@ -1,6 +1,8 @@
 /* scene_glare.c - UGR at a scene's observers (CIE 117-1995): each luminaire's luminance towards
- * the eye over its projected luminous area, its solid angle and Guth position index. */
-#include "scene/scene_private.h"
+ * the eye over its projected luminous area, its solid angle and Guth position index; the
+ * background luminance from the scene file or, in a room, from the luminaires' interreflected
+ * illuminance at the eye (Lb = E_ind / pi). */
+#include "scene/room_private.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -12,7 +14,62 @@ void lx_scene_glare_free(lx_scene_glare *g)
     free(g->ugr);
     free(g->background_cd_m2);
     free(g->terms);
+    free(g->indirect_lx);
     free(g);
+}
+
+lx_status lx__glare_room_background(lx_ctx *ctx, const lx_scene *sc, const lx__room_mesh *m, const double *Be, int backend,
+                                    lx_scene_result *res)
+{
+    size_t no = sc->n_obs;
+    double *pts = malloc(3 * no * sizeof *pts), *nrm = malloc(3 * no * sizeof *nrm);
+    int *cell = malloc(no * sizeof *cell), used = 0;
+    res->observer_indirect_lx = calloc(no, sizeof *res->observer_indirect_lx);
+    lx_status st = LX_OK;
+    if (!pts || !nrm || !cell || !res->observer_indirect_lx) st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    for (size_t o = 0; st == LX_OK && o < no; o++) {
+        memcpy(pts + 3 * o, sc->obs[o].pos_m, 3 * sizeof *pts);
+        memcpy(nrm + 3 * o, sc->obs[o].view, 3 * sizeof *nrm);
+        cell[o] = lx__room_cell(sc, sc->obs[o].pos_m);
+    }
+    lx__room_gather_job g = {m, m->elem, m->n_elem, Be, no, pts, nrm, cell, NULL, LX__ROOM_VIS_RECEIVERS};
+    if (st == LX_OK) st = lx__room_gather(ctx, &g, (lx_backend)backend, res->observer_indirect_lx, &used);
+    free(pts);
+    free(nrm);
+    free(cell);
+    return st;
+}
+
+/* Lb from the rooms for the observers without background_luminance: the scene planned and evaluated,
+ * E_ind at each eye (NaN for the others). */
+static lx_status room_background(lx_ctx *ctx, const lx_scene *sc, double *E_ind)
+{
+    for (size_t o = 0; o < sc->n_obs; o++) {
+        const lx_scene_observer *ob = &sc->obs[o];
+        E_ind[o] = NAN;
+        if (ob->background_cd_m2 > 0) continue;
+        if (!sc->n_room || lx__room_cell(sc, ob->pos_m) < 0)
+            return lx__error(ctx, LX_EPARSE, ob->file, ob->line,
+                             "observer '%s': no 'background_luminance', and no room around the eye to take it from (CIE "
+                             "117: Lb = E_ind / pi, the indirect illuminance at the eye)",
+                             ob->name);
+    }
+    lx_scene_plan *plan = NULL;
+    lx_scene_result *res = NULL;
+    lx_status st = lx_scene_plan_make(ctx, sc, LX_BACKEND_AUTO, &plan);
+    if (st == LX_OK) st = lx_scene_eval(ctx, sc, plan, NULL, &res);
+    if (st == LX_OK && !res->observer_indirect_lx) {
+        size_t o = 0;
+        while (sc->obs[o].background_cd_m2 > 0) o++;
+        st = lx__error(ctx, LX_EPARSE, sc->obs[o].file, sc->obs[o].line,
+                       "observer '%s': no 'background_luminance', and interreflection is off (%s)", sc->obs[o].name,
+                       plan->reason[LX_EFFECT_INTERREFLECTION]);
+    }
+    for (size_t o = 0; st == LX_OK && o < sc->n_obs; o++)
+        if (!(sc->obs[o].background_cd_m2 > 0)) E_ind[o] = res->observer_indirect_lx[o];
+    lx_scene_result_free(res);
+    lx_scene_plan_free(plan);
+    return st;
 }
 
 static double dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
@@ -47,19 +104,24 @@ lx_status lx_scene_glare_eval(lx_ctx *ctx, const lx_scene *sc, lx_scene_glare **
     LX__NEED_CTX(ctx);
     if (!sc || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_glare_eval: NULL argument");
     *out = NULL;
-    for (size_t o = 0; o < sc->n_obs; o++)
-        if (!(sc->obs[o].background_cd_m2 > 0))
-            return lx__error(ctx, LX_EPARSE, sc->obs[o].file, sc->obs[o].line,
-                             "observer '%s': no 'background_luminance' (the background from a room's indirect "
-                             "illuminance needs a room)",
-                             sc->obs[o].name);
     lx_scene_glare *g = calloc(1, sizeof *g);
     size_t no = sc->n_obs, nl = sc->n_lum;
     if (!g || !(g->ugr = malloc((no ? no : 1) * sizeof *g->ugr)) ||
         !(g->background_cd_m2 = malloc((no ? no : 1) * sizeof(double))) ||
+        !(g->indirect_lx = malloc((no ? no : 1) * sizeof(double))) ||
         !(g->terms = calloc(no * nl > 0 ? no * nl : 1, sizeof *g->terms))) {
         lx_scene_glare_free(g);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    }
+    int from_room = 0;
+    for (size_t o = 0; o < no; o++) {
+        g->indirect_lx[o] = NAN;
+        from_room |= !(sc->obs[o].background_cd_m2 > 0);
+    }
+    lx_status st = from_room ? room_background(ctx, sc, g->indirect_lx) : LX_OK;
+    if (st != LX_OK) {
+        lx_scene_glare_free(g);
+        return st;
     }
     g->n_obs = no, g->n_lum = nl;
     for (size_t o = 0; o < no; o++) {
@@ -89,8 +151,9 @@ lx_status lx_scene_glare_eval(lx_ctx *ctx, const lx_scene *sc, lx_scene_glare **
                       (t->position_index * t->position_index);
             sum += t->term;
         }
-        g->background_cd_m2[o] = ob->background_cd_m2;
-        g->ugr[o] = sum > 0 ? 8 * log10(0.25 / ob->background_cd_m2 * sum) : NAN;
+        double Lb = ob->background_cd_m2 > 0 ? ob->background_cd_m2 : g->indirect_lx[o] / LX__PI;
+        g->background_cd_m2[o] = Lb;
+        g->ugr[o] = sum > 0 && Lb > 0 ? 8 * log10(0.25 / Lb * sum) : NAN;
     }
     *out = g;
     return LX_OK;

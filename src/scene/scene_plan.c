@@ -11,7 +11,7 @@
 
 static const char *const effect_names[LX_EFFECT_COUNT] = {
     "inverse_square", "cosine", "spot_falloff", "goniometric", "near_field", "spectral", "environment", "opencl",
-    "occlusion", "interreflection"};
+    "occlusion", "interreflection", "daylight"};
 
 const char *lx_effect_name(lx_effect e)
 {
@@ -402,8 +402,11 @@ lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, lx_backend backend
                         p->estimate.goniometric_lookups += near_patches(size, d, sc->nearfield_tol, sc->lum[l].radius_m > 0);
                     }
         }
-    /* occlusion and interreflection (room_plan.c) */
+    /* daylight through openings (daylight_plan.c: before the rooms, whose mesh takes its openings),
+     * occlusion and interreflection (room_plan.c) */
+    if ((st = lx__daylight_plan(ctx, sc, p)) != LX_OK) goto fail;
     if ((st = lx__room_plan(ctx, sc, backend, p)) != LX_OK) goto fail;
+    if ((st = lx__daylight_plan_after(ctx, sc, p)) != LX_OK) goto fail;
     /* OpenCL: the far-field work of IES luminaires on grids can run as lx_grid_illuminance
      * batches on a device (its table kernel); only worth it when large enough to repay the
      * start-up (the grid engine's threshold: 1e7 point-luminaire evaluations), unless asked for.

@@ -121,8 +121,11 @@ void lx__room_scene_free(lx_scene *sc);
 /* The planner's part for occlusion and interreflection (room_plan.c), after the near field. */
 lx_status lx__room_plan(lx_ctx *ctx, const lx_scene *sc, int backend, lx_scene_plan *p);
 void lx__room_plan_free(lx_scene_plan *p);
-/* Evaluation's part: the solve and the gather; adds indirect_lx to res (room_eval.c). */
-lx_status lx__room_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *plan, long only, lx_scene_result *res);
+/* Evaluation's part: the solve and the gather; adds indirect_lx to res (room_eval.c). day: the
+ * daylight of the evaluation (NULL: none), solved with the same form factors. */
+struct lx__daylight;
+lx_status lx__room_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *plan, long only, struct lx__daylight *day,
+                        lx_scene_result *res);
 
 /* What a luminaire needs during evaluation (and the planner's probes): its frame, area and the
  * effects that shape its intensity. */
@@ -168,11 +171,36 @@ lx_status lx__scene_sky_eval(lx_ctx *ctx, const lx_scene *sc, const void *map, c
 /* Loads the map of a LX_SKY_MAP scene into *map (free with lx__scene_sky_map_free). */
 lx_status lx__scene_sky_map_load(lx_ctx *ctx, const lx_scene *sc, void **map);
 void lx__scene_sky_map_free(void *map);
+/* The loaded map's luminance (cd/m2, times the scene's scale) towards unit w: its pixel. */
+double lx__scene_sky_map_L(const void *map, const double w[3]);
+/* The sky's horizontal illuminance outside: the sky alone, and with the sun (the ground's E_h). */
+void lx__scene_sky_horizontal(const lx_scene *sc, const void *map, double *sky_lx, double *with_sun_lx);
+/* The sun's part of lx__scene_sky_eval on a receiver with unit normal n (Evn max(0, n . s)). */
+double lx__scene_sun_part(const lx_scene *sc, const double n[3]);
 
 /* Spectral weights of a source: per lux of its illuminance, the X, Z (Y = 1) and melanopic
  * irradiance (W/m2). Counts the spectra it integrates. */
 typedef struct scene__spec { double x_per_lx, z_per_lx, mel_W_per_lx; int valid; } scene__spec;
 lx_status lx__scene_spectrum_weights(lx_ctx *ctx, const char *file, long line, const lx_spd *spd, double cct_K,
                                      scene__spec *out);
+
+/* ---- daylight: openings and the light through them (daylight_*.c, scene_glare.c; README "Daylight") ---- */
+/* [opening NAME]: a new opening, its keys; the whole-scene checks (which room and face, inside it,
+ * overlaps); freeing. */
+lx_status lx__scene_open_section(lx_ctx *ctx, lx_scene *sc, const char *name, const char *file, long line);
+lx_status lx__scene_open_key(lx_ctx *ctx, lx_scene *sc, const char *file, long line, const char *key, const char *value);
+lx_status lx__daylight_scene_check(lx_ctx *ctx, lx_scene *sc);
+void lx__daylight_scene_free(lx_scene *sc);
+/* The planner's part: the daylight effect (before the rooms' part, whose mesh takes its openings
+ * and share), then the reasons and estimates that need the rooms' plan. */
+lx_status lx__daylight_plan(lx_ctx *ctx, const lx_scene *sc, lx_scene_plan *p);
+lx_status lx__daylight_plan_after(lx_ctx *ctx, const lx_scene *sc, lx_scene_plan *p);
+/* Hooks of the rooms' evaluation (room_eval.c): the daylight's own solve with the form factors F
+ * of mesh m; the luminaires' interreflected illuminance at the observers' eyes from the elements'
+ * exitance Be (res->observer_indirect_lx). */
+struct lx__room_mesh;
+lx_status lx__daylight_room(lx_ctx *ctx, struct lx__daylight *d, const struct lx__room_mesh *m, const double *F);
+lx_status lx__glare_room_background(lx_ctx *ctx, const lx_scene *sc, const struct lx__room_mesh *m, const double *Be,
+                                    int backend, lx_scene_result *res);
 
 #endif /* LX_SCENE_PRIVATE_H */

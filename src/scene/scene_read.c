@@ -15,7 +15,7 @@
 
 #define MAX_DEPTH LX__SCENE_MAX_DEPTH
 
-enum { SEC_NONE = 0, SEC_SCENE, SEC_LUM, SEC_REC, SEC_SKY, SEC_OUTPUT, SEC_EFFECTS, SEC_SUN, SEC_OBS, SEC_ROOM };
+enum { SEC_NONE = 0, SEC_SCENE, SEC_LUM, SEC_REC, SEC_SKY, SEC_OUTPUT, SEC_EFFECTS, SEC_SUN, SEC_OBS, SEC_ROOM, SEC_OPEN };
 
 /* Keys given in the current section (duplicates are errors). */
 #define MAX_KEYS 32
@@ -169,17 +169,18 @@ static lx_status open_section(reader *r, const char *file, long line, char *s, c
     char *name = sp, *ne = e;
     trim(&name, &ne);
     *ne = '\0';
-    static const char *const known[] = {"scene", "luminaire", "receiver", "sky",     "output",      "effects",
-                                        "sun",   "observer",  "room",     "surface", "obstruction"};
+    static const char *const known[] = {"scene", "luminaire", "receiver", "sky",         "output", "effects",
+                                        "sun",   "observer",  "room",     "surface",     "obstruction", "opening"};
     int k = 0;
-    while (k < 11 && strcmp(kind, known[k])) k++;
-    if (k == 11)
+    while (k < 12 && strcmp(kind, known[k])) k++;
+    if (k == 12)
         return lx__error(r->ctx, LX_EPARSE, file, line,
                          "unknown section [%s] (sections: scene, luminaire NAME, receiver NAME, sky, sun, observer NAME, "
-                         "output, effects, room NAME, surface NAME, obstruction NAME)",
+                         "output, effects, room NAME, surface NAME, obstruction NAME, opening NAME)",
                          kind);
     int room_kind = k == 8 ? SCENE__ROOM : k == 9 ? SCENE__SURFACE : k == 10 ? SCENE__OBSTRUCTION : 0;
-    int named = !strcmp(kind, "luminaire") || !strcmp(kind, "receiver") || !strcmp(kind, "observer") || room_kind;
+    int named = !strcmp(kind, "luminaire") || !strcmp(kind, "receiver") || !strcmp(kind, "observer") || !strcmp(kind, "opening") ||
+                room_kind;
     if (named && !*name)
         return lx__error(r->ctx, LX_EPARSE, file, line, "[%s] needs a name: [%s NAME]", kind, kind);
     if (!named && *name)
@@ -193,6 +194,7 @@ static lx_status open_section(reader *r, const char *file, long line, char *s, c
     else if (!strcmp(kind, "receiver")) r->sec = SEC_REC;
     else if (!strcmp(kind, "sun")) r->sec = SEC_SUN, once = &r->sun_seen;
     else if (!strcmp(kind, "observer")) r->sec = SEC_OBS;
+    else if (!strcmp(kind, "opening")) r->sec = SEC_OPEN;
     else if (room_kind) r->sec = SEC_ROOM;
     else
         return lx__error(r->ctx, LX_EPARSE, file, line,
@@ -229,6 +231,7 @@ static lx_status open_section(reader *r, const char *file, long line, char *s, c
     if (r->sec == SEC_SKY) r->sc->sky_line = line, r->sc->sky_file_at = file;
     if (r->sec == SEC_SUN) r->sc->sun_line = line, r->sc->sun_file_at = file, r->sc->has_sun = 1;
     if (r->sec == SEC_OBS) return lx__scene_obs_open(r->ctx, r->sc, name, file, line);
+    if (r->sec == SEC_OPEN) return lx__scene_open_section(r->ctx, r->sc, name, file, line);
     return LX_OK;
 }
 
@@ -303,6 +306,7 @@ static lx_status key_value(reader *r, const char *file, long line, const char *k
     case SEC_SUN: return lx__scene_sun_key(ctx, sc, &r->sun, file, line, key, value);
     case SEC_OBS: return lx__scene_obs_key(ctx, sc, file, line, key, value);
     case SEC_ROOM: return lx__room_key(ctx, &r->mraw, file, line, key, value);
+    case SEC_OPEN: return lx__scene_open_key(ctx, sc, file, line, key, value);
     case SEC_OUTPUT: {
         int b = 0;
         if (!strcmp(key, "illuminance")) {
@@ -336,7 +340,7 @@ static lx_status key_value(reader *r, const char *file, long line, const char *k
             }
         return lx__error(ctx, LX_EPARSE, file, line,
                          "unknown effect '%s' (effects: inverse_square, cosine, spot_falloff, goniometric, "
-                         "near_field, spectral, environment, opencl, occlusion, interreflection)", key);
+                         "near_field, spectral, environment, opencl, occlusion, interreflection, daylight)", key);
     }
     return lx__error(ctx, LX_EPARSE, file, line, "unknown key '%s'", key);
 }

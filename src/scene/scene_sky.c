@@ -141,3 +141,38 @@ lx_status lx__scene_sky_eval(lx_ctx *ctx, const lx_scene *sc, const void *map, c
     *E_lx = E_sky + LX__PI * Lg * (1 - cb) / 2;
     return LX_OK;
 }
+
+double lx__scene_sky_map_L(const void *p, const double w[3])
+{
+    const sky_map *m = p;
+    int W = m->map->width, H = m->map->height;
+    double cz = w[2] > 1 ? 1 : w[2] < -1 ? -1 : w[2], ph = atan2(w[1], w[0]);
+    if (ph < 0) ph += 2 * LX__PI;
+    int r = (int)(acos(cz) / LX__PI * H), c = (int)(ph / (2 * LX__PI) * W);
+    r = r < 0 ? 0 : r >= H ? H - 1 : r;
+    c = c < 0 ? 0 : c >= W ? W - 1 : c;
+    return m->L[(size_t)r * W + c];
+}
+
+void lx__scene_sky_horizontal(const lx_scene *sc, const void *map, double *sky_lx, double *with_sun_lx)
+{
+    double E = 0;
+    switch (sc->sky) {
+    case LX_SKY_UNIFORM: E = LX__PI * sc->sky_luminance_cd_m2; break;
+    case LX_SKY_OVERCAST: E = 7 * LX__PI * sc->sky_luminance_cd_m2 / 9; break;
+    case LX_SKY_MAP: E = map ? ((const sky_map *)map)->E_h : 0; break;
+    case LX_SKY_CIE:
+    case LX_SKY_PEREZ: E = sc->sky_model.diffuse_horizontal_lx; break;
+    default: break;
+    }
+    *sky_lx = E;
+    if (sc->has_sun && sc->sun_normal_lx > 0 && sc->sun_dir[2] > 0) E += sc->sun_normal_lx * sc->sun_dir[2];
+    *with_sun_lx = E;
+}
+
+double lx__scene_sun_part(const lx_scene *sc, const double n[3])
+{
+    if (!(sc->has_sun && sc->sun_normal_lx > 0 && sc->sun_dir[2] > 0)) return 0;
+    double c = n[0] * sc->sun_dir[0] + n[1] * sc->sun_dir[1] + n[2] * sc->sun_dir[2];
+    return c > 0 ? sc->sun_normal_lx * c : 0;
+}

@@ -118,3 +118,63 @@ else
 fi
 run ugr
 expect_rc 1 "ugr without a file"
+
+# openings (issue 21 part B): a 1 x 1 m roof opening at the centre of a 4 x 4 x 3 m room's ceiling
+cat > "$T/roof.scene" <<'SC'
+[scene]
+patch_size = 0.6 m
+[room r]
+size = 4, 4, 3 m
+[opening R]
+corner = 1.5, 1.5, 3 m
+edge1 = 1, 0, 0 m
+edge2 = 0, 1, 0 m
+[sky]
+type = overcast
+luminance = 1000 cd/m2
+[receiver c]
+type = point
+position = 2, 2, 0 m
+SC
+run scene "$T/roof.scene" --format csv
+expect_rc 0 "scene with an opening"
+expect_out_match '^receiver,x,y,z,illuminance_lx,direct_lx,indirect_lx,daylight_lx,daylight_factor,sky_component,externally_reflected,internally_reflected$' "daylight columns"
+# the overcast sky under a centred square roof light (tests/ref/daylight_ref.py: 0.1065100376709822 Lz)
+expect_field 1 sky_component "$(awk -v p=$PI 'BEGIN{printf "%.17g", 100*0.1065100376709822/(7*p/9)}')" 1e-10 "sky component: the overcast sky through a roof opening"
+run scene "$T/roof.scene" --explain --format json
+expect_out_match '"daylight": true' "explain: daylight on"
+expect_out_match '"environment": false' "explain: the sky reaches the room through the opening only"
+expect_out_match '"daylight": \{"daylight_factor": true, "closed_form": true' "explain: the daylight block"
+run scene "$T/roof.scene" --explain
+expect_out_match 'daylight +on +traditional CIE overcast sky' "explain text: the daylight reason"
+sed 's/^corner = 1.5, 1.5, 3 m/corner = 1.5, 1.5, 2.5 m/' "$T/roof.scene" >"$T/bad_open.scene"
+run scene "$T/bad_open.scene"
+expect_rc 2 "an opening off every face"
+expect_err_match "bad_open.scene:5: opening 'R' is not on a face of a room" "names the opening's line"
+# UGR's background from the room when the observer has none: Lb = E_ind / pi
+cat > "$T/glare_room.scene" <<'SC'
+[scene]
+patch_size = 0.5 m
+[room r]
+size = 6, 4, 3 m
+[luminaire panel]
+type = rect
+position = 4, 2, 2.95 m
+luminance = 6000 cd/m2
+width = 0.6 m
+length = 0.6 m
+[observer eye]
+position = 0.5, 2, 1.2 m
+view = 1, 0, 0
+[receiver eye]
+type = point
+position = 0.5, 2, 1.2 m
+normal = 1, 0, 0
+SC
+run scene "$T/glare_room.scene" --format csv
+eind=$(printf '%s\n' "$out" | awk -F, 'NR==2{print $7}')
+run scene "$T/glare_room.scene" --glare --format csv
+expect_rc 0 "glare with the background from the room"
+expect_field 1 background_cd_m2 "$(awk -v e="$eind" -v p=$PI 'BEGIN{printf "%.17g", e/p}')" 1e-9 "Lb = E_ind / pi at the eye"
+run bench --help
+expect_out_match 'daylight' "bench lists the daylight topic"
