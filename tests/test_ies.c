@@ -187,6 +187,67 @@ static void test_malformed(void **state)
     }
 }
 
+/* Malformed headers and tilt blocks, in memory: status, the line named (counted by hand in each
+ * text) and the message. The base file is valid: IESNA:LM-63-2002 (line 1), TILT=NONE (2), the
+ * ten numbers (3), ballast factor, ballast-lamp factor, watts (4), then the table. */
+static void test_malformed_header(void **state)
+{
+    lx_ctx *ctx = *state;
+#define TABLE "0 90 180\n0\n100 100 100\n"
+#define V2002 "IESNA:LM-63-2002\n"
+    static const struct {
+        const char *text;
+        lx_status st;
+        long line;
+        const char *fragment;
+    } cases[] = {
+        {V2002 "TILT=\n1 -1 1 3 1 1 2 0 0 0\n1 1 10\n" TABLE, LX_EPARSE, 2, "TILT= names nothing"},
+        {V2002 "TILT=NONE\n1.5 -1 1 3 1 1 2 0 0 0\n1 1 10\n" TABLE, LX_EPARSE, 3,
+         "the number of lamps must be a whole number (got 1.5)"},
+        {V2002 "TILT=NONE\n0 -1 1 3 1 1 2 0 0 0\n1 1 10\n" TABLE, LX_EPARSE, 3,
+         "the number of lamps must be a whole number (got 0)"},
+        {V2002 "TILT=NONE\n1 0 1 3 1 1 2 0 0 0\n1 1 10\n" TABLE, LX_EPARSE, 3,
+         "lumens per lamp must be positive or -1 (absolute photometry), got 0"},
+        {V2002 "TILT=NONE\n1 -1 0 3 1 1 2 0 0 0\n1 1 10\n" TABLE, LX_EPARSE, 3,
+         "the candela multiplier must be positive (got 0)"},
+        {V2002 "TILT=NONE\n1 -1 1 0 1 1 2 0 0 0\n1 1 10\n" TABLE, LX_EPARSE, 3,
+         "the number of vertical angles must be a whole number from 1 to 100000 (got 0)"},
+        {V2002 "TILT=NONE\n1 -1 1 3 2.5 1 2 0 0 0\n1 1 10\n" TABLE, LX_EPARSE, 3,
+         "the number of horizontal angles must be a whole number from 1 to 100000 (got 2.5)"},
+        {V2002 "TILT=NONE\n1 -1 1 3 1 4 2 0 0 0\n1 1 10\n" TABLE, LX_EPARSE, 3,
+         "the photometric type must be 1 (C), 2 (B) or 3 (A), got 4"},
+        {V2002 "TILT=NONE\n1 -1 1 3 1 3 2 0 0 0\n1 1 10\n" TABLE, LX_EUNSUPPORTED, 3, "type A photometry"},
+        {V2002 "TILT=NONE\n1 -1 1 3 1 1 3 0 0 0\n1 1 10\n" TABLE, LX_EPARSE, 3,
+         "the units type must be 1 (feet) or 2 (metres), got 3"},
+        {V2002 "TILT=NONE\n1 -1 1 3 1 1 2 0 0 0\n0 1 10\n" TABLE, LX_EPARSE, 4,
+         "the ballast factor must be positive (got 0)"},
+        /* up to LM-63-1995 the ballast-lamp factor scales the table, so it must be positive */
+        {"IESNA:LM-63-1995\nTILT=NONE\n1 -1 1 3 1 1 2 0 0 0\n1 0 10\n" TABLE, LX_EPARSE, 4,
+         "the ballast-lamp photometric factor must be positive (got 0)"},
+        /* TILT=INCLUDE: geometry (line 3), count (4), angles (5), factors (6) */
+        {V2002 "TILT=INCLUDE\n4\n3\n0 45 90\n1 1 1\n1 -1 1 3 1 1 2 0 0 0\n1 1 10\n" TABLE, LX_EPARSE, 3,
+         "TILT lamp-to-luminaire geometry must be 1, 2 or 3 (got 4)"},
+        {V2002 "TILT=INCLUDE\n1\n0\n1 -1 1 3 1 1 2 0 0 0\n1 1 10\n" TABLE, LX_EPARSE, 4,
+         "the number of TILT angles must be a whole number from 1 to 100000 (got 0)"},
+        {V2002 "TILT=INCLUDE\n1\n3\n0 90 45\n1 1 1\n1 -1 1 3 1 1 2 0 0 0\n1 1 10\n" TABLE, LX_EPARSE, 5,
+         "TILT angles out of order (45 after 90)"},
+        {V2002 "TILT=INCLUDE\n1\n3\n0 45 90\n1 -0.5 1\n1 -1 1 3 1 1 2 0 0 0\n1 1 10\n" TABLE, LX_EPARSE, 6,
+         "negative TILT multiplying factor -0.5"},
+    };
+#undef TABLE
+#undef V2002
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        lx_luminaire *l = (lx_luminaire *)1;
+        lx_status st = lx_luminaire_read_mem(ctx, "h.ies", cases[i].text, strlen(cases[i].text), &l);
+        if (st != cases[i].st || lx_ctx_errline(ctx) != cases[i].line || !strstr(lx_ctx_errmsg(ctx), cases[i].fragment))
+            print_error("case %zu: status %d line %ld '%s'\n", i, st, lx_ctx_errline(ctx), lx_ctx_errmsg(ctx));
+        assert_int_equal(st, cases[i].st);
+        assert_int_equal(lx_ctx_errline(ctx), cases[i].line);
+        assert_non_null(strstr(lx_ctx_errmsg(ctx), cases[i].fragment));
+        assert_null(l);
+    }
+}
+
 /* Writer round trip: a Warn model written as LM-63-2002 reads back with the same table. */
 static void test_write_round_trip(void **state)
 {
@@ -328,7 +389,7 @@ int main(void)
         cmocka_unit_test(test_tilt_include),         cmocka_unit_test(test_type_b),
         cmocka_unit_test(test_malformed),            cmocka_unit_test(test_write_round_trip),
         cmocka_unit_test(test_real_files),           cmocka_unit_test(test_real_90_270),
-        cmocka_unit_test(test_smooth),
+        cmocka_unit_test(test_smooth),               cmocka_unit_test(test_malformed_header),
     };
     return cmocka_run_group_tests(tests, lx_test_ctx_setup, lx_test_ctx_teardown);
 }

@@ -117,6 +117,51 @@ static void test_malformed_ldt(void **state)
     assert_null(l);
 }
 
+/* make_ldt's text with line `line` (1-based) replaced by `with`, into out. */
+static void replace_line(char *out, size_t cap, const char *text, int line, const char *with)
+{
+    const char *p = text;
+    for (int i = 1; i < line; i++) p = strchr(p, '\n') + 1;
+    const char *q = strchr(p, '\n');
+    snprintf(out, cap, "%.*s%s%s", (int)(p - text), text, with, q);
+}
+
+/* Bad lamp sets, C angles, Isym against Mc and intensities: the status, the line named and the
+ * message. make_ldt's layout (one lamp set, Mc 12, Ng 3): Isym on line 3, Mc 4, the lamp set
+ * 27-32 (lamps 27, flux 29), direct ratios 33-42, C angles 43-54, gamma 55-57, intensities from 58. */
+static void test_malformed_ldt_fields(void **state)
+{
+    lx_ctx *ctx = *state;
+    static const struct {
+        int isym, line;
+        const char *with;
+        long err_line;
+        const char *fragment;
+    } cases[] = {
+        {1, 27, "0", 27, "the number of lamps must be a non-zero whole number of at most"},
+        {1, 27, "1.5", 27, "the number of lamps must be a non-zero whole number"},
+        {1, 29, "0", 29, "the lamps' luminous flux must be positive (got 0 lm)"},
+        {1, 44, "0", 44, "C angles out of order (0 after 0)"},
+        {1, 43, "10", 43, "the C angles must run from 0 to below 360 (got 10..330)"},
+        {2, 4, "11", 3, "Isym 2 needs an even number of C-planes (Mc = 11)"},
+        {3, 4, "6", 3, "Isym 3 needs a number of C-planes divisible by 4 (Mc = 6)"},
+        {4, 4, "6", 3, "Isym 4 needs a number of C-planes divisible by 4 (Mc = 6)"},
+        {1, 59, "-5", 59, "negative luminous intensity -5 cd/klm"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        char t[8192];
+        replace_line(t, sizeof t, make_ldt(cases[i].isym, 1, 1, 1000), cases[i].line, cases[i].with);
+        lx_luminaire *l = (lx_luminaire *)1;
+        lx_status st = lx_luminaire_read_mem(ctx, "f.ldt", t, strlen(t), &l);
+        if (st != LX_EPARSE || lx_ctx_errline(ctx) != cases[i].err_line || !strstr(lx_ctx_errmsg(ctx), cases[i].fragment))
+            print_error("case %zu: status %d line %ld '%s'\n", i, st, lx_ctx_errline(ctx), lx_ctx_errmsg(ctx));
+        assert_int_equal(st, LX_EPARSE);
+        assert_int_equal(lx_ctx_errline(ctx), cases[i].err_line);
+        assert_non_null(strstr(lx_ctx_errmsg(ctx), cases[i].fragment));
+        assert_null(l);
+    }
+}
+
 /* ../shared twins: the LDT and IES files of one luminaire hold the same table; the fluxes agree
  * to the rounding of the candela values in the two files (0.1 % bound). */
 static void test_twins(void **state)
@@ -152,6 +197,7 @@ int main(void)
         cmocka_unit_test(test_isym_all),
         cmocka_unit_test(test_lamp_sets_absolute),
         cmocka_unit_test(test_malformed_ldt),
+        cmocka_unit_test(test_malformed_ldt_fields),
         cmocka_unit_test(test_twins),
     };
     return cmocka_run_group_tests(tests, lx_test_ctx_setup, lx_test_ctx_teardown);

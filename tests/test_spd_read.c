@@ -268,6 +268,100 @@ static void test_bad_mem(void **state)
     assert_null(set);
 }
 
+/* The CGATS reader's structural errors, each on a hand-written file: the line named is the one
+ * that holds the offending keyword or marker, counted by hand in the text. */
+static void test_bad_cgats_mem(void **state)
+{
+    lx_ctx *ctx = *state;
+    static const struct {
+        const char *text;
+        long line;
+        const char *fragment;
+    } cases[] = {
+        {"CGATS.17\nBEGIN_DATA_FORMAT\nSPEC_400 SPEC_410\nEND_DATA_FORMAT\nBEGIN_DATA_FORMAT\n", 5,
+         "second BEGIN_DATA_FORMAT (first on line 2)"},
+        {"CGATS.17\nBEGIN_DATA_FORMAT\nSPEC_400 SPEC_410\nEND_DATA_FORMAT\nBEGIN_DATA\n1 2\nEND_DATA\nBEGIN_DATA\n", 8,
+         "second BEGIN_DATA (only one table is read)"},
+        {"CGATS.17\nBEGIN_DATA\n1 2\nEND_DATA\n", 2, "BEGIN_DATA before BEGIN_DATA_FORMAT"},
+        {"CGATS.17\nNUMBER_OF_SETS 1\nEND_DATA\n", 3, "END_DATA without its BEGIN"},
+        {"CGATS.17\nEND_DATA_FORMAT\n", 2, "END_DATA_FORMAT without its BEGIN"},
+        {"CGATS.17\nNUMBER_OF_SETS\nBEGIN_DATA_FORMAT\nSPEC_400 SPEC_410\n", 2, "keyword NUMBER_OF_SETS has no value"},
+        {"CGATS.17\nBEGIN_DATA_FORMAT\nEND_DATA_FORMAT\n", 2, "empty BEGIN_DATA_FORMAT field list"},
+        {"CGATS.17\nNUMBER_OF_FIELDS 3\nBEGIN_DATA_FORMAT\nSPEC_400 SPEC_410\nEND_DATA_FORMAT\n", 2,
+         "NUMBER_OF_FIELDS is 3 but the data format lists 2 fields"},
+        {"CGATS.17\nNUMBER_OF_SETS 1\n", 2, "CGATS file without BEGIN_DATA_FORMAT"},
+        {"CGATS.17\nBEGIN_DATA_FORMAT SPEC_400 SPEC_410 END_DATA_FORMAT\nBEGIN_DATA\nEND_DATA\n", 3,
+         "no data sets between BEGIN_DATA and END_DATA"},
+        /* sets may span lines (the first line holds other than one set): 1 2 | 3 then END_DATA */
+        {"CGATS.17\nBEGIN_DATA_FORMAT\nSPEC_400 SPEC_410\nEND_DATA_FORMAT\nBEGIN_DATA\n1 2 3\nEND_DATA\n", 6,
+         "incomplete data set: 1 of 2 values before END_DATA"},
+        /* the three spectral keywords go together: the message names SPECTRAL_BANDS's line when given */
+        {"CGATS.17\nSPECTRAL_END_NM 410\nSPECTRAL_BANDS 2\nBEGIN_DATA_FORMAT SPEC_400 SPEC_410 END_DATA_FORMAT\n"
+         "BEGIN_DATA\n1 2\nEND_DATA\n",
+         3, "SPECTRAL_BANDS, SPECTRAL_START_NM and SPECTRAL_END_NM must appear together"},
+        {"CGATS.17\nSPECTRAL_END_NM 410\nBEGIN_DATA_FORMAT SPEC_400 SPEC_410 END_DATA_FORMAT\nBEGIN_DATA\n1 2\nEND_DATA\n",
+         2, "must appear together"},
+        {"CGATS.17\nSPECTRAL_BANDS 2\nSPECTRAL_START_NM 420\nSPECTRAL_END_NM 410\n"
+         "BEGIN_DATA_FORMAT SPEC_400 SPEC_410 END_DATA_FORMAT\nBEGIN_DATA\n1 2\nEND_DATA\n",
+         4, "SPECTRAL_START_NM 420 and SPECTRAL_END_NM 410: need 0 < start < end"},
+        {"CGATS.17\nSPECTRAL_NORM 0\nBEGIN_DATA_FORMAT SPEC_400 SPEC_410 END_DATA_FORMAT\nBEGIN_DATA\n1 2\nEND_DATA\n",
+         2, "SPECTRAL_NORM must be positive: 0"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        lx_spd_set *set = (lx_spd_set *)1;
+        lx_status st = lx_spd_read_mem(ctx, "c.cgats", cases[i].text, strlen(cases[i].text), &set);
+        if (st != LX_EPARSE || lx_ctx_errline(ctx) != cases[i].line || !strstr(lx_ctx_errmsg(ctx), cases[i].fragment))
+            print_error("case %zu: status %d, '%s'\n", i, st, lx_ctx_errmsg(ctx));
+        assert_int_equal(st, LX_EPARSE);
+        assert_null(set);
+        assert_int_equal(lx_ctx_errline(ctx), cases[i].line);
+        assert_non_null(strstr(lx_ctx_errmsg(ctx), cases[i].fragment));
+    }
+}
+
+/* CGATS data: sets spanning lines, the sample name (SAMPLE_NAME before SAMPLE_ID), and
+ * skip_bad_rows, which leaves out a one-set line with a bad value or the wrong field count but
+ * cannot leave out part of a set that spans lines. */
+static void test_cgats_sets(void **state)
+{
+    lx_ctx *ctx = *state;
+    lx_spd_set *set = NULL;
+    static const char spans[] = "CGATS.17\nBEGIN_DATA_FORMAT\nSAMPLE_ID SPEC_400 SPEC_410\nEND_DATA_FORMAT\n"
+                                "BEGIN_DATA\nA 1 2 B\n3 4\nEND_DATA\n";
+    lx_assert_ok(ctx, lx_spd_read_mem(ctx, "s", spans, sizeof spans - 1, &set));
+    assert_int_equal(set->count, 2);
+    assert_string_equal(set->spd[0].name, "A");
+    assert_string_equal(set->spd[1].name, "B");
+    assert_int_equal(set->line[0], 6); /* each set's line is the one it starts on */
+    assert_int_equal(set->line[1], 6);
+    assert_true(set->spd[1].value[0] == 3.0 && set->spd[1].value[1] == 4.0);
+    lx_spd_set_free(set);
+
+    static const char named[] = "CGATS.17\nNUMBER_OF_SETS 4\nBEGIN_DATA_FORMAT\nSAMPLE_ID SAMPLE_NAME SPEC_400 SPEC_410\n"
+                                "END_DATA_FORMAT\nBEGIN_DATA\n1 one 1 2\n2 two 1 x\n3 three 5 6\n4 four 7\nEND_DATA\n";
+    assert_int_equal(lx_spd_read_mem(ctx, "n", named, sizeof named - 1, &set), LX_EPARSE);
+    assert_int_equal(lx_ctx_errline(ctx), 8); /* without skip_bad_rows the first bad line fails */
+    assert_non_null(strstr(lx_ctx_errmsg(ctx), "value is not a number: 'x'"));
+    lx_spd_read_opts o = {.skip_bad_rows = 1};
+    lx_assert_ok(ctx, lx_spd_read_mem_opts(ctx, "n", named, sizeof named - 1, &o, &set));
+    assert_int_equal(set->count, 2); /* NUMBER_OF_SETS 4 counts the two left out */
+    assert_string_equal(set->spd[0].name, "one");
+    assert_string_equal(set->spd[1].name, "three");
+    assert_int_equal(set->line[1], 9);
+    assert_true(set->spd[1].value[0] == 5.0 && set->spd[1].value[1] == 6.0);
+    assert_int_equal(set->nskipped, 2);
+    assert_int_equal(set->skipped[0].line, 8);
+    assert_int_equal(set->skipped[1].line, 10);
+    assert_non_null(strstr(set->skipped[1].why, "row has 3 fields, expected 4"));
+    lx_spd_set_free(set);
+
+    static const char spans_bad[] = "CGATS.17\nBEGIN_DATA_FORMAT\nSPEC_400 SPEC_410\nEND_DATA_FORMAT\n"
+                                    "BEGIN_DATA\n1 2 3\nx\nEND_DATA\n";
+    assert_int_equal(lx_spd_read_mem_opts(ctx, "sb", spans_bad, sizeof spans_bad - 1, &o, &set), LX_EPARSE);
+    assert_int_equal(lx_ctx_errline(ctx), 7);
+    assert_null(set);
+}
+
 int main(void)
 {
 #define T(f) cmocka_unit_test_setup_teardown(f, lx_test_ctx_setup, lx_test_ctx_teardown)
@@ -280,7 +374,8 @@ int main(void)
         B(comments_only), B(header_only), B(binary), B(utf16), B(one_column), B(rows_decreasing),
         B(rows_short_row), B(rows_no_data), B(empty_column), B(missing_value), B(cgats_no_begin_data),
         B(cgats_no_end_data), B(cgats_sets_mismatch), B(cgats_short_row), B(cgats_incomplete),
-        B(cgats_bands_mismatch), B(cgats_no_spectral), B(cgats_nan), T(test_bad_mem),
+        B(cgats_bands_mismatch), B(cgats_no_spectral), B(cgats_nan), T(test_bad_mem), T(test_bad_cgats_mem),
+        T(test_cgats_sets),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
