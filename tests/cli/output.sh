@@ -86,11 +86,11 @@ if [ -w /dev/full ]; then
 fi
 
 # ---- unknown options: one style everywhere ----
-for c in spd blackbody daylight point spot disk rect convert solve ies grid irradiance luminance-map scene devices bench; do
+for c in spd blackbody daylight point spot disk rect convert solve ies grid irradiance luminance-map scene devices bench sky ugr; do
   "$LUXCALC" $c --bogus >"$T/out" 2>"$T/err"; rc=$?
-  if [ "$rc" -eq 1 ] && [ "$(cat "$T/err")" = "luxcalc $c: unknown option '--bogus' (see luxcalc $c --help)" ]; then ok "$c: unknown option"
+  if [ "$rc" -eq 1 ] && [ "$(cat "$T/err")" = "luxcalc: $c: unknown option '--bogus' (see luxcalc $c --help)" ]; then ok "$c: unknown option"
   else notok "$c: unknown option" "exit $rc: $(cat "$T/err")"; fi
 done
 run grid --ies
 expect_rc 1 "an option without its value"
-expect_err_match "^luxcalc grid: option '--ies' needs a value \(see luxcalc grid --help\)$" "a missing value: one line"
+expect_err_match "^luxcalc: grid: option '--ies' needs a value \(see luxcalc grid --help\)$" "a missing value: one line"
