@@ -94,3 +94,12 @@ done
 run grid --ies
 expect_rc 1 "an option without its value"
 expect_err_match "^luxcalc: grid: option '--ies' needs a value \(see luxcalc grid --help\)$" "a missing value: one line"
+
+# ---- -v logs the backend decision of auto (the measured break-even, src/core/backend.c) ----
+if [ -n "${LX_BACKEND:-}" ] && [ "$LX_BACKEND" != auto ]; then
+  skip "-v shows auto's backend decision" "LX_BACKEND=$LX_BACKEND decides before auto does"
+else
+  run -v grid --ies samples/ies/point_isotropic_1000lm.ies --at 0,0,3 --plane z=0 --area -1:1,-1:1 --points 4x4 --interp table --backend auto --format csv
+  expect_rc 0 "grid -v: runs"
+  expect_err_match "^luxcalc: grid: info: grid: backend auto: .*(break-even|no OpenCL|a CPU|unavailable)" "-v shows auto's backend decision"
+fi
