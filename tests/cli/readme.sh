@@ -48,4 +48,15 @@ grep -oE '\]\(#[^)]+\)' README.md | sed -E 's/^]\(#//; s/\)$//' | sort -u >"$T/u
 bad=$(comm -23 "$T/used" "$T/anchors" | tr '\n' ' ')
 if [ -z "$bad" ]; then ok "readme: every #anchor names a heading ($(wc -l <"$T/used") anchors)"
 else notok "readme: anchors" "no heading for: $bad"; fi
+# the command reference is what src/tools/mkcmdref.sh prints today (the devices example aside: it
+# names this machine's devices); not under valgrind (slow) or without OpenCL (other output)
+if [ "$slow" -gt 1 ] || [ "$(opencl_state)" = off ]; then
+  skip "readme: command reference current" "valgrind or LX_OPENCL=0 build"
+else
+  nodev() { awk '/^\*\*`devices`\*\*/ { d = 1; next } d && /^\*\*`/ { d = 0 } !d'; }
+  awk '/<!-- section: commands -->/, /<!-- end: commands -->/' README.md | nodev >"$T/ref_readme"
+  sh src/tools/mkcmdref.sh "$LUXCALC" 2>&1 | nodev >"$T/ref_now"
+  if cmp -s "$T/ref_readme" "$T/ref_now"; then ok "readme: command reference is mkcmdref.sh's output"
+  else notok "readme: command reference" "differs from sh src/tools/mkcmdref.sh (paste its output): $(diff "$T/ref_readme" "$T/ref_now" | head -n 6)"; fi
+fi
 exit 0
