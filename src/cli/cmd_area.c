@@ -115,7 +115,7 @@ static int run(int argc, char **argv, int is_rect)
             if ((rc = lt_common_opt(&co, c, argv)) != LT_NEXT) return rc;
         }
         if (wrong) {
-            fprintf(stderr, "luxcalc %s: option '--%s' applies to %s only (see luxcalc %s --help)\n", cmd,
+            fprintf(stderr, "luxcalc: %s: option '--%s' applies to %s only (see luxcalc %s --help)\n", cmd,
                     li >= 0 ? opts[li].name : "?", is_rect ? "disk" : "rect", cmd);
             return CLI_USAGE;
         }

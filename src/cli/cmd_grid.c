@@ -221,10 +221,29 @@ static int read_scene(lx_ctx *ctx, const char *path, const lx_plane *p, int with
 {
     FILE *f = strcmp(path, "-") ? fopen(path, "rb") : stdin;
     if (!f) return cli_error("grid", "%s: cannot open: %s", path, strerror(errno)), CLI_INPUT;
-    size_t cap = 1 << 16, len = 0;
+    /* bounded like the library's own reader (README "Bounded on any input"): the scene-file size
+     * limit, and a NUL byte (binary data, /dev/zero) refused in the block it arrives in */
+    size_t cap = 1 << 16, len = 0, limit = lx_ctx_input_limit(ctx, LX_INPUT_SCENE);
     char *text = malloc(cap + 1024);
     for (size_t k; text && (k = fread(text + len, 1, cap - len, f)) > 0;) {
+        const char *nul = memchr(text + len, '\0', k);
         len += k;
+        if (nul || len > limit) {
+            long line = 1;
+            for (const char *q = text; nul && q < nul; q++) line += *q == '\n';
+            if (nul)
+                cli_error("grid", "%s:%ld: binary data (NUL byte at offset %zu); not a text file", path, line,
+                          (size_t)(nul - text));
+            else if (limit % (1u << 20) == 0)
+                cli_error("grid", "%s: larger than %zu MB, the limit for a scene file (raise with LX_MAX_INPUT_MB)", path,
+                          limit >> 20);
+            else
+                cli_error("grid", "%s: larger than %zu bytes, the limit for a scene file (raise with LX_MAX_INPUT_MB)",
+                          path, limit);
+            if (f != stdin) fclose(f);
+            free(text);
+            return CLI_INPUT;
+        }
         if (len == cap) {
             char *nt = realloc(text, 2 * cap + 1024);
             if (!nt) free(text);

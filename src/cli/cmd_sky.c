@@ -205,7 +205,7 @@ int cmd_sky(int argc, char **argv)
     int c;
     optind = 1;
     opterr = 0;
-    while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":o:h", opts, NULL)) != -1) {
         if (c >= 1 && c <= 18) *slot[c] = optarg;
         else if (c == 19) {
             int f = cli_format_parse(optarg);
@@ -218,10 +218,8 @@ int cmd_sky(int argc, char **argv)
         else if (c == 'h') {
             cli_print_help(help);
             return CLI_OK;
-        } else {
-            cli_error("sky", "bad option '%s' (see luxcalc sky --help)", argv[optind - 1]);
-            return CLI_USAGE;
-        }
+        } else
+            return cli_bad_option("sky", argv, c);
     }
     if (optind != argc) {
         cli_error("sky", "unexpected argument '%s'", argv[optind]);

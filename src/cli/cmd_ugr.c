@@ -33,7 +33,7 @@ int cmd_ugr(int argc, char **argv)
     int c;
     optind = 1;
     opterr = 0;
-    while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":o:h", opts, NULL)) != -1) {
         if (c == 'f') {
             int f = cli_format_parse(optarg);
             if (f < 0) {
@@ -45,10 +45,8 @@ int cmd_ugr(int argc, char **argv)
         else if (c == 'h') {
             cli_print_help(help);
             return CLI_OK;
-        } else {
-            cli_error("ugr", "bad option '%s' (see luxcalc ugr --help)", argv[optind - 1]);
-            return CLI_USAGE;
-        }
+        } else
+            return cli_bad_option("ugr", argv, c);
     }
     if (optind + 1 != argc) {
         cli_error("ugr", optind >= argc ? "no luminaire file given (see luxcalc ugr --help)" : "one luminaire file at a time");

@@ -70,7 +70,7 @@ int cli_output_options(const char *cmd, int *argc, char **argv)
             continue;
         }
         if (!val) {
-            fprintf(stderr, "luxcalc %s: option '%.*s' needs a value (see luxcalc %s --help)\n", cmd,
+            fprintf(stderr, "luxcalc: %s: option '%.*s' needs a value (see luxcalc %s --help)\n", cmd,
                     (int)strcspn(a, "="), a, cmd);
             return CLI_USAGE;
         }
@@ -226,8 +226,8 @@ int cli_bad_option(const char *cmd, char **argv, int c)
     char name[80];
     if (a && a[0] == '-' && a[1] == '-') snprintf(name, sizeof name, "%.*s", (int)strcspn(a, "="), a);
     else snprintf(name, sizeof name, "-%c", optopt ? optopt : '?');
-    if (c == ':') fprintf(stderr, "luxcalc %s: option '%s' needs a value (see luxcalc %s --help)\n", cmd, name, cmd);
-    else fprintf(stderr, "luxcalc %s: unknown option '%s' (see luxcalc %s --help)\n", cmd, name, cmd);
+    if (c == ':') fprintf(stderr, "luxcalc: %s: option '%s' needs a value (see luxcalc %s --help)\n", cmd, name, cmd);
+    else fprintf(stderr, "luxcalc: %s: unknown option '%s' (see luxcalc %s --help)\n", cmd, name, cmd);
     return CLI_USAGE;
 }
 

@@ -49,7 +49,7 @@ lx_status lx__backend_choose(lx_ctx *ctx, const char *job, lx_backend asked, dou
     int forced = be && *be;
     double limit = forced ? atof(be) : lx_cl_ready(ctx) ? break_even_warm : break_even;
     if (!(work >= limit)) {
-        lx__log(ctx, LX_LOG_DEBUG, "%s: backend auto: %.3g below the OpenCL break-even %.3g; using the CPU", job, work,
+        lx__log(ctx, LX_LOG_INFO, "%s: backend auto: %.3g below the OpenCL break-even %.3g; using the CPU", job, work,
                 limit);
         return LX_OK;
     }
@@ -59,10 +59,10 @@ lx_status lx__backend_choose(lx_ctx *ctx, const char *job, lx_backend asked, dou
         return LX_OK;
     }
     if (cl->info.is_cpu && !forced) {
-        lx__log(ctx, LX_LOG_DEBUG, "%s: backend auto: the OpenCL device is a CPU (the same cores); using the CPU", job);
+        lx__log(ctx, LX_LOG_INFO, "%s: backend auto: the OpenCL device is a CPU (the same cores); using the CPU", job);
         return LX_OK;
     }
-    lx__log(ctx, LX_LOG_DEBUG, "%s: backend auto: %.3g at or above the OpenCL break-even %.3g; using OpenCL", job, work,
+    lx__log(ctx, LX_LOG_INFO, "%s: backend auto: %.3g at or above the OpenCL break-even %.3g; using OpenCL", job, work,
             limit);
     *out = LX_BACKEND_OPENCL;
     return LX_OK;
@@ -70,7 +70,7 @@ lx_status lx__backend_choose(lx_ctx *ctx, const char *job, lx_backend asked, dou
     (void)work, (void)break_even, (void)break_even_warm;
     if (asked == LX_BACKEND_OPENCL)
         return lx__error(ctx, LX_EUNSUPPORTED, NULL, 0, "%s: this build has no OpenCL (built with LX_OPENCL=0)", job);
-    lx__log(ctx, LX_LOG_DEBUG, "%s: backend auto: this build has no OpenCL; using the CPU", job);
+    lx__log(ctx, LX_LOG_INFO, "%s: backend auto: this build has no OpenCL; using the CPU", job);
     return LX_OK;
 #endif
 }

@@ -55,6 +55,9 @@ if [ -r /dev/zero ] && [ -r /dev/urandom ]; then
   { printf '[scene]\ntitle = includes a device\ninclude = /dev/zero\n'; tail -n +3 "$G/good.scene"; } >"$G/zero.scene"
   bounded scene "$G/zero.scene"
   refused "scene include = /dev/zero" "^luxcalc: scene: $G/zero.scene:3: include: cannot read '/dev/zero': binary data \(NUL byte at offset 0\)"
+  # grid --scene reads the scene text itself (to add the plane of its flags): the same bounds
+  bounded grid --scene /dev/zero --format csv
+  refused "grid --scene /dev/zero" "^luxcalc: grid: /dev/zero:1: binary data \(NUL byte at offset 0\); not a text file$"
   # raw float32 spectra from /dev/zero: the first (all-zero) spectrum is refused and ends the stream
   bounded spd --input-format f32 --grid 380:780:5 --format csv /dev/zero
   refused "spd --input-format f32 /dev/zero" "^luxcalc: spd: /dev/zero: spectrum 1: x is undefined \(NaN\): X \+ Y \+ Z = 0"
@@ -83,6 +86,11 @@ elif mkfifo "$G/fifo" 2>/dev/null && command -v yes >/dev/null; then
   bounded scene "$G/fifo.scene"
   refused "scene include = a FIFO fed for ever" "include: cannot read '$G/fifo': larger than 16 MB, the limit for a scene file"
   kill $wpid 2>/dev/null; wait $wpid 2>/dev/null
+  (yes '# comment' >"$G/fifo" 2>/dev/null) &
+  wpid=$!
+  bounded grid --scene "$G/fifo" --plane z=0 --area 0:1,0:1 --points 2x2 --format csv
+  refused "grid --scene a FIFO fed for ever" "^luxcalc: grid: $G/fifo: larger than 16 MB, the limit for a scene file \(raise with LX_MAX_INPUT_MB\)$"
+  kill $wpid 2>/dev/null; wait $wpid 2>/dev/null
   # standard input from a pipe that never ends
   t0=$(date +%s%N)
   yes | (ulimit -v $memlim; exec timeout $tmax "$LUXCALC" spd -) >"$T/out" 2>"$T/err"; rc=$?
@@ -97,6 +105,10 @@ awk 'BEGIN { for (i = 0; i < 70000; i++) printf "# %028d\n", i }' >"$G/big.scene
 tail -n +1 "$G/good.scene" >>"$G/big.scene"
 bounded --max-input-mb 1 scene "$G/big.scene"
 refused "scene of 2 MB under --max-input-mb 1" "^luxcalc: scene: $G/big.scene: larger than 1 MB, the limit for a scene file \(raise with LX_MAX_INPUT_MB\)$"
+bounded --max-input-mb 1 grid --scene "$G/big.scene" --format csv
+refused "grid --scene of 2 MB under --max-input-mb 1" "^luxcalc: grid: $G/big.scene: larger than 1 MB, the limit for a scene file \(raise with LX_MAX_INPUT_MB\)$"
+bounded --max-input-mb 3 grid --scene "$G/big.scene" --plane z=0 --area 0:1,0:1 --points 2x2 --format csv
+expect_rc 0 "grid --scene of 2 MB under --max-input-mb 3"
 LX_MAX_INPUT_MB=1 bounded scene "$G/big.scene"
 expect_rc 2 "scene of 2 MB under LX_MAX_INPUT_MB=1 exits 2"
 LX_MAX_INPUT_MB=3 bounded scene "$G/big.scene"

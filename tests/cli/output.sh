@@ -86,11 +86,20 @@ if [ -w /dev/full ]; then
 fi
 
 # ---- unknown options: one style everywhere ----
-for c in spd blackbody daylight point spot disk rect convert solve ies grid irradiance luminance-map scene devices bench; do
+for c in spd blackbody daylight point spot disk rect convert solve ies grid irradiance luminance-map scene devices bench sky ugr; do
   "$LUXCALC" $c --bogus >"$T/out" 2>"$T/err"; rc=$?
-  if [ "$rc" -eq 1 ] && [ "$(cat "$T/err")" = "luxcalc $c: unknown option '--bogus' (see luxcalc $c --help)" ]; then ok "$c: unknown option"
+  if [ "$rc" -eq 1 ] && [ "$(cat "$T/err")" = "luxcalc: $c: unknown option '--bogus' (see luxcalc $c --help)" ]; then ok "$c: unknown option"
   else notok "$c: unknown option" "exit $rc: $(cat "$T/err")"; fi
 done
 run grid --ies
 expect_rc 1 "an option without its value"
-expect_err_match "^luxcalc grid: option '--ies' needs a value \(see luxcalc grid --help\)$" "a missing value: one line"
+expect_err_match "^luxcalc: grid: option '--ies' needs a value \(see luxcalc grid --help\)$" "a missing value: one line"
+
+# ---- -v logs the backend decision of auto (the measured break-even, src/core/backend.c) ----
+if [ -n "${LX_BACKEND:-}" ] && [ "$LX_BACKEND" != auto ]; then
+  skip "-v shows auto's backend decision" "LX_BACKEND=$LX_BACKEND decides before auto does"
+else
+  run -v grid --ies samples/ies/point_isotropic_1000lm.ies --at 0,0,3 --plane z=0 --area -1:1,-1:1 --points 4x4 --interp table --backend auto --format csv
+  expect_rc 0 "grid -v: runs"
+  expect_err_match "^luxcalc: grid: info: grid: backend auto: .*(break-even|no OpenCL|a CPU|unavailable)" "-v shows auto's backend decision"
+fi
