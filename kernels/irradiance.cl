@@ -1,6 +1,6 @@
 /* irradiance.cl - brute-force irradiance from a lat-long radiance map: one work-item per output
  * normal n sums L_p max(0, n . m_p) over every input pixel, m_p the pixel's exact first moment
- * (row factor x column factor). CPU twin: src/irradiance_brute.c. The real type is double with
+ * (row factor x column factor). CPU twin: src/radiance/irradiance_brute.c. The real type is double with
  * LX_FP64, else float with per-row partial sums (two-level summation). */
 
 #if LX_FP64

@@ -1,5 +1,5 @@
 /* spd_batch.cl - batch spectral integration: N spectra on one uniform grid against K weighting
- * functions (cie15 rule, weights pre-multiplied by the step). CPU twin: src/batch.c.
+ * functions (cie15 rule, weights pre-multiplied by the step). CPU twin: src/spectral/batch.c.
  * Each work-item integrates a contiguous run of per_item spectra with 8-wide vector loads (the
  * layout PoCL's CPU device runs fastest); the accumulation is double (LX_FP64) or compensated float. */
 

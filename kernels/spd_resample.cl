@@ -1,6 +1,6 @@
 /* spd_resample.cl - resamples spectra given on their own wavelengths onto one uniform grid by
  * linear interpolation, zero outside each spectrum (the piecewise-linear model of the exact
- * method). CPU twin: resample_row in src/batch.c (same formula, same operation order). */
+ * method). CPU twin: resample_cpu and resample_at in src/spectral/batch.c (same formula, same operation order). */
 #if LX_FP64
 #pragma OPENCL EXTENSION cl_khr_fp64 : enable
 

@@ -13,7 +13,7 @@
 static const lx_function XYZ[3] = {LX_FN_XBAR_2, LX_FN_YBAR_2, LX_FN_ZBAR_2};
 
 /* Naive oracle: long double, one term at a time, weights from lx_function_get interpolated by
- * hand (independent of src/batch.c's weight matrix and vector code). */
+ * hand (independent of src/spectral/batch.c's weight matrix and vector code). */
 static long double oracle(lx_ctx *ctx, const double *row, size_t n, double start, double step, lx_function fn)
 {
     lx_spd w;

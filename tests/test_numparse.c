@@ -1,4 +1,4 @@
-/* test_numparse.c - the fast float parser (src/numparse.c) against the C library's strtod, the
+/* test_numparse.c - the fast float parser (src/core/numparse.c) against the C library's strtod, the
  * oracle: bit-identical results for random doubles in several printed forms, hard cases, and the
  * inputs it must reject. */
 #include "lx_test.h"

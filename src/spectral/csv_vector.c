@@ -1,6 +1,6 @@
 /* csv_vector.c - the vector line parser of the batch CSV reader (batch_csv.c): a whole line of
  * short decimals ("0.123456", "-12.5", "3") parsed with AVX-512, four fields per instruction, or
- * by its AVX2 twin (csv_vector_avx2.h, two fields per instruction).
+ * by its AVX2 twin (line_avx2 below, two fields per instruction).
  * Anything else (exponents, 16+ characters, spaces, a bad byte) answers 0 and the general parser
  * redoes the line, so this file decides speed, never meaning: every value it returns is the
  * correctly rounded one strtod gives (tests/test_batch.c checks bit for bit).

@@ -33,7 +33,9 @@ ex "irradiance" irradiance samples/envmaps/sky_sun.exr --normal 0,0,1 --method f
 ex "luminance-map" luminance-map samples/envmaps/sky_sun.exr --format csv
 LINES_MAX=20 ex "scene" scene samples/scenes/spectral.scene
 ex "devices" devices --format csv
-echo "**\`bench\`**: \`luxcalc bench [spd|metrics|irradiance|grid|accuracy]\` prints the measured tables"
-echo "shown in the sections above (a run takes minutes; \`make bench\` runs all topics)."
+topics=$("$LX" bench --help 2>&1 | awk '/^topics:/ { on = 1; next } on && NF { printf "%s%s", sep, $1; sep = "|" }')
+echo "**\`bench\`**: \`luxcalc bench [$topics]\` prints the measured tables as markdown (a run takes"
+echo "minutes; \`make bench\` runs all topics and writes each to \`samples/bench/TOPIC.md\`, dated, the CPU"
+echo "named: the files the sections above link)."
 echo
 echo "<!-- end: commands -->"
