@@ -18,6 +18,10 @@ typedef struct cli_cmd {
 
 extern const cli_cmd cli_commands[];
 
+/* pi for the CLI (which sees only the public header; the library's constants are in
+ * src/core/constants.h) */
+#define CLI_PI 3.14159265358979323846
+
 /* Global flags set by main before a command runs. */
 extern int cli_verbose; /* -v: 1, -vv: 2 */
 extern int cli_quiet;   /* -q */

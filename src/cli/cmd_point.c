@@ -64,7 +64,7 @@ int cmd_point(int argc, char **argv)
         lx_status st = LX_OK;
         if (flux) st = lx_point_intensity(ctx, f, &i);
         else if (!(i >= 0)) st = LX_EINVAL, cli_error(cmd, "--intensity: must not be negative"), rc = CLI_INPUT;
-        else f = 4 * 3.14159265358979323846 * i;
+        else f = 4 * CLI_PI * i;
         if (!rc && st == LX_OK) st = lx_point_illuminance(ctx, i, d, a, &e);
         if (!rc && st != LX_OK) rc = cli_fail(cmd, ctx, st);
     }

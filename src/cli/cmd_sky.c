@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define DEG_PER_RAD (180 / 3.14159265358979323846)
+#define DEG_PER_RAD (180 / CLI_PI)
 
 static const char help[] =
     "usage: luxcalc sky --type cie --number N (--zenith-luminance L | --horizontal-illuminance E)\n"

@@ -78,7 +78,7 @@ int lt_emit_nums(const lt_common *co, int n, const char *const *names, const cha
                  const double *vals);
 
 /* radians to degrees as value / (pi/180), the same division the unit table uses */
-#define LT_DEG (3.14159265358979323846 / 180.0)
+#define LT_DEG (CLI_PI / 180.0)
 
 /* An input echoed back after a unit conversion, as it was given: rounded to 15 significant digits,
  * which removes the conversion's last-bit residue (30deg -> 0.5235987755982988 rad -> 30, not

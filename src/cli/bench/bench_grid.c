@@ -10,9 +10,6 @@
 #include <string.h>
 #include <time.h>
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 static double now_s(void)
 {
@@ -114,8 +111,8 @@ int cli_bench_grid(FILE *out)
     p += sprintf(p, "\n");
     for (int c = 0; c <= 360; c += 15)
         for (int g = 0; g <= 180; g += 5) {
-            double gr = g * M_PI / 180, i1 = 1000 * pow(fmax(cos(gr), 0), 1.5) + 20;
-            p += sprintf(p, "%.6f\n", i1 * (1 + 0.2 * cos(c * M_PI / 180) * sin(gr)));
+            double gr = g * CLI_PI / 180, i1 = 1000 * pow(fmax(cos(gr), 0), 1.5) + 20;
+            p += sprintf(p, "%.6f\n", i1 * (1 + 0.2 * cos(c * CLI_PI / 180) * sin(gr)));
         }
     lx_luminaire *asym = NULL;
     lx_luminaire_read_mem(ctx, "bench.ies", ies, strlen(ies), &asym);

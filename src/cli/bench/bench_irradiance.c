@@ -10,7 +10,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#define PI 3.14159265358979323846
+#define PI CLI_PI
 
 static double now_s(void)
 {
