@@ -1630,7 +1630,8 @@ typedef enum lx_irr_method {
     LX_IRR_FAST = 2,  /* exact, the same integral as BRUTE: per-row prefix sums for the wholly lit
                        * pixels, the crossed ones in closed form: O(rows + crossed pixels) per output */
     LX_IRR_AUTO = 3   /* FAST, unless its estimated cost for the job is above 10 x SH9's (large
-                       * output maps): then SH9 (lx_ctx_irradiance_method says which ran) */
+                       * output maps): then SH9, and FAST after all when any SH9 value is negative
+                       * (ringing: certainly wrong); lx_ctx_irradiance_method says which ran */
 } lx_irr_method;
 
 /** SH9 windows applied to bands l = 0, 1, 2. */

@@ -306,9 +306,11 @@ static void write_row(const cli_table *t, const cell *row, cli_format fmt, FILE 
             char buf[512];
             if (!shown(t, c, fmt)) continue;
             cell_text(&row[c], &t->col[c], buf, sizeof buf);
-            const char *u = t->col[c].unit;
-            fprintf(out, "%-*s  %s%s%s\n", w, t->col[c].name, buf, *u && strcmp(buf, "-") ? " " : "",
-                    strcmp(buf, "-") ? u : "");
+            /* the unit follows a number (or a number echoed as text), never a word: "not covered" */
+            char *end;
+            (void)strtod(buf, &end);
+            const char *u = strcmp(buf, "-") && end != buf ? t->col[c].unit : "";
+            fprintf(out, "%-*s  %s%s%s\n", w, t->col[c].name, buf, *u ? " " : "", u);
         }
     }
 }

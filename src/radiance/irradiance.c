@@ -109,6 +109,38 @@ static lx_status run_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n, const dou
     return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown irradiance method %d", (int)method);
 }
 
+/* AUTO's second rule: SH9 rings below zero around small bright sources (3/32 of their power); a
+ * negative irradiance is certainly wrong, and then the exact method runs instead, whatever it costs */
+static int any_negative_d(const double *v, size_t n)
+{
+    for (size_t k = 0; k < n; k++)
+        if (v[k] < 0) return 1;
+    return 0;
+}
+
+static int any_negative_f(const float *v, size_t n)
+{
+    for (size_t k = 0; k < n; k++)
+        if (v[k] < 0) return 1;
+    return 0;
+}
+
+/* The output map m's texels by method, through run_dirs (every method but SH9 on a lat-long map). */
+static lx_status map_by_dirs(lx_ctx *ctx, const lx_envmap *map, lx_envmap *m, const lx_irr_opts *o, lx_irr_method method,
+                             lx_backend *used)
+{
+    size_t n = (size_t)m->width * m->height;
+    lx_status st = LX_OK;
+    double *dirs = calloc(n * 3, sizeof *dirs), *res = malloc(n * map->channels * sizeof *res);
+    if (!dirs || !res) st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for a %dx%d map", m->width, m->height);
+    for (size_t k = 0; k < n && !st; k++) lx_envmap_texel_direction(m, (int)(k / m->width), (int)(k % m->width), dirs + 3 * k);
+    if (!st) st = run_dirs(ctx, map, n, dirs, o, method, res, used);
+    for (size_t k = 0; k < n * map->channels && !st; k++) m->data[k] = (float)res[k];
+    free(dirs);
+    free(res);
+    return st;
+}
+
 lx_status lx_irradiance_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const double *dirs,
                              const lx_irr_opts *opts, double *out)
 {
@@ -139,6 +171,10 @@ lx_status lx_irradiance_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, c
     }
     lx_backend used = LX_BACKEND_CPU;
     if (!st) st = run_dirs(ctx, map, n_dirs, nd, o, method, res, &used);
+    if (!st && o->method == LX_IRR_AUTO && method == LX_IRR_SH9 && any_negative_d(res, n_dirs * map->channels)) {
+        method = LX_IRR_FAST; /* AUTO's second rule: a negative SH9 result is wrong, the exact one runs */
+        st = run_dirs(ctx, map, n_dirs, nd, o, method, res, &used);
+    }
     if (!st) {
         memcpy(out, res, n_dirs * map->channels * sizeof *out);
         lx__backend_used(ctx, used);
@@ -199,16 +235,12 @@ lx_status lx_irradiance_map(lx_ctx *ctx, const lx_envmap *map, int width, int he
                     if (!st) st = lx__error(ctx, LX_EINVAL, NULL, 0, "SH9 coefficients overflow (radiance too large)");
                 }
         if (!st) st = lx__irr_sh9_map(ctx, &sh, o->window, m);
+        if (!st && o->method == LX_IRR_AUTO && any_negative_f(m->data, (size_t)width * height * map->channels)) {
+            method = LX_IRR_FAST; /* AUTO's second rule: a negative SH9 result is wrong, the exact one runs */
+            if (!(st = check_map(ctx, map))) st = map_by_dirs(ctx, map, m, o, method, &used);
+        }
     } else {
-        size_t n = (size_t)width * height;
-        double *dirs = malloc(n * 3 * sizeof *dirs), *res = malloc(n * map->channels * sizeof *res);
-        if (!dirs || !res) st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for a %dx%d map", width, height);
-        for (size_t k = 0; k < n && !st; k++)
-            lx_envmap_texel_direction(m, (int)(k / width), (int)(k % width), dirs + 3 * k);
-        if (!st) st = run_dirs(ctx, map, n, dirs, o, method, res, &used);
-        for (size_t k = 0; k < n * map->channels && !st; k++) m->data[k] = (float)res[k];
-        free(dirs);
-        free(res);
+        st = map_by_dirs(ctx, map, m, o, method, &used);
     }
     if (st) {
         lx_envmap_free(m);

@@ -197,5 +197,9 @@ else
 fi
 run spd --metrics hazard --subtense 0.011 --unit W/sr/m2/nm --format csv "$T/few.csv"
 expect_out_match ",exempt,L_B," "radiance: the risk group from L_B (L_R not covered by 380-780 nm data)"
+# in table format "not covered" is a word, not a value: no unit after it (numbers keep theirs)
+run spd --metrics hazard --subtense 0.011 --unit W/sr/m2/nm "$T/few.csv"
+expect_out_match '^hazard_thermal +not covered$' "table: 'not covered' without a unit"
+expect_out_match '^hazard_blue +[0-9.e+-]+ W/\(sr m2\)$' "table: a covered hazard keeps its unit"
 run spd --metrics hazard --unit W/sr/m2/nm --format csv "$D/good/excel.csv"
 expect_out_match ',,,"blue,thermal,actinic_uv,uva"$' "380-400 nm data: no hazard is covered, no risk group"

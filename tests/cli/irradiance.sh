@@ -26,10 +26,21 @@ run irradiance $M/sky_sun.exr --normal 0,0,-1 --method sh9 --format csv
 expect_field 1 illuminance_lx -23.69501220398835 1e-6 "SH9 gives -23.7 lx there"
 expect_err_match 'warning: SH9 gives a negative illuminance \(-23.695 lx\)' "SH9 warns of its negative result"
 expect_err_match 'warning: SH9 is approximate and this map has a dominant small source: 70.6 % of its power is in 57 pixels' "SH9 warns of the sun: what fraction in how few pixels"
-# a map output: auto takes SH9 when fast would cost more than 10 x as much, and says so
-run irradiance $M/sky_sun.exr -o "$T/Eauto.exr"
+# a map output: auto takes SH9 when fast would cost more than 10 x as much, and says so (the
+# furnace: SH9 is exact for a constant map, E = pi x 179 lm/W everywhere)
+run irradiance $M/furnace.exr -o "$T/Eauto.exr"
 expect_rc 0 "auto irradiance map written"
 expect_err_match 'note: SH9 \(approximate\) for this map: the exact method \(--method fast\) would cost about [0-9]+ times as much' "auto says when it takes SH9"
+run luminance-map "$T/Eauto.exr" --format csv
+expect_field 1 min 562.34510064 1e-6 "auto's SH9 map of the furnace: 179 pi everywhere"
+# ... but where SH9 goes negative (the sun rings: -25.6 lx at worst on this map) auto runs the exact
+# method after all: the map's minimum is the exact 116.42 lx of the downward normal (fast = brute
+# above), and no note or warning is printed
+run irradiance $M/sky_sun.exr -o "$T/Eauto2.exr"
+expect_rc 0 "auto irradiance map of sky_sun written"
+if [ -z "$err" ]; then ok "auto on sky_sun: exact, no SH9 note"; else notok "auto on sky_sun: exact, no SH9 note" "$err"; fi
+run luminance-map "$T/Eauto2.exr" --format csv
+expect_field 1 min 116.4218 1e-4 "auto on sky_sun: no negative illuminance, the exact minimum"
 # half-lit: E(+z) = pi, E(-z) = 0, E(+x) = pi/2 (pi (1 + n_z) / 2)
 run irradiance $M/half_lit.exr --normal 1,0,0 --format csv
 expect_field 1 irradiance 1.5707963267948966 1e-12 "half-lit E(+x) = pi/2"

@@ -86,3 +86,15 @@ run spd --format csv "$T/green.csv"
 expect_err_match "cct_K and duv empty: Duv [0-9.]+ is beyond 0.05" "an empty CCT says why"
 run spd -q --format csv "$T/green.csv"
 if [ -z "$err" ]; then ok "-q silences the notes"; else notok "-q silences the notes" "$err"; fi
+# empty ANSI bins say why: a 10000 K blackbody (Planck's law, Duv 0) is beyond the warmest-to-coolest
+# range of ANSI C78.377-2017 (nominal 2200-6500 K: 6530 +- 510 K at most); a 4000 K one (Duv 0,
+# within 0.006 of the 3985 K category's target 0.001) is binned, with nothing said
+run blackbody --temperature 10000K --range 380:780:5
+printf '%s\n' "$out" > "$T/bb10000.csv"
+run spd --metrics binning --format csv "$T/bb10000.csv"
+expect_err_match "binning_ansi_\* and binning_flex_\* empty: CCT 99[0-9.]+ K, Duv [-0-9.]+ lies in no quadrangle" "empty ANSI bins say why"
+run blackbody --temperature 4000K --range 380:780:5
+printf '%s\n' "$out" > "$T/bb4000.csv"
+run spd --metrics binning --format csv "$T/bb4000.csv"
+expect_out_match ',4000,' "4000 K blackbody: binned in the 4000 K category"
+if printf '%s\n' "$err" | grep -q 'binning'; then notok "a binned light: nothing said" "$err"; else ok "a binned light: nothing said"; fi
