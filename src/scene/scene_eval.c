@@ -367,6 +367,48 @@ static lx_status check_finite(lx_ctx *ctx, const lx_scene *sc, const lx_scene_re
     return LX_OK;
 }
 
+/* Each point's luminance, and with spectral on its CCT, Duv and melanopic EDI from the sources'
+ * contributions (and the interreflected and daylight parts). */
+static void point_colour(lx_ctx *ctx, const lx_scene *sc, lx_scene_result *res, const scene__spec *spec, long only,
+                         const lx__daylight *day, int spectral)
+{
+    size_t nl = sc->n_lum, nc = nl + 1;
+    for (size_t r = 0; r < sc->n_rec; r++) {
+        const lx_scene_receiver *rc = &sc->rec[r];
+        for (size_t g = res->first[r]; g < res->first[r + 1]; g++) {
+            const double *c = res->contrib_lx + g * nc;
+            double Eday = day ? day->ind_lx[g] : 0; /* interreflected daylight: the sky's spectrum */
+            double E = res->E_lx[g], Eind = res->indirect_lx ? res->indirect_lx[g] - Eday : 0;
+            res->L_cd_m2[g] = sc->want_luminance && rc->reflectance >= 0 ? rc->reflectance * E / LX__PI : NAN;
+            res->cct_K[g] = res->duv[g] = res->melanopic_edi_lx[g] = NAN;
+            if (spectral && E > 0) {
+                /* linearity: X, Y, Z and the melanopic irradiance of the summed spectral
+                 * irradiance are the sums of each source's, scaled to its illuminance; the
+                 * indirect part has the flux-weighted mixture of the sources' spectra (neutral
+                 * reflectances) */
+                double X = 0, Z = 0, mel = 0, fl = 0, fx = 0, fz = 0, fm = 0;
+                for (size_t k = 0; k < nc; k++) {
+                    X += c[k] * spec[k].x_per_lx;
+                    Z += c[k] * spec[k].z_per_lx;
+                    mel += c[k] * spec[k].mel_W_per_lx;
+                }
+                for (size_t l = 0; l < nl && Eind > 0; l++)
+                    if (only < 0 || (long)l == only) {
+                        double f = sc->lum[l].flux_lm;
+                        fl += f, fx += f * spec[l].x_per_lx, fz += f * spec[l].z_per_lx, fm += f * spec[l].mel_W_per_lx;
+                    }
+                if (fl > 0) X += Eind * fx / fl, Z += Eind * fz / fl, mel += Eind * fm / fl;
+                X += Eday * spec[nl].x_per_lx, Z += Eday * spec[nl].z_per_lx, mel += Eday * spec[nl].mel_W_per_lx;
+                res->melanopic_edi_lx[g] = mel / lx_alphaopic_d65_efficacy(LX_AO_MEL);
+                double s = X + E + Z, T, duv;
+                if (s > 0 && lx_cct_from_xy(ctx, LX_OBSERVER_2, X / s, E / s, &T, &duv) == LX_OK && fabs(duv) <= 0.05 &&
+                    T >= 1000 && T <= 100000)
+                    res->cct_K[g] = T, res->duv[g] = duv;
+            }
+        }
+    }
+}
+
 lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *plan, const lx_scene_eval_opts *opts,
                         lx_scene_result **out)
 {
@@ -463,40 +505,7 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
     /* the interreflected part: E_lx gains indirect_lx (the daylight's too) */
     if (plan->on[LX_EFFECT_INTERREFLECTION] && (st = lx__room_eval(ctx, sc, plan, only, day, res)) != LX_OK) goto fail;
     if (day && (st = lx__daylight_finish(ctx, day, res)) != LX_OK) goto fail;
-    for (size_t r = 0; r < sc->n_rec; r++) {
-        const lx_scene_receiver *rc = &sc->rec[r];
-        for (g = res->first[r]; g < res->first[r + 1]; g++) {
-            const double *c = res->contrib_lx + g * nc;
-            double Eday = day ? day->ind_lx[g] : 0; /* interreflected daylight: the sky's spectrum */
-            double E = res->E_lx[g], Eind = res->indirect_lx ? res->indirect_lx[g] - Eday : 0;
-            res->L_cd_m2[g] = sc->want_luminance && rc->reflectance >= 0 ? rc->reflectance * E / LX__PI : NAN;
-            res->cct_K[g] = res->duv[g] = res->melanopic_edi_lx[g] = NAN;
-            if (spectral && E > 0) {
-                /* linearity: X, Y, Z and the melanopic irradiance of the summed spectral
-                 * irradiance are the sums of each source's, scaled to its illuminance; the
-                 * indirect part has the flux-weighted mixture of the sources' spectra (neutral
-                 * reflectances) */
-                double X = 0, Z = 0, mel = 0, fl = 0, fx = 0, fz = 0, fm = 0;
-                for (size_t k = 0; k < nc; k++) {
-                    X += c[k] * spec[k].x_per_lx;
-                    Z += c[k] * spec[k].z_per_lx;
-                    mel += c[k] * spec[k].mel_W_per_lx;
-                }
-                for (size_t l = 0; l < nl && Eind > 0; l++)
-                    if (only < 0 || (long)l == only) {
-                        double f = sc->lum[l].flux_lm;
-                        fl += f, fx += f * spec[l].x_per_lx, fz += f * spec[l].z_per_lx, fm += f * spec[l].mel_W_per_lx;
-                    }
-                if (fl > 0) X += Eind * fx / fl, Z += Eind * fz / fl, mel += Eind * fm / fl;
-                X += Eday * spec[nl].x_per_lx, Z += Eday * spec[nl].z_per_lx, mel += Eday * spec[nl].mel_W_per_lx;
-                res->melanopic_edi_lx[g] = mel / lx_alphaopic_d65_efficacy(LX_AO_MEL);
-                double s = X + E + Z, T, duv;
-                if (s > 0 && lx_cct_from_xy(ctx, LX_OBSERVER_2, X / s, E / s, &T, &duv) == LX_OK && fabs(duv) <= 0.05 &&
-                    T >= 1000 && T <= 100000)
-                    res->cct_K[g] = T, res->duv[g] = duv;
-            }
-        }
-    }
+    point_colour(ctx, sc, res, spec, only, day, spectral);
     if ((st = check_finite(ctx, sc, res, nl, spectral)) != LX_OK) goto fail;
     lx__daylight_free(day);
     lx__daylight_free(sun);

@@ -207,6 +207,82 @@ static lx_status plan_near(lx_ctx *ctx, const lx_scene *sc, lx_scene_plan *p, si
     return LX_OK;
 }
 
+/* The spectral effect: only when asked for and every source has a spectrum. */
+static lx_status plan_spectral(lx_ctx *ctx, const lx_scene *sc, lx_scene_plan *p)
+{
+    const lx_effect_force *F = sc->force;
+    int asked = sc->want_cct || sc->want_melanopic;
+    size_t with = 0, sources = sc->n_lum + (sc->sky != LX_SKY_NONE && F[LX_EFFECT_ENVIRONMENT] != LX_FORCE_OFF);
+    const char *missing = NULL, *mfile = sc->file;
+    long mline = 0;
+    for (size_t l = 0; l < sc->n_lum; l++) {
+        if (sc->lum[l].spd || sc->lum[l].cct_K > 0) with++;
+        else if (!missing) missing = sc->lum[l].name, mfile = sc->lum[l].file, mline = sc->lum[l].line;
+    }
+    if (sources > sc->n_lum) {
+        if (sc->sky_cct_K > 0) with++;
+        else if (!missing) missing = "the sky", mfile = sc->sky_file_at, mline = sc->sky_line;
+    }
+    if (F[LX_EFFECT_SPECTRAL] == LX_FORCE_OFF)
+        why(p, LX_EFFECT_SPECTRAL, 0, "forced off in [effects]");
+    else if (!asked && F[LX_EFFECT_SPECTRAL] != LX_FORCE_ON)
+        why(p, LX_EFFECT_SPECTRAL, 0, "no spectral output asked (cct, melanopic_edi)");
+    else if (with == 0 && F[LX_EFFECT_SPECTRAL] != LX_FORCE_ON)
+        why(p, LX_EFFECT_SPECTRAL, 0, "spectral output asked, but no source has an spd or cct: left empty");
+    else if (with < sources) {
+        return lx__error(ctx, LX_EPARSE, mfile, mline,
+                         "spectral output needs a spectrum for every source: %s has no spd or cct", missing);
+    } else {
+        why(p, LX_EFFECT_SPECTRAL, 1, "%s asked and all %zu sources have spectra",
+            F[LX_EFFECT_SPECTRAL] == LX_FORCE_ON && !asked ? "forced on in [effects];"
+            : sc->want_cct && sc->want_melanopic ? "cct and melanopic_edi"
+            : sc->want_cct ? "cct" : "melanopic_edi",
+            with);
+        p->estimate.spectra_integrated = 2 * with;
+    }
+    return LX_OK;
+}
+
+/* The environment effect (sky and sun) and its work estimate. */
+static lx_status plan_environment(lx_ctx *ctx, const lx_scene *sc, lx_scene_plan *p)
+{
+    const lx_effect_force *F = sc->force;
+    if (sc->sky == LX_SKY_NONE && !(sc->has_sun && sc->sun_normal_lx > 0)) {
+        if (F[LX_EFFECT_ENVIRONMENT] == LX_FORCE_ON)
+            return lx__error(ctx, LX_EPARSE, sc->file, sc->force_line[LX_EFFECT_ENVIRONMENT],
+                             "%s forced on, but the scene has no %s", effect_names[LX_EFFECT_ENVIRONMENT], "[sky]");
+        why(p, LX_EFFECT_ENVIRONMENT, 0, "no [sky]");
+    } else if (F[LX_EFFECT_ENVIRONMENT] == LX_FORCE_OFF)
+        why(p, LX_EFFECT_ENVIRONMENT, 0, "forced off in [effects]: the sky is ignored");
+    else {
+        static const char *const sk[] = {"no", "uniform", "CIE overcast", "EXR map", "CIE general", "Perez all-weather"};
+        char kind[64];
+        if (sc->sky == LX_SKY_CIE) snprintf(kind, sizeof kind, "CIE general (type %d)", sc->sky_cie_type);
+        else snprintf(kind, sizeof kind, "%s", sk[sc->sky]);
+        why(p, LX_EFFECT_ENVIRONMENT, 1, "%s sky%s, ground reflectance %g: one evaluation per receiver normal (%zu)",
+            kind, sc->has_sun && sc->sun_normal_lx > 0 ? " and the sun" : "", sc->ground_reflectance, p->n_normals);
+        p->estimate.environment_evaluations = p->n_normals;
+        if (sc->sky == LX_SKY_MAP) {
+            /* the upper half of the map once for the horizontal (the ground term needs it), and
+             * again for every receiver that does not face straight up */
+            unsigned long long half = (unsigned long long)sc->sky_map->width * (unsigned long long)(sc->sky_map->height / 2);
+            p->estimate.environment_samples += half;
+            for (size_t r = 0; r < sc->n_rec; r++)
+                if (sc->rec[r].normal[2] != 1) p->estimate.environment_samples += half;
+        }
+        if (sc->sky == LX_SKY_CIE || sc->sky == LX_SKY_PEREZ)
+            for (size_t r = 0; r < sc->n_rec; r++)
+                if (sc->rec[r].normal[2] != 1) p->estimate.environment_samples += 4ULL * 48 * 48;
+        if (sc->sky == LX_SKY_OVERCAST)
+            for (size_t r = 0; r < sc->n_rec; r++)
+                if (sc->rec[r].normal[2] != 1) {
+                    double nz = sc->rec[r].normal[2], cut = fabs(LX__PI / 2 - acos(nz > 1 ? 1 : nz < -1 ? -1 : nz));
+                    p->estimate.environment_samples += (unsigned long long)sc->sky_samples * ((cut > 0) + (cut < LX__PI / 2));
+                }
+    }
+    return LX_OK;
+}
+
 lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, lx_backend backend, lx_scene_plan **out)
 {
     LX__NEED_CTX(ctx);
@@ -317,71 +393,8 @@ lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, lx_backend backend
             why(p, LX_EFFECT_NEAR_FIELD, 0, "the point model's estimated error meets the tolerance %g on all %zu probed pairs "
                 "(largest %.2g: %s to %s)", sc->nearfield_tol, n_probed, worst, sc->lum[wl].name, sc->rec[wr].name);
     }
-    /* spectral: only when asked for and every source has a spectrum */
-    {
-        int asked = sc->want_cct || sc->want_melanopic;
-        size_t with = 0, sources = sc->n_lum + (sc->sky != LX_SKY_NONE && F[LX_EFFECT_ENVIRONMENT] != LX_FORCE_OFF);
-        const char *missing = NULL, *mfile = sc->file;
-        long mline = 0;
-        for (size_t l = 0; l < sc->n_lum; l++) {
-            if (sc->lum[l].spd || sc->lum[l].cct_K > 0) with++;
-            else if (!missing) missing = sc->lum[l].name, mfile = sc->lum[l].file, mline = sc->lum[l].line;
-        }
-        if (sources > sc->n_lum) {
-            if (sc->sky_cct_K > 0) with++;
-            else if (!missing) missing = "the sky", mfile = sc->sky_file_at, mline = sc->sky_line;
-        }
-        if (F[LX_EFFECT_SPECTRAL] == LX_FORCE_OFF)
-            why(p, LX_EFFECT_SPECTRAL, 0, "forced off in [effects]");
-        else if (!asked && F[LX_EFFECT_SPECTRAL] != LX_FORCE_ON)
-            why(p, LX_EFFECT_SPECTRAL, 0, "no spectral output asked (cct, melanopic_edi)");
-        else if (with == 0 && F[LX_EFFECT_SPECTRAL] != LX_FORCE_ON)
-            why(p, LX_EFFECT_SPECTRAL, 0, "spectral output asked, but no source has an spd or cct: left empty");
-        else if (with < sources) {
-            st = lx__error(ctx, LX_EPARSE, mfile, mline,
-                           "spectral output needs a spectrum for every source: %s has no spd or cct", missing);
-            goto fail;
-        } else {
-            why(p, LX_EFFECT_SPECTRAL, 1, "%s asked and all %zu sources have spectra",
-                F[LX_EFFECT_SPECTRAL] == LX_FORCE_ON && !asked ? "forced on in [effects];"
-                : sc->want_cct && sc->want_melanopic ? "cct and melanopic_edi"
-                : sc->want_cct ? "cct" : "melanopic_edi",
-                with);
-            p->estimate.spectra_integrated = 2 * with;
-        }
-    }
-    /* environment */
-    if (sc->sky == LX_SKY_NONE && !(sc->has_sun && sc->sun_normal_lx > 0)) {
-        FORCED_ON_NOTHING(LX_EFFECT_ENVIRONMENT, "[sky]");
-        why(p, LX_EFFECT_ENVIRONMENT, 0, "no [sky]");
-    } else if (F[LX_EFFECT_ENVIRONMENT] == LX_FORCE_OFF)
-        why(p, LX_EFFECT_ENVIRONMENT, 0, "forced off in [effects]: the sky is ignored");
-    else {
-        static const char *const sk[] = {"no", "uniform", "CIE overcast", "EXR map", "CIE general", "Perez all-weather"};
-        char kind[64];
-        if (sc->sky == LX_SKY_CIE) snprintf(kind, sizeof kind, "CIE general (type %d)", sc->sky_cie_type);
-        else snprintf(kind, sizeof kind, "%s", sk[sc->sky]);
-        why(p, LX_EFFECT_ENVIRONMENT, 1, "%s sky%s, ground reflectance %g: one evaluation per receiver normal (%zu)",
-            kind, sc->has_sun && sc->sun_normal_lx > 0 ? " and the sun" : "", sc->ground_reflectance, p->n_normals);
-        p->estimate.environment_evaluations = p->n_normals;
-        if (sc->sky == LX_SKY_MAP) {
-            /* the upper half of the map once for the horizontal (the ground term needs it), and
-             * again for every receiver that does not face straight up */
-            unsigned long long half = (unsigned long long)sc->sky_map->width * (unsigned long long)(sc->sky_map->height / 2);
-            p->estimate.environment_samples += half;
-            for (size_t r = 0; r < sc->n_rec; r++)
-                if (sc->rec[r].normal[2] != 1) p->estimate.environment_samples += half;
-        }
-        if (sc->sky == LX_SKY_CIE || sc->sky == LX_SKY_PEREZ)
-            for (size_t r = 0; r < sc->n_rec; r++)
-                if (sc->rec[r].normal[2] != 1) p->estimate.environment_samples += 4ULL * 48 * 48;
-        if (sc->sky == LX_SKY_OVERCAST)
-            for (size_t r = 0; r < sc->n_rec; r++)
-                if (sc->rec[r].normal[2] != 1) {
-                    double nz = sc->rec[r].normal[2], cut = fabs(LX__PI / 2 - acos(nz > 1 ? 1 : nz < -1 ? -1 : nz));
-                    p->estimate.environment_samples += (unsigned long long)sc->sky_samples * ((cut > 0) + (cut < LX__PI / 2));
-                }
-    }
+    /* spectral: only when asked for and every source has a spectrum; the environment */
+    if ((st = plan_spectral(ctx, sc, p)) != LX_OK || (st = plan_environment(ctx, sc, p)) != LX_OK) goto fail;
     /* the point-source work (far pairs) */
     for (size_t l = 0; l < sc->n_lum; l++) {
         unsigned long long far = 0;
