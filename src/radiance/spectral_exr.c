@@ -73,30 +73,14 @@ static int xyz_slot(const char *name, const void *user)
     return name[0] == 'X' ? 0 : name[0] == 'Y' ? 1 : 2;
 }
 
-/* reads the S0 channels: *data (W x H x nl floats), *ch (nl channels by increasing wavelength) */
-static lx_status read_spectral(lx_ctx *ctx, const char *path, float **data, chan **chans, int *nl_out, int *W_out,
-                               int *H_out, int *npol)
+/* The emissive S0 channels of the channel list into ch (room for every channel; names point into
+ * the header), sorted by wavelength, at least two and no wavelength twice; *npol counts the S1-S3
+ * channels left out. Reflective T. channels alone are LX_EUNSUPPORTED. */
+static lx_status pick_s0_channels(lx_ctx *ctx, const char *path, const exr_attr_chlist_t *cl, chan *ch, int *nl_out,
+                                  int *npol)
 {
-    struct stat sb;
-    if (stat(path, &sb) == 0 && !S_ISREG(sb.st_mode))
-        return lx__error(ctx, LX_EIO, path, 0, "cannot read: not a regular file (OpenEXR files are read by seeking)");
-    lx__exr_stream s = {.fd = open(path, O_RDONLY)};
-    if (s.fd < 0) return lx__error(ctx, LX_EIO, path, 0, "cannot open: %s", strerror(errno));
-    exr_context_t e = NULL;
     int nl = 0, nrefl = 0;
-    float *buf = NULL;
-    chan *ch = NULL;
-    exr_result_t rv;
-    exr_storage_t storage;
-    const exr_attr_chlist_t *cl;
-    lx_status st = lx__exr_read_begin(ctx, path, &s, &e, &storage, "deep images are not supported");
-    if (!st) st = lx__exr_channels(ctx, path, &s, e, &cl);
-    if (st) goto done;
-    ch = calloc((size_t)cl->num_channels, sizeof *ch);
-    if (!ch) {
-        st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
-        goto done;
-    }
+    lx_status st;
     *npol = 0;
     for (int k = 0; k < cl->num_channels; k++) {
         const exr_attr_chlist_entry_t *en = &cl->entries[k];
@@ -111,97 +95,143 @@ static lx_status read_spectral(lx_ctx *ctx, const char *path, float **data, chan
             (*npol)++;
             continue;
         }
-        if ((st = lx__exr_check_channel(ctx, path, en))) goto done;
+        if ((st = lx__exr_check_channel(ctx, path, en))) return st;
         ch[nl].name = en->name.str;
         ch[nl++].lambda_nm = lam;
     }
+    *nl_out = nl;
     if (nl == 0) {
         if (nrefl)
-            st = lx__error(ctx, LX_EUNSUPPORTED, path, 0,
-                           "only reflective channels (T.<wavelength>nm, %d of them): reflectance images are not "
-                           "supported; luxcalc integrates emissive S0.<wavelength>nm channels",
-                           nrefl);
-        else
-            st = lx__error(ctx, LX_EPARSE, path, 0,
-                           "no spectral channels named S0.<wavelength>nm (Fichet et al. 2021 layout; first channel '%s')",
-                           cl->entries[0].name.str);
-        goto done;
+            return lx__error(ctx, LX_EUNSUPPORTED, path, 0,
+                             "only reflective channels (T.<wavelength>nm, %d of them): reflectance images are not "
+                             "supported; luxcalc integrates emissive S0.<wavelength>nm channels",
+                             nrefl);
+        return lx__error(ctx, LX_EPARSE, path, 0,
+                         "no spectral channels named S0.<wavelength>nm (Fichet et al. 2021 layout; first channel '%s')",
+                         cl->entries[0].name.str);
     }
-    if (nl < 2) {
-        st = lx__error(ctx, LX_EPARSE, path, 0, "only one spectral channel (%s): a spectrum needs at least two", ch[0].name);
-        goto done;
-    }
+    if (nl < 2)
+        return lx__error(ctx, LX_EPARSE, path, 0, "only one spectral channel (%s): a spectrum needs at least two",
+                         ch[0].name);
     qsort(ch, (size_t)nl, sizeof *ch, cmp_chan);
     for (int k = 1; k < nl; k++)
-        if (ch[k].lambda_nm == ch[k - 1].lambda_nm) {
-            st = lx__error(ctx, LX_EPARSE, path, 0, "channels %s and %s name the same wavelength", ch[k - 1].name, ch[k].name);
-            goto done;
-        }
-    exr_attr_box2i_t dw;
-    if ((rv = exr_get_data_window(e, 0, &dw))) {
-        st = lx__exr_fail(ctx, path, &s, rv, "no data window");
-        goto done;
-    }
-    long W = (long)dw.max.x - dw.min.x + 1, H = (long)dw.max.y - dw.min.y + 1;
-    if (W < 1 || H < 1) {
-        st = lx__error(ctx, LX_EPARSE, path, 0, "invalid data window %ldx%ld", W, H);
-        goto done;
-    }
+        if (ch[k].lambda_nm == ch[k - 1].lambda_nm)
+            return lx__error(ctx, LX_EPARSE, path, 0, "channels %s and %s name the same wavelength", ch[k - 1].name,
+                             ch[k].name);
+    return LX_OK;
+}
+
+/* The data window (*dw, W x H pixels), checked against the value limit and, as an untrusted
+ * count, against the size of the file before anything is sized (and timed) by it. */
+static lx_status data_window(lx_ctx *ctx, const char *path, lx__exr_stream *s, exr_context_t e, int nl,
+                             exr_attr_box2i_t *dw, long *W_out, long *H_out)
+{
+    exr_result_t rv;
+    if ((rv = exr_get_data_window(e, 0, dw))) return lx__exr_fail(ctx, path, s, rv, "no data window");
+    long W = (long)dw->max.x - dw->min.x + 1, H = (long)dw->max.y - dw->min.y + 1;
+    if (W < 1 || H < 1) return lx__error(ctx, LX_EPARSE, path, 0, "invalid data window %ldx%ld", W, H);
     if ((double)W * H * nl > LX__SPEXR_MAX_VALUES) {
         char lim_s[48];
         lx__fmt_magnitude(lim_s, sizeof lim_s, LX__SPEXR_MAX_VALUES);
-        st = lx__error(ctx, LX_EPARSE, path, 0, "data window %ldx%ld x %d channels over the limit of %s values", W, H, nl,
-                       lim_s);
-        goto done;
+        return lx__error(ctx, LX_EPARSE, path, 0, "data window %ldx%ld x %d channels over the limit of %s values", W, H,
+                         nl, lim_s);
     }
-    /* the window is an untrusted count: check it against the file before sizing (and timing) the
-     * work by it: 1M values, or 64 values per byte of file, beyond what compression reaches on real
-     * spectra (a 855-byte file declaring 5.5 Mpixel of zeros took seconds to resample) */
-    double fsize = fstat(s.fd, &sb) == 0 ? (double)sb.st_size : 0;
-    if ((double)W * H * nl > LX__SPEXR_VALUES_FREE + LX__SPEXR_VALUES_PER_BYTE * fsize) {
-        st = lx__error(ctx, LX_EPARSE, path, 0, "data window %ldx%ld x %d channels too large for a file of %.0f bytes", W,
-                       H, nl, fsize);
-        goto done;
-    }
-    buf = calloc((size_t)W * H * nl, sizeof *buf);
-    if (!buf) {
-        st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory for %ldx%ld pixels x %d channels", W, H, nl);
-        goto done;
-    }
-    const chan_set cs = {ch, nl};
-    st = lx__exr_read_pixels(ctx, path, &s, e, storage, &dw, buf, (int)W, nl, read_slot, &cs);
-    if (st) goto done;
-    for (size_t k = 0; k < (size_t)W * H * nl; k++)
+    /* 1M values, or 64 values per byte of file, beyond what compression reaches on real spectra (a
+     * 855-byte file declaring 5.5 Mpixel of zeros took seconds to resample) */
+    struct stat sb;
+    double fsize = fstat(s->fd, &sb) == 0 ? (double)sb.st_size : 0;
+    if ((double)W * H * nl > LX__SPEXR_VALUES_FREE + LX__SPEXR_VALUES_PER_BYTE * fsize)
+        return lx__error(ctx, LX_EPARSE, path, 0, "data window %ldx%ld x %d channels too large for a file of %.0f bytes",
+                         W, H, nl, fsize);
+    *W_out = W;
+    *H_out = H;
+    return LX_OK;
+}
+
+/* Every value of the W x nl-channel pixels of buf (n values) is finite. */
+static lx_status check_finite(lx_ctx *ctx, const char *path, const float *buf, size_t n, long W, const chan *ch,
+                              int nl)
+{
+    for (size_t k = 0; k < n; k++)
         if (!isfinite(buf[k])) {
             size_t p = k / (size_t)nl;
-            st = lx__error(ctx, LX_EPARSE, path, 0, "pixel (%zu, %zu), channel %s: value is not finite (NaN, infinite, or missing from a chunk that decoded short)", p % (size_t)W,
-                           p / (size_t)W, ch[k % (size_t)nl].name);
-            goto done;
+            return lx__error(ctx, LX_EPARSE, path, 0, "pixel (%zu, %zu), channel %s: value is not finite (NaN, infinite, or missing from a chunk that decoded short)", p % (size_t)W,
+                             p / (size_t)W, ch[k % (size_t)nl].name);
         }
+    return LX_OK;
+}
+
+/* A copy of the nl channels whose names live in the same block (one free()): the names of ch point
+ * into the header, which exr_finish frees. */
+static lx_status copy_channels(lx_ctx *ctx, const char *path, const chan *ch, int nl, chan **out)
+{
+    size_t tot = 0;
+    for (int k = 0; k < nl; k++) tot += strlen(ch[k].name) + 1;
+    chan *cp = malloc(sizeof *cp * (size_t)nl + tot);
+    if (!cp) return lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
+    char *names = (char *)(cp + nl);
+    for (int k = 0; k < nl; k++) {
+        size_t n = strlen(ch[k].name) + 1;
+        memcpy(names, ch[k].name, n);
+        cp[k].name = names;
+        cp[k].lambda_nm = ch[k].lambda_nm;
+        names += n;
+    }
+    *out = cp;
+    return LX_OK;
+}
+
+/* The pixels of the S0 channels ch (nl of them) of an open file into a new buffer *buf_out
+ * (W x H x nl floats, the caller frees it), every value finite. */
+static lx_status read_s0_pixels(lx_ctx *ctx, const char *path, lx__exr_stream *s, exr_context_t e,
+                                exr_storage_t storage, const chan *ch, int nl, float **buf_out, int *W_out, int *H_out)
+{
+    exr_attr_box2i_t dw;
+    long W = 0, H = 0;
+    lx_status st = data_window(ctx, path, s, e, nl, &dw, &W, &H);
+    if (st) return st;
+    float *buf = calloc((size_t)W * H * nl, sizeof *buf);
+    if (!buf) return lx__error(ctx, LX_ENOMEM, path, 0, "out of memory for %ldx%ld pixels x %d channels", W, H, nl);
+    const chan_set cs = {ch, nl};
+    st = lx__exr_read_pixels(ctx, path, s, e, storage, &dw, buf, (int)W, nl, read_slot, &cs);
+    if (!st) st = check_finite(ctx, path, buf, (size_t)W * H * nl, W, ch, nl);
+    if (st) {
+        free(buf);
+        return st;
+    }
+    *buf_out = buf;
     *W_out = (int)W;
     *H_out = (int)H;
-done:
-    /* channel names point into the header, which exr_finish frees: copy them first */
+    return LX_OK;
+}
+
+/* reads the S0 channels: *data (W x H x nl floats), *ch (nl channels by increasing wavelength) */
+static lx_status read_spectral(lx_ctx *ctx, const char *path, float **data, chan **chans, int *nl_out, int *W_out,
+                               int *H_out, int *npol)
+{
+    struct stat sb;
+    if (stat(path, &sb) == 0 && !S_ISREG(sb.st_mode))
+        return lx__error(ctx, LX_EIO, path, 0, "cannot read: not a regular file (OpenEXR files are read by seeking)");
+    lx__exr_stream s = {.fd = open(path, O_RDONLY)};
+    if (s.fd < 0) return lx__error(ctx, LX_EIO, path, 0, "cannot open: %s", strerror(errno));
+    exr_context_t e = NULL;
+    int nl = 0, W = 0, H = 0;
+    float *buf = NULL;
+    chan *ch = NULL;
+    exr_storage_t storage;
+    const exr_attr_chlist_t *cl;
+    lx_status st = lx__exr_read_begin(ctx, path, &s, &e, &storage, "deep images are not supported");
+    if (!st) st = lx__exr_channels(ctx, path, &s, e, &cl);
+    if (!st && !(ch = calloc((size_t)cl->num_channels, sizeof *ch))) st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
+    if (!st) st = pick_s0_channels(ctx, path, cl, ch, &nl, npol);
+    if (!st) st = read_s0_pixels(ctx, path, &s, e, storage, ch, nl, &buf, &W, &H);
+    if (!st) st = copy_channels(ctx, path, ch, nl, chans);
     if (!st) {
-        size_t tot = 0;
-        for (int k = 0; k < nl; k++) tot += strlen(ch[k].name) + 1;
-        chan *cp = malloc(sizeof *cp * (size_t)nl + tot);
-        if (!cp) {
-            st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
-        } else {
-            char *names = (char *)(cp + nl);
-            for (int k = 0; k < nl; k++) {
-                size_t n = strlen(ch[k].name) + 1;
-                memcpy(names, ch[k].name, n);
-                cp[k].name = names;
-                cp[k].lambda_nm = ch[k].lambda_nm;
-                names += n;
-            }
-            *chans = cp;
-            *data = buf;
-            *nl_out = nl;
-            buf = NULL;
-        }
+        *W_out = W;
+        *H_out = H;
+        *data = buf;
+        *nl_out = nl;
+        buf = NULL;
     }
     if (e) exr_finish(&e);
     close(s.fd);
