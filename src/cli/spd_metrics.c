@@ -305,6 +305,23 @@ void cli_metrics_row_batch(cli_table *t, lx_ctx *ctx, const cli_metrics *m, cons
             cli_table_num(t, NAN); /* not a batch column (cli_metrics_batchable said none is selected) */
 }
 
+/* An empty binning cell says why on stderr (a missing CCT has said so already). */
+static void say_binning_empty(const char *cmd, const char *file, long line, const char *label, const cli_metrics *m,
+                              const lx_colorimetry *cc, const lx_binning *bin)
+{
+    if (!isfinite(cc->cct_K) || (bin->ansi_K != 0 && bin->flex_K != 0)) return;
+    if (!(sel_kind(m, K_BIN_ANSI) || sel_kind(m, K_BIN_ANSI_DUV) || sel_kind(m, K_BIN_FLEX) || sel_kind(m, K_BIN_FLEX_DUV)))
+        return;
+    int both = bin->ansi_K == 0 && bin->flex_K == 0;
+    cli_error(cmd,
+              "%s:%ld: spectrum '%s': %s empty: CCT %.1f K, Duv %.5f lies in no %s of ANSI C78.377-2017 "
+              "(nominal 2200-6500 K, flexible 2700-6500 K; Duv within 0.006 of the target)",
+              file, line, label,
+              both ? "binning_ansi_* and binning_flex_*" : bin->ansi_K == 0 ? "binning_ansi_*" : "binning_flex_*",
+              cc->cct_K, cc->duv,
+              both ? "quadrangle and no flexible-CCT bin" : bin->ansi_K == 0 ? "nominal-CCT quadrangle" : "flexible-CCT bin");
+}
+
 int cli_metrics_row(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const lx_spd *spd, lx_method method,
                     const char *unit, const lx_colorimetry *c, const lx_vendor_results *vendor, const char *file,
                     long line, const char *cmd)
@@ -370,20 +387,7 @@ int cli_metrics_row(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const lx_sp
         const lx_colorimetry *cc = c;
         if (m->observer == LX_OBSERVER_10 && lx_spd_colorimetry(ctx, spd, LX_OBSERVER_2, method, &c2) == LX_OK) cc = &c2;
         have_bin = lx_binning_compute(ctx, cc->x, cc->y, cc->cct_K, cc->duv, &bin) == LX_OK;
-        /* every empty cell says why (a missing CCT has said so already) */
-        if (have_bin && say && isfinite(cc->cct_K) && (bin.ansi_K == 0 || bin.flex_K == 0) &&
-            (sel_kind(m, K_BIN_ANSI) || sel_kind(m, K_BIN_ANSI_DUV) || sel_kind(m, K_BIN_FLEX) || sel_kind(m, K_BIN_FLEX_DUV)))
-            cli_error(cmd,
-                      "%s:%ld: spectrum '%s': %s empty: CCT %.1f K, Duv %.5f lies in no %s of ANSI C78.377-2017 "
-                      "(nominal 2200-6500 K, flexible 2700-6500 K; Duv within 0.006 of the target)",
-                      file, line, label,
-                      bin.ansi_K == 0 && bin.flex_K == 0 ? "binning_ansi_* and binning_flex_*"
-                      : bin.ansi_K == 0                  ? "binning_ansi_*"
-                                                         : "binning_flex_*",
-                      cc->cct_K, cc->duv,
-                      bin.ansi_K == 0 && bin.flex_K == 0 ? "quadrangle and no flexible-CCT bin"
-                      : bin.ansi_K == 0                  ? "nominal-CCT quadrangle"
-                                                         : "flexible-CCT bin");
+        if (have_bin && say) say_binning_empty(cmd, file, line, label, m, cc, &bin);
     }
     for (int i = 0; i < ncols; i++) {
         if (!m->sel[i]) continue;
