@@ -12,7 +12,6 @@ src/cli/bench/bench_accuracy.c acc_spectra
 src/cli/bench/bench_spd.c cli_bench_spd
 src/cli/cmd_irradiance.c cmd_irradiance
 src/cli/bench/bench_accuracy_fields.c acc_lighting
-src/lighting/grid.c lx_grid_illuminance
 src/cli/bench/bench_accuracy_nearfield.c acc_nearfield
 src/cli/cmd_ies.c cmd_ies
 src/radiance/exr_io.c exr_read
