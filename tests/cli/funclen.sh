@@ -14,7 +14,6 @@ src/cli/cmd_irradiance.c cmd_irradiance
 src/cli/bench/bench_accuracy_fields.c acc_lighting
 src/cli/bench/bench_accuracy_nearfield.c acc_nearfield
 src/cli/cmd_ies.c cmd_ies
-src/radiance/exr_io.c exr_read
 src/cli/cmd_scene.c results
 '
 long=$(for f in $(find src -path src/tools -prune -o -name '*.c' -print | sort); do
