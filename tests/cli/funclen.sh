@@ -14,7 +14,6 @@ src/scene/scene_entities.c lx__scene_lum_finish
 src/cli/bench/bench_accuracy_fields.c acc_lighting
 src/lighting/grid.c lx_grid_illuminance
 src/cli/bench/bench_accuracy_nearfield.c acc_nearfield
-src/cli/cmd_ies.c cmd_ies
 src/scene/scene_entities.c lx__scene_rec_finish
 src/radiance/exr_io.c exr_read
 src/cli/cmd_scene.c results
