@@ -16,7 +16,6 @@ src/lighting/grid.c lx_grid_illuminance
 src/cli/bench/bench_accuracy_nearfield.c acc_nearfield
 src/scene/scene_entities.c lx__scene_rec_finish
 src/radiance/exr_io.c exr_read
-src/cli/cmd_scene.c results
 '
 long=$(for f in $(find src -path src/tools -prune -o -name '*.c' -print | sort); do
   awk -v f="$f" -v lim="$lim" '
