@@ -8,7 +8,6 @@ lim=120
 # Not split yet (README "Development": the functions still over the limit).
 allow='
 src/scene/scene_plan.c lx_scene_plan_make
-src/cli/bench/bench_accuracy.c acc_spectra
 src/scene/scene_entities.c lx__scene_lum_finish
 src/cli/bench/bench_accuracy_fields.c acc_lighting
 src/lighting/grid.c lx_grid_illuminance
