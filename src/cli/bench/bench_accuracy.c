@@ -482,7 +482,7 @@ static void spectra_tables(FILE *o, lx_ctx *ctx, const scase *cs, const spec_res
                "triangle line against the linearly interpolated CMFs for the lines; Planck's law at 0.01 nm integrated "
                "exactly for the blackbody. `cie15 S nm` sums the data sampled every S nm (5 nm tables: every S/5-th row); "
                "pbrt averages the SPD and the CMFs over equal bins between 400 and 700 nm (pbrt-v3 `SampledSpectrum`: "
-               "`nSpectralSamples = 60`, 5 nm bins; 30 bins of 10 nm as the issue describes, pbrt-v2's choice); "
+               "`nSpectralSamples = 60`, 5 nm bins; and 30 bins of 10 nm, pbrt-v2's `nSpectralSamples = 30`); "
                "batch rows run `lx_batch_integrate` (cie15 rule, 1 nm grid, %d copies; time per spectrum). "
                "Time: median of 5 runs per spectrum (X, Y, Z), median over the spectra.\n\n", NB);
     for (int e = 0; e < 3; e++) error_table(o, cs, r, e);
