@@ -9,7 +9,6 @@ lim=120
 allow='
 src/scene/scene_plan.c lx_scene_plan_make
 src/scene/scene_entities.c lx__scene_lum_finish
-src/cli/bench/bench_accuracy_fields.c acc_lighting
 src/lighting/grid.c lx_grid_illuminance
 src/cli/bench/bench_accuracy_nearfield.c acc_nearfield
 src/scene/scene_entities.c lx__scene_rec_finish
