@@ -10,7 +10,6 @@ allow='
 src/scene/scene_plan.c lx_scene_plan_make
 src/scene/scene_entities.c lx__scene_lum_finish
 src/lighting/grid.c lx_grid_illuminance
-src/cli/bench/bench_accuracy_nearfield.c acc_nearfield
 src/scene/scene_entities.c lx__scene_rec_finish
 src/radiance/exr_io.c exr_read
 '
