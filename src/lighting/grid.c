@@ -468,61 +468,60 @@ static lx_status run_jobs(lx_ctx *ctx, const plum *pl, size_t m, const double *p
 }
 
 #if LX_OPENCL
-lx_status lx__grid_opencl(lx_ctx *ctx, const plum *pl, size_t m, const float *tables, size_t tables_n, const double *pts,
-                          size_t n, const double *nrm, int shared, int fp32, double *E);
+lx_status lx__grid_opencl(lx_ctx *ctx, const plum *pl, size_t m, const float *tables, size_t tables_n,
+                          const double *pts, size_t n, const double *nrm, int shared, int fp32, double *E);
 #endif
 
-lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, const double *points, size_t n,
-                              const double *normals, int shared_normal, const lx_grid_opts *opts, double *E_lx)
+/* Checks the options and the normals; gives the maintenance factor and the near-field tolerance
+ * (their defaults where 0). */
+static lx_status grid_check_opts(lx_ctx *ctx, const lx_grid_opts *o, const double *normals, size_t n, int shared_normal,
+                                 double *mf_out, double *tol_out)
 {
-    LX__NEED_CTX(ctx);
-    if ((!lums && m) || !points || !normals || !E_lx)
-        return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_grid_illuminance: NULL argument");
-    lx_grid_opts o;
-    memset(&o, 0, sizeof o);
-    if (opts) o = *opts;
-    lx_status st = lx__check_reserved(ctx, "grid options", o.reserved, sizeof o.reserved);
+    lx_status st = lx__check_reserved(ctx, "grid options", o->reserved, sizeof o->reserved);
     if (st) return st;
-    double mf = o.maintenance_factor == 0 ? 1 : o.maintenance_factor;
-    if (!(mf > 0) || mf > 1) return lx__error(ctx, LX_EINVAL, NULL, 0, "the maintenance factor must be in (0, 1] (got %g)", mf);
-    if (o.interp != LX_INTERP_BILINEAR && o.interp != LX_INTERP_SMOOTH && o.interp != LX_INTERP_TABLE)
-        return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown interpolation %d", (int)o.interp);
-    if (o.model != LX_MODEL_AUTO && o.model != LX_MODEL_POINT && o.model != LX_MODEL_AREA)
+    double mf = o->maintenance_factor == 0 ? 1 : o->maintenance_factor;
+    if (!(mf > 0) || mf > 1)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "the maintenance factor must be in (0, 1] (got %g)", mf);
+    if (o->interp != LX_INTERP_BILINEAR && o->interp != LX_INTERP_SMOOTH && o->interp != LX_INTERP_TABLE)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown interpolation %d", (int)o->interp);
+    if (o->model != LX_MODEL_AUTO && o->model != LX_MODEL_POINT && o->model != LX_MODEL_AREA)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "grids use the auto, point or area model");
-    if (o.table_n < 0 || o.table_n == 1 || o.table_n > LX__GRID_MAX_TABLE_ROWS)
-        return lx__error(ctx, LX_EINVAL, NULL, 0, "table rows must be 2 to %d (got %d; 0: 1024)", LX__GRID_MAX_TABLE_ROWS, o.table_n);
-    double tol = o.nearfield_tol == 0 ? LX__NEARFIELD_TOL : o.nearfield_tol;
+    if (o->table_n < 0 || o->table_n == 1 || o->table_n > LX__GRID_MAX_TABLE_ROWS)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "table rows must be 2 to %d (got %d; 0: 1024)",
+                         LX__GRID_MAX_TABLE_ROWS, o->table_n);
+    double tol = o->nearfield_tol == 0 ? LX__NEARFIELD_TOL : o->nearfield_tol;
     if (!(tol >= 1e-12) || !(tol <= 0.1))
         return lx__error(ctx, LX_EINVAL, NULL, 0, "the near-field tolerance must be in [1e-12, 0.1] (got %g)", tol);
-    lx_backend backend = o.backend == LX_BACKEND_AUTO ? lx_backend_from_env() : o.backend;
-    if (backend == LX_BACKEND_OPENCL && o.interp != LX_INTERP_TABLE)
-        return lx__error(ctx, LX_EINVAL, NULL, 0, "the OpenCL backend computes the table interpolation only (interp table)");
+    lx_backend backend = o->backend == LX_BACKEND_AUTO ? lx_backend_from_env() : o->backend;
+    if (backend == LX_BACKEND_OPENCL && o->interp != LX_INTERP_TABLE)
+        return lx__error(ctx, LX_EINVAL, NULL, 0,
+                         "the OpenCL backend computes the table interpolation only (interp table)");
     for (size_t i = 0; i < (shared_normal ? 1 : n); i++) {
         const double *q = normals + 3 * i;
         double r = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
-        if (!(fabs(r - 1) < 1e-6)) return lx__error(ctx, LX_EINVAL, NULL, 0, "receiver normal %zu is not a unit vector", i);
+        if (!(fabs(r - 1) < 1e-6))
+            return lx__error(ctx, LX_EINVAL, NULL, 0, "receiver normal %zu is not a unit vector", i);
     }
-    plum *pl = calloc(m ? m : 1, sizeof *pl);
-    if (!pl) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
-    float **own = calloc(m ? m : 1, sizeof *own);
-    double *E = malloc((n ? n : 1) * sizeof *E);
-    if (!own || !E) {
-        st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
-        goto out;
-    }
-    int ns = o.table_n > 0 ? o.table_n : 1024, nq = 90;
-    size_t tables_n = 0;
+    *mf_out = mf;
+    *tol_out = tol;
+    return LX_OK;
+}
+
+/* The prepared luminaires: frame, scale (maintenance factor and TILT), opening and, for the table
+ * interpolation, their intensity tables (one per distinct luminaire, owned through own[]; tables_n
+ * counts the floats of them all). */
+static lx_status grid_place(lx_ctx *ctx, const lx_placement *lums, size_t m, const lx_grid_opts *o, double mf, plum *pl,
+                            float **own, size_t *tables_n)
+{
+    int ns = o->table_n > 0 ? o->table_n : 1024, nq = 90;
     for (size_t i = 0; i < m; i++) {
         const lx_placement *p = &lums[i];
-        if (!p->lum || !p->lum->full_cd) {
-            st = lx__error(ctx, LX_EINVAL, NULL, 0, "luminaire %zu has no photometry", i + 1);
-            goto out;
-        }
+        if (!p->lum || !p->lum->full_cd)
+            return lx__error(ctx, LX_EINVAL, NULL, 0, "luminaire %zu has no photometry", i + 1);
         double r = sqrt(p->aim[0] * p->aim[0] + p->aim[1] * p->aim[1] + p->aim[2] * p->aim[2]);
-        if (!(r > 0) || !isfinite(r) || !isfinite(p->pos_m[0] + p->pos_m[1] + p->pos_m[2]) || !isfinite(p->rotate_rad)) {
-            st = lx__error(ctx, LX_EINVAL, NULL, 0, "luminaire %zu: position, aim and rotation must be finite, aim non-zero", i + 1);
-            goto out;
-        }
+        if (!(r > 0) || !isfinite(r) || !isfinite(p->pos_m[0] + p->pos_m[1] + p->pos_m[2]) || !isfinite(p->rotate_rad))
+            return lx__error(ctx, LX_EINVAL, NULL, 0,
+                             "luminaire %zu: position, aim and rotation must be finite, aim non-zero", i + 1);
         plum *q = &pl[i];
         q->lum = p->lum;
         memcpy(q->pos, p->pos_m, sizeof q->pos);
@@ -536,84 +535,142 @@ lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, c
         q->w = w;
         q->l = l;
         q->size_m = q->circular ? w : sqrt(w * w + l * l);
-        if (o.interp == LX_INTERP_TABLE) {
-            for (size_t k = 0; k < i; k++)
-                if (pl[k].lum == p->lum) { /* share the table of the same luminaire */
-                    q->table = pl[k].table;
-                    q->ns = pl[k].ns;
-                    q->nq = pl[k].nq;
-                    q->cols = pl[k].cols;
-                    q->toff = pl[k].toff;
-                    break;
-                }
-            if (!q->table) {
-                own[i] = build_table(p->lum, ns, nq, &q->cols);
-                if (!own[i]) {
-                    st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for the intensity table");
-                    goto out;
-                }
-                q->table = own[i];
-                q->ns = ns;
-                q->nq = q->cols > 1 ? nq : 0;
-                q->toff = tables_n;
-                tables_n += 2 * (size_t)(ns + 1) * (size_t)q->cols;
+        if (o->interp != LX_INTERP_TABLE) continue;
+        for (size_t k = 0; k < i; k++)
+            if (pl[k].lum == p->lum) { /* share the table of the same luminaire */
+                q->table = pl[k].table;
+                q->ns = pl[k].ns;
+                q->nq = pl[k].nq;
+                q->cols = pl[k].cols;
+                q->toff = pl[k].toff;
+                break;
             }
+        if (!q->table) {
+            own[i] = build_table(p->lum, ns, nq, &q->cols);
+            if (!own[i]) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for the intensity table");
+            q->table = own[i];
+            q->ns = ns;
+            q->nq = q->cols > 1 ? nq : 0;
+            q->toff = *tables_n;
+            *tables_n += 2 * (size_t)(ns + 1) * (size_t)q->cols;
         }
     }
+    return LX_OK;
+}
+
+#if LX_OPENCL
+/* The OpenCL path: all tables in one buffer, the kernel, then the near-field pass on the CPU unless
+ * the model is point. A failure the backend rule allows to fall back on clears *use_cl. */
+static lx_status grid_run_opencl(lx_ctx *ctx, const plum *pl, size_t m, float *const *own, size_t tables_n,
+                                 const double *points, size_t n, const double *normals, int shared_normal,
+                                 const lx_grid_opts *o, double tol, double *E, lx_backend *used, int *use_cl)
+{
+    float *all = malloc(tables_n * sizeof *all);
+    if (!all) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    for (size_t i = 0; i < m; i++)
+        if (own[i]) memcpy(all + pl[i].toff, own[i], 2 * (size_t)(pl[i].ns + 1) * (size_t)pl[i].cols * sizeof *all);
+    lx_status st = lx__grid_opencl(ctx, pl, m, all, tables_n, points, n, normals, shared_normal, o->fp32, E);
+    free(all);
+    if (st == LX_OK) {
+        *used = LX_BACKEND_OPENCL;
+    } else if (!lx__backend_fallback(ctx, "grid", o->backend, st)) {
+        return st;
+    } else {
+        *use_cl = 0;
+        st = LX_OK;
+    }
+    if (*use_cl && o->model != LX_MODEL_POINT)
+        st = run_jobs(ctx, pl, m, points, n, normals, shared_normal, o->interp, o->model, tol, o->threads, 1, E);
+    return st;
+}
+#endif
+
+/* The illuminances into E: the backend chosen by the rule (OpenCL for the table interpolation only),
+ * the CPU jobs otherwise or after a fallback. */
+static lx_status grid_compute(lx_ctx *ctx, const plum *pl, size_t m, float *const *own, size_t tables_n,
+                              const double *points, size_t n, const double *normals, int shared_normal,
+                              const lx_grid_opts *o, double tol, double *E, lx_backend *used)
+{
+    lx_status st = LX_OK;
     int use_cl = 0;
-    if (o.interp == LX_INTERP_TABLE && m > 0) {
+    if (o->interp == LX_INTERP_TABLE && m > 0) {
         lx_backend be;
-        st = lx__backend_choose(ctx, "grid", o.backend, (double)n * (double)m, LX_GRID_CL_COLD, LX_GRID_CL_WARM, &be);
-        if (st) goto out;
+        st = lx__backend_choose(ctx, "grid", o->backend, (double)n * (double)m, LX_GRID_CL_COLD, LX_GRID_CL_WARM, &be);
+        if (st) return st;
         use_cl = be == LX_BACKEND_OPENCL;
     }
-    lx_backend used = LX_BACKEND_CPU;
 #if LX_OPENCL
     if (use_cl) {
-        float *all = malloc(tables_n * sizeof *all);
-        if (!all) {
-            st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
-            goto out;
-        }
-        for (size_t i = 0; i < m; i++)
-            if (own[i]) memcpy(all + pl[i].toff, own[i], 2 * (size_t)(pl[i].ns + 1) * (size_t)pl[i].cols * sizeof *all);
-        st = lx__grid_opencl(ctx, pl, m, all, tables_n, points, n, normals, shared_normal, o.fp32, E);
-        free(all);
-        if (st == LX_OK) {
-            used = LX_BACKEND_OPENCL;
-        } else if (!lx__backend_fallback(ctx, "grid", o.backend, st)) {
-            goto out;
-        } else {
-            use_cl = 0;
-            st = LX_OK;
-        }
-        if (use_cl && o.model != LX_MODEL_POINT)
-            st = run_jobs(ctx, pl, m, points, n, normals, shared_normal, o.interp, o.model, tol, o.threads, 1, E);
+        st = grid_run_opencl(ctx, pl, m, own, tables_n, points, n, normals, shared_normal, o, tol, E, used, &use_cl);
+        if (st) return st;
     }
+#else
+    (void)own, (void)tables_n, (void)used;
 #endif
     if (!use_cl) {
-        if (m == 0) memset(E, 0, n * sizeof *E);
-        else st = run_jobs(ctx, pl, m, points, n, normals, shared_normal, o.interp, o.model, tol, o.threads, 0, E);
+        if (m == 0)
+            memset(E, 0, n * sizeof *E);
+        else
+            st = run_jobs(ctx, pl, m, points, n, normals, shared_normal, o->interp, o->model, tol, o->threads, 0, E);
     }
-    for (size_t i = 0; st == LX_OK && i < n; i++)
-        if (!isfinite(E[i])) { /* never a NaN or an infinity handed on as an illuminance */
+    return st;
+}
+
+/* Never a NaN or an infinity handed on as an illuminance: the first such point is an error. */
+static lx_status grid_check_finite(lx_ctx *ctx, const lx_placement *lums, size_t m, const double *points, size_t n,
+                                   const double *E, lx_interp interp)
+{
+    for (size_t i = 0; i < n; i++)
+        if (!isfinite(E[i])) {
             double peak = 0;
             for (size_t k = 0; k < m; k++)
-                for (size_t j = 0; j < lums[k].lum->n_c * lums[k].lum->n_g; j++) peak = fmax(peak, fabs(lums[k].lum->full_cd[j]));
+                for (size_t j = 0; j < lums[k].lum->n_c * lums[k].lum->n_g; j++)
+                    peak = fmax(peak, fabs(lums[k].lum->full_cd[j]));
             char mb[48];
             lx__fmt_magnitude(mb, sizeof mb, peak);
-            st = lx__error(ctx, LX_ERANGE, NULL, 0,
-                           "illuminance at point %zu (%g, %g, %g m) is %s: intensities up to %s cd%s leave the range of the "
-                           "arithmetic", i + 1, points[3 * i], points[3 * i + 1], points[3 * i + 2], isnan(E[i]) ? "NaN" : "infinite",
-                           mb, o.interp == LX_INTERP_TABLE ? " (float tables: 3.4e38)" : "");
+            return lx__error(ctx, LX_ERANGE, NULL, 0,
+                             "illuminance at point %zu (%g, %g, %g m) is %s: intensities up to %s cd%s leave the range "
+                             "of the arithmetic",
+                             i + 1, points[3 * i], points[3 * i + 1], points[3 * i + 2],
+                             isnan(E[i]) ? "NaN" : "infinite", mb,
+                             interp == LX_INTERP_TABLE ? " (float tables: 3.4e38)" : "");
         }
+    return LX_OK;
+}
+
+lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, const double *points, size_t n,
+                              const double *normals, int shared_normal, const lx_grid_opts *opts, double *E_lx)
+{
+    LX__NEED_CTX(ctx);
+    if ((!lums && m) || !points || !normals || !E_lx)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_grid_illuminance: NULL argument");
+    lx_grid_opts o;
+    memset(&o, 0, sizeof o);
+    if (opts) o = *opts;
+    double mf = 1, tol = 0;
+    lx_status st = grid_check_opts(ctx, &o, normals, n, shared_normal, &mf, &tol);
+    if (st) return st;
+    plum *pl = calloc(m ? m : 1, sizeof *pl);
+    if (!pl) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    float **own = calloc(m ? m : 1, sizeof *own);
+    double *E = malloc((n ? n : 1) * sizeof *E);
+    if (!own || !E) {
+        st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+        goto out;
+    }
+    size_t tables_n = 0;
+    lx_backend used = LX_BACKEND_CPU;
+    st = grid_place(ctx, lums, m, &o, mf, pl, own, &tables_n);
+    if (st == LX_OK) st = grid_compute(ctx, pl, m, own, tables_n, points, n, normals, shared_normal, &o, tol, E, &used);
+    if (st == LX_OK) st = grid_check_finite(ctx, lums, m, points, n, E, o.interp);
     if (st == LX_OK) {
         memcpy(E_lx, E, n * sizeof *E);
         lx__backend_used(ctx, used);
     }
 out:
     if (own)
-        for (size_t i = 0; i < m; i++) free(own[i]);
+        for (size_t i = 0; i < m; i++)
+            free(own[i]);
     free(own);
     free(pl);
     free(E);

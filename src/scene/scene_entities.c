@@ -169,220 +169,242 @@ static int allowed(int kind, const char *key)
     return 0;
 }
 
-lx_status lx__scene_lum_finish(lx_ctx *ctx, lx_scene *sc, scene__lum_raw *r)
+/* The type (one of lum_kinds), the keys that type accepts, and the position: in this order. */
+static const char *const lum_kinds[] = {"point", "spot", "disk", "rect", "file"};
+
+static lx_status lum_kind(lx_ctx *ctx, const scene__lum_raw *r, int *kind_out)
 {
     const char *f = r->file;
     long ln = r->line;
-    lx_status st = LX_OK;
-    static const char *const kinds[] = {"point", "spot", "disk", "rect", "file"};
     int kind = -1;
-    if (!r->type) {
-        st = lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': missing 'type' (point, spot, disk, rect or file)", r->name);
-        goto out;
-    }
+    if (!r->type)
+        return lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': missing 'type' (point, spot, disk, rect or file)",
+                         r->name);
     for (int k = 0; k < 5; k++)
-        if (!strcmp(r->type, kinds[k])) kind = k;
-    if (kind < 0) {
-        st = lx__error(ctx, LX_EPARSE, f, r->type_line, "type: unknown luminaire type '%s' (point, spot, disk, rect, file)",
-                       r->type);
-        goto out;
-    }
-    struct { const char *k; int has; } given[] = {
-        {"flux", r->has_flux},     {"intensity", r->has_intensity}, {"exponent", r->has_exponent},
-        {"beam", r->has_beam},     {"luminance", r->has_luminance}, {"radius", r->has_radius},
-        {"width", r->has_width},   {"length", r->has_length},       {"multiplier", r->has_multiplier},
-        {"file", r->lum_file != NULL}};
+        if (!strcmp(r->type, lum_kinds[k])) kind = k;
+    if (kind < 0)
+        return lx__error(ctx, LX_EPARSE, f, r->type_line,
+                         "type: unknown luminaire type '%s' (point, spot, disk, rect, file)", r->type);
+    struct {
+        const char *k;
+        int has;
+    } given[] = {{"flux", r->has_flux},        {"intensity", r->has_intensity}, {"exponent", r->has_exponent},
+                 {"beam", r->has_beam},        {"luminance", r->has_luminance}, {"radius", r->has_radius},
+                 {"width", r->has_width},      {"length", r->has_length},       {"multiplier", r->has_multiplier},
+                 {"file", r->lum_file != NULL}};
     for (size_t i = 0; i < sizeof given / sizeof given[0]; i++)
-        if (given[i].has && !allowed(kind, given[i].k)) {
-            st = lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': '%s' does not apply to type %s", r->name, given[i].k,
-                           kinds[kind]);
-            goto out;
-        }
-    if (!r->has_pos) {
-        st = lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': missing 'position'", r->name);
-        goto out;
-    }
-    lx_scene_luminaire l;
-    memset(&l, 0, sizeof l);
-    l.kind = (lx_scene_lum_kind)kind;
-    l.file = f;
-    l.line = ln;
-    memcpy(l.pos_m, r->pos, sizeof l.pos_m);
-    l.aim[2] = -1;
+        if (given[i].has && !allowed(kind, given[i].k))
+            return lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': '%s' does not apply to type %s", r->name,
+                             given[i].k, lum_kinds[kind]);
+    if (!r->has_pos) return lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': missing 'position'", r->name);
+    *kind_out = kind;
+    return LX_OK;
+}
+
+/* The fields every type shares: kind, source line, position, aim (normalised), rotation; the rest unset. */
+static lx_status lum_base(lx_ctx *ctx, const scene__lum_raw *r, int kind, lx_scene_luminaire *l)
+{
+    memset(l, 0, sizeof *l);
+    l->kind = (lx_scene_lum_kind)kind;
+    l->file = r->file;
+    l->line = r->line;
+    memcpy(l->pos_m, r->pos, sizeof l->pos_m);
+    l->aim[2] = -1;
     if (r->has_aim) {
-        memcpy(l.aim, r->aim, sizeof l.aim);
-        if ((st = normalise(ctx, f, ln, "aim", l.aim)) != LX_OK) goto out;
+        memcpy(l->aim, r->aim, sizeof l->aim);
+        lx_status st = normalise(ctx, r->file, r->line, "aim", l->aim);
+        if (st != LX_OK) return st;
     }
-    l.rotate_rad = r->has_rotate ? r->rotate : 0;
-    l.cct_K = NAN;
-    l.scale = 1;
-    l.intensity_cd = l.flux_lm = l.exponent = l.luminance_cd_m2 = NAN;
-#define NEED_ONE(a, ha, b, hb)                                                                                    \
-    if (!(ha) == !(hb)) {                                                                                         \
-        st = lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': give exactly one of '%s' and '%s'", r->name, a, b); \
-        goto out;                                                                                                 \
+    l->rotate_rad = r->has_rotate ? r->rotate : 0;
+    l->cct_K = NAN;
+    l->scale = 1;
+    l->intensity_cd = l->flux_lm = l->exponent = l->luminance_cd_m2 = NAN;
+    return LX_OK;
+}
+
+#define NEED_ONE(a, ha, b, hb)                                                                                         \
+    if (!(ha) == !(hb))                                                                                                \
+        return lx__error(ctx, LX_EPARSE, r->file, r->line, "luminaire '%s': give exactly one of '%s' and '%s'",        \
+                         r->name, a, b);
+#define POSITIVE(v, k)                                                                                                 \
+    if (!((v) > 0))                                                                                                    \
+        return lx__error(ctx, LX_EPARSE, r->file, r->line, "luminaire '%s': '%s' must be greater than zero", r->name,  \
+                         k);
+
+/* A spot: flux or intensity, exponent or beam. */
+static lx_status lum_spot(lx_ctx *ctx, const scene__lum_raw *r, lx_scene_luminaire *l)
+{
+    const char *f = r->file;
+    long ln = r->line;
+    NEED_ONE("flux", r->has_flux, "intensity", r->has_intensity);
+    NEED_ONE("exponent", r->has_exponent, "beam", r->has_beam);
+    if (r->has_beam) {
+        if (!(r->beam > 0 && r->beam < LX__PI))
+            return lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': beam must be between 0 and 180 deg", r->name);
+        if (lx_warn_exponent_from_beam(ctx, r->beam, &l->exponent) != LX_OK)
+            return lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': beam: %s", r->name, lx_ctx_errmsg(ctx));
+    } else {
+        if (!(r->exponent >= 0))
+            return lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': exponent must be >= 0", r->name);
+        l->exponent = r->exponent;
     }
-#define POSITIVE(v, k)                                                                                      \
-    if (!((v) > 0)) {                                                                                       \
-        st = lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': '%s' must be greater than zero", r->name, k); \
-        goto out;                                                                                           \
+    l->intensity_cd = r->has_flux ? (l->exponent + 1) * r->flux / (2 * LX__PI) : r->intensity;
+    l->flux_lm = 2 * LX__PI * l->intensity_cd / (l->exponent + 1);
+    return LX_OK;
+}
+
+/* A disk or a rectangle: flux or luminance, and its size. */
+static lx_status lum_area(lx_ctx *ctx, const scene__lum_raw *r, lx_scene_luminaire *l)
+{
+    const char *f = r->file;
+    long ln = r->line;
+    NEED_ONE("flux", r->has_flux, "luminance", r->has_luminance);
+    double area;
+    if (l->kind == LX_SLUM_DISK) {
+        if (!r->has_radius) return lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': missing 'radius'", r->name);
+        POSITIVE(r->radius, "radius");
+        l->radius_m = r->radius;
+        area = LX__PI * r->radius * r->radius;
+    } else {
+        if (!r->has_width || !r->has_length)
+            return lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': missing 'width' or 'length'", r->name);
+        POSITIVE(r->width, "width");
+        POSITIVE(r->length, "length");
+        l->width_m = r->width;
+        l->length_m = r->length;
+        area = r->width * r->length;
     }
+    /* a Lambertian emitter: exitance M = pi L, flux F = pi L A */
+    l->luminance_cd_m2 = r->has_flux ? r->flux / (LX__PI * area) : r->luminance;
+    l->flux_lm = LX__PI * l->luminance_cd_m2 * area;
+    l->intensity_cd = l->luminance_cd_m2 * area; /* on the axis */
+    return LX_OK;
+}
+
+/* A photometric file: read it, take its opening (or width/length), scale it by flux or multiplier and
+   its TILT table. On failure nothing it read is kept. */
+static lx_status lum_file(lx_ctx *ctx, const scene__lum_raw *r, lx_scene_luminaire *l)
+{
+    const char *f = r->file;
+    long ln = r->line;
+    if (!r->lum_file)
+        return lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': missing 'file' (an IES or LDT file)", r->name);
+    if (r->has_flux && r->has_multiplier)
+        return lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': give 'flux' or 'multiplier', not both", r->name);
+    if (r->has_multiplier) POSITIVE(r->multiplier, "multiplier");
+    if (r->has_width && !(r->width >= 0)) POSITIVE(r->width, "width");
+    if (r->has_length && !(r->length >= 0)) POSITIVE(r->length, "length");
+    l->lum_path = lx__scene_resolve(f, r->lum_file);
+    if (!l->lum_path) return lx__error(ctx, LX_ENOMEM, f, ln, "out of memory");
+    lx_status st = lx_luminaire_read_file(ctx, l->lum_path, &l->lum);
+    if (st != LX_OK) {
+        char inner[LX__ERRMSG_MAX];
+        snprintf(inner, sizeof inner, "%s", lx_ctx_errmsg(ctx));
+        st = lx__error(ctx, st, f, r->lum_file_line, "file: %s", inner);
+        free(l->lum_path);
+        return st;
+    }
+    /* the luminous opening: negative IES sizes mean round (diameter) */
+    double w = l->lum->width_m, len = l->lum->length_m;
+    if (w < 0 || len < 0)
+        l->radius_m = fabs(w < 0 ? w : len) / 2;
+    else
+        l->width_m = w, l->length_m = len;
+    if (r->has_width || r->has_length) {
+        l->radius_m = 0;
+        l->width_m = r->has_width ? r->width : l->width_m;
+        l->length_m = r->has_length ? r->length : l->length_m;
+    }
+    lx_lum_summary sum;
+    st = lx_luminaire_summary(ctx, l->lum, &sum);
+    if (st != LX_OK || !(sum.lumens > 0)) {
+        if (st == LX_OK) st = lx__error(ctx, LX_EPARSE, f, r->lum_file_line, "file: the luminaire emits no light");
+        lx_luminaire_free(l->lum);
+        free(l->lum_path);
+        return st;
+    }
+    l->scale = r->has_flux ? r->flux / sum.lumens : r->has_multiplier ? r->multiplier : 1;
+    l->flux_lm = sum.lumens * l->scale;
+    /* a TILT table: the lamp output at the luminaire's tilt (as lx_grid_illuminance applies it) */
+    l->scale *= lx_luminaire_tilt_factor(l->lum, acos(fmax(-1.0, fmin(1.0, -l->aim[2]))));
+    l->intensity_cd = sum.max_intensity_cd * l->scale;
+    return LX_OK;
+}
+
+/* The photometry of each type: intensity, flux, luminance as the type defines them. */
+static lx_status lum_photometry(lx_ctx *ctx, const scene__lum_raw *r, lx_scene_luminaire *l)
+{
     if (r->has_flux) POSITIVE(r->flux, "flux");
     if (r->has_intensity) POSITIVE(r->intensity, "intensity");
     if (r->has_luminance) POSITIVE(r->luminance, "luminance");
-    switch (l.kind) {
+    switch (l->kind) {
     case LX_SLUM_POINT:
         NEED_ONE("flux", r->has_flux, "intensity", r->has_intensity);
-        l.intensity_cd = r->has_flux ? r->flux / (4 * LX__PI) : r->intensity;
-        l.flux_lm = 4 * LX__PI * l.intensity_cd;
+        l->intensity_cd = r->has_flux ? r->flux / (4 * LX__PI) : r->intensity;
+        l->flux_lm = 4 * LX__PI * l->intensity_cd;
         break;
-    case LX_SLUM_SPOT:
-        NEED_ONE("flux", r->has_flux, "intensity", r->has_intensity);
-        NEED_ONE("exponent", r->has_exponent, "beam", r->has_beam);
-        if (r->has_beam) {
-            if (!(r->beam > 0 && r->beam < LX__PI)) {
-                st = lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': beam must be between 0 and 180 deg", r->name);
-                goto out;
-            }
-            if ((st = lx_warn_exponent_from_beam(ctx, r->beam, &l.exponent)) != LX_OK) {
-                st = lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': beam: %s", r->name, lx_ctx_errmsg(ctx));
-                goto out;
-            }
-        } else {
-            if (!(r->exponent >= 0)) {
-                st = lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': exponent must be >= 0", r->name);
-                goto out;
-            }
-            l.exponent = r->exponent;
-        }
-        l.intensity_cd = r->has_flux ? (l.exponent + 1) * r->flux / (2 * LX__PI) : r->intensity;
-        l.flux_lm = 2 * LX__PI * l.intensity_cd / (l.exponent + 1);
-        break;
+    case LX_SLUM_SPOT: return lum_spot(ctx, r, l);
     case LX_SLUM_DISK:
-    case LX_SLUM_RECT: {
-        NEED_ONE("flux", r->has_flux, "luminance", r->has_luminance);
-        double area;
-        if (l.kind == LX_SLUM_DISK) {
-            if (!r->has_radius) {
-                st = lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': missing 'radius'", r->name);
-                goto out;
-            }
-            POSITIVE(r->radius, "radius");
-            l.radius_m = r->radius;
-            area = LX__PI * r->radius * r->radius;
-        } else {
-            if (!r->has_width || !r->has_length) {
-                st = lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': missing 'width' or 'length'", r->name);
-                goto out;
-            }
-            POSITIVE(r->width, "width");
-            POSITIVE(r->length, "length");
-            l.width_m = r->width;
-            l.length_m = r->length;
-            area = r->width * r->length;
-        }
-        /* a Lambertian emitter: exitance M = pi L, flux F = pi L A */
-        l.luminance_cd_m2 = r->has_flux ? r->flux / (LX__PI * area) : r->luminance;
-        l.flux_lm = LX__PI * l.luminance_cd_m2 * area;
-        l.intensity_cd = l.luminance_cd_m2 * area; /* on the axis */
-        break;
+    case LX_SLUM_RECT: return lum_area(ctx, r, l);
+    case LX_SLUM_FILE: return lum_file(ctx, r, l);
     }
-    case LX_SLUM_FILE: {
-        if (!r->lum_file) {
-            st = lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': missing 'file' (an IES or LDT file)", r->name);
-            goto out;
-        }
-        if (r->has_flux && r->has_multiplier) {
-            st = lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': give 'flux' or 'multiplier', not both", r->name);
-            goto out;
-        }
-        if (r->has_multiplier) POSITIVE(r->multiplier, "multiplier");
-        if (r->has_width && !(r->width >= 0)) POSITIVE(r->width, "width");
-        if (r->has_length && !(r->length >= 0)) POSITIVE(r->length, "length");
-        l.lum_path = lx__scene_resolve(f, r->lum_file);
-        if (!l.lum_path) {
-            st = lx__error(ctx, LX_ENOMEM, f, ln, "out of memory");
-            goto out;
-        }
-        st = lx_luminaire_read_file(ctx, l.lum_path, &l.lum);
-        if (st != LX_OK) {
-            char inner[LX__ERRMSG_MAX];
-            snprintf(inner, sizeof inner, "%s", lx_ctx_errmsg(ctx));
-            st = lx__error(ctx, st, f, r->lum_file_line, "file: %s", inner);
-            free(l.lum_path);
-            goto out;
-        }
-        /* the luminous opening: negative IES sizes mean round (diameter) */
-        double w = l.lum->width_m, len = l.lum->length_m;
-        if (w < 0 || len < 0) l.radius_m = fabs(w < 0 ? w : len) / 2;
-        else l.width_m = w, l.length_m = len;
-        if (r->has_width || r->has_length) {
-            l.radius_m = 0;
-            l.width_m = r->has_width ? r->width : l.width_m;
-            l.length_m = r->has_length ? r->length : l.length_m;
-        }
-        lx_lum_summary sum;
-        st = lx_luminaire_summary(ctx, l.lum, &sum);
-        if (st != LX_OK || !(sum.lumens > 0)) {
-            if (st == LX_OK) st = lx__error(ctx, LX_EPARSE, f, r->lum_file_line, "file: the luminaire emits no light");
-            lx_luminaire_free(l.lum);
-            free(l.lum_path);
-            goto out;
-        }
-        l.scale = r->has_flux ? r->flux / sum.lumens : r->has_multiplier ? r->multiplier : 1;
-        l.flux_lm = sum.lumens * l.scale;
-        /* a TILT table: the lamp output at the luminaire's tilt (as lx_grid_illuminance applies it) */
-        l.scale *= lx_luminaire_tilt_factor(l.lum, acos(fmax(-1.0, fmin(1.0, -l.aim[2]))));
-        l.intensity_cd = sum.max_intensity_cd * l.scale;
-        break;
-    }
-    }
-    if (r->spd && r->has_cct) {
-        st = lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': give 'spd' or 'cct', not both", r->name);
-        goto fail_l;
-    }
-    if (r->spectrum && !r->spd) {
-        st = lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': 'spectrum' needs 'spd'", r->name);
-        goto fail_l;
-    }
+    return LX_OK;
+}
+
+/* The colour: a CCT or a spectrum from an SPD file (one of its spectra by name). The caller frees what
+   this read when it fails. */
+static lx_status lum_colour(lx_ctx *ctx, const scene__lum_raw *r, lx_scene_luminaire *l)
+{
+    const char *f = r->file;
+    long ln = r->line;
+    if (r->spd && r->has_cct)
+        return lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': give 'spd' or 'cct', not both", r->name);
+    if (r->spectrum && !r->spd)
+        return lx__error(ctx, LX_EPARSE, f, ln, "luminaire '%s': 'spectrum' needs 'spd'", r->name);
     if (r->has_cct) {
-        if (!(r->cct >= 1000 && r->cct <= 25000)) {
-            st = lx__error(ctx, LX_EPARSE, f, r->cct_line, "cct: must be from 1000 K to 25000 K");
-            goto fail_l;
-        }
-        l.cct_K = r->cct;
+        if (!(r->cct >= 1000 && r->cct <= 25000))
+            return lx__error(ctx, LX_EPARSE, f, r->cct_line, "cct: must be from 1000 K to 25000 K");
+        l->cct_K = r->cct;
     }
-    if (r->spd) {
-        l.spd_path = lx__scene_resolve(f, r->spd);
-        if (!l.spd_path) {
-            st = lx__error(ctx, LX_ENOMEM, f, ln, "out of memory");
-            goto fail_l;
-        }
-        st = lx_spd_read_file(ctx, l.spd_path, &l.spd);
-        if (st != LX_OK) {
-            char inner[LX__ERRMSG_MAX];
-            snprintf(inner, sizeof inner, "%s", lx_ctx_errmsg(ctx));
-            st = lx__error(ctx, st, f, r->spd_line, "spd: %s", inner);
-            goto fail_l;
-        }
-        if (r->spectrum) {
-            size_t k = 0;
-            while (k < l.spd->count && !(l.spd->spd[k].name && !strcmp(l.spd->spd[k].name, r->spectrum))) k++;
-            if (k == l.spd->count) {
-                st = lx__error(ctx, LX_EPARSE, f, r->spd_line, "spd: no spectrum named '%s' in %s", r->spectrum,
-                               l.spd_path);
-                goto fail_l;
-            }
-            l.spd_index = k;
-        } else if (l.spd->count != 1) {
-            st = lx__error(ctx, LX_EPARSE, f, r->spd_line,
-                           "spd: %s holds %zu spectra: choose one with 'spectrum = NAME'", l.spd_path, l.spd->count);
-            goto fail_l;
-        }
+    if (!r->spd) return LX_OK;
+    l->spd_path = lx__scene_resolve(f, r->spd);
+    if (!l->spd_path) return lx__error(ctx, LX_ENOMEM, f, ln, "out of memory");
+    lx_status st = lx_spd_read_file(ctx, l->spd_path, &l->spd);
+    if (st != LX_OK) {
+        char inner[LX__ERRMSG_MAX];
+        snprintf(inner, sizeof inner, "%s", lx_ctx_errmsg(ctx));
+        return lx__error(ctx, st, f, r->spd_line, "spd: %s", inner);
     }
+    if (r->spectrum) {
+        size_t k = 0;
+        while (k < l->spd->count && !(l->spd->spd[k].name && !strcmp(l->spd->spd[k].name, r->spectrum)))
+            k++;
+        if (k == l->spd->count)
+            return lx__error(ctx, LX_EPARSE, f, r->spd_line, "spd: no spectrum named '%s' in %s", r->spectrum,
+                             l->spd_path);
+        l->spd_index = k;
+    } else if (l->spd->count != 1) {
+        return lx__error(ctx, LX_EPARSE, f, r->spd_line, "spd: %s holds %zu spectra: choose one with 'spectrum = NAME'",
+                         l->spd_path, l->spd->count);
+    }
+    return LX_OK;
+}
+
+#undef NEED_ONE
+#undef POSITIVE
+
+lx_status lx__scene_lum_finish(lx_ctx *ctx, lx_scene *sc, scene__lum_raw *r)
+{
+    lx_scene_luminaire l;
+    int kind = -1;
+    lx_status st = lum_kind(ctx, r, &kind);
+    if (st == LX_OK) st = lum_base(ctx, r, kind, &l);
+    if (st == LX_OK) st = lum_photometry(ctx, r, &l);
+    if (st != LX_OK) goto out;
+    if ((st = lum_colour(ctx, r, &l)) != LX_OK) goto fail_l;
     lx_scene_luminaire *nl = realloc(sc->lum, (sc->n_lum + 1) * sizeof *nl);
     if (!nl) {
-        st = lx__error(ctx, LX_ENOMEM, f, ln, "out of memory");
+        st = lx__error(ctx, LX_ENOMEM, r->file, r->line, "out of memory");
         goto fail_l;
     }
     sc->lum = nl;
@@ -451,6 +473,93 @@ lx_status lx__scene_rec_key(lx_ctx *ctx, scene__rec_raw *r, const char *file, lo
                      key);
 }
 
+/* A point receiver: its position, facing up unless a normal is given. */
+static lx_status rec_point(lx_ctx *ctx, const scene__rec_raw *r, lx_scene_receiver *rc)
+{
+    rc->kind = LX_SREC_POINT;
+    if (!r->has_pos || r->nx || r->ny || r->nz || r->has_spacing || r->has_points)
+        return lx__error(ctx, LX_EPARSE, r->file, r->line,
+                         "receiver '%s': a point takes 'position' (and normal, reflectance), not x/y/z/spacing/points",
+                         r->name);
+    rc->normal[2] = 1;
+    rc->n = 1;
+    rc->points = malloc(3 * sizeof *rc->points);
+    if (!rc->points) return lx__error(ctx, LX_ENOMEM, r->file, r->line, "out of memory");
+    memcpy(rc->points, r->pos, 3 * sizeof *rc->points);
+    return LX_OK;
+}
+
+/* The number of grid points along the free axes A and B (given by 'points' or from the spacing). */
+static lx_status rec_grid_counts(lx_ctx *ctx, const scene__rec_raw *r, const double *rg[3], int A, int B, size_t cnt[2])
+{
+    for (int k = 0; k < 2; k++) {
+        const double *q = rg[k ? B : A];
+        if (!(q[1] >= q[0]))
+            return lx__error(ctx, LX_EPARSE, r->file, r->line, "receiver '%s': %c range must go from low to high",
+                             r->name, 'x' + (k ? B : A));
+        if (r->has_points)
+            cnt[k] = (size_t)r->points[k];
+        else {
+            double c = floor((q[1] - q[0]) / r->spacing + 1e-9) + 1;
+            if (c > LX__SCENE_MAX_POINTS_AXIS)
+                return lx__error(ctx, LX_EPARSE, r->file, r->line, "receiver '%s': more than %d points along an axis",
+                                 r->name, LX__SCENE_MAX_POINTS_AXIS);
+            cnt[k] = (size_t)c;
+        }
+    }
+    return LX_OK;
+}
+
+/* A grid receiver: one of x, y, z fixed (the plane), the other two ranges; its points row by row. */
+static lx_status rec_grid(lx_ctx *ctx, const scene__rec_raw *r, lx_scene_receiver *rc)
+{
+    const char *f = r->file;
+    long ln = r->line;
+    rc->kind = LX_SREC_GRID;
+    int ns[3] = {r->nx, r->ny, r->nz};
+    const double *rg[3] = {r->xr, r->yr, r->zr};
+    int fixed = -1, nfix = 0;
+    for (int a = 0; a < 3; a++)
+        if (ns[a] == 1) fixed = a, nfix++;
+    if (r->has_pos || nfix != 1 || !ns[0] || !ns[1] || !ns[2])
+        return lx__error(ctx, LX_EPARSE, f, ln,
+                         "receiver '%s': a grid takes x, y and z: one of them a single value (the plane), the "
+                         "other two 'FROM, TO' ranges (e.g. x = 0 m, 4 m; y = 0 m, 3 m; z = 0.8 m)",
+                         r->name);
+    if (r->has_spacing == r->has_points)
+        return lx__error(ctx, LX_EPARSE, f, ln, "receiver '%s': give exactly one of 'spacing' and 'points'", r->name);
+    if (r->has_spacing && !(r->spacing > 0))
+        return lx__error(ctx, LX_EPARSE, f, ln, "receiver '%s': spacing must be greater than zero", r->name);
+    rc->axis = (char)('x' + fixed);
+    int A = fixed == 0 ? 1 : 0, B = fixed == 2 ? 1 : 2; /* the free axes, in x, y, z order */
+    size_t cnt[2];
+    lx_status st = rec_grid_counts(ctx, r, rg, A, B, cnt);
+    if (st != LX_OK) return st;
+    rc->na = cnt[0];
+    rc->nb = cnt[1];
+    rc->n = rc->na * rc->nb;
+    if (rc->n > LX__SCENE_MAX_POINTS)
+        return lx__error(ctx, LX_EPARSE, f, ln, "receiver '%s': more than %d points", r->name, LX__SCENE_MAX_POINTS);
+    rc->points = malloc(3 * rc->n * sizeof *rc->points);
+    if (!rc->points) return lx__error(ctx, LX_ENOMEM, f, ln, "out of memory");
+    double da = 0, db = 0;
+    if (r->has_spacing)
+        da = db = r->spacing;
+    else {
+        da = rc->na > 1 ? (rg[A][1] - rg[A][0]) / (double)(rc->na - 1) : 0;
+        db = rc->nb > 1 ? (rg[B][1] - rg[B][0]) / (double)(rc->nb - 1) : 0;
+    }
+    for (size_t j = 0; j < rc->nb; j++)
+        for (size_t i = 0; i < rc->na; i++) {
+            double *p = rc->points + 3 * (j * rc->na + i);
+            p[fixed] = rg[fixed][0];
+            p[A] = rg[A][0] + (double)i * da;
+            p[B] = rg[B][0] + (double)j * db;
+        }
+    rc->normal[fixed] = 1;
+    return LX_OK;
+}
+
 lx_status lx__scene_rec_finish(lx_ctx *ctx, lx_scene *sc, scene__rec_raw *r)
 {
     const char *f = r->file;
@@ -472,100 +581,15 @@ lx_status lx__scene_rec_finish(lx_ctx *ctx, lx_scene *sc, scene__rec_raw *r)
         }
         rc.reflectance = r->refl;
     }
-    if (!strcmp(r->type, "point")) {
-        rc.kind = LX_SREC_POINT;
-        if (!r->has_pos || r->nx || r->ny || r->nz || r->has_spacing || r->has_points) {
-            st = lx__error(ctx, LX_EPARSE, f, ln,
-                           "receiver '%s': a point takes 'position' (and normal, reflectance), not x/y/z/spacing/points",
-                           r->name);
-            goto out;
-        }
-        rc.normal[2] = 1;
-        rc.n = 1;
-        rc.points = malloc(3 * sizeof *rc.points);
-        if (!rc.points) {
-            st = lx__error(ctx, LX_ENOMEM, f, ln, "out of memory");
-            goto out;
-        }
-        memcpy(rc.points, r->pos, 3 * sizeof *rc.points);
-    } else {
-        rc.kind = LX_SREC_GRID;
-        int ns[3] = {r->nx, r->ny, r->nz};
-        double *rg[3] = {r->xr, r->yr, r->zr};
-        int fixed = -1, nfix = 0;
-        for (int a = 0; a < 3; a++)
-            if (ns[a] == 1) fixed = a, nfix++;
-        if (r->has_pos || nfix != 1 || !ns[0] || !ns[1] || !ns[2]) {
-            st = lx__error(ctx, LX_EPARSE, f, ln,
-                           "receiver '%s': a grid takes x, y and z: one of them a single value (the plane), the "
-                           "other two 'FROM, TO' ranges (e.g. x = 0 m, 4 m; y = 0 m, 3 m; z = 0.8 m)",
-                           r->name);
-            goto out;
-        }
-        if (r->has_spacing == r->has_points) {
-            st = lx__error(ctx, LX_EPARSE, f, ln, "receiver '%s': give exactly one of 'spacing' and 'points'", r->name);
-            goto out;
-        }
-        if (r->has_spacing && !(r->spacing > 0)) {
-            st = lx__error(ctx, LX_EPARSE, f, ln, "receiver '%s': spacing must be greater than zero", r->name);
-            goto out;
-        }
-        rc.axis = (char)('x' + fixed);
-        int A = fixed == 0 ? 1 : 0, B = fixed == 2 ? 1 : 2; /* the free axes, in x, y, z order */
-        size_t cnt[2];
-        for (int k = 0; k < 2; k++) {
-            double *q = rg[k ? B : A];
-            if (!(q[1] >= q[0])) {
-                st = lx__error(ctx, LX_EPARSE, f, ln, "receiver '%s': %c range must go from low to high", r->name,
-                               'x' + (k ? B : A));
-                goto out;
-            }
-            if (r->has_points) cnt[k] = (size_t)r->points[k];
-            else {
-                double c = floor((q[1] - q[0]) / r->spacing + 1e-9) + 1;
-                if (c > LX__SCENE_MAX_POINTS_AXIS) {
-                    st = lx__error(ctx, LX_EPARSE, f, ln, "receiver '%s': more than %d points along an axis", r->name,
-                                   LX__SCENE_MAX_POINTS_AXIS);
-                    goto out;
-                }
-                cnt[k] = (size_t)c;
-            }
-        }
-        rc.na = cnt[0];
-        rc.nb = cnt[1];
-        rc.n = rc.na * rc.nb;
-        if (rc.n > LX__SCENE_MAX_POINTS) {
-            st = lx__error(ctx, LX_EPARSE, f, ln, "receiver '%s': more than %d points", r->name, LX__SCENE_MAX_POINTS);
-            goto out;
-        }
-        rc.points = malloc(3 * rc.n * sizeof *rc.points);
-        if (!rc.points) {
-            st = lx__error(ctx, LX_ENOMEM, f, ln, "out of memory");
-            goto out;
-        }
-        double da = 0, db = 0;
-        if (r->has_spacing) da = db = r->spacing;
-        else {
-            da = rc.na > 1 ? (rg[A][1] - rg[A][0]) / (double)(rc.na - 1) : 0;
-            db = rc.nb > 1 ? (rg[B][1] - rg[B][0]) / (double)(rc.nb - 1) : 0;
-        }
-        for (size_t j = 0; j < rc.nb; j++)
-            for (size_t i = 0; i < rc.na; i++) {
-                double *p = rc.points + 3 * (j * rc.na + i);
-                p[fixed] = rg[fixed][0];
-                p[A] = rg[A][0] + (double)i * da;
-                p[B] = rg[B][0] + (double)j * db;
-            }
-        rc.normal[fixed] = 1;
-    }
+    st = !strcmp(r->type, "point") ? rec_point(ctx, r, &rc) : rec_grid(ctx, r, &rc);
+    if (st != LX_OK) goto out;
     if (r->has_normal) {
         memcpy(rc.normal, r->normal, sizeof rc.normal);
         if ((st = normalise(ctx, f, ln, "normal", rc.normal)) != LX_OK) goto out;
     }
     lx_scene_receiver *nr = realloc(sc->rec, (sc->n_rec + 1) * sizeof *nr);
     if (!nr) {
-        free(rc.points);
-        st = lx__error(ctx, LX_ENOMEM, f, ln, "out of memory");
+        st = lx__error(ctx, LX_ENOMEM, f, ln, "out of memory"); /* the points are freed below */
         goto out;
     }
     sc->rec = nr;

@@ -283,16 +283,13 @@ static lx_status plan_environment(lx_ctx *ctx, const lx_scene *sc, lx_scene_plan
     return LX_OK;
 }
 
-lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, lx_backend backend, lx_scene_plan **out)
+/* A plan with its per-pair and per-block arrays, sized for the scene; NULL on no memory. */
+static lx_scene_plan *plan_alloc(const lx_scene *sc)
 {
-    LX__NEED_CTX(ctx);
-    if (!sc || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_plan_make: NULL argument");
-    *out = NULL;
-    if (backend != LX_BACKEND_AUTO && backend != LX_BACKEND_CPU && backend != LX_BACKEND_OPENCL)
-        return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_plan_make: unknown backend %d", (int)backend);
     lx_scene_plan *p = calloc(1, sizeof *p);
-    if (!p) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
-    for (size_t r = 0; r < sc->n_rec; r++) p->n_points += sc->rec[r].n;
+    if (!p) return NULL;
+    for (size_t r = 0; r < sc->n_rec; r++)
+        p->n_points += sc->rec[r].n;
     p->n_pairs = p->n_points * sc->n_lum;
     p->n_normals = sc->n_rec;
     p->near = calloc(p->n_pairs ? p->n_pairs : 1, 1);
@@ -301,22 +298,26 @@ lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, lx_backend backend
     p->device = calloc(sc->n_lum * sc->n_rec > 0 ? sc->n_lum * sc->n_rec : 1, 1);
     if (!p->near || !p->near_why || !p->near_err || !p->device) {
         lx_scene_plan_free(p);
-        return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+        return NULL;
     }
-    for (size_t k = 0; k < p->n_pairs; k++) p->near_err[k] = NAN;
+    for (size_t k = 0; k < p->n_pairs; k++)
+        p->near_err[k] = NAN;
+    return p;
+}
+
+#define FORCED_ON_NOTHING(e, what)                                                                                     \
+    if (sc->force[e] == LX_FORCE_ON)                                                                                   \
+        return lx__error(ctx, LX_EPARSE, sc->file, sc->force_line[e], "%s forced on, but the scene has no %s",         \
+                         effect_names[e], what);
+
+/* The point-source effects: inverse square and cosine for every luminaire, spot falloff, goniometric. */
+static lx_status plan_point_laws(lx_ctx *ctx, const lx_scene *sc, lx_scene_plan *p)
+{
     const lx_effect_force *F = sc->force;
-    lx_status st = LX_OK;
-    size_t n_spot = 0, n_file = 0, n_area = 0;
+    size_t n_spot = 0, n_file = 0;
     for (size_t l = 0; l < sc->n_lum; l++) {
         n_spot += sc->lum[l].kind == LX_SLUM_SPOT;
         n_file += sc->lum[l].kind == LX_SLUM_FILE;
-        n_area += lx__scene_lum_size(&sc->lum[l]) > 0;
-    }
-#define FORCED_ON_NOTHING(e, what)                                                                                 \
-    if (F[e] == LX_FORCE_ON) {                                                                                     \
-        st = lx__error(ctx, LX_EPARSE, sc->file, sc->force_line[e], "%s forced on, but the scene has no %s",      \
-                       effect_names[e], what);                                                                     \
-        goto fail;                                                                                                 \
     }
     /* inverse square and cosine: the point-source law for every luminaire */
     if (sc->n_lum == 0) {
@@ -337,7 +338,8 @@ lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, lx_backend backend
         FORCED_ON_NOTHING(LX_EFFECT_SPOT_FALLOFF, "spot luminaires");
         why(p, LX_EFFECT_SPOT_FALLOFF, 0, "no spot luminaires");
     } else if (F[LX_EFFECT_SPOT_FALLOFF] == LX_FORCE_OFF)
-        why(p, LX_EFFECT_SPOT_FALLOFF, 0, "forced off in [effects]: spots give their peak intensity in the whole front hemisphere");
+        why(p, LX_EFFECT_SPOT_FALLOFF, 0,
+            "forced off in [effects]: spots give their peak intensity in the whole front hemisphere");
     else
         why(p, LX_EFFECT_SPOT_FALLOFF, 1, "%zu spot luminaire%s (Warn cos^S lobes)", n_spot, n_spot == 1 ? "" : "s");
     /* goniometric */
@@ -345,60 +347,92 @@ lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, lx_backend backend
         FORCED_ON_NOTHING(LX_EFFECT_GONIOMETRIC, "photometric-file luminaires");
         why(p, LX_EFFECT_GONIOMETRIC, 0, "no IES/LDT luminaires");
     } else if (F[LX_EFFECT_GONIOMETRIC] == LX_FORCE_OFF)
-        why(p, LX_EFFECT_GONIOMETRIC, 0, "forced off in [effects]: IES/LDT luminaires are isotropic points of their flux");
+        why(p, LX_EFFECT_GONIOMETRIC, 0,
+            "forced off in [effects]: IES/LDT luminaires are isotropic points of their flux");
     else
         why(p, LX_EFFECT_GONIOMETRIC, 1, "%zu IES/LDT luminaire%s (intensity tables)", n_file, n_file == 1 ? "" : "s");
-    /* near field: per pair, from the closed forms and the point model's estimated error */
+    return LX_OK;
+}
+
+/* Counts the pairs plan_near put on a near path (p->n_near) and estimates the subdivisions of those
+ * on the area path; returns how many are on the area path. */
+static size_t plan_near_pairs(const lx_scene *sc, lx_scene_plan *p)
+{
+    size_t g = 0, n_area_pairs = 0;
+    for (size_t r = 0; r < sc->n_rec; r++)
+        for (size_t i = 0; i < sc->rec[r].n; i++, g++)
+            for (size_t l = 0; l < sc->n_lum; l++) {
+                const lx_scene_luminaire *L = &sc->lum[l];
+                size_t at = l * p->n_points + g;
+                if (!p->near[at]) continue;
+                p->n_near++;
+                if (p->near[at] == LX__PATH_AREA) {
+                    n_area_pairs++;
+                    const double *q = sc->rec[r].points + 3 * i;
+                    double d =
+                        sqrt((q[0] - L->pos_m[0]) * (q[0] - L->pos_m[0]) + (q[1] - L->pos_m[1]) * (q[1] - L->pos_m[1]) +
+                             (q[2] - L->pos_m[2]) * (q[2] - L->pos_m[2]));
+                    p->estimate.nearfield_subdivisions +=
+                        near_patches(lx__scene_lum_size(L), d, sc->nearfield_tol, L->radius_m > 0);
+                }
+            }
+    return n_area_pairs;
+}
+
+/* The near-field effect: per pair, from the closed forms and the point model's estimated error. */
+static lx_status plan_near_field(lx_ctx *ctx, const lx_scene *sc, lx_scene_plan *p)
+{
+    const lx_effect_force *F = sc->force;
+    size_t n_area = 0;
+    for (size_t l = 0; l < sc->n_lum; l++)
+        n_area += lx__scene_lum_size(&sc->lum[l]) > 0;
     if (!n_area) {
         FORCED_ON_NOTHING(LX_EFFECT_NEAR_FIELD, "luminaires with a luminous area");
         why(p, LX_EFFECT_NEAR_FIELD, 0, "no luminaire has a luminous area (all are points)");
-    } else {
-        size_t n_closed = 0, n_probed = 0, wl = 0, wr = 0;
-        double worst = 0;
-        if ((st = plan_near(ctx, sc, p, &n_closed, &n_probed, &worst, &wl, &wr)) != LX_OK) goto fail;
-        size_t g = 0, n_area_pairs = 0;
-        for (size_t r = 0; r < sc->n_rec; r++)
-            for (size_t i = 0; i < sc->rec[r].n; i++, g++)
-                for (size_t l = 0; l < sc->n_lum; l++) {
-                    const lx_scene_luminaire *L = &sc->lum[l];
-                    size_t at = l * p->n_points + g;
-                    if (!p->near[at]) continue;
-                    p->n_near++;
-                    if (p->near[at] == LX__PATH_AREA) {
-                        n_area_pairs++;
-                        const double *q = sc->rec[r].points + 3 * i;
-                        double d = sqrt((q[0] - L->pos_m[0]) * (q[0] - L->pos_m[0]) + (q[1] - L->pos_m[1]) * (q[1] - L->pos_m[1]) +
-                                        (q[2] - L->pos_m[2]) * (q[2] - L->pos_m[2]));
-                        p->estimate.nearfield_subdivisions += near_patches(lx__scene_lum_size(L), d, sc->nearfield_tol, L->radius_m > 0);
-                    }
-                }
-        p->estimate.nearfield_pairs = p->n_near;
-        p->estimate.nearfield_probes = n_probed;
-        p->estimate.closed_form_evaluations = n_closed;
-        if (F[LX_EFFECT_NEAR_FIELD] == LX_FORCE_OFF)
-            why(p, LX_EFFECT_NEAR_FIELD, 0, "forced off in [effects]: every luminaire is a point at its centre");
-        else if (F[LX_EFFECT_NEAR_FIELD] == LX_FORCE_ON)
-            why(p, LX_EFFECT_NEAR_FIELD, 1, "forced on in [effects]: %zu pairs integrated over the luminous area, %zu in closed form",
-                n_area_pairs, n_closed);
-        else if (p->n_near) {
-            char parts[3][96] = {"", "", ""};
-            if (n_closed) snprintf(parts[0], sizeof parts[0], "; %zu disk/rect in closed form", n_closed);
-            if (n_area_pairs)
-                snprintf(parts[1], sizeof parts[1], "; %zu integrated (point-model error estimated over %g, or unsure)",
-                         n_area_pairs, sc->nearfield_tol);
-            if (n_probed) snprintf(parts[2], sizeof parts[2], "; %zu of %zu probed pairs kept as points", n_probed - n_area_pairs, n_probed);
-            why(p, LX_EFFECT_NEAR_FIELD, 1, "%zu of %zu pairs on the area path%s%s%s", p->n_near, p->n_pairs, parts[0],
-                parts[1], parts[2]);
-        } else
-            why(p, LX_EFFECT_NEAR_FIELD, 0, "the point model's estimated error meets the tolerance %g on all %zu probed pairs "
-                "(largest %.2g: %s to %s)", sc->nearfield_tol, n_probed, worst, sc->lum[wl].name, sc->rec[wr].name);
+        return LX_OK;
     }
-    /* spectral: only when asked for and every source has a spectrum; the environment */
-    if ((st = plan_spectral(ctx, sc, p)) != LX_OK || (st = plan_environment(ctx, sc, p)) != LX_OK) goto fail;
-    /* the point-source work (far pairs) */
+    size_t n_closed = 0, n_probed = 0, wl = 0, wr = 0;
+    double worst = 0;
+    lx_status st = plan_near(ctx, sc, p, &n_closed, &n_probed, &worst, &wl, &wr);
+    if (st != LX_OK) return st;
+    size_t n_area_pairs = plan_near_pairs(sc, p);
+    p->estimate.nearfield_pairs = p->n_near;
+    p->estimate.nearfield_probes = n_probed;
+    p->estimate.closed_form_evaluations = n_closed;
+    if (F[LX_EFFECT_NEAR_FIELD] == LX_FORCE_OFF)
+        why(p, LX_EFFECT_NEAR_FIELD, 0, "forced off in [effects]: every luminaire is a point at its centre");
+    else if (F[LX_EFFECT_NEAR_FIELD] == LX_FORCE_ON)
+        why(p, LX_EFFECT_NEAR_FIELD, 1,
+            "forced on in [effects]: %zu pairs integrated over the luminous area, %zu in closed form", n_area_pairs,
+            n_closed);
+    else if (p->n_near) {
+        char parts[3][96] = {"", "", ""};
+        if (n_closed) snprintf(parts[0], sizeof parts[0], "; %zu disk/rect in closed form", n_closed);
+        if (n_area_pairs)
+            snprintf(parts[1], sizeof parts[1], "; %zu integrated (point-model error estimated over %g, or unsure)",
+                     n_area_pairs, sc->nearfield_tol);
+        if (n_probed)
+            snprintf(parts[2], sizeof parts[2], "; %zu of %zu probed pairs kept as points", n_probed - n_area_pairs,
+                     n_probed);
+        why(p, LX_EFFECT_NEAR_FIELD, 1, "%zu of %zu pairs on the area path%s%s%s", p->n_near, p->n_pairs, parts[0],
+            parts[1], parts[2]);
+    } else
+        why(p, LX_EFFECT_NEAR_FIELD, 0,
+            "the point model's estimated error meets the tolerance %g on all %zu probed pairs "
+            "(largest %.2g: %s to %s)",
+            sc->nearfield_tol, n_probed, worst, sc->lum[wl].name, sc->rec[wr].name);
+    return LX_OK;
+}
+
+#undef FORCED_ON_NOTHING
+
+/* The point-source work estimate: the far pairs, and the table lookups of IES luminaires. */
+static void plan_point_work(const lx_scene *sc, lx_scene_plan *p)
+{
     for (size_t l = 0; l < sc->n_lum; l++) {
         unsigned long long far = 0;
-        for (size_t g = 0; g < p->n_points; g++) far += !p->near[l * p->n_points + g];
+        for (size_t g = 0; g < p->n_points; g++)
+            far += !p->near[l * p->n_points + g];
         p->estimate.point_evaluations += far;
         if (sc->lum[l].kind == LX_SLUM_SPOT && p->on[LX_EFFECT_SPOT_FALLOFF]) p->estimate.spot_evaluations += far;
         if (sc->lum[l].kind == LX_SLUM_FILE && p->on[LX_EFFECT_GONIOMETRIC]) p->estimate.goniometric_lookups += far;
@@ -411,65 +445,100 @@ lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, lx_backend backend
                 for (size_t i = 0; i < sc->rec[r].n; i++, g++)
                     if (p->near[l * p->n_points + g] == LX__PATH_AREA) {
                         const double *q = sc->rec[r].points + 3 * i, *s = sc->lum[l].pos_m;
-                        double d = sqrt((q[0] - s[0]) * (q[0] - s[0]) + (q[1] - s[1]) * (q[1] - s[1]) + (q[2] - s[2]) * (q[2] - s[2]));
-                        p->estimate.goniometric_lookups += near_patches(size, d, sc->nearfield_tol, sc->lum[l].radius_m > 0);
+                        double d = sqrt((q[0] - s[0]) * (q[0] - s[0]) + (q[1] - s[1]) * (q[1] - s[1]) +
+                                        (q[2] - s[2]) * (q[2] - s[2]));
+                        p->estimate.goniometric_lookups +=
+                            near_patches(size, d, sc->nearfield_tol, sc->lum[l].radius_m > 0);
                     }
         }
+}
+
+/* Marks the device blocks (IES luminaire x grid receiver, every pair far and unoccluded); returns
+ * their evaluations. */
+static double plan_device_blocks(const lx_scene *sc, lx_scene_plan *p)
+{
+    double eligible = 0;
+    size_t g0 = 0;
+    for (size_t r = 0; r < sc->n_rec; r++) {
+        const lx_scene_receiver *rc = &sc->rec[r];
+        for (size_t l = 0; l < sc->n_lum; l++) {
+            if (rc->kind != LX_SREC_GRID || sc->lum[l].kind != LX_SLUM_FILE || !p->on[LX_EFFECT_GONIOMETRIC] ||
+                !p->on[LX_EFFECT_COSINE])
+                continue;
+            size_t k = 0;
+            for (size_t i = 0; i < rc->n; i++)
+                k += p->near[l * p->n_points + g0 + i] || (p->occ && p->occ[l * p->n_points + g0 + i]);
+            if (k == 0) p->device[l * sc->n_rec + r] = 1, eligible += (double)rc->n;
+        }
+        g0 += rc->n;
+    }
+    return eligible;
+}
+
+/* OpenCL: the far-field work of IES luminaires on grids can run as lx_grid_illuminance
+ * batches on a device (its table kernel); only worth it when large enough to repay the
+ * start-up (the grid engine's threshold: 1e7 point-luminaire evaluations), unless asked for.
+ * Points, spots, areas, near-field pairs, the sky and spectra stay on the CPU. */
+static lx_status plan_opencl(lx_ctx *ctx, const lx_scene *sc, lx_backend backend, lx_scene_plan *p)
+{
+    const lx_effect_force *F = sc->force;
+    const double threshold = 1e7;
+    double eligible = plan_device_blocks(sc, p);
+    int explicit_on =
+        F[LX_EFFECT_OPENCL] == LX_FORCE_ON || (backend == LX_BACKEND_OPENCL && F[LX_EFFECT_OPENCL] != LX_FORCE_OFF);
+    if (F[LX_EFFECT_OPENCL] == LX_FORCE_ON && !(eligible > 0))
+        return lx__error(ctx, LX_EPARSE, sc->file, sc->force_line[LX_EFFECT_OPENCL],
+                         "opencl forced on, but no IES luminaire lights a grid entirely in its far field");
+    if (F[LX_EFFECT_OPENCL] == LX_FORCE_OFF)
+        why(p, LX_EFFECT_OPENCL, 0, "forced off in [effects]");
+    else if (!(eligible > 0))
+        why(p, LX_EFFECT_OPENCL, 0, "no device work: only far-field IES luminaires on grids run on OpenCL");
+    else if (explicit_on)
+        why(p, LX_EFFECT_OPENCL, 1, "%s: %.3g far-field IES evaluations on grids",
+            F[LX_EFFECT_OPENCL] == LX_FORCE_ON ? "forced on in [effects]" : "backend opencl", eligible);
+    else if (backend == LX_BACKEND_CPU)
+        why(p, LX_EFFECT_OPENCL, 0, "backend cpu");
+    else if (eligible < threshold)
+        why(p, LX_EFFECT_OPENCL, 0,
+            "%.3g far-field IES evaluations on grids: below the %.0e that repay OpenCL start-up", eligible, threshold);
+    else
+        why(p, LX_EFFECT_OPENCL, 1, "%.3g far-field IES evaluations on grids: enough to repay OpenCL start-up",
+            eligible);
+    if (!p->on[LX_EFFECT_OPENCL]) memset(p->device, 0, sc->n_lum * sc->n_rec);
+    p->backend = p->on[LX_EFFECT_OPENCL] ? LX_BACKEND_OPENCL : LX_BACKEND_CPU;
+    p->device_required = p->on[LX_EFFECT_OPENCL] && explicit_on;
+    if (p->on[LX_EFFECT_OPENCL]) {
+        /* one batch (at least one kernel launch) per device block; their lookups leave the
+         * CPU estimate of the table work */
+        for (size_t l = 0; l < sc->n_lum; l++)
+            for (size_t r = 0; r < sc->n_rec; r++)
+                if (p->device[l * sc->n_rec + r]) p->estimate.kernel_launches++;
+    }
+    return LX_OK;
+}
+
+lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, lx_backend backend, lx_scene_plan **out)
+{
+    LX__NEED_CTX(ctx);
+    if (!sc || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_plan_make: NULL argument");
+    *out = NULL;
+    if (backend != LX_BACKEND_AUTO && backend != LX_BACKEND_CPU && backend != LX_BACKEND_OPENCL)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_plan_make: unknown backend %d", (int)backend);
+    lx_scene_plan *p = plan_alloc(sc);
+    if (!p) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    lx_status st;
+    if ((st = plan_point_laws(ctx, sc, p)) != LX_OK || (st = plan_near_field(ctx, sc, p)) != LX_OK) goto fail;
+    /* spectral: only when asked for and every source has a spectrum; the environment */
+    if ((st = plan_spectral(ctx, sc, p)) != LX_OK || (st = plan_environment(ctx, sc, p)) != LX_OK) goto fail;
+    plan_point_work(sc, p);
     /* daylight through openings (daylight_plan.c: before the rooms, whose mesh takes its openings),
      * occlusion and interreflection (room_plan.c) */
     if ((st = lx__daylight_plan(ctx, sc, p)) != LX_OK) goto fail;
     if ((st = lx__room_plan(ctx, sc, backend, p)) != LX_OK) goto fail;
     if ((st = lx__daylight_plan_after(ctx, sc, p)) != LX_OK) goto fail;
-    /* OpenCL: the far-field work of IES luminaires on grids can run as lx_grid_illuminance
-     * batches on a device (its table kernel); only worth it when large enough to repay the
-     * start-up (the grid engine's threshold: 1e7 point-luminaire evaluations), unless asked for.
-     * Points, spots, areas, near-field pairs, the sky and spectra stay on the CPU. */
-    {
-        const double threshold = 1e7;
-        double eligible = 0;
-        size_t g0 = 0;
-        for (size_t r = 0; r < sc->n_rec; r++) {
-            const lx_scene_receiver *rc = &sc->rec[r];
-            for (size_t l = 0; l < sc->n_lum; l++) {
-                if (rc->kind != LX_SREC_GRID || sc->lum[l].kind != LX_SLUM_FILE || !p->on[LX_EFFECT_GONIOMETRIC] ||
-                    !p->on[LX_EFFECT_COSINE])
-                    continue;
-                size_t k = 0;
-                for (size_t i = 0; i < rc->n; i++)
-                    k += p->near[l * p->n_points + g0 + i] || (p->occ && p->occ[l * p->n_points + g0 + i]);
-                if (k == 0) p->device[l * sc->n_rec + r] = 1, eligible += (double)rc->n;
-            }
-            g0 += rc->n;
-        }
-        int explicit_on = F[LX_EFFECT_OPENCL] == LX_FORCE_ON || (backend == LX_BACKEND_OPENCL && F[LX_EFFECT_OPENCL] != LX_FORCE_OFF);
-        if (F[LX_EFFECT_OPENCL] == LX_FORCE_ON && !(eligible > 0)) {
-            st = lx__error(ctx, LX_EPARSE, sc->file, sc->force_line[LX_EFFECT_OPENCL],
-                           "opencl forced on, but no IES luminaire lights a grid entirely in its far field");
-            goto fail;
-        }
-        if (F[LX_EFFECT_OPENCL] == LX_FORCE_OFF) why(p, LX_EFFECT_OPENCL, 0, "forced off in [effects]");
-        else if (!(eligible > 0))
-            why(p, LX_EFFECT_OPENCL, 0, "no device work: only far-field IES luminaires on grids run on OpenCL");
-        else if (explicit_on)
-            why(p, LX_EFFECT_OPENCL, 1, "%s: %.3g far-field IES evaluations on grids",
-                F[LX_EFFECT_OPENCL] == LX_FORCE_ON ? "forced on in [effects]" : "backend opencl", eligible);
-        else if (backend == LX_BACKEND_CPU) why(p, LX_EFFECT_OPENCL, 0, "backend cpu");
-        else if (eligible < threshold)
-            why(p, LX_EFFECT_OPENCL, 0, "%.3g far-field IES evaluations on grids: below the %.0e that repay OpenCL start-up",
-                eligible, threshold);
-        else why(p, LX_EFFECT_OPENCL, 1, "%.3g far-field IES evaluations on grids: enough to repay OpenCL start-up", eligible);
-        if (!p->on[LX_EFFECT_OPENCL]) memset(p->device, 0, sc->n_lum * sc->n_rec);
-        p->backend = p->on[LX_EFFECT_OPENCL] ? LX_BACKEND_OPENCL : LX_BACKEND_CPU;
-        p->device_required = p->on[LX_EFFECT_OPENCL] && explicit_on;
-        if (p->on[LX_EFFECT_OPENCL]) {
-            /* one batch (at least one kernel launch) per device block; their lookups leave the
-             * CPU estimate of the table work */
-            for (size_t l = 0; l < sc->n_lum; l++)
-                for (size_t r = 0; r < sc->n_rec; r++)
-                    if (p->device[l * sc->n_rec + r]) p->estimate.kernel_launches++;
-        }
-    }
-    for (int e = 0; e < LX_EFFECT_COUNT; e++) p->forced[e] = F[e] != LX_FORCE_AUTO;
+    if ((st = plan_opencl(ctx, sc, backend, p)) != LX_OK) goto fail;
+    for (int e = 0; e < LX_EFFECT_COUNT; e++)
+        p->forced[e] = sc->force[e] != LX_FORCE_AUTO;
     *out = p;
     return LX_OK;
 fail:
