@@ -142,6 +142,92 @@ static int summaries(lx_ctx *ctx, int first, int argc, char **argv, cli_format f
     return rc;
 }
 
+/* The --model options as given (NULL when absent). */
+typedef struct {
+    const char *model, *flux, *exp, *beam, *w, *l, *step;
+} model_args;
+
+/* --exponent or --beam (exactly one) into m->exponent for the warn model; the exit code. */
+static int warn_exponent(lx_ctx *ctx, const model_args *t, lx_lum_model *m)
+{
+    int rc;
+    if (!!t->exp == !!t->beam) {
+        cli_error("ies", "--model warn needs one of --exponent or --beam");
+        return CLI_USAGE;
+    }
+    if (t->exp && (rc = lt_quantity(ctx, "ies", "--exponent", t->exp, LX_Q_NONE, NULL, 0, &m->exponent))) return rc;
+    if (t->beam) {
+        double b;
+        if ((rc = lt_quantity(ctx, "ies", "--beam", t->beam, LX_Q_ANGLE, "deg", 0, &b))) return rc;
+        lx_status st = lx_warn_exponent_from_beam(ctx, b, &m->exponent);
+        if (st) return cli_fail("ies", ctx, st);
+    }
+    return CLI_OK;
+}
+
+/* The --model options into m (kind, flux, exponent, width, length, step); the exit code. */
+static int model_params(lx_ctx *ctx, const model_args *t, lx_lum_model *m)
+{
+    int rc;
+    if (!strcmp(t->model, "point")) m->kind = LX_LUM_MODEL_POINT;
+    else if (!strcmp(t->model, "warn")) m->kind = LX_LUM_MODEL_WARN;
+    else if (!strcmp(t->model, "lambert")) m->kind = LX_LUM_MODEL_LAMBERT;
+    else {
+        cli_error("ies", "--model: unknown model '%s' (point, warn or lambert)", t->model);
+        return CLI_USAGE;
+    }
+    if (!t->flux) {
+        cli_error("ies", "--model needs --flux");
+        return CLI_USAGE;
+    }
+    if ((rc = lt_quantity(ctx, "ies", "--flux", t->flux, LX_Q_LUMINOUS_FLUX, NULL, 0, &m->flux_lm))) return rc;
+    if (m->kind == LX_LUM_MODEL_WARN && (rc = warn_exponent(ctx, t, m))) return rc;
+    if (t->w && (rc = lt_quantity(ctx, "ies", "--width", t->w, LX_Q_LENGTH, NULL, 0, &m->width_m))) return rc;
+    if (t->l && (rc = lt_quantity(ctx, "ies", "--length", t->l, LX_Q_LENGTH, NULL, 0, &m->length_m))) return rc;
+    if (t->step) {
+        double s;
+        if ((rc = lt_quantity(ctx, "ies", "--step", t->step, LX_Q_ANGLE, "deg", 0, &s))) return rc;
+        m->step_deg = s / LT_DEG;
+    }
+    return CLI_OK;
+}
+
+/* --model: the model luminaire written to --write (no FILE may be given); the exit code. */
+static int write_model(lx_ctx *ctx, const char *write, int has_files, const model_args *t, lx_lum_model *m)
+{
+    if (!write) {
+        cli_error("ies", "--model needs --write OUT.ies");
+        return CLI_USAGE;
+    }
+    if (has_files) {
+        cli_error("ies", "give either FILE or --model, not both");
+        return CLI_USAGE;
+    }
+    int rc = model_params(ctx, t, m);
+    if (rc) return rc;
+    lx_luminaire *l = NULL;
+    lx_status st = lx_luminaire_from_model(ctx, m, &l);
+    if (st) return cli_fail("ies", ctx, st);
+    rc = write_ies(ctx, l, write);
+    lx_luminaire_free(l);
+    return rc;
+}
+
+/* --write with FILE: the one file (nfiles of them given) converted to IES; the exit code. */
+static int convert_one(lx_ctx *ctx, int nfiles, const char *file, const char *write)
+{
+    if (nfiles != 1) {
+        cli_error("ies", "--write converts exactly one FILE");
+        return CLI_USAGE;
+    }
+    lx_luminaire *l = NULL;
+    lx_status st = lx_luminaire_read_file(ctx, file, &l);
+    if (st) return cli_fail("ies", ctx, st);
+    int rc = write_ies(ctx, l, write);
+    lx_luminaire_free(l);
+    return rc;
+}
+
 int cmd_ies(int argc, char **argv)
 {
     static const struct option opts[] = {
@@ -154,8 +240,8 @@ int cmd_ies(int argc, char **argv)
         {NULL, 0, NULL, 0},
     };
     cli_format fmt = CLI_FMT_TABLE;
-    const char *outpath = NULL, *write = NULL, *model = NULL;
-    const char *flux_t = NULL, *exp_t = NULL, *beam_t = NULL, *w_t = NULL, *l_t = NULL, *step_t = NULL;
+    const char *outpath = NULL, *write = NULL;
+    model_args t = {0};
     lx_lum_model m = {0};
     int c;
     optind = 1;
@@ -166,13 +252,13 @@ int cmd_ies(int argc, char **argv)
             break;
         case 'o': outpath = optarg; break;
         case 'w': write = optarg; break;
-        case 'm': model = optarg; break;
-        case 'F': flux_t = optarg; break;
-        case 'S': exp_t = optarg; break;
-        case 'B': beam_t = optarg; break;
-        case 'W': w_t = optarg; break;
-        case 'L': l_t = optarg; break;
-        case 's': step_t = optarg; break;
+        case 'm': t.model = optarg; break;
+        case 'F': t.flux = optarg; break;
+        case 'S': t.exp = optarg; break;
+        case 'B': t.beam = optarg; break;
+        case 'W': t.w = optarg; break;
+        case 'L': t.l = optarg; break;
+        case 's': t.step = optarg; break;
         case 'c': m.catalog = optarg; break;
         case 'h': cli_print_help(help); return CLI_OK;
         default: return cli_bad_option("ies", argv, c);
@@ -185,89 +271,13 @@ int cmd_ies(int argc, char **argv)
     }
     lx_ctx *ctx = cli_ctx("ies");
     if (!ctx) return CLI_RUNTIME;
-    int rc = CLI_OK;
-    if (model) {
-        if (!write) {
-            cli_error("ies", "--model needs --write OUT.ies");
-            rc = CLI_USAGE;
-            goto done;
-        }
-        if (optind < argc) {
-            cli_error("ies", "give either FILE or --model, not both");
-            rc = CLI_USAGE;
-            goto done;
-        }
-        if (!strcmp(model, "point")) m.kind = LX_LUM_MODEL_POINT;
-        else if (!strcmp(model, "warn")) m.kind = LX_LUM_MODEL_WARN;
-        else if (!strcmp(model, "lambert")) m.kind = LX_LUM_MODEL_LAMBERT;
-        else {
-            cli_error("ies", "--model: unknown model '%s' (point, warn or lambert)", model);
-            rc = CLI_USAGE;
-            goto done;
-        }
-        if (!flux_t) {
-            cli_error("ies", "--model needs --flux");
-            rc = CLI_USAGE;
-            goto done;
-        }
-        if ((rc = lt_quantity(ctx, "ies", "--flux", flux_t, LX_Q_LUMINOUS_FLUX, NULL, 0, &m.flux_lm))) goto done;
-        if (m.kind == LX_LUM_MODEL_WARN) {
-            if (!!exp_t == !!beam_t) {
-                cli_error("ies", "--model warn needs one of --exponent or --beam");
-                rc = CLI_USAGE;
-                goto done;
-            }
-            if (exp_t && (rc = lt_quantity(ctx, "ies", "--exponent", exp_t, LX_Q_NONE, NULL, 0, &m.exponent))) goto done;
-            if (beam_t) {
-                double b;
-                if ((rc = lt_quantity(ctx, "ies", "--beam", beam_t, LX_Q_ANGLE, "deg", 0, &b))) goto done;
-                lx_status st = lx_warn_exponent_from_beam(ctx, b, &m.exponent);
-                if (st) {
-                    rc = cli_fail("ies", ctx, st);
-                    goto done;
-                }
-            }
-        }
-        if (w_t && (rc = lt_quantity(ctx, "ies", "--width", w_t, LX_Q_LENGTH, NULL, 0, &m.width_m))) goto done;
-        if (l_t && (rc = lt_quantity(ctx, "ies", "--length", l_t, LX_Q_LENGTH, NULL, 0, &m.length_m))) goto done;
-        if (step_t) {
-            double s;
-            if ((rc = lt_quantity(ctx, "ies", "--step", step_t, LX_Q_ANGLE, "deg", 0, &s))) goto done;
-            m.step_deg = s / LT_DEG;
-        }
-        lx_luminaire *l = NULL;
-        lx_status st = lx_luminaire_from_model(ctx, &m, &l);
-        if (st) {
-            rc = cli_fail("ies", ctx, st);
-            goto done;
-        }
-        rc = write_ies(ctx, l, write);
-        lx_luminaire_free(l);
-        goto done;
-    }
-    if (optind >= argc) {
+    int rc;
+    if (t.model) rc = write_model(ctx, write, optind < argc, &t, &m);
+    else if (optind >= argc) {
         cli_error("ies", "no FILE given (luxcalc ies --help)");
         rc = CLI_USAGE;
-        goto done;
-    }
-    if (write) {
-        if (argc - optind != 1) {
-            cli_error("ies", "--write converts exactly one FILE");
-            rc = CLI_USAGE;
-            goto done;
-        }
-        lx_luminaire *l = NULL;
-        lx_status st = lx_luminaire_read_file(ctx, argv[optind], &l);
-        if (st) {
-            rc = cli_fail("ies", ctx, st);
-            goto done;
-        }
-        rc = write_ies(ctx, l, write);
-        lx_luminaire_free(l);
-        goto done;
-    }
-    rc = summaries(ctx, optind, argc, argv, fmt, outpath);
-done:
+    } else if (write) rc = convert_one(ctx, argc - optind, argv[optind], write);
+    else rc = summaries(ctx, optind, argc, argv, fmt, outpath);
     lx_ctx_destroy(ctx);
     return rc;
 }

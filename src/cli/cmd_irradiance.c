@@ -127,7 +127,18 @@ static double y_of(const lx_envmap *m, const double *e)
     return m->channels == 3 ? m->y_weights[0] * e[0] + m->y_weights[1] * e[1] + m->y_weights[2] * e[2] : e[0];
 }
 
-int cmd_irradiance(int argc, char **argv)
+/* The command line of `irradiance`, parsed by parse_opts. */
+typedef struct {
+    const char *out, *png, *normal, *units, *eff;
+    lx_irr_opts io;
+    int W, H, half, fmt;
+    lx_plot_scale scale;
+} irr_args;
+
+static const char *mname[4] = {"sh9", "brute", "fast", "auto"};
+
+/* The options into *a: -1 to go on, else the exit code (a usage error, or CLI_OK after --help). */
+static int parse_opts(const char *cmd, int argc, char **argv, irr_args *a)
 {
     static const struct option opts[] = {
         {"method", required_argument, 0, 'm'}, {"size", required_argument, 0, 's'},
@@ -138,33 +149,30 @@ int cmd_irradiance(int argc, char **argv)
         {"units", required_argument, 0, 'u'}, {"efficacy", required_argument, 0, 'K'},
         {"format", required_argument, 0, 'f'}, {"output", required_argument, 0, 'o'},
         {"help", no_argument, 0, 'h'},        {0, 0, 0, 0}};
-    const char *cmd = "irradiance", *out = NULL, *png = NULL, *normal = NULL, *units = NULL, *eff = NULL;
-    lx_irr_opts io = {.method = LX_IRR_AUTO};
-    int W = 0, H = 0, half = 0, c, fmt = CLI_FMT_TABLE;
-    lx_plot_scale scale = LX_PLOT_SCALE_LOG;
+    int c;
     optind = 1;
     opterr = 0;
     while ((c = getopt_long(argc, argv, ":o:h", opts, NULL)) != -1) {
         switch (c) {
         case 'm':
-            if (!strcmp(optarg, "sh9")) io.method = LX_IRR_SH9;
-            else if (!strcmp(optarg, "brute")) io.method = LX_IRR_BRUTE;
-            else if (!strcmp(optarg, "fast")) io.method = LX_IRR_FAST;
-            else if (!strcmp(optarg, "auto")) io.method = LX_IRR_AUTO;
+            if (!strcmp(optarg, "sh9")) a->io.method = LX_IRR_SH9;
+            else if (!strcmp(optarg, "brute")) a->io.method = LX_IRR_BRUTE;
+            else if (!strcmp(optarg, "fast")) a->io.method = LX_IRR_FAST;
+            else if (!strcmp(optarg, "auto")) a->io.method = LX_IRR_AUTO;
             else return cli_error(cmd, "--method: '%s' is not auto, fast, sh9 or brute", optarg), CLI_USAGE;
             break;
         case 's':
-            if (parse_size(optarg, &W, &H)) return cli_error(cmd, "--size: '%s' is not WxH", optarg), CLI_USAGE;
+            if (parse_size(optarg, &a->W, &a->H)) return cli_error(cmd, "--size: '%s' is not WxH", optarg), CLI_USAGE;
             break;
         case 'W':
-            if (!strcmp(optarg, "none")) io.window = LX_SH9_WINDOW_NONE;
-            else if (!strcmp(optarg, "nonneg")) io.window = LX_SH9_WINDOW_NONNEG;
+            if (!strcmp(optarg, "none")) a->io.window = LX_SH9_WINDOW_NONE;
+            else if (!strcmp(optarg, "nonneg")) a->io.window = LX_SH9_WINDOW_NONNEG;
             else return cli_error(cmd, "--window: '%s' is not none or nonneg", optarg), CLI_USAGE;
             break;
         case 'b': {
             lx_ctx *tmp = cli_ctx(cmd);
             if (!tmp) return CLI_RUNTIME;
-            lx_status st = lx_backend_parse(tmp, optarg, &io.backend);
+            lx_status st = lx_backend_parse(tmp, optarg, &a->io.backend);
             lx_ctx_destroy(tmp);
             if (st) return cli_error(cmd, "--backend: '%s' is not auto, cpu or opencl", optarg), CLI_USAGE;
             break;
@@ -173,31 +181,35 @@ int cmd_irradiance(int argc, char **argv)
             char *end;
             long v = strtol(optarg, &end, 10);
             if (*end || v < 0 || v > 64) return cli_error(cmd, "--threads: '%s' is not 0..64", optarg), CLI_USAGE;
-            io.threads = (int)v;
+            a->io.threads = (int)v;
             break;
         }
-        case 'H': half = 1; break;
-        case 'p': png = optarg; break;
+        case 'H': a->half = 1; break;
+        case 'p': a->png = optarg; break;
         case 'S':
-            if (!strcmp(optarg, "log")) scale = LX_PLOT_SCALE_LOG;
-            else if (!strcmp(optarg, "linear")) scale = LX_PLOT_SCALE_LINEAR;
+            if (!strcmp(optarg, "log")) a->scale = LX_PLOT_SCALE_LOG;
+            else if (!strcmp(optarg, "linear")) a->scale = LX_PLOT_SCALE_LINEAR;
             else return cli_error(cmd, "--scale: '%s' is not log or linear", optarg), CLI_USAGE;
             break;
-        case 'n': normal = optarg; break;
-        case 'u': units = optarg; break;
-        case 'K': eff = optarg; break;
+        case 'n': a->normal = optarg; break;
+        case 'u': a->units = optarg; break;
+        case 'K': a->eff = optarg; break;
         case 'f':
-            fmt = cli_format_parse(optarg);
-            if (fmt < 0) return cli_error(cmd, "--format: '%s' is not table, csv or json", optarg), CLI_USAGE;
+            a->fmt = cli_format_parse(optarg);
+            if (a->fmt < 0) return cli_error(cmd, "--format: '%s' is not table, csv or json", optarg), CLI_USAGE;
             break;
-        case 'o': out = optarg; break;
+        case 'o': a->out = optarg; break;
         case 'h': cli_print_help(help); return CLI_OK;
         default: return cli_bad_option(cmd, argv, c);
         }
     }
-    if (optind + 1 != argc) return cli_error(cmd, "give exactly one input map (see --help)"), CLI_USAGE;
-    const char *in = argv[optind];
-    double n[3] = {0, 0, 0}; /* "X,Y" leaves n[2] unparsed: the checks below read it */
+    return -1;
+}
+
+/* --normal into n, or (without it) the checks on -o: -1 to go on, else CLI_USAGE. */
+static int check_target(const char *cmd, const irr_args *a, double n[3])
+{
+    const char *normal = a->normal, *out = a->out;
     if (normal) {
         char *end;
         n[0] = strtod(normal, &end);
@@ -214,71 +226,102 @@ int cmd_irradiance(int argc, char **argv)
             if (ol >= strlen(pics[k]) && !strcmp(out + ol - strlen(pics[k]), pics[k]))
                 return cli_error(cmd, "-o %s: OUT is written as OpenEXR; name it .exr (a picture: --png FILE)", out), CLI_USAGE;
     }
+    return -1;
+}
+
+/* --normal: the one row for normal n, written to -o or stdout; the exit code. */
+static int one_normal(lx_ctx *ctx, const char *cmd, const lx_envmap *m, const irr_args *a, const double n[3])
+{
+    double E[3];
+    lx_status st = lx_irradiance_dirs(ctx, m, 1, n, &a->io, E);
+    if (st) return cli_fail(cmd, ctx, st);
+    int rc = 0;
+    double l = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]), Y = y_of(m, E);
+    static const char *const names[] = {"nx", "ny", "nz", "irradiance", "illuminance_lx", "method",
+                                        "irradiance_r", "irradiance_g", "irradiance_b"};
+    static const char *const unit_r[] = {"", "", "", "W/m2", "lx", "", "W/m2", "W/m2", "W/m2"};
+    cli_table *t = cli_table_new(m->channels == 3 ? 9 : 6, names, unit_r);
+    for (int k = 0; k < 3; k++) cli_table_num(t, n[k] / l);
+    cli_table_num(t, Y);
+    cli_table_num(t, Y * m->lum_per_unit);
+    cli_table_str(t, mname[lx_ctx_irradiance_method(ctx, NULL)]);
+    if (m->channels == 3)
+        for (int k = 0; k < 3; k++) cli_table_num(t, E[k]);
+    cli_output o;
+    if (cli_output_open(&o, a->out, cmd)) rc = CLI_INPUT;
+    else {
+        int bad = cli_table_write(t, (cli_format)a->fmt, o.fp, 0);
+        if (cli_output_close(&o, !bad, cmd) || bad) rc = CLI_RUNTIME;
+    }
+    cli_table_free(t);
+    sh9_notes(ctx, cmd, m, &a->io, Y < 0 ? Y * m->lum_per_unit : 0, Y < 0, 1);
+    return rc;
+}
+
+/* After an SH9 map e of m: its negative outputs (how many, the most negative illuminance) to sh9_notes. */
+static void sh9_map_notes(lx_ctx *ctx, const char *cmd, const lx_envmap *m, const lx_envmap *e, const lx_irr_opts *io)
+{
+    size_t n_out = (size_t)e->width * e->height, n_neg = 0;
+    double neg = 0;
+    for (size_t k = 0; k < n_out; k++) {
+        double v[3] = {0, 0, 0};
+        for (int c = 0; c < e->channels; c++) v[c] = e->data[k * e->channels + c];
+        double y = y_of(e, v) * e->lum_per_unit;
+        if (y < 0) n_neg++, neg = y < neg ? y : neg;
+    }
+    sh9_notes(ctx, cmd, m, io, neg, n_neg, n_out);
+}
+
+/* The irradiance map of m into *e, written to -o (and --png); the exit code. */
+static int irr_map(lx_ctx *ctx, const char *cmd, const lx_envmap *m, const irr_args *a, lx_envmap **e)
+{
+    int W = a->W, H = a->H;
+    const lx_irr_opts *io = &a->io;
+    if (W == 0 && (double)m->width * m->height * m->width * m->height > 4e10 && io->method == LX_IRR_BRUTE &&
+        io->backend != LX_BACKEND_OPENCL)
+        cli_error(cmd, "warning: brute force %dx%d -> %dx%d is %.2g pixel pairs; consider --size or --method fast",
+                  m->width, m->height, m->width, m->height, (double)m->width * m->height * m->width * m->height);
+    struct timespec t0, t1;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    lx_status st = lx_irradiance_map(ctx, m, W, H, io, e);
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    lx_exr_write_opts wo = {.half = a->half};
+    if (!st) st = lx_envmap_write_exr(ctx, a->out, *e, &wo);
+    lx_irr_method ran = lx_ctx_irradiance_method(ctx, NULL);
+    if (!st && ran == LX_IRR_SH9) sh9_map_notes(ctx, cmd, m, *e, io);
+    if (!st && a->png) {
+        st = lx_irradiance_write_png(ctx, a->png, m, *e, mname[ran], a->scale);
+    }
+    if (st) return cli_fail(cmd, ctx, st);
+    if (cli_verbose)
+        fprintf(stderr, "luxcalc: irradiance: %s %dx%d -> %dx%d in %.3f s (%s)\n", mname[ran], m->width,
+                m->height, (*e)->width, (*e)->height, (t1.tv_sec - t0.tv_sec) + 1e-9 * (t1.tv_nsec - t0.tv_nsec),
+                lx_ctx_backend_used(ctx) == LX_BACKEND_OPENCL ? "opencl" : "cpu");
+    return 0;
+}
+
+int cmd_irradiance(int argc, char **argv)
+{
+    const char *cmd = "irradiance";
+    irr_args a = {.io = {.method = LX_IRR_AUTO}, .fmt = CLI_FMT_TABLE, .scale = LX_PLOT_SCALE_LOG};
+    int rc = parse_opts(cmd, argc, argv, &a);
+    if (rc >= 0) return rc;
+    if (optind + 1 != argc) return cli_error(cmd, "give exactly one input map (see --help)"), CLI_USAGE;
+    const char *in = argv[optind];
+    double n[3] = {0, 0, 0}; /* "X,Y" leaves n[2] unparsed: the checks below read it */
+    if ((rc = check_target(cmd, &a, n)) >= 0) return rc;
     lx_ctx *ctx = cli_ctx(cmd);
     if (!ctx) return CLI_RUNTIME;
     lx_envmap *m = NULL, *e = NULL;
     lx_status st = lx_exr_read_any(ctx, in, &m);
-    int rc = st ? cli_fail(cmd, ctx, st) : cli_envmap_units(cmd, m, units, eff);
-    static const char *mname[4] = {"sh9", "brute", "fast", "auto"};
-    if (!rc && normal) {
-        double E[3];
-        st = lx_irradiance_dirs(ctx, m, 1, n, &io, E);
-        if (st) rc = cli_fail(cmd, ctx, st);
-        else {
-            double l = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]), Y = y_of(m, E);
-            static const char *const names[] = {"nx", "ny", "nz", "irradiance", "illuminance_lx", "method",
-                                                "irradiance_r", "irradiance_g", "irradiance_b"};
-            static const char *const unit_r[] = {"", "", "", "W/m2", "lx", "", "W/m2", "W/m2", "W/m2"};
-            cli_table *t = cli_table_new(m->channels == 3 ? 9 : 6, names, unit_r);
-            for (int k = 0; k < 3; k++) cli_table_num(t, n[k] / l);
-            cli_table_num(t, Y);
-            cli_table_num(t, Y * m->lum_per_unit);
-            cli_table_str(t, mname[lx_ctx_irradiance_method(ctx, NULL)]);
-            if (m->channels == 3)
-                for (int k = 0; k < 3; k++) cli_table_num(t, E[k]);
-            cli_output o;
-            if (cli_output_open(&o, out, cmd)) rc = CLI_INPUT;
-            else {
-                int bad = cli_table_write(t, (cli_format)fmt, o.fp, 0);
-                if (cli_output_close(&o, !bad, cmd) || bad) rc = CLI_RUNTIME;
-            }
-            cli_table_free(t);
-            sh9_notes(ctx, cmd, m, &io, Y < 0 ? Y * m->lum_per_unit : 0, Y < 0, 1);
-        }
-    } else if (!rc && m->layout == LX_ENV_CUBE && W && H != 6 * W) {
-        cli_error(cmd, "--size: %dx%d: the input is a cube map, give N x 6N", W, H);
+    rc = st ? cli_fail(cmd, ctx, st) : cli_envmap_units(cmd, m, a.units, a.eff);
+    if (!rc && a.normal) {
+        rc = one_normal(ctx, cmd, m, &a, n);
+    } else if (!rc && m->layout == LX_ENV_CUBE && a.W && a.H != 6 * a.W) {
+        cli_error(cmd, "--size: %dx%d: the input is a cube map, give N x 6N", a.W, a.H);
         rc = CLI_USAGE;
     } else if (!rc) {
-        if (W == 0 && (double)m->width * m->height * m->width * m->height > 4e10 && io.method == LX_IRR_BRUTE &&
-            io.backend != LX_BACKEND_OPENCL)
-            cli_error(cmd, "warning: brute force %dx%d -> %dx%d is %.2g pixel pairs; consider --size or --method fast",
-                      m->width, m->height, m->width, m->height, (double)m->width * m->height * m->width * m->height);
-        struct timespec t0, t1;
-        clock_gettime(CLOCK_MONOTONIC, &t0);
-        st = lx_irradiance_map(ctx, m, W, H, &io, &e);
-        clock_gettime(CLOCK_MONOTONIC, &t1);
-        lx_exr_write_opts wo = {.half = half};
-        if (!st) st = lx_envmap_write_exr(ctx, out, e, &wo);
-        lx_irr_method ran = lx_ctx_irradiance_method(ctx, NULL);
-        if (!st && ran == LX_IRR_SH9) {
-            size_t n_out = (size_t)e->width * e->height, n_neg = 0;
-            double neg = 0;
-            for (size_t k = 0; k < n_out; k++) {
-                double v[3] = {0, 0, 0};
-                for (int c = 0; c < e->channels; c++) v[c] = e->data[k * e->channels + c];
-                double y = y_of(e, v) * e->lum_per_unit;
-                if (y < 0) n_neg++, neg = y < neg ? y : neg;
-            }
-            sh9_notes(ctx, cmd, m, &io, neg, n_neg, n_out);
-        }
-        if (!st && png) {
-            st = lx_irradiance_write_png(ctx, png, m, e, mname[ran], scale);
-        }
-        if (st) rc = cli_fail(cmd, ctx, st);
-        else if (cli_verbose)
-            fprintf(stderr, "luxcalc: irradiance: %s %dx%d -> %dx%d in %.3f s (%s)\n", mname[ran], m->width,
-                    m->height, e->width, e->height, (t1.tv_sec - t0.tv_sec) + 1e-9 * (t1.tv_nsec - t0.tv_nsec),
-                    lx_ctx_backend_used(ctx) == LX_BACKEND_OPENCL ? "opencl" : "cpu");
+        rc = irr_map(ctx, cmd, m, &a, &e);
     }
     lx_envmap_free(e);
     lx_envmap_free(m);

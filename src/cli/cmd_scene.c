@@ -356,130 +356,163 @@ static void df_stats(const lx_scene_result *res, size_t a, size_t b, double out[
     free(v);
 }
 
+/* What the result table holds: summary rows (table) or one row per point, and which optional columns. */
+typedef struct {
+    int table, sky, day, df, contrib;
+} res_cols;
+
+/* The column names and units being collected for the result table. */
+typedef struct {
+    char **names, **units;
+    size_t nn;
+} col_list;
+
+#define COL(n, u) (c->names[c->nn] = strdup(n), c->units[c->nn] = strdup(u), c->nn++)
+
+/* The columns of the summary table: one row per receiver. */
+static void summary_columns(const lx_scene *sc, const lx_scene_result *res, const res_cols *w, col_list *c)
+{
+    COL("points", "");
+    COL("illuminance_avg_lx", "lx");
+    COL("illuminance_min_lx", "lx");
+    COL("illuminance_max_lx", "lx");
+    COL("uniformity_u0", "");
+    COL("uniformity_min_max", "");
+    if (res->indirect_lx) COL("indirect_avg_lx", "lx");
+    if (w->day) COL("daylight_avg_lx", "lx");
+    if (w->df) COL("daylight_factor_avg", "%"), COL("daylight_factor_min", "%"), COL("daylight_factor_median", "%");
+    if (sc->want_luminance) COL("luminance_avg_cd_m2", "cd/m2");
+    if (sc->want_cct) COL("cct_avg_K", "K");
+    if (sc->want_melanopic) COL("melanopic_edi_avg_lx", "lx");
+    if (w->contrib) {
+        for (size_t l = 0; l < sc->n_lum; l++) {
+            char b[300];
+            snprintf(b, sizeof b, "E_%s_avg_lx", sc->lum[l].name);
+            COL(b, "lx");
+        }
+        if (w->sky) COL("E_sky_avg_lx", "lx");
+    }
+}
+
+/* The columns of the point table (csv, json): one row per receiver point. */
+static void point_columns(const lx_scene *sc, const lx_scene_result *res, const res_cols *w, col_list *c)
+{
+    COL("x", "m");
+    COL("y", "m");
+    COL("z", "m");
+    COL("illuminance_lx", "lx");
+    if (res->indirect_lx) COL("direct_lx", "lx"), COL("indirect_lx", "lx");
+    if (w->day) COL("daylight_lx", "lx");
+    if (w->df)
+        COL("daylight_factor", "%"), COL("sky_component", "%"), COL("externally_reflected", "%"),
+            COL("internally_reflected", "%");
+    if (sc->want_luminance) COL("luminance_cd_m2", "cd/m2");
+    if (sc->want_cct) COL("cct_K", "K"), COL("duv", "");
+    if (sc->want_melanopic) COL("melanopic_edi_lx", "lx");
+    if (w->contrib) {
+        for (size_t l = 0; l < sc->n_lum; l++) {
+            char b[300];
+            snprintf(b, sizeof b, "E_%s_lx", sc->lum[l].name);
+            COL(b, "lx");
+        }
+        if (w->sky) COL("E_sky_lx", "lx");
+    }
+}
+
+#undef COL
+
+/* Receiver r's summary row: its points' mean, minimum, maximum, uniformities and optional means. */
+static void summary_row(cli_table *t, const lx_scene *sc, const lx_scene_result *res, const res_cols *w, size_t r)
+{
+    size_t a = res->first[r], b = res->first[r + 1];
+    double sum = 0, mn = INFINITY, mx = -INFINITY, ls = 0, cs = 0, ms = 0, is = 0, ds = 0;
+    size_t cn = 0;
+    for (size_t g = a; g < b; g++) {
+        double e = res->E_lx[g];
+        sum += e;
+        if (res->indirect_lx) is += res->indirect_lx[g];
+        if (w->day) ds += res->daylight_lx[g];
+        mn = e < mn ? e : mn;
+        mx = e > mx ? e : mx;
+        ls += res->L_cd_m2[g];
+        ms += res->melanopic_edi_lx[g];
+        if (isfinite(res->cct_K[g])) cs += res->cct_K[g], cn++;
+    }
+    double n = (double)(b - a), avg = sum / n;
+    if (!isfinite(avg)) { /* finite values whose sum overflows: the mean of e / n instead */
+        avg = 0;
+        for (size_t g = a; g < b; g++) avg += res->E_lx[g] / n;
+    }
+    cli_table_str(t, sc->rec[r].name);
+    cli_table_int(t, (long long)(b - a));
+    cli_table_num(t, avg);
+    cli_table_num(t, mn);
+    cli_table_num(t, mx);
+    cli_table_num(t, avg > 0 ? mn / avg : NAN);
+    cli_table_num(t, mx > 0 ? mn / mx : NAN);
+    if (res->indirect_lx) cli_table_num(t, is / n);
+    if (w->day) cli_table_num(t, ds / n);
+    if (w->df) {
+        double st3[3];
+        df_stats(res, a, b, st3);
+        for (int k = 0; k < 3; k++) cli_table_num(t, st3[k]);
+    }
+    if (sc->want_luminance) cli_table_num(t, ls / n);
+    if (sc->want_cct) cli_table_num(t, cn == b - a ? cs / (double)cn : NAN);
+    if (sc->want_melanopic) cli_table_num(t, ms / n);
+    for (size_t l = 0; w->contrib && l < sc->n_lum + (size_t)w->sky; l++) {
+        double c = 0;
+        for (size_t g = a; g < b; g++) c += res->contrib_lx[g * (sc->n_lum + 1) + l];
+        cli_table_num(t, c / n);
+    }
+}
+
+/* Receiver r's points, one row each. */
+static void point_rows(cli_table *t, const lx_scene *sc, const lx_scene_result *res, const res_cols *w, size_t r)
+{
+    size_t a = res->first[r], b = res->first[r + 1];
+    for (size_t g = a; g < b; g++) {
+        const double *q = sc->rec[r].points + 3 * (g - a);
+        cli_table_str(t, sc->rec[r].name);
+        for (int k = 0; k < 3; k++) cli_table_num(t, q[k]);
+        cli_table_num(t, res->E_lx[g]);
+        if (res->indirect_lx) cli_table_num(t, res->direct_lx[g]), cli_table_num(t, res->indirect_lx[g]);
+        if (w->day) cli_table_num(t, res->daylight_lx[g]);
+        if (w->df) {
+            cli_table_num(t, res->daylight_factor[g]);
+            cli_table_num(t, res->sky_component[g]);
+            cli_table_num(t, res->externally_reflected[g]);
+            cli_table_num(t, res->internally_reflected[g]);
+        }
+        if (sc->want_luminance) cli_table_num(t, res->L_cd_m2[g]);
+        if (sc->want_cct) cli_table_num(t, res->cct_K[g]), cli_table_num(t, res->duv[g]);
+        if (sc->want_melanopic) cli_table_num(t, res->melanopic_edi_lx[g]);
+        if (w->contrib)
+            for (size_t l = 0; l < sc->n_lum + (size_t)w->sky; l++) cli_table_num(t, res->contrib_lx[g * (sc->n_lum + 1) + l]);
+    }
+}
+
 static cli_table *results(const lx_scene *sc, const lx_scene_plan *plan, const lx_scene_result *res, cli_format fmt,
                           int contrib, char ***names_out, size_t *n_names)
 {
-    size_t nn = 0, cap = 2 * (24 + sc->n_lum);
+    size_t cap = 2 * (24 + sc->n_lum);
     char **names = calloc(2 * cap, sizeof *names); /* the names, then the units */
     if (!names) return NULL;
-    char **units = names + cap;
-#define COL(n, u) (names[nn] = strdup(n), units[nn] = strdup(u), nn++)
-    int table = fmt == CLI_FMT_TABLE, sky = sc->sky != LX_SKY_NONE, day = res->daylight_lx != NULL,
-        df = day && plan->daylight.df;
-    COL("receiver", "");
-    if (table) {
-        COL("points", "");
-        COL("illuminance_avg_lx", "lx");
-        COL("illuminance_min_lx", "lx");
-        COL("illuminance_max_lx", "lx");
-        COL("uniformity_u0", "");
-        COL("uniformity_min_max", "");
-        if (res->indirect_lx) COL("indirect_avg_lx", "lx");
-        if (day) COL("daylight_avg_lx", "lx");
-        if (df) COL("daylight_factor_avg", "%"), COL("daylight_factor_min", "%"), COL("daylight_factor_median", "%");
-        if (sc->want_luminance) COL("luminance_avg_cd_m2", "cd/m2");
-        if (sc->want_cct) COL("cct_avg_K", "K");
-        if (sc->want_melanopic) COL("melanopic_edi_avg_lx", "lx");
-        if (contrib) {
-            for (size_t l = 0; l < sc->n_lum; l++) {
-                char b[300];
-                snprintf(b, sizeof b, "E_%s_avg_lx", sc->lum[l].name);
-                COL(b, "lx");
-            }
-            if (sky) COL("E_sky_avg_lx", "lx");
-        }
-    } else {
-        COL("x", "m");
-        COL("y", "m");
-        COL("z", "m");
-        COL("illuminance_lx", "lx");
-        if (res->indirect_lx) COL("direct_lx", "lx"), COL("indirect_lx", "lx");
-        if (day) COL("daylight_lx", "lx");
-        if (df)
-            COL("daylight_factor", "%"), COL("sky_component", "%"), COL("externally_reflected", "%"),
-                COL("internally_reflected", "%");
-        if (sc->want_luminance) COL("luminance_cd_m2", "cd/m2");
-        if (sc->want_cct) COL("cct_K", "K"), COL("duv", "");
-        if (sc->want_melanopic) COL("melanopic_edi_lx", "lx");
-        if (contrib) {
-            for (size_t l = 0; l < sc->n_lum; l++) {
-                char b[300];
-                snprintf(b, sizeof b, "E_%s_lx", sc->lum[l].name);
-                COL(b, "lx");
-            }
-            if (sky) COL("E_sky_lx", "lx");
-        }
-    }
-    cli_table *t = cli_table_new((int)nn, (const char *const *)names, (const char *const *)units);
+    col_list c = {names, names + cap, 0};
+    int day = res->daylight_lx != NULL;
+    res_cols w = {fmt == CLI_FMT_TABLE, sc->sky != LX_SKY_NONE, day, day && plan->daylight.df, contrib};
+    c.names[c.nn] = strdup("receiver"), c.units[c.nn] = strdup(""), c.nn++;
+    if (w.table) summary_columns(sc, res, &w, &c);
+    else point_columns(sc, res, &w, &c);
+    cli_table *t = cli_table_new((int)c.nn, (const char *const *)c.names, (const char *const *)c.units);
     if (!t) {
         for (size_t i = 0; i < 2 * cap; i++) free(names[i]);
         free(names);
         return NULL;
     }
     for (size_t r = 0; r < sc->n_rec; r++) {
-        size_t a = res->first[r], b = res->first[r + 1];
-        if (table) {
-            double sum = 0, mn = INFINITY, mx = -INFINITY, ls = 0, cs = 0, ms = 0, is = 0, ds = 0;
-            size_t cn = 0;
-            for (size_t g = a; g < b; g++) {
-                double e = res->E_lx[g];
-                sum += e;
-                if (res->indirect_lx) is += res->indirect_lx[g];
-                if (day) ds += res->daylight_lx[g];
-                mn = e < mn ? e : mn;
-                mx = e > mx ? e : mx;
-                ls += res->L_cd_m2[g];
-                ms += res->melanopic_edi_lx[g];
-                if (isfinite(res->cct_K[g])) cs += res->cct_K[g], cn++;
-            }
-            double n = (double)(b - a), avg = sum / n;
-            if (!isfinite(avg)) { /* finite values whose sum overflows: the mean of e / n instead */
-                avg = 0;
-                for (size_t g = a; g < b; g++) avg += res->E_lx[g] / n;
-            }
-            cli_table_str(t, sc->rec[r].name);
-            cli_table_int(t, (long long)(b - a));
-            cli_table_num(t, avg);
-            cli_table_num(t, mn);
-            cli_table_num(t, mx);
-            cli_table_num(t, avg > 0 ? mn / avg : NAN);
-            cli_table_num(t, mx > 0 ? mn / mx : NAN);
-            if (res->indirect_lx) cli_table_num(t, is / n);
-            if (day) cli_table_num(t, ds / n);
-            if (df) {
-                double st3[3];
-                df_stats(res, a, b, st3);
-                for (int k = 0; k < 3; k++) cli_table_num(t, st3[k]);
-            }
-            if (sc->want_luminance) cli_table_num(t, ls / n);
-            if (sc->want_cct) cli_table_num(t, cn == b - a ? cs / (double)cn : NAN);
-            if (sc->want_melanopic) cli_table_num(t, ms / n);
-            for (size_t l = 0; contrib && l < sc->n_lum + (size_t)sky; l++) {
-                double c = 0;
-                for (size_t g = a; g < b; g++) c += res->contrib_lx[g * (sc->n_lum + 1) + l];
-                cli_table_num(t, c / n);
-            }
-            continue;
-        }
-        for (size_t g = a; g < b; g++) {
-            const double *q = sc->rec[r].points + 3 * (g - a);
-            cli_table_str(t, sc->rec[r].name);
-            for (int k = 0; k < 3; k++) cli_table_num(t, q[k]);
-            cli_table_num(t, res->E_lx[g]);
-            if (res->indirect_lx) cli_table_num(t, res->direct_lx[g]), cli_table_num(t, res->indirect_lx[g]);
-            if (day) cli_table_num(t, res->daylight_lx[g]);
-            if (df) {
-                cli_table_num(t, res->daylight_factor[g]);
-                cli_table_num(t, res->sky_component[g]);
-                cli_table_num(t, res->externally_reflected[g]);
-                cli_table_num(t, res->internally_reflected[g]);
-            }
-            if (sc->want_luminance) cli_table_num(t, res->L_cd_m2[g]);
-            if (sc->want_cct) cli_table_num(t, res->cct_K[g]), cli_table_num(t, res->duv[g]);
-            if (sc->want_melanopic) cli_table_num(t, res->melanopic_edi_lx[g]);
-            if (contrib)
-                for (size_t l = 0; l < sc->n_lum + (size_t)sky; l++) cli_table_num(t, res->contrib_lx[g * (sc->n_lum + 1) + l]);
-        }
+        if (w.table) summary_row(t, sc, res, &w, r);
+        else point_rows(t, sc, res, &w, r);
     }
     *names_out = names;
     *n_names = 2 * cap;

@@ -269,12 +269,14 @@ static void srgb_matrices(double M[3][3], double Mi[3][3])
         for (int j = 0; j < 3; j++) Mi[i][j] /= det;
 }
 
-int acc_spectra(lx_ctx *ctx, FILE *o, const char *png)
+/* The six spectra and their references: the CIE tables D65, FL2, HP1 (exact on the table), a 532
+ * nm laser line and the Na D doublet (analytic), a 1000 K blackbody sampled every 5 nm (Planck at
+ * 0.01 nm, exact). Loads the CMFs first. A CLI exit code. */
+static int make_cases(lx_ctx *ctx, scase cs[NCASE])
 {
     for (int k = 0; k < 3; k++)
         if (lx_function_get(ctx, (lx_function)(LX_FN_XBAR_2 + k), &cmf[k])) return cli_fail("bench", ctx, LX_EINVAL);
-    scase cs[NCASE];
-    memset(cs, 0, sizeof cs);
+    memset(cs, 0, NCASE * sizeof *cs);
     const char *tab[3] = {"D65", "FL2", "HP1"}, *kinds[3] = {"smooth", "spiky", "spiky"};
     for (int i = 0; i < 3; i++) {
         cs[i].name = tab[i];
@@ -325,104 +327,152 @@ int acc_spectra(lx_ctx *ctx, FILE *o, const char *png)
         B->native = (lx_spd){"bb", n, B->own_l, B->own_v};
     }
     B->ref_how = "Planck 0.01 nm, exact";
+    return CLI_OK;
+}
 
-    /* ---- the methods ---- */
-    enum { NM = 14 };
-    static const char *mname[NM] = {"exact (native data)", "linear1nm (native data)", "cie15 1 nm", "cie15 5 nm",
-                                    "cie15 10 nm", "cie15 20 nm", "pbrt-v3 60 bins (5 nm)", "pbrt 30 bins (10 nm)",
-                                    "batch CPU double", "batch CPU float", "batch OpenCL double", "batch OpenCL float",
-                                    "batch OpenCL float, Kahan float sums", "RGB (3 coefficients)"};
-    static const char *mlabel[NM] = {"exact", "linear1nm", "cie15 1 nm", "cie15 5 nm", "cie15 10 nm", "cie15 20 nm", "pbrt 60 bins",
-                                     "pbrt 30 bins", "batch CPU f64", "batch CPU f32", "batch CL f64", "batch CL f32", "CL f32 Kahan", "RGB"};
+/* ---- the methods ---- */
+enum { NM = 14, NB = 2000 };
+static const char *mname[NM] = {"exact (native data)", "linear1nm (native data)", "cie15 1 nm", "cie15 5 nm",
+                                "cie15 10 nm", "cie15 20 nm", "pbrt-v3 60 bins (5 nm)", "pbrt 30 bins (10 nm)",
+                                "batch CPU double", "batch CPU float", "batch OpenCL double", "batch OpenCL float",
+                                "batch OpenCL float, Kahan float sums", "RGB (3 coefficients)"};
+static const char *mlabel[NM] = {"exact", "linear1nm", "cie15 1 nm", "cie15 5 nm", "cie15 10 nm", "cie15 20 nm", "pbrt 60 bins",
+                                 "pbrt 30 bins", "batch CPU f64", "batch CPU f32", "batch CL f64", "batch CL f32", "CL f32 Kahan", "RGB"};
+
+/* Every method's errors and time on every case (NaN: not run), and whether OpenCL ran. */
+typedef struct {
     double err[NM][NCASE][3], tm[NM][NCASE], vs_cpu[NM][NCASE];
-    for (int m = 0; m < NM; m++)
-        for (int c = 0; c < NCASE; c++) {
-            err[m][c][0] = err[m][c][1] = err[m][c][2] = NAN;
-            tm[m][c] = vs_cpu[m][c] = NAN;
-        }
-    int have_cl = 1;
-    enum { NB = 2000 };
-    for (int c = 0; c < NCASE; c++) {
-        scase *C = &cs[c];
-        double xyz[3];
-        int_job ij = {ctx, &C->native, LX_METHOD_EXACT, {0}};
-        tm[0][c] = acc_time(int_run, &ij, 100000);
-        errors(ctx, C, ij.xyz, err[0][c]);
-        ij.m = LX_METHOD_LINEAR1NM;
-        tm[1][c] = acc_time(int_run, &ij, 100000);
-        errors(ctx, C, ij.xyz, err[1][c]);
-        static const double steps[4] = {1, 5, 10, 20};
-        for (int s = 0; s < 4; s++) {
-            double *l, *v;
-            size_t n = grid_of(C, steps[s], &l, &v);
-            lx_spd g = {"grid", n, l, v};
-            int_job gj = {ctx, &g, LX_METHOD_CIE15, {0}};
-            tm[2 + s][c] = acc_time(int_run, &gj, 100000);
-            errors(ctx, C, gj.xyz, err[2 + s][c]);
-            free(l);
-            free(v);
-        }
-        for (int p = 0; p < 2; p++) {
-            pbrt_job pj;
-            pbrt_init(&pj, p ? 30 : 60);
-            pj.s = &C->native;
-            tm[6 + p][c] = acc_time(pbrt_run, &pj, 100000);
-            errors(ctx, C, pj.xyz, err[6 + p][c]);
-        }
-        /* batch kernels: the 1 nm grid 360-830 (471 samples) repeated NB times */
-        {
-            double *l, *v;
-            size_t n = grid_of(C, 1, &l, &v);
-            double *vd = calloc((size_t)NB * 471, sizeof *vd);
-            float *vf = calloc((size_t)NB * 471, sizeof *vf);
-            double *out = malloc((size_t)NB * 3 * sizeof *out), cpu[3] = {0, 0, 0};
-            size_t j0 = (size_t)nearbyint(l[0] - 360);
-            for (size_t i = 0; i < NB; i++)
-                for (size_t j = 0; j < n; j++) vd[i * 471 + j0 + j] = v[j], vf[i * 471 + j0 + j] = (float)v[j];
-            for (int b = 0; b < 5; b++) {
-                batch_job bj = {ctx, {.n_spectra = NB, .n_lambda = 471, .start_nm = 360, .step_nm = 1}, LX_BACKEND_CPU, 0, out, 0};
-                bj.bt.dtype = (b == 0 || b == 2) ? LX_F64 : LX_F32;
-                bj.bt.values = bj.bt.dtype == LX_F64 ? (const void *)vd : (const void *)vf;
-                bj.be = b < 2 ? LX_BACKEND_CPU : LX_BACKEND_OPENCL;
-                bj.kahan = b == 4;
-                if (b >= 2 && !have_cl) continue;
-                batch_run(&bj);
-                if (!bj.ok) {
-                    if (b >= 2) have_cl = 0;
-                    continue;
-                }
-                double t = acc_time(batch_run, &bj, 50) / NB;
-                double worst = 0;
-                for (size_t i = 0; i < NB; i++)
-                    for (int k = 0; k < 3; k++) {
-                        double d = fabs(out[i * 3 + k] - out[k]);
-                        if (d > worst) worst = d;
-                    }
-                if (b == 0) memcpy(cpu, out, sizeof cpu);
-                tm[8 + b][c] = t;
-                errors(ctx, C, out, err[8 + b][c]);
-                double dv = 0;
-                for (int k = 0; k < 3; k++) dv = fmax(dv, fabs(out[k] - cpu[k]) / fmax(fabs(cpu[1]), 1e-300));
-                vs_cpu[8 + b][c] = fmax(dv, worst / fmax(fabs(cpu[1]), 1e-300));
-            }
-            free(l);
-            free(v);
-            free(vd);
-            free(vf);
-            free(out);
-        }
-        /* the RGB light: linear sRGB from the reference XYZ, and back: lossless for the light itself */
-        {
-            double rgb[3], M[3][3], Mi[3][3];
-            srgb_matrices(M, Mi);
-            rgb_from_xyz(Mi, C->ref, rgb);
-            rgb_from_xyz(M, rgb, xyz);
-            errors(ctx, C, xyz, err[13][c]);
-            tm[13][c] = NAN;
-        }
-    }
+    int have_cl;
+} spec_res;
 
-    /* ---- the tables ---- */
+/* Case c on the batch kernels (rows 8..12): its 1 nm grid 360-830 (471 samples) repeated NB
+ * times, CPU double and float, OpenCL double, float and float with Kahan sums (r->have_cl
+ * cleared when OpenCL fails). */
+static void batch_methods(lx_ctx *ctx, const scase *C, int c, spec_res *r)
+{
+    double *l, *v;
+    size_t n = grid_of(C, 1, &l, &v);
+    double *vd = calloc((size_t)NB * 471, sizeof *vd);
+    float *vf = calloc((size_t)NB * 471, sizeof *vf);
+    double *out = malloc((size_t)NB * 3 * sizeof *out), cpu[3] = {0, 0, 0};
+    size_t j0 = (size_t)nearbyint(l[0] - 360);
+    for (size_t i = 0; i < NB; i++)
+        for (size_t j = 0; j < n; j++) vd[i * 471 + j0 + j] = v[j], vf[i * 471 + j0 + j] = (float)v[j];
+    for (int b = 0; b < 5; b++) {
+        batch_job bj = {ctx, {.n_spectra = NB, .n_lambda = 471, .start_nm = 360, .step_nm = 1}, LX_BACKEND_CPU, 0, out, 0};
+        bj.bt.dtype = (b == 0 || b == 2) ? LX_F64 : LX_F32;
+        bj.bt.values = bj.bt.dtype == LX_F64 ? (const void *)vd : (const void *)vf;
+        bj.be = b < 2 ? LX_BACKEND_CPU : LX_BACKEND_OPENCL;
+        bj.kahan = b == 4;
+        if (b >= 2 && !r->have_cl) continue;
+        batch_run(&bj);
+        if (!bj.ok) {
+            if (b >= 2) r->have_cl = 0;
+            continue;
+        }
+        double t = acc_time(batch_run, &bj, 50) / NB;
+        double worst = 0;
+        for (size_t i = 0; i < NB; i++)
+            for (int k = 0; k < 3; k++) {
+                double d = fabs(out[i * 3 + k] - out[k]);
+                if (d > worst) worst = d;
+            }
+        if (b == 0) memcpy(cpu, out, sizeof cpu);
+        r->tm[8 + b][c] = t;
+        errors(ctx, C, out, r->err[8 + b][c]);
+        double dv = 0;
+        for (int k = 0; k < 3; k++) dv = fmax(dv, fabs(out[k] - cpu[k]) / fmax(fabs(cpu[1]), 1e-300));
+        r->vs_cpu[8 + b][c] = fmax(dv, worst / fmax(fabs(cpu[1]), 1e-300));
+    }
+    free(l);
+    free(v);
+    free(vd);
+    free(vf);
+    free(out);
+}
+
+/* Case c on every method: exact and linear1nm on the native data, cie15 on 1..20 nm grids, pbrt's
+ * bins, the batch kernels, and the RGB light (linear sRGB from the reference XYZ, and back). */
+static void run_methods(lx_ctx *ctx, const scase *C, int c, spec_res *r)
+{
+    double xyz[3];
+    int_job ij = {ctx, &C->native, LX_METHOD_EXACT, {0}};
+    r->tm[0][c] = acc_time(int_run, &ij, 100000);
+    errors(ctx, C, ij.xyz, r->err[0][c]);
+    ij.m = LX_METHOD_LINEAR1NM;
+    r->tm[1][c] = acc_time(int_run, &ij, 100000);
+    errors(ctx, C, ij.xyz, r->err[1][c]);
+    static const double steps[4] = {1, 5, 10, 20};
+    for (int s = 0; s < 4; s++) {
+        double *l, *v;
+        size_t n = grid_of(C, steps[s], &l, &v);
+        lx_spd g = {"grid", n, l, v};
+        int_job gj = {ctx, &g, LX_METHOD_CIE15, {0}};
+        r->tm[2 + s][c] = acc_time(int_run, &gj, 100000);
+        errors(ctx, C, gj.xyz, r->err[2 + s][c]);
+        free(l);
+        free(v);
+    }
+    for (int p = 0; p < 2; p++) {
+        pbrt_job pj;
+        pbrt_init(&pj, p ? 30 : 60);
+        pj.s = &C->native;
+        r->tm[6 + p][c] = acc_time(pbrt_run, &pj, 100000);
+        errors(ctx, C, pj.xyz, r->err[6 + p][c]);
+    }
+    batch_methods(ctx, C, c, r);
+    /* the RGB light: linear sRGB from the reference XYZ, and back: lossless for the light itself */
+    double rgb[3], M[3][3], Mi[3][3];
+    srgb_matrices(M, Mi);
+    rgb_from_xyz(Mi, C->ref, rgb);
+    rgb_from_xyz(M, rgb, xyz);
+    errors(ctx, C, xyz, r->err[13][c]);
+    r->tm[13][c] = NAN;
+}
+
+/* The table of error e (0 |dY|/Y with the float-vs-double column, 1 |dxy|, 2 |dCCT| on the cases
+ * where CCT is defined) for every method. */
+static void error_table(FILE *o, const scase *cs, const spec_res *r, int e)
+{
+    static const char *ename[3] = {"|dY|/Y", "|dxy| (CIE 1931 xy)", "|dCCT| in K (where CCT is defined: |Duv| <= 0.05)"};
+    fprintf(o, "%s:\n\n| method | time |", ename[e]);
+    for (int c = 0; c < NCASE; c++)
+        if (e < 2 || !isnan(r->err[0][c][2]) || c == 0) fprintf(o, " %s |", cs[c].name);
+    fprintf(o, "%s\n|---|---|", e == 0 ? " float vs CPU double (worst, rel. to Y) |" : "");
+    for (int c = 0; c < NCASE; c++)
+        if (e < 2 || !isnan(r->err[0][c][2]) || c == 0) fprintf(o, "---|");
+    fprintf(o, "%s\n", e == 0 ? "---|" : "");
+    for (int m = 0; m < NM; m++) {
+        double ts[NCASE];
+        int nt = 0;
+        for (int c = 0; c < NCASE; c++)
+            if (!isnan(r->tm[m][c])) ts[nt++] = r->tm[m][c];
+        if (m >= 10 && m <= 12 && !r->have_cl) continue;
+        char tb[32], eb[32];
+        if (nt) acc_fmt_time(tb, sizeof tb, acc_median(ts, nt));
+        else snprintf(tb, sizeof tb, "-");
+        fprintf(o, "| %s | %s |", mname[m], tb);
+        for (int c = 0; c < NCASE; c++) {
+            if (!(e < 2 || !isnan(r->err[0][c][2]) || c == 0)) continue;
+            acc_fmt_err(eb, sizeof eb, r->err[m][c][e]);
+            fprintf(o, " %s |", eb);
+        }
+        if (e == 0) {
+            double w = 0;
+            int any = 0;
+            for (int c = 0; c < NCASE; c++)
+                if (!isnan(r->vs_cpu[m][c])) w = fmax(w, r->vs_cpu[m][c]), any = 1;
+            acc_fmt_err(eb, sizeof eb, any ? w : NAN);
+            fprintf(o, " %s |", eb);
+        }
+        fprintf(o, "\n");
+    }
+    fprintf(o, "\n");
+}
+
+/* The section's header, what it measures against which references, and its three error tables. */
+static void spectra_tables(FILE *o, lx_ctx *ctx, const scase *cs, const spec_res *r)
+{
     fprintf(o, "## bench accuracy: spectra\n\n");
     fprintf(o, "Spectra: D65 (smooth), FL2 and HP1 (spiky; CIE tables at 5 nm), a 532 nm laser line (FWHM 0.05 nm), "
                "the Na D doublet (588.995 and 589.592 nm, 2 : 1), a 1000 K blackbody (steep; the data is Planck's law at 5 nm). "
@@ -432,161 +482,166 @@ int acc_spectra(lx_ctx *ctx, FILE *o, const char *png)
                "triangle line against the linearly interpolated CMFs for the lines; Planck's law at 0.01 nm integrated "
                "exactly for the blackbody. `cie15 S nm` sums the data sampled every S nm (5 nm tables: every S/5-th row); "
                "pbrt averages the SPD and the CMFs over equal bins between 400 and 700 nm (pbrt-v3 `SampledSpectrum`: "
-               "`nSpectralSamples = 60`, 5 nm bins; 30 bins of 10 nm as the issue describes, pbrt-v2's choice); "
+               "`nSpectralSamples = 60`, 5 nm bins; and 30 bins of 10 nm, pbrt-v2's `nSpectralSamples = 30`); "
                "batch rows run `lx_batch_integrate` (cie15 rule, 1 nm grid, %d copies; time per spectrum). "
                "Time: median of 5 runs per spectrum (X, Y, Z), median over the spectra.\n\n", NB);
-    static const char *ename[3] = {"|dY|/Y", "|dxy| (CIE 1931 xy)", "|dCCT| in K (where CCT is defined: |Duv| <= 0.05)"};
-    for (int e = 0; e < 3; e++) {
-        fprintf(o, "%s:\n\n| method | time |", ename[e]);
-        for (int c = 0; c < NCASE; c++)
-            if (e < 2 || !isnan(err[0][c][2]) || c == 0) fprintf(o, " %s |", cs[c].name);
-        fprintf(o, "%s\n|---|---|", e == 0 ? " float vs CPU double (worst, rel. to Y) |" : "");
-        for (int c = 0; c < NCASE; c++)
-            if (e < 2 || !isnan(err[0][c][2]) || c == 0) fprintf(o, "---|");
-        fprintf(o, "%s\n", e == 0 ? "---|" : "");
+    for (int e = 0; e < 3; e++) error_table(o, cs, r, e);
+    if (!r->have_cl) fprintf(o, "OpenCL rows left out: no OpenCL device (%s).\n\n", lx_ctx_errmsg(ctx));
+}
+
+/* A surface's linear sRGB: its colour under D65 (d65, whose XYZ is yd65), scaled so that the white
+ * of D65 is (1, 1, 1). */
+static void surface_rgb(lx_ctx *ctx, const lx_spd *tcs, const lx_spd *d65, double Mi[3][3], const double yd65[3],
+                        double srgb[3])
+{
+    double refl_xyz[3], wrgb[3];
+    size_t n = tcs->n;
+    double *v = malloc(n * sizeof *v);
+    for (size_t k = 0; k < n; k++) v[k] = tcs->value[k] * pwl(d65, tcs->lambda_nm[k]);
+    lx_spd p = {"p", n, tcs->lambda_nm, v};
+    xyz_int(ctx, &p, LX_METHOD_EXACT, refl_xyz);
+    free(v);
+    rgb_from_xyz(Mi, refl_xyz, srgb);
+    rgb_from_xyz(Mi, yd65, wrgb);
+    for (int k = 0; k < 3; k++) srgb[k] /= wrgb[k];
+}
+
+/* The XYZ of light x surface, exact on the union of their wavelengths inside both ranges (0 when
+ * fewer than 2). */
+static void product_truth(lx_ctx *ctx, const lx_spd *light, const lx_spd *tcs, double truth[3])
+{
+    size_t cap = light->n + tcs->n, n = 0;
+    double *ul = malloc(cap * sizeof *ul), *uv = malloc(cap * sizeof *uv);
+    double lo = fmax(light->lambda_nm[0], tcs->lambda_nm[0]), hi = fmin(light->lambda_nm[light->n - 1], tcs->lambda_nm[tcs->n - 1]);
+    size_t a = 0, b = 0;
+    while (a < light->n || b < tcs->n) {
+        double x = b >= tcs->n || (a < light->n && light->lambda_nm[a] <= tcs->lambda_nm[b]) ? light->lambda_nm[a] : tcs->lambda_nm[b];
+        if (a < light->n && light->lambda_nm[a] == x) a++;
+        if (b < tcs->n && tcs->lambda_nm[b] == x) b++;
+        if (x < lo || x > hi) continue;
+        ul[n] = x;
+        uv[n++] = pwl(light, x) * pwl(tcs, x);
+    }
+    truth[0] = truth[1] = truth[2] = 0;
+    if (n >= 2) {
+        lx_spd p = {"p", n, ul, uv};
+        xyz_int(ctx, &p, LX_METHOD_EXACT, truth);
+    }
+    free(ul);
+    free(uv);
+}
+
+/* One row: case C's light reflected by surface tcs (number ti, linear sRGB srgb): the RGB product
+ * and pbrt's 60 bins against the spectral product. */
+static void reflect_row(FILE *o, lx_ctx *ctx, const scase *C, const lx_spd *tcs, int ti, const double srgb[3], double M[3][3],
+                        double Mi[3][3])
+{
+    const lx_spd *light = &C->native;
+    double *fl = NULL, *fv = NULL;
+    lx_spd fine;
+    if (C->T_K > 0) { /* the blackbody's truth: Planck at 0.01 nm */
+        size_t n = grid_of(C, 0.01, &fl, &fv);
+        fine = (lx_spd){"bb", n, fl, fv};
+        light = &fine;
+    }
+    double truth[3], rgb_l[3], rx[3], prod[3];
+    product_truth(ctx, light, tcs, truth);
+    rgb_from_xyz(Mi, C->ref, rgb_l);
+    for (int k = 0; k < 3; k++) prod[k] = rgb_l[k] * srgb[k];
+    rgb_from_xyz(M, prod, rx);
+    /* pbrt: bin averages of light and surface, multiplied */
+    pbrt_job pl;
+    pbrt_init(&pl, 60);
+    double cl[PBRT_MAX], cs2[PBRT_MAX], px[3] = {0, 0, 0};
+    for (int i = 0; i < 60; i++) {
+        cl[i] = pbrt_average(&C->native, 400 + 5.0 * i, 405 + 5.0 * i);
+        cs2[i] = pbrt_average(tcs, 400 + 5.0 * i, 405 + 5.0 * i);
+        for (int k = 0; k < 3; k++) px[k] += pl.cbar[k][i] * cl[i] * cs2[i] * 5.0;
+    }
+    scase tmp = *C;
+    memcpy(tmp.ref, truth, sizeof truth);
+    double e1[3], e2[3];
+    errors(ctx, &tmp, rx, e1);
+    errors(ctx, &tmp, px, e2);
+    char b1[32], b2[32], b3[32], b4[32];
+    acc_fmt_err(b1, sizeof b1, e1[0]);
+    acc_fmt_err(b2, sizeof b2, e1[1]);
+    acc_fmt_err(b3, sizeof b3, e2[0]);
+    acc_fmt_err(b4, sizeof b4, e2[1]);
+    fprintf(o, "| %s | TCS%02d | %s | %s | %s | %s |\n", C->name, ti, b1, b2, b3, b4);
+    free(fl);
+    free(fv);
+}
+
+/* Where the RGB light fails: the light reflected by saturated test colour samples (TCS09, TCS12). */
+static int rgb_surfaces(lx_ctx *ctx, FILE *o, const scase *cs)
+{
+    double M[3][3], Mi[3][3];
+    srgb_matrices(M, Mi);
+    static const int tcs_i[2] = {9, 12};
+    lx_spd d65;
+    lx_illuminant_get(ctx, "D65", &d65);
+    fprintf(o, "The RGB light is lossless for the light itself (XYZ -> linear sRGB -> XYZ), so its rows above are 0. "
+               "Its error shows in the light reflected by coloured surfaces: the reflectance as linear sRGB (its colour "
+               "under D65, white -> (1, 1, 1), as textures are authored), light RGB x surface RGB, against the spectral "
+               "product (light x reflectance on the union of their samples, exact method). pbrt 60 bins beside it "
+               "(product of bin averages).\n\n");
+    fprintf(o, "| light | surface | RGB \\|dY\\|/Y | RGB \\|dxy\\| | pbrt-v3 60 bins \\|dY\\|/Y | pbrt-v3 \\|dxy\\| |\n|---|---|---|---|---|---|\n");
+    double yd65[3];
+    xyz_int(ctx, &d65, LX_METHOD_EXACT, yd65);
+    for (int t = 0; t < 2; t++) {
+        lx_spd tcs;
+        if (lx_tcs_get(ctx, tcs_i[t], &tcs)) return cli_fail("bench", ctx, LX_EINVAL);
+        double srgb[3];
+        surface_rgb(ctx, &tcs, &d65, Mi, yd65, srgb);
+        for (int c = 0; c < NCASE; c++) reflect_row(o, ctx, &cs[c], &tcs, tcs_i[t], srgb, M, Mi);
+    }
+    fprintf(o, "\n");
+    return CLI_OK;
+}
+
+/* The plot: worst |dY|/Y over the continuous spectra and over the lines, against the median time. */
+static int spectra_png(lx_ctx *ctx, FILE *o, const char *png, const spec_res *r)
+{
+    lx_plot_point pts[2 * NM];
+    int np = 0;
+    for (int g = 0; g < 2; g++)
         for (int m = 0; m < NM; m++) {
-            double ts[NCASE];
+            double ts[NCASE], w = 0;
             int nt = 0;
-            for (int c = 0; c < NCASE; c++)
-                if (!isnan(tm[m][c])) ts[nt++] = tm[m][c];
-            if (m >= 10 && m <= 12 && !have_cl) continue;
-            char tb[32], eb[32];
-            if (nt) acc_fmt_time(tb, sizeof tb, acc_median(ts, nt));
-            else snprintf(tb, sizeof tb, "-");
-            fprintf(o, "| %s | %s |", mname[m], tb);
             for (int c = 0; c < NCASE; c++) {
-                if (!(e < 2 || !isnan(err[0][c][2]) || c == 0)) continue;
-                acc_fmt_err(eb, sizeof eb, err[m][c][e]);
-                fprintf(o, " %s |", eb);
+                if (!isnan(r->tm[m][c])) ts[nt++] = r->tm[m][c];
+                int is_line = c == 3 || c == 4;
+                if (is_line == g && !isnan(r->err[m][c][0])) w = fmax(w, r->err[m][c][0]);
             }
-            if (e == 0) {
-                double w = 0;
-                int any = 0;
-                for (int c = 0; c < NCASE; c++)
-                    if (!isnan(vs_cpu[m][c])) w = fmax(w, vs_cpu[m][c]), any = 1;
-                acc_fmt_err(eb, sizeof eb, any ? w : NAN);
-                fprintf(o, " %s |", eb);
-            }
-            fprintf(o, "\n");
+            if (!nt) continue;
+            pts[np++] = (lx_plot_point){acc_median(ts, nt), w, mlabel[m], g};
         }
-        fprintf(o, "\n");
-    }
-    if (!have_cl) fprintf(o, "OpenCL rows left out: no OpenCL device (%s).\n\n", lx_ctx_errmsg(ctx));
+    static const char *series[2] = {"D65, FL2, HP1, 1000 K", "laser, Na doublet"};
+    if (lx_error_time_write_png(ctx, png, "Spectra: worst relative error in Y", "time per spectrum (s), median",
+                                "|\u0394Y| / Y", (size_t)np, pts, 2, series))
+        return cli_fail("bench", ctx, LX_EIO);
+    fprintf(o, "Plot: worst |dY|/Y over D65, FL2, HP1 and the blackbody, and over the two line spectra, against the "
+               "median time per spectrum.\n\n");
+    return CLI_OK;
+}
 
-    /* ---- where the RGB light fails: the light reflected by saturated test colour samples ---- */
-    {
-        double M[3][3], Mi[3][3];
-        srgb_matrices(M, Mi);
-        static const int tcs_i[2] = {9, 12};
-        lx_spd d65;
-        lx_illuminant_get(ctx, "D65", &d65);
-        fprintf(o, "The RGB light is lossless for the light itself (XYZ -> linear sRGB -> XYZ), so its rows above are 0. "
-                   "Its error shows in the light reflected by coloured surfaces: the reflectance as linear sRGB (its colour "
-                   "under D65, white -> (1, 1, 1), as textures are authored), light RGB x surface RGB, against the spectral "
-                   "product (light x reflectance on the union of their samples, exact method). pbrt 60 bins beside it "
-                   "(product of bin averages).\n\n");
-        fprintf(o, "| light | surface | RGB \\|dY\\|/Y | RGB \\|dxy\\| | pbrt-v3 60 bins \\|dY\\|/Y | pbrt-v3 \\|dxy\\| |\n|---|---|---|---|---|---|\n");
-        double yd65[3];
-        xyz_int(ctx, &d65, LX_METHOD_EXACT, yd65);
-        for (int t = 0; t < 2; t++) {
-            lx_spd tcs;
-            if (lx_tcs_get(ctx, tcs_i[t], &tcs)) return cli_fail("bench", ctx, LX_EINVAL);
-            /* the surface's RGB: its colour under D65, scaled so that the white of D65 is (1, 1, 1) */
-            double refl_xyz[3], srgb[3], wrgb[3];
-            {
-                size_t n = tcs.n;
-                double *v = malloc(n * sizeof *v);
-                for (size_t k = 0; k < n; k++) v[k] = tcs.value[k] * pwl(&d65, tcs.lambda_nm[k]);
-                lx_spd p = {"p", n, tcs.lambda_nm, v};
-                xyz_int(ctx, &p, LX_METHOD_EXACT, refl_xyz);
-                free(v);
-                rgb_from_xyz(Mi, refl_xyz, srgb);
-                rgb_from_xyz(Mi, yd65, wrgb);
-                for (int k = 0; k < 3; k++) srgb[k] /= wrgb[k];
-            }
-            for (int c = 0; c < NCASE; c++) {
-                scase *C = &cs[c];
-                const lx_spd *light = &C->native;
-                double *fl = NULL, *fv = NULL;
-                lx_spd fine;
-                if (C->T_K > 0) { /* the blackbody's truth: Planck at 0.01 nm */
-                    size_t n = grid_of(C, 0.01, &fl, &fv);
-                    fine = (lx_spd){"bb", n, fl, fv};
-                    light = &fine;
-                }
-                /* union of the light's and the surface's wavelengths inside both ranges */
-                size_t cap = light->n + tcs.n, n = 0;
-                double *ul = malloc(cap * sizeof *ul), *uv = malloc(cap * sizeof *uv);
-                double lo = fmax(light->lambda_nm[0], tcs.lambda_nm[0]), hi = fmin(light->lambda_nm[light->n - 1], tcs.lambda_nm[tcs.n - 1]);
-                size_t a = 0, b = 0;
-                while (a < light->n || b < tcs.n) {
-                    double x = b >= tcs.n || (a < light->n && light->lambda_nm[a] <= tcs.lambda_nm[b]) ? light->lambda_nm[a] : tcs.lambda_nm[b];
-                    if (a < light->n && light->lambda_nm[a] == x) a++;
-                    if (b < tcs.n && tcs.lambda_nm[b] == x) b++;
-                    if (x < lo || x > hi) continue;
-                    ul[n] = x;
-                    uv[n++] = pwl(light, x) * pwl(&tcs, x);
-                }
-                double truth[3] = {0, 0, 0}, rgb_l[3], rx[3], prod[3];
-                if (n >= 2) {
-                    lx_spd p = {"p", n, ul, uv};
-                    xyz_int(ctx, &p, LX_METHOD_EXACT, truth);
-                }
-                rgb_from_xyz(Mi, C->ref, rgb_l);
-                for (int k = 0; k < 3; k++) prod[k] = rgb_l[k] * srgb[k];
-                rgb_from_xyz(M, prod, rx);
-                /* pbrt: bin averages of light and surface, multiplied */
-                pbrt_job pl;
-                pbrt_init(&pl, 60);
-                double cl[PBRT_MAX], cs2[PBRT_MAX], px[3] = {0, 0, 0};
-                for (int i = 0; i < 60; i++) {
-                    cl[i] = pbrt_average(&C->native, 400 + 5.0 * i, 405 + 5.0 * i);
-                    cs2[i] = pbrt_average(&tcs, 400 + 5.0 * i, 405 + 5.0 * i);
-                    for (int k = 0; k < 3; k++) px[k] += pl.cbar[k][i] * cl[i] * cs2[i] * 5.0;
-                }
-                scase tmp = *C;
-                memcpy(tmp.ref, truth, sizeof truth);
-                double e1[3], e2[3];
-                errors(ctx, &tmp, rx, e1);
-                errors(ctx, &tmp, px, e2);
-                char b1[32], b2[32], b3[32], b4[32];
-                acc_fmt_err(b1, sizeof b1, e1[0]);
-                acc_fmt_err(b2, sizeof b2, e1[1]);
-                acc_fmt_err(b3, sizeof b3, e2[0]);
-                acc_fmt_err(b4, sizeof b4, e2[1]);
-                fprintf(o, "| %s | TCS%02d | %s | %s | %s | %s |\n", C->name, tcs_i[t], b1, b2, b3, b4);
-                free(ul);
-                free(uv);
-                free(fl);
-                free(fv);
-            }
+int acc_spectra(lx_ctx *ctx, FILE *o, const char *png)
+{
+    scase cs[NCASE];
+    int rc = make_cases(ctx, cs);
+    if (rc) return rc;
+    spec_res r;
+    for (int m = 0; m < NM; m++)
+        for (int c = 0; c < NCASE; c++) {
+            r.err[m][c][0] = r.err[m][c][1] = r.err[m][c][2] = NAN;
+            r.tm[m][c] = r.vs_cpu[m][c] = NAN;
         }
-        fprintf(o, "\n");
-    }
-
-    /* ---- the plot: worst |dY|/Y over the continuous spectra and over the lines, against the median time ---- */
-    if (png) {
-        lx_plot_point pts[2 * NM];
-        int np = 0;
-        for (int g = 0; g < 2; g++)
-            for (int m = 0; m < NM; m++) {
-                double ts[NCASE], w = 0;
-                int nt = 0;
-                for (int c = 0; c < NCASE; c++) {
-                    if (!isnan(tm[m][c])) ts[nt++] = tm[m][c];
-                    int is_line = c == 3 || c == 4;
-                    if (is_line == g && !isnan(err[m][c][0])) w = fmax(w, err[m][c][0]);
-                }
-                if (!nt) continue;
-                pts[np++] = (lx_plot_point){acc_median(ts, nt), w, mlabel[m], g};
-            }
-        static const char *series[2] = {"D65, FL2, HP1, 1000 K", "laser, Na doublet"};
-        if (lx_error_time_write_png(ctx, png, "Spectra: worst relative error in Y", "time per spectrum (s), median",
-                              "|\u0394Y| / Y", (size_t)np, pts, 2, series))
-            return cli_fail("bench", ctx, LX_EIO);
-        fprintf(o, "Plot: worst |dY|/Y over D65, FL2, HP1 and the blackbody, and over the two line spectra, against the "
-                   "median time per spectrum.\n\n");
-    }
+    r.have_cl = 1;
+    for (int c = 0; c < NCASE; c++) run_methods(ctx, &cs[c], c, &r);
+    spectra_tables(o, ctx, cs, &r);
+    if ((rc = rgb_surfaces(ctx, o, cs))) return rc;
+    if (png && (rc = spectra_png(ctx, o, png, &r))) return rc;
     for (int c = 0; c < NCASE; c++) {
         free(cs[c].own_l);
         free(cs[c].own_v);

@@ -208,13 +208,11 @@ static void grid_run(void *arg)
     j->ok = lx_grid_illuminance(j->ctx, j->pl, j->m, j->pts, j->n, up, 1, &o, j->E) == LX_OK;
 }
 
-int acc_lighting(lx_ctx *ctx, FILE *o, const char *png)
+/* (a) The point model against the closed-form disk and rectangle on the axis, by d / size; one plot
+ * point per distance into pts (series 0). */
+static void lighting_point(lx_ctx *ctx, FILE *o, lx_plot_point *pts, int *np)
 {
-    lx_plot_point pts[64];
-    int np = 0;
-    char a[32], b[32], c[32];
-    fprintf(o, "## bench accuracy: lighting\n\n");
-    /* (a) point model against the closed forms, by distance / size */
+    char a[32], b[32];
     static const double ratio[8] = {0.25, 0.5, 1, 2, 3, 5, 10, 20};
     static const char *rl[8] = {"0.25", "0.5", "1", "2", "3", "5", "10", "20"};
     fprintf(o, "Point model against the exact area source (closed-form configuration factors, `lx_disk_illuminance` / "
@@ -235,11 +233,17 @@ int acc_lighting(lx_ctx *ctx, FILE *o, const char *png)
         fprintf(o, "| %s | %+.3e | %+.3e | %s | %s |\n", rl[k], dj.r.point_error, rj.r.point_error, a, b);
         char *lab = malloc(24);
         snprintf(lab, 24, "d/size %s", rl[k]);
-        pts[np++] = (lx_plot_point){tp, fabs(dj.r.point_error), lab, 0};
+        pts[(*np)++] = (lx_plot_point){tp, fabs(dj.r.point_error), lab, 0};
     }
     fprintf(o, "\n");
+}
 
-    /* (b) near-field subdivision: a 0.6 x 0.6 m Lambertian panel (1000 lm) 0.3 m above the plane */
+/* (b) Near-field subdivision of a Lambertian panel into k x k point cells, auto and area, against
+ * the closed-form rectangle; one plot point per row into pts (series 1). A CLI exit code. */
+static int lighting_cells(lx_ctx *ctx, FILE *o, lx_plot_point *pts, int *np)
+{
+    char a[32], b[32];
+    /* a 0.6 x 0.6 m Lambertian panel (1000 lm) 0.3 m above the plane */
     const double F = 1000, A = 0.6, h = 0.3;
     const double Lum = F / (PI * A * A);
     enum { NP = 21 };
@@ -291,7 +295,7 @@ int acc_lighting(lx_ctx *ctx, FILE *o, const char *png)
         char row[32];
         if (k) snprintf(row, sizeof row, "%d x %d", k, k);
         fprintf(o, "| %s | %s | %s |\n", k ? row : area ? "area (every pair integrated)" : "auto (the default)", a, b);
-        pts[np++] = (lx_plot_point){t, mx, lab, 1};
+        pts[(*np)++] = (lx_plot_point){t, mx, lab, 1};
         free(pl);
         lx_luminaire_free(lum);
     }
@@ -300,7 +304,16 @@ int acc_lighting(lx_ctx *ctx, FILE *o, const char *png)
     free(E);
     free(Ex);
 
-    /* (c) intensity-table interpolation: a Warn spot S = 30 sampled every 5 and every 1 deg */
+    return CLI_OK;
+}
+
+/* (c) Intensity-table interpolation of a Warn spot tabulated every 5 and 1 deg, against the
+ * analytic E; one plot point per row that ran into pts (series 2). A CLI exit code. */
+static int lighting_interp(lx_ctx *ctx, FILE *o, lx_plot_point *pts, int *np)
+{
+    const double F = 1000;
+    char a[32], c[32];
+    /* a Warn spot S = 30 sampled every 5 and every 1 deg */
     const double S = 30, H = 3;
     enum { NG = 61 };
     double *G = malloc(NG * NG * 3 * sizeof *G), *Eg = malloc(NG * NG * sizeof *Eg), *Et = malloc(NG * NG * sizeof *Et);
@@ -343,7 +356,7 @@ int acc_lighting(lx_ctx *ctx, FILE *o, const char *png)
             fprintf(o, "| %s | %.0f deg | %s | %s |\n", in[v], steps[s], a, c);
             char *lab = malloc(24);
             snprintf(lab, 24, "%s %.0f\u00b0", il[v], steps[s]);
-            pts[np++] = (lx_plot_point){t, mx, lab, 2};
+            pts[(*np)++] = (lx_plot_point){t, mx, lab, 2};
         }
         lx_luminaire_free(lum);
     }
@@ -351,7 +364,18 @@ int acc_lighting(lx_ctx *ctx, FILE *o, const char *png)
     free(G);
     free(Eg);
     free(Et);
-    int rc = CLI_OK;
+    return CLI_OK;
+}
+
+int acc_lighting(lx_ctx *ctx, FILE *o, const char *png)
+{
+    lx_plot_point pts[64];
+    int np = 0;
+    fprintf(o, "## bench accuracy: lighting\n\n");
+    lighting_point(ctx, o, pts, &np);
+    int rc = lighting_cells(ctx, o, pts, &np);
+    if (rc) return rc;
+    if ((rc = lighting_interp(ctx, o, pts, &np))) return rc;
     if (png) {
         static const char *series[3] = {"point model (disk)", "near-field cells", "IES interpolation"};
         if (lx_error_time_write_png(ctx, png, "Lighting: error against time", "time per evaluation (s)", "relative error",

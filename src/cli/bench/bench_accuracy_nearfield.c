@@ -62,36 +62,14 @@ static void nf_run(void *arg)
     }
 }
 
-int acc_nearfield(lx_ctx *ctx, FILE *o, const char *png)
+/* The former rule's cells: for k = 2..kmax, k x k point sources of model cm with flux F / k^2 each
+ * (luminaires into cl[k - 1]) over the side x side opening, into cells. A CLI exit code. */
+static int make_cells(lx_ctx *ctx, lx_lum_model cm, double F, double side, int kmax, lx_placement *cells,
+                      lx_luminaire *cl[64])
 {
-    const double F = 1000, beam = 15.7, side = 0.1, size = side * sqrt(2.0);
-    double S;
-    if (lx_warn_exponent_from_beam(ctx, beam * DEG, &S)) return cli_fail("bench", ctx, LX_EINVAL);
-    lx_lum_model mdl = {.kind = LX_LUM_MODEL_WARN, .flux_lm = F, .exponent = S, .width_m = side, .length_m = side};
-    lx_luminaire *lum = NULL;
-    if (lx_luminaire_from_model(ctx, &mdl, &lum)) return cli_fail("bench", ctx, LX_EINVAL);
-    /* the same lobe as a point source of flux / k^2, for the emulated former rule's cells */
-    lx_lum_model cm = mdl;
-    cm.width_m = cm.length_m = 0;
-    lx_luminaire *cl[64] = {NULL};
-    double pts[3 * NPT], dist[NPT], ref[NPT], E[NPT];
-    int kpt[NPT], kmax = 1;
-    points(pts, dist);
-    for (int i = 0; i < NPT; i++) {
-        kpt[i] = dist[i] >= 5 * size ? 1 : (int)floor(5 * size / dist[i]) + 1;
-        if (kpt[i] > 64) kpt[i] = 64;
-        if (kpt[i] > kmax) kmax = kpt[i];
-    }
-    lx_placement pl = {.lum = lum, .pos_m = {0, 0, 0}, .aim = {0, 0, -1}};
-    lx_placement *cells = calloc((size_t)kmax * 64 * 64, sizeof *cells);
-    if (!cells) return cli_fail("bench", ctx, LX_ENOMEM);
-    int rc = CLI_OK;
     for (int k = 2; k <= kmax; k++) {
         cm.flux_lm = F / (k * k);
-        if (lx_luminaire_from_model(ctx, &cm, &cl[k - 1])) {
-            rc = cli_fail("bench", ctx, LX_EINVAL);
-            goto done;
-        }
+        if (lx_luminaire_from_model(ctx, &cm, &cl[k - 1])) return cli_fail("bench", ctx, LX_EINVAL);
         for (int u = 0; u < k; u++)
             for (int v = 0; v < k; v++) {
                 lx_placement *x = &cells[(size_t)(k - 1) * 64 * 64 + (size_t)u * k + v];
@@ -101,14 +79,12 @@ int acc_nearfield(lx_ctx *ctx, FILE *o, const char *png)
                 x->aim[2] = -1;
             }
     }
-    nf_job rj = {ctx, &pl, pts, {.model = LX_MODEL_AREA, .backend = LX_BACKEND_CPU, .threads = 1, .nearfield_tol = 1e-9},
-                 0, cells, kpt, ref, 0};
-    nf_run(&rj);
-    if (!rj.ok) {
-        rc = cli_fail("bench", ctx, LX_EINVAL);
-        goto done;
-    }
+    return CLI_OK;
+}
 
+/* The section's header: the downlight, the receivers, the reference and the policies. */
+static void nf_header(FILE *o, double beam, double S, double F, double side, double size)
+{
     fprintf(o, "## bench accuracy: the near-field decision\n\n");
     fprintf(o, "When a grid takes the point model for a luminaire-receiver pair and when it integrates the luminous "
                "opening. A Warn downlight (beam %.1f deg, S = %.1f, %.0f lm) with a %.1f x %.1f m opening (size: the "
@@ -125,68 +101,129 @@ int acc_nearfield(lx_ctx *ctx, FILE *o, const char *png)
             beam, S, F, side, side, size, NPT, N_DIST, pow(cos(40 * DEG), S));
     fprintf(o, "| policy | max \\|dE\\|/E | RMS | pairs integrated | worst point-path pair | time per point |\n"
                "|---|---|---|---|---|---|\n");
-    static const char *names[NROW] = {"point model everywhere",
-                                      "former five-times rule (d / size >= 5: point)",
-                                      "auto, tolerance 1e-2",
-                                      "auto, tolerance 1e-3",
-                                      "auto, tolerance 1e-4 (the default)",
-                                      "auto, tolerance 1e-5",
-                                      "area everywhere (tolerance 1e-4)"};
-    static const char *labels[NROW] = {"point", "5x rule", "auto 1e-2", "auto 1e-3", "auto 1e-4", "auto 1e-5", "area"};
-    static const double tols[NROW] = {0, 0, 1e-2, 1e-3, 1e-4, 1e-5, 1e-4};
+}
+
+/* What every policy row runs on: the downlight, the points, the former rule's cells and k per
+ * point, and the reference illuminance. */
+typedef struct {
+    lx_ctx *ctx;
+    const lx_placement *pl, *cells;
+    const double *pts, *ref;
+    const int *kpt;
+} nf_case;
+
+static const char *const nf_names[NROW] = {"point model everywhere",
+                                           "former five-times rule (d / size >= 5: point)",
+                                           "auto, tolerance 1e-2",
+                                           "auto, tolerance 1e-3",
+                                           "auto, tolerance 1e-4 (the default)",
+                                           "auto, tolerance 1e-5",
+                                           "area everywhere (tolerance 1e-4)"};
+static const char *const nf_labels[NROW] = {"point", "5x rule", "auto 1e-2", "auto 1e-3", "auto 1e-4", "auto 1e-5", "area"};
+static const double nf_tols[NROW] = {0, 0, 1e-2, 1e-3, 1e-4, 1e-5, 1e-4};
+
+/* Policy row r: its errors against the reference, the pairs it integrated, its worst point-path
+ * pair and its time; the row's plot point into *pp. 0 when the policy failed (a row saying so). */
+static int policy_row(FILE *o, const nf_case *nc, int r, lx_plot_point *pp)
+{
+    lx_ctx *ctx = nc->ctx;
+    const int *kpt = nc->kpt;
+    const double *ref = nc->ref;
+    double E[NPT];
+    nf_job j = {ctx, nc->pl, nc->pts, {.backend = LX_BACKEND_CPU, .threads = 1, .nearfield_tol = nf_tols[r]}, r == 1, nc->cells,
+                kpt, E, 0};
+    j.opts.model = r == 0 ? LX_MODEL_POINT : r == NROW - 1 ? LX_MODEL_AREA : LX_MODEL_AUTO;
+    lx_counters c0, c1;
+    lx_ctx_counters(ctx, &c0);
+    nf_run(&j);
+    lx_ctx_counters(ctx, &c1);
+    if (!j.ok) {
+        fprintf(o, "| %s | failed (%s) | | | | |\n", nf_names[r], lx_ctx_errmsg(ctx));
+        return 0;
+    }
+    unsigned long long near = c1.nearfield_pairs - c0.nearfield_pairs;
+    int subdivided = 0;
+    if (r == 1)
+        for (int i = 0; i < NPT; i++) subdivided += kpt[i] > 1;
+    double mx = 0, ss = 0, far = -1;
+    for (int i = 0; i < NPT; i++) {
+        double e = fabs(E[i] / ref[i] - 1);
+        mx = fmax(mx, e);
+        ss += e * e;
+    }
+    /* the pairs on the point path: where the result is the point model's (rows 0, 1: by construction) */
+    double Ep[NPT];
+    nf_job pj = {ctx, nc->pl, nc->pts, {.model = LX_MODEL_POINT, .backend = LX_BACKEND_CPU, .threads = 1}, 0, nc->cells, kpt, Ep, 0};
+    nf_run(&pj);
+    for (int i = 0; i < NPT; i++)
+        if (pj.ok && (r == 1 ? kpt[i] == 1 : E[i] == Ep[i])) far = fmax(far, fabs(E[i] / ref[i] - 1));
+    double t = acc_time(nf_run, &j, 1000) / NPT;
+    char a[32], b[32], c[32], d[32], n[32];
+    acc_fmt_err(a, sizeof a, mx);
+    acc_fmt_err(b, sizeof b, sqrt(ss / NPT));
+    acc_fmt_err(c, sizeof c, far < 0 ? NAN : far);
+    acc_fmt_time(d, sizeof d, t);
+    snprintf(n, sizeof n, "%llu of %d", r == 1 ? (unsigned long long)subdivided : near, NPT);
+    fprintf(o, "| %s | %s | %s | %s | %s | %s |\n", nf_names[r], a, b, n, far < 0 ? "(none)" : c, d);
+    *pp = (lx_plot_point){t, mx, nf_labels[r], r == 0 || r == 1 ? 0 : r == NROW - 1 ? 2 : 1};
+    return 1;
+}
+
+/* The single point where the former rule first trusted the point model, and 10 m on the axis:
+ * point model against the opening integrated. */
+static void axis_note(lx_ctx *ctx, FILE *o, const lx_placement *pl, double size)
+{
+    double q[3] = {0, 0, -5 * size * 1.06}, ep, ea;
+    static const double up[3] = {0, 0, 1};
+    lx_grid_opts o1 = {.model = LX_MODEL_POINT}, o2 = {.model = LX_MODEL_AREA, .nearfield_tol = 1e-9};
+    double q10[3] = {0, 0, -10}, ep10, ea10;
+    if (!lx_grid_illuminance(ctx, pl, 1, q, 1, up, 1, &o1, &ep) && !lx_grid_illuminance(ctx, pl, 1, q, 1, up, 1, &o2, &ea) &&
+        !lx_grid_illuminance(ctx, pl, 1, q10, 1, up, 1, &o1, &ep10) &&
+        !lx_grid_illuminance(ctx, pl, 1, q10, 1, up, 1, &o2, &ea10))
+        fprintf(o, "\nOn the axis at %.2f m (d / size = %.1f, where the five-times rule took the point model): point "
+                   "model %.5g lx, opening integrated %.5g lx (%+.1f %%). At 10 m on the axis (d / size = %.0f) this "
+                   "beam's point model still errs by %+.2e.\n",
+                -q[2], -q[2] / size, ep, ea, 100 * (ep / ea - 1), 10 / size, ep10 / ea10 - 1);
+}
+
+int acc_nearfield(lx_ctx *ctx, FILE *o, const char *png)
+{
+    const double F = 1000, beam = 15.7, side = 0.1, size = side * sqrt(2.0);
+    double S;
+    if (lx_warn_exponent_from_beam(ctx, beam * DEG, &S)) return cli_fail("bench", ctx, LX_EINVAL);
+    lx_lum_model mdl = {.kind = LX_LUM_MODEL_WARN, .flux_lm = F, .exponent = S, .width_m = side, .length_m = side};
+    lx_luminaire *lum = NULL;
+    if (lx_luminaire_from_model(ctx, &mdl, &lum)) return cli_fail("bench", ctx, LX_EINVAL);
+    /* the same lobe as a point source of flux / k^2, for the emulated former rule's cells */
+    lx_lum_model cm = mdl;
+    cm.width_m = cm.length_m = 0;
+    lx_luminaire *cl[64] = {NULL};
+    double pts[3 * NPT], dist[NPT], ref[NPT];
+    int kpt[NPT], kmax = 1;
+    points(pts, dist);
+    for (int i = 0; i < NPT; i++) {
+        kpt[i] = dist[i] >= 5 * size ? 1 : (int)floor(5 * size / dist[i]) + 1;
+        if (kpt[i] > 64) kpt[i] = 64;
+        if (kpt[i] > kmax) kmax = kpt[i];
+    }
+    lx_placement pl = {.lum = lum, .pos_m = {0, 0, 0}, .aim = {0, 0, -1}};
+    lx_placement *cells = calloc((size_t)kmax * 64 * 64, sizeof *cells);
+    if (!cells) return cli_fail("bench", ctx, LX_ENOMEM);
+    int rc = make_cells(ctx, cm, F, side, kmax, cells, cl);
+    if (rc) goto done;
+    nf_job rj = {ctx, &pl, pts, {.model = LX_MODEL_AREA, .backend = LX_BACKEND_CPU, .threads = 1, .nearfield_tol = 1e-9},
+                 0, cells, kpt, ref, 0};
+    nf_run(&rj);
+    if (!rj.ok) {
+        rc = cli_fail("bench", ctx, LX_EINVAL);
+        goto done;
+    }
+    nf_header(o, beam, S, F, side, size);
+    nf_case nc = {ctx, &pl, cells, pts, ref, kpt};
     lx_plot_point pp[NROW];
     int np = 0;
-    for (int r = 0; r < NROW; r++) {
-        nf_job j = {ctx, &pl, pts, {.backend = LX_BACKEND_CPU, .threads = 1, .nearfield_tol = tols[r]}, r == 1, cells, kpt, E, 0};
-        j.opts.model = r == 0 ? LX_MODEL_POINT : r == NROW - 1 ? LX_MODEL_AREA : LX_MODEL_AUTO;
-        lx_counters c0, c1;
-        lx_ctx_counters(ctx, &c0);
-        nf_run(&j);
-        lx_ctx_counters(ctx, &c1);
-        if (!j.ok) {
-            fprintf(o, "| %s | failed (%s) | | | | |\n", names[r], lx_ctx_errmsg(ctx));
-            continue;
-        }
-        unsigned long long near = c1.nearfield_pairs - c0.nearfield_pairs;
-        int subdivided = 0;
-        if (r == 1)
-            for (int i = 0; i < NPT; i++) subdivided += kpt[i] > 1;
-        double mx = 0, ss = 0, far = -1;
-        for (int i = 0; i < NPT; i++) {
-            double e = fabs(E[i] / ref[i] - 1);
-            mx = fmax(mx, e);
-            ss += e * e;
-        }
-        /* the pairs on the point path: where the result is the point model's (rows 0, 1: by construction) */
-        double Ep[NPT];
-        nf_job pj = {ctx, &pl, pts, {.model = LX_MODEL_POINT, .backend = LX_BACKEND_CPU, .threads = 1}, 0, cells, kpt, Ep, 0};
-        nf_run(&pj);
-        for (int i = 0; i < NPT; i++)
-            if (pj.ok && (r == 1 ? kpt[i] == 1 : E[i] == Ep[i])) far = fmax(far, fabs(E[i] / ref[i] - 1));
-        double t = acc_time(nf_run, &j, 1000) / NPT;
-        char a[32], b[32], c[32], d[32], n[32];
-        acc_fmt_err(a, sizeof a, mx);
-        acc_fmt_err(b, sizeof b, sqrt(ss / NPT));
-        acc_fmt_err(c, sizeof c, far < 0 ? NAN : far);
-        acc_fmt_time(d, sizeof d, t);
-        snprintf(n, sizeof n, "%llu of %d", r == 1 ? (unsigned long long)subdivided : near, NPT);
-        fprintf(o, "| %s | %s | %s | %s | %s | %s |\n", names[r], a, b, n, far < 0 ? "(none)" : c, d);
-        pp[np++] = (lx_plot_point){t, mx, labels[r], r == 0 || r == 1 ? 0 : r == NROW - 1 ? 2 : 1};
-    }
-    {
-        /* the single point where the former rule first trusted the point model */
-        double q[3] = {0, 0, -5 * size * 1.06}, ep, ea;
-        static const double up[3] = {0, 0, 1};
-        lx_grid_opts o1 = {.model = LX_MODEL_POINT}, o2 = {.model = LX_MODEL_AREA, .nearfield_tol = 1e-9};
-        double q10[3] = {0, 0, -10}, ep10, ea10;
-        if (!lx_grid_illuminance(ctx, &pl, 1, q, 1, up, 1, &o1, &ep) && !lx_grid_illuminance(ctx, &pl, 1, q, 1, up, 1, &o2, &ea) &&
-            !lx_grid_illuminance(ctx, &pl, 1, q10, 1, up, 1, &o1, &ep10) &&
-            !lx_grid_illuminance(ctx, &pl, 1, q10, 1, up, 1, &o2, &ea10))
-            fprintf(o, "\nOn the axis at %.2f m (d / size = %.1f, where the five-times rule took the point model): point "
-                       "model %.5g lx, opening integrated %.5g lx (%+.1f %%). At 10 m on the axis (d / size = %.0f) this "
-                       "beam's point model still errs by %+.2e.\n",
-                    -q[2], -q[2] / size, ep, ea, 100 * (ep / ea - 1), 10 / size, ep10 / ea10 - 1);
-    }
+    for (int r = 0; r < NROW; r++) np += policy_row(o, &nc, r, &pp[np]);
+    axis_note(ctx, o, &pl, size);
     fprintf(o, "\n");
     if (png && np) {
         static const char *series[3] = {"by distance alone", "auto (estimated error)", "area everywhere"};

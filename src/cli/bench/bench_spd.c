@@ -281,22 +281,10 @@ static const char *find_peers(char *buf, size_t cap)
     return NULL;
 }
 
-int cli_bench_spd(FILE *report, const char *tmp, const size_t *sizes, int nsizes)
+/* The machine's read bandwidth (1 thread and cores threads, over at least 256 MB) and the topic's
+ * header with it; returns the bandwidth on cores threads (bytes/s). */
+static double bandwidth_header(FILE *o, float *v, size_t nmax, int cores)
 {
-    FILE *o = report;
-    size_t nmax = 0;
-    for (int i = 0; i < nsizes; i++)
-        if (sizes[i] > nmax) nmax = sizes[i];
-    float *v = malloc(nmax * NL * sizeof *v);
-    double *out = malloc(nmax * 4 * sizeof *out);
-    if (!v || !out) {
-        cli_error("bench", "out of memory for %zu spectra", nmax);
-        return CLI_RUNTIME;
-    }
-    make_spectra(v, nmax);
-    int cores = (int)sysconf(_SC_NPROCESSORS_ONLN);
-    if (cores < 1) cores = 1;
-    if (cores > 16) cores = 16;
     size_t bw_n = nmax * NL < (size_t)64 << 20 ? (size_t)64 << 20 : nmax * NL; /* at least 256 MB */
     float *bw_buf = bw_n > nmax * NL ? malloc(bw_n * sizeof *bw_buf) : v;
     if (!bw_buf) bw_buf = v, bw_n = nmax * NL;
@@ -307,100 +295,199 @@ int cli_bench_spd(FILE *report, const char *tmp, const size_t *sizes, int nsizes
     fprintf(o, "## bench spd: spectra of %d samples (360-830 nm, 1 nm) -> X, Y, Z, V' (float input, double sums)\n\n", NL);
     fprintf(o, "Read bandwidth measured in this run (sum of floats, %zu MB): %.1f GB/s on 1 thread, %.1f GB/s on %d.\n\n",
             bw_n * 4 >> 20, bw1 / 1e9, bwT / 1e9, cores);
+    return bwT;
+}
 
-    lx_ctx *ctx = cli_ctx("bench");
-    if (!ctx) return CLI_RUNTIME;
-    /* OpenCL cold start on a fresh context: device, context, queue, program build, first call */
+/* OpenCL cold start on a fresh context: device, context, queue, program build, first call (s;
+ * -1 when OpenCL failed); the device into *info. */
+static double cl_cold_start(lx_ctx *ctx, const float *v, double *out, lx_cl_device_info *info)
+{
     double cold = -1;
-    lx_cl_device_info info;
-    memset(&info, 0, sizeof info);
-    {
-        lx_batch one = {.n_spectra = 1, .n_lambda = NL, .start_nm = 360, .step_nm = 1, .dtype = LX_F32, .values = v};
-        lx_batch_opts oo = {.backend = LX_BACKEND_OPENCL};
+    memset(info, 0, sizeof *info);
+    lx_batch one = {.n_spectra = 1, .n_lambda = NL, .start_nm = 360, .step_nm = 1, .dtype = LX_F32, .values = v};
+    lx_batch_opts oo = {.backend = LX_BACKEND_OPENCL};
+    double t0 = cli_bench_now_s();
+    if (lx_batch_integrate(ctx, &one, FNS, 4, &oo, out) == LX_OK) cold = cli_bench_now_s() - t0;
+    lx_cl_info(ctx, info);
+    return cold;
+}
+
+/* The state the in-memory table shares between its rows. */
+typedef struct {
+    lx_ctx *ctx;
+    const float *v;
+    double *out, bwT, cold, last_cpu, last_cl;
+    int cores;
+} mem_run;
+
+/* One row of the in-memory table: n spectra on SIMD path `path` (OpenCL beside it when cl). For
+ * the first path (first), the per-spectrum times at this N go into r->last_cpu, r->last_cl. */
+static void in_memory_row(FILE *o, mem_run *r, lx_simd path, size_t n, int cl, int first)
+{
+    lx_ctx *ctx = r->ctx;
+    setenv("LX_SIMD", lx_simd_name(path), 1); /* the CPU loops of this path */
+    lx_batch bt = {.n_spectra = n, .n_lambda = NL, .start_nm = 360, .step_nm = 1, .dtype = LX_F32, .values = r->v};
+    double bytes = (double)n * NL * sizeof(float);
+    enum { PAIRS = 9 };
+    double tcs[PAIRS], trs[PAIRS], ratio[PAIRS];
+    int failed = 0;
+    time_batch(ctx, &bt, LX_BACKEND_CPU, r->out, 1); /* warm-up */
+    for (int k = 0; k < PAIRS && !failed; k++) {
+        trs[k] = read_pass_s(r->v, n * NL, r->cores);
+        lx_batch_opts oc = {.backend = LX_BACKEND_CPU};
         double t0 = cli_bench_now_s();
-        if (lx_batch_integrate(ctx, &one, FNS, 4, &oo, out) == LX_OK) cold = cli_bench_now_s() - t0;
-        lx_cl_info(ctx, &info);
+        failed = lx_batch_integrate(ctx, &bt, FNS, 4, &oc, r->out) != LX_OK;
+        tcs[k] = cli_bench_now_s() - t0;
+        ratio[k] = trs[k] / tcs[k];
     }
-    /* In memory: for each N, 9 interleaved pairs (read the batch's own buffer with the bandwidth
-     * reader, then integrate it), so both see the same data, threads and load; the ratio column
-     * is the median of the 9 per-pair ratios (robust to load changing during the run). */
-    fprintf(o, "| path | N | CPU spectra/s | CPU GB/s | read GB/s (same buffer) | CPU / read (median of pairs) | CPU / bandwidth above | "
-               "OpenCL spectra/s | OpenCL / bandwidth above | OpenCL compensated float |\n");
-    fprintf(o, "|---|---|---|---|---|---|---|---|---|---|\n");
-    double last_cpu = 0, last_cl = 0;
-    lx_simd paths[3];
-    int npaths = cli_bench_paths(paths);
-    for (int pi = 0; pi < npaths; pi++)
-    for (int i = 0; i < nsizes; i++) {
-        size_t n = sizes[i];
-        setenv("LX_SIMD", lx_simd_name(paths[pi]), 1); /* the CPU loops of this path */
-        lx_batch bt = {.n_spectra = n, .n_lambda = NL, .start_nm = 360, .step_nm = 1, .dtype = LX_F32, .values = v};
-        double bytes = (double)n * NL * sizeof(float);
-        enum { PAIRS = 9 };
-        double tcs[PAIRS], trs[PAIRS], ratio[PAIRS];
-        int failed = 0;
-        time_batch(ctx, &bt, LX_BACKEND_CPU, out, 1); /* warm-up */
-        for (int r = 0; r < PAIRS && !failed; r++) {
-            trs[r] = read_pass_s(v, n * NL, cores);
-            lx_batch_opts oc = {.backend = LX_BACKEND_CPU};
-            double t0 = cli_bench_now_s();
-            failed = lx_batch_integrate(ctx, &bt, FNS, 4, &oc, out) != LX_OK;
-            tcs[r] = cli_bench_now_s() - t0;
-            ratio[r] = trs[r] / tcs[r];
-        }
-        double tc = cli_bench_median(tcs, PAIRS), tr = cli_bench_median(trs, PAIRS), rr = cli_bench_median(ratio, PAIRS);
-        unsetenv("LX_SIMD");
-        int cl = cold >= 0 && pi == 0; /* OpenCL once, beside the widest path */
-        double tg = cl ? time_batch(ctx, &bt, LX_BACKEND_OPENCL, out, 5) : -1;
-        setenv("LX_CL_ACCUM", "kahan", 1);
-        double tk = cl ? time_batch(ctx, &bt, LX_BACKEND_OPENCL, out, 5) : -1;
-        unsetenv("LX_CL_ACCUM");
-        fprintf(o, "| %s | %.0e | %.3g M | %.1f | %.1f | %.0f %% | %.0f %% |", lx_simd_name(paths[pi]), (double)n, n / tc / 1e6,
-                bytes / tc / 1e9, bytes / tr / 1e9, 100 * rr, 100 * bytes / tc / bwT);
-        if (tg > 0) fprintf(o, " %.3g M | %.0f %% | %.3g M |\n", n / tg / 1e6, 100 * bytes / tg / bwT, n / tk / 1e6);
-        else fprintf(o, " %s | | |\n", cold >= 0 ? "" : "no OpenCL");
-        fflush(o);
-        if (pi == 0) {
-            last_cpu = tc / (double)n;
-            last_cl = tg > 0 ? tg / (double)n : 0;
-        }
-    }
+    double tc = cli_bench_median(tcs, PAIRS), tr = cli_bench_median(trs, PAIRS), rr = cli_bench_median(ratio, PAIRS);
     unsetenv("LX_SIMD");
-    fprintf(o, "\n");
-    if (cold >= 0) {
+    double tg = cl ? time_batch(ctx, &bt, LX_BACKEND_OPENCL, r->out, 5) : -1;
+    setenv("LX_CL_ACCUM", "kahan", 1);
+    double tk = cl ? time_batch(ctx, &bt, LX_BACKEND_OPENCL, r->out, 5) : -1;
+    unsetenv("LX_CL_ACCUM");
+    fprintf(o, "| %s | %.0e | %.3g M | %.1f | %.1f | %.0f %% | %.0f %% |", lx_simd_name(path), (double)n, n / tc / 1e6,
+            bytes / tc / 1e9, bytes / tr / 1e9, 100 * rr, 100 * bytes / tc / r->bwT);
+    if (tg > 0) fprintf(o, " %.3g M | %.0f %% | %.3g M |\n", n / tg / 1e6, 100 * bytes / tg / r->bwT, n / tk / 1e6);
+    else fprintf(o, " %s | | |\n", r->cold >= 0 ? "" : "no OpenCL");
+    fflush(o);
+    if (first) {
+        r->last_cpu = tc / (double)n;
+        r->last_cl = tg > 0 ? tg / (double)n : 0;
+    }
+}
+
+/* The OpenCL device, its cold start and the break-even N for `auto` (or why there is none). */
+static void cl_summary(FILE *o, lx_ctx *ctx, const mem_run *r, const lx_cl_device_info *info)
+{
+    if (r->cold >= 0) {
         fprintf(o, "OpenCL device: %s (%s), %u compute units, fp64 %s. Cold start (context, queue, program build, "
                    "first call): %.3f s (PoCL kernel cache in POCL_CACHE_DIR makes later starts faster).\n",
-                info.device_name, info.platform_name, info.compute_units, info.fp64 ? "yes" : "no", cold);
-        if (last_cl > 0 && last_cl < last_cpu)
+                info->device_name, info->platform_name, info->compute_units, info->fp64 ? "yes" : "no", r->cold);
+        if (r->last_cl > 0 && r->last_cl < r->last_cpu)
             fprintf(o, "Break-even for `auto` (cold): N = %.3g spectra (start-up / per-spectrum saving).\n\n",
-                    cold / (last_cpu - last_cl));
+                    r->cold / (r->last_cpu - r->last_cl));
         else
             fprintf(o, "Break-even for `auto`: never on this device: OpenCL is not faster per spectrum than the CPU "
                        "path (%.3g vs %.3g us per spectrum at the largest N), so `auto` keeps the CPU.\n\n",
-                    last_cl * 1e6, last_cpu * 1e6);
+                    r->last_cl * 1e6, r->last_cpu * 1e6);
     } else {
         fprintf(o, "OpenCL: not available (%s).\n\n", lx_ctx_errmsg(ctx));
     }
+}
 
-    /* ---- CSV end to end ---- */
+/* In memory: for each path and N, 9 interleaved pairs (read the batch's own buffer with the
+ * bandwidth reader, then integrate it), so both see the same data, threads and load; the ratio
+ * column is the median of the 9 per-pair ratios (robust to load changing during the run). Then the
+ * OpenCL summary. */
+static void in_memory(FILE *o, lx_ctx *ctx, const float *v, double *out, const size_t *sizes, int nsizes, int cores,
+                      double bwT, const lx_simd *paths, int npaths)
+{
+    lx_cl_device_info info;
+    mem_run r = {.ctx = ctx, .v = v, .out = out, .bwT = bwT, .cores = cores};
+    r.cold = cl_cold_start(ctx, v, out, &info);
+    fprintf(o, "| path | N | CPU spectra/s | CPU GB/s | read GB/s (same buffer) | CPU / read (median of pairs) | CPU / bandwidth above | "
+               "OpenCL spectra/s | OpenCL / bandwidth above | OpenCL compensated float |\n");
+    fprintf(o, "|---|---|---|---|---|---|---|---|---|---|\n");
+    for (int pi = 0; pi < npaths; pi++)
+        for (int i = 0; i < nsizes; i++) in_memory_row(o, &r, paths[pi], sizes[i], r.cold >= 0 && pi == 0, pi == 0);
+    unsetenv("LX_SIMD");
+    fprintf(o, "\n");
+    cl_summary(o, ctx, &r, &info);
+}
+
+/* The CMF table the peer scripts read (path: 471 x 3 doubles). */
+static void write_cmf(lx_ctx *ctx, const char *path)
+{
+    FILE *f = fopen(path, "wb");
+    lx_spd fx[3];
+    for (int k = 0; k < 3; k++) lx_function_get(ctx, FNS[k], &fx[k]);
+    for (int j = 0; f && j < NL; j++)
+        for (int k = 0; k < 3; k++) fwrite(&fx[k].value[j], sizeof(double), 1, f);
+    if (f) fclose(f);
+}
+
+/* The peers on n spectra: numpy loadtxt + matmul end to end (*np_s) and colour-science's
+ * msds_to_XYZ in memory (*col), seconds (NaN when they did not run). */
+static void peer_times(const char *peers, const char *py, const char *tmp, const float *v, size_t n, double *np_s,
+                       double *col)
+{
+    char script[600], nbuf[32];
+    snprintf(script, sizeof script, "%s/spd_text_peers.py", peers);
+    snprintf(nbuf, sizeof nbuf, "%zu", n);
+    char *const a1[] = {(char *)py, script, "csv_np_loadtxt", nbuf, NULL};
+    char *js = cli_bench_capture(a1, tmp);
+    *np_s = cli_bench_json_num(js, "total_s");
+    free(js);
+    /* colour-science on the same spectra in memory (its binary input file) */
+    char bin[600];
+    snprintf(bin, sizeof bin, "%s/spd_%zu_f32.bin", tmp, n);
+    FILE *f = fopen(bin, "wb");
+    if (f) {
+        fwrite(v, sizeof(float), n * NL, f);
+        fclose(f);
+        snprintf(script, sizeof script, "%s/spd_xyz_peers.py", peers);
+        char *const a2[] = {(char *)py, script, "colour_msds_nd", nbuf, "f32", "3", NULL};
+        js = cli_bench_capture(a2, tmp);
+        *col = cli_bench_json_num(js, "median_s");
+        free(js);
+        unlink(bin);
+    }
+}
+
+/* One row of the CSV table: the library's CSV path on the file at path (n spectra, size bytes) on
+ * SIMD path `path_simd`, beside C strtod (ms) and, on the first path (first), the peers. */
+static void csv_row(FILE *o, lx_ctx *ctx, const char *path, size_t n, double size, lx_simd path_simd, int first, double ms,
+                    double np_s, double col)
+{
+    double tl[3], tcpu[3];
+    int good = 1;
+    setenv("LX_SIMD", lx_simd_name(path_simd), 1);
+    for (int r = 0; r < 3 && good; r++) {
+        /* the library's CSV path end to end: mapped file, parsed on every core chunk by
+         * chunk, each chunk integrated while the next one parses */
+        double t0 = cli_bench_now_s(), c0 = cli_bench_cpu_s(), *res = NULL;
+        size_t got = 0;
+        if (lx_batch_table_integrate_file(ctx, path, FNS, 4, 0, &res, &got) != LX_OK || got != n) {
+            cli_fail("bench", ctx, LX_EPARSE);
+            good = 0;
+        }
+        tl[r] = cli_bench_now_s() - t0;
+        tcpu[r] = cli_bench_cpu_s() - c0;
+        lx_batch_results_free(res);
+    }
+    unsetenv("LX_SIMD");
+    if (!good) return;
+    double ml = cli_bench_median(tl, 3), mc = cli_bench_median(tcpu, 3);
+    fprintf(o, "| %.0e | %.1f | %s | %.4f | %.0f | %.4f | %.0f |", (double)n, size / 1e6, lx_simd_name(path_simd), ml,
+            size / ml / 1e6, mc, size / mc / 1e6);
+    if (!first) fprintf(o, " | | |");
+    else {
+        fprintf(o, " %.4f |", ms);
+        if (isnan(np_s)) fprintf(o, " not installed |");
+        else fprintf(o, " %.4f |", np_s);
+        if (isnan(col)) fprintf(o, " not installed |");
+        else fprintf(o, " %.4f |", col);
+    }
+    fprintf(o, " %.1fx |", ms / ml);
+    if (isnan(np_s)) fprintf(o, " - |\n");
+    else fprintf(o, " %.1fx |\n", np_s / ml);
+    fflush(o);
+}
+
+/* CSV end to end: the library's CSV path against C strtod and the Python peers (py, when it has
+ * numpy and colour), for each N up to 1e5. */
+static void csv_end_to_end(FILE *o, lx_ctx *ctx, const char *tmp, const char *py, const float *v, const size_t *sizes,
+                           int nsizes, const lx_simd *paths, int npaths)
+{
     char pbuf[512], path[600], cmf[600];
     const char *peers = find_peers(pbuf, sizeof pbuf);
-    const char *py = getenv("LX_PEERS_PYTHON");
-    if (!py || !*py) py = "python3";
     char *const pycheck[] = {(char *)py, "-c", "import numpy, colour; print(1)", NULL};
     char *ok = peers ? cli_bench_capture(pycheck, NULL) : NULL;
     int have_py = ok != NULL;
     free(ok);
-    /* the CMF table the peer scripts read (cmf_1931_2.bin: 471 x 3 doubles) */
     snprintf(cmf, sizeof cmf, "%s/cmf_1931_2.bin", tmp);
-    {
-        FILE *f = fopen(cmf, "wb");
-        lx_spd fx[3];
-        for (int k = 0; k < 3; k++) lx_function_get(ctx, FNS[k], &fx[k]);
-        for (int j = 0; f && j < NL; j++)
-            for (int k = 0; k < 3; k++) fwrite(&fx[k].value[j], sizeof(double), 1, f);
-        if (f) fclose(f);
-    }
+    write_cmf(ctx, cmf);
     double w[4 * NL];
     for (int k = 0; k < 4; k++) {
         lx_spd fx;
@@ -427,114 +514,87 @@ int cli_bench_spd(FILE *report, const char *tmp, const size_t *sizes, int nsizes
         size_t rows = 0;
         for (int r = 0; r < 3; r++) ts[r] = strtod_e2e(path, w, &rows);
         double ms = cli_bench_median(ts, 3), np_s = NAN, col = NAN;
-        if (have_py) {
-            char script[600], nbuf[32];
-            snprintf(script, sizeof script, "%s/spd_text_peers.py", peers);
-            snprintf(nbuf, sizeof nbuf, "%zu", n);
-            char *const a1[] = {(char *)py, script, "csv_np_loadtxt", nbuf, NULL};
-            char *js = cli_bench_capture(a1, tmp);
-            np_s = cli_bench_json_num(js, "total_s");
-            free(js);
-            /* colour-science on the same spectra in memory (its binary input file) */
-            char bin[600];
-            snprintf(bin, sizeof bin, "%s/spd_%zu_f32.bin", tmp, n);
-            FILE *f = fopen(bin, "wb");
-            if (f) {
-                fwrite(v, sizeof(float), n * NL, f);
-                fclose(f);
-                snprintf(script, sizeof script, "%s/spd_xyz_peers.py", peers);
-                char *const a2[] = {(char *)py, script, "colour_msds_nd", nbuf, "f32", "3", NULL};
-                js = cli_bench_capture(a2, tmp);
-                col = cli_bench_json_num(js, "median_s");
-                free(js);
-                unlink(bin);
-            }
-        }
-        for (int pi = 0; pi < npaths; pi++) {
-            double tl[3], tcpu[3];
-            int good = 1;
-            setenv("LX_SIMD", lx_simd_name(paths[pi]), 1);
-            for (int r = 0; r < 3 && good; r++) {
-                /* the library's CSV path end to end: mapped file, parsed on every core chunk by
-                 * chunk, each chunk integrated while the next one parses */
-                double t0 = cli_bench_now_s(), c0 = cli_bench_cpu_s(), *res = NULL;
-                size_t got = 0;
-                if (lx_batch_table_integrate_file(ctx, path, FNS, 4, 0, &res, &got) != LX_OK || got != n) {
-                    cli_fail("bench", ctx, LX_EPARSE);
-                    good = 0;
-                }
-                tl[r] = cli_bench_now_s() - t0;
-                tcpu[r] = cli_bench_cpu_s() - c0;
-                lx_batch_results_free(res);
-            }
-            unsetenv("LX_SIMD");
-            if (!good) continue;
-            double ml = cli_bench_median(tl, 3), mc = cli_bench_median(tcpu, 3);
-            fprintf(o, "| %.0e | %.1f | %s | %.4f | %.0f | %.4f | %.0f |", (double)n, stt.st_size / 1e6, lx_simd_name(paths[pi]),
-                    ml, stt.st_size / ml / 1e6, mc, stt.st_size / mc / 1e6);
-            if (pi) fprintf(o, " | | |");
-            else {
-                fprintf(o, " %.4f |", ms);
-                if (isnan(np_s)) fprintf(o, " not installed |");
-                else fprintf(o, " %.4f |", np_s);
-                if (isnan(col)) fprintf(o, " not installed |");
-                else fprintf(o, " %.4f |", col);
-            }
-            fprintf(o, " %.1fx |", ms / ml);
-            if (isnan(np_s)) fprintf(o, " - |\n");
-            else fprintf(o, " %.1fx |\n", np_s / ml);
-            fflush(o);
-        }
+        if (have_py) peer_times(peers, py, tmp, v, n, &np_s, &col);
+        for (int pi = 0; pi < npaths; pi++) csv_row(o, ctx, path, n, (double)stt.st_size, paths[pi], pi == 0, ms, np_s, col);
         unlink(path);
     }
     unlink(cmf);
     fprintf(o, "\n");
-    cli_bench_spd_cli(o, tmp, sizes, nsizes, v);
+}
 
-    /* ---- one small file, whole process ---- */
-    char self[512];
+/* One small file, whole process: `luxcalc spd` (this executable) spawned on an 81-sample file,
+ * and beside it the start-up of colour-science in py. */
+static void one_file(FILE *o, const char *tmp, const char *py)
+{
+    char self[512], path[600];
     ssize_t sl = readlink("/proc/self/exe", self, sizeof self - 1);
-    if (sl > 0) {
-        self[sl] = 0;
-        snprintf(path, sizeof path, "%s/one.csv", tmp);
-        FILE *f = fopen(path, "w");
-        if (f) {
-            fprintf(f, "wavelength_nm,value\n");
-            for (int j = 0; j < 81; j++) fprintf(f, "%d,%.6g\n", 380 + 5 * j, lx_illuminant_a(380 + 5 * j));
-            fclose(f);
-            double t[11];
-            int good = 1;
-            for (int r = 0; r < 11 && good; r++) {
-                char *const a[] = {self, "spd", "--format", "csv", path, NULL};
-                double t0 = cli_bench_now_s();
-                char *res = cli_bench_capture(a, NULL);
-                t[r] = cli_bench_now_s() - t0;
-                good = res != NULL;
-                free(res);
-            }
-            if (good) fprintf(o, "`luxcalc spd` on one 81-sample file, whole process (spawn to exit), median of 11: %.2f ms.\n",
-                              cli_bench_median(t, 11) * 1e3);
-            else fprintf(o, "`luxcalc spd` on one small file: the command failed.\n");
-            /* the peer's start-up alone: what a one-off calculation costs in Python */
-            double tp[3];
-            int have = 1;
-            for (int r = 0; r < 3 && have; r++) {
-                char *const a[] = {(char *)py, "-c", "import colour", NULL};
-                double t0 = cli_bench_now_s();
-                char *res = cli_bench_capture(a, NULL);
-                tp[r] = cli_bench_now_s() - t0;
-                have = res != NULL;
-                free(res);
-            }
-            if (have) fprintf(o, "Beside it, `%s -c 'import colour'` (colour-science start-up alone), median of 3: %.0f ms.\n\n", py,
-                              cli_bench_median(tp, 3) * 1e3);
-            else fprintf(o, "Beside it, `%s -c 'import colour'`: colour-science not installed.\n\n", py);
-            unlink(path);
-        }
+    if (sl <= 0) return;
+    self[sl] = 0;
+    snprintf(path, sizeof path, "%s/one.csv", tmp);
+    FILE *f = fopen(path, "w");
+    if (!f) return;
+    fprintf(f, "wavelength_nm,value\n");
+    for (int j = 0; j < 81; j++) fprintf(f, "%d,%.6g\n", 380 + 5 * j, lx_illuminant_a(380 + 5 * j));
+    fclose(f);
+    double t[11];
+    int good = 1;
+    for (int r = 0; r < 11 && good; r++) {
+        char *const a[] = {self, "spd", "--format", "csv", path, NULL};
+        double t0 = cli_bench_now_s();
+        char *res = cli_bench_capture(a, NULL);
+        t[r] = cli_bench_now_s() - t0;
+        good = res != NULL;
+        free(res);
     }
+    if (good) fprintf(o, "`luxcalc spd` on one 81-sample file, whole process (spawn to exit), median of 11: %.2f ms.\n",
+                      cli_bench_median(t, 11) * 1e3);
+    else fprintf(o, "`luxcalc spd` on one small file: the command failed.\n");
+    /* the peer's start-up alone: what a one-off calculation costs in Python */
+    double tp[3];
+    int have = 1;
+    for (int r = 0; r < 3 && have; r++) {
+        char *const a[] = {(char *)py, "-c", "import colour", NULL};
+        double t0 = cli_bench_now_s();
+        char *res = cli_bench_capture(a, NULL);
+        tp[r] = cli_bench_now_s() - t0;
+        have = res != NULL;
+        free(res);
+    }
+    if (have) fprintf(o, "Beside it, `%s -c 'import colour'` (colour-science start-up alone), median of 3: %.0f ms.\n\n", py,
+                      cli_bench_median(tp, 3) * 1e3);
+    else fprintf(o, "Beside it, `%s -c 'import colour'`: colour-science not installed.\n\n", py);
+    unlink(path);
+}
+
+int cli_bench_spd(FILE *report, const char *tmp, const size_t *sizes, int nsizes)
+{
+    FILE *o = report;
+    size_t nmax = 0;
+    for (int i = 0; i < nsizes; i++)
+        if (sizes[i] > nmax) nmax = sizes[i];
+    float *v = malloc(nmax * NL * sizeof *v);
+    double *out = malloc(nmax * 4 * sizeof *out);
+    if (!v || !out) {
+        cli_error("bench", "out of memory for %zu spectra", nmax);
+        return CLI_RUNTIME;
+    }
+    make_spectra(v, nmax);
+    int cores = (int)sysconf(_SC_NPROCESSORS_ONLN);
+    if (cores < 1) cores = 1;
+    if (cores > 16) cores = 16;
+    double bwT = bandwidth_header(o, v, nmax, cores);
+    lx_ctx *ctx = cli_ctx("bench");
+    if (!ctx) return CLI_RUNTIME;
+    lx_simd paths[3];
+    int npaths = cli_bench_paths(paths);
+    in_memory(o, ctx, v, out, sizes, nsizes, cores, bwT, paths, npaths);
+    const char *py = getenv("LX_PEERS_PYTHON");
+    if (!py || !*py) py = "python3";
+    csv_end_to_end(o, ctx, tmp, py, v, sizes, nsizes, paths, npaths);
+    cli_bench_spd_cli(o, tmp, sizes, nsizes, v);
+    one_file(o, tmp, py);
     lx_ctx_destroy(ctx);
     free(v);
     free(out);
     return CLI_OK;
 }
-
