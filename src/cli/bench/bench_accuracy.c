@@ -10,24 +10,6 @@
 #include <string.h>
 #include <time.h>
 
-double acc_now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int cmp_d(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : x > y;
-}
-
-double acc_median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp_d);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 /* Seconds per call of fn(arg): repetitions grow until one run lasts >= 3 ms (at most `cap`
  * calls), then the median of 5 runs. Every call does the same work on the same input. */
@@ -36,19 +18,19 @@ double acc_time(void (*fn)(void *), void *arg, long cap)
     long reps = 1;
     double t = 0;
     for (;;) {
-        double t0 = acc_now_s();
+        double t0 = cli_bench_now_s();
         for (long r = 0; r < reps; r++) fn(arg);
-        t = acc_now_s() - t0;
+        t = cli_bench_now_s() - t0;
         if (t >= 3e-3 || reps >= cap) break;
         reps = t > 0 ? (long)fmin((double)cap, fmax(2.0 * reps, reps * 4e-3 / t)) : reps * 8;
     }
     double ts[5];
     for (int k = 0; k < 5; k++) {
-        double t0 = acc_now_s();
+        double t0 = cli_bench_now_s();
         for (long r = 0; r < reps; r++) fn(arg);
-        ts[k] = (acc_now_s() - t0) / (double)reps;
+        ts[k] = (cli_bench_now_s() - t0) / (double)reps;
     }
-    return acc_median(ts, 5);
+    return cli_bench_median(ts, 5);
 }
 
 void acc_fmt_time(char *buf, size_t n, double s)
@@ -449,7 +431,7 @@ static void error_table(FILE *o, const scase *cs, const spec_res *r, int e)
             if (!isnan(r->tm[m][c])) ts[nt++] = r->tm[m][c];
         if (m >= 10 && m <= 12 && !r->have_cl) continue;
         char tb[32], eb[32];
-        if (nt) acc_fmt_time(tb, sizeof tb, acc_median(ts, nt));
+        if (nt) acc_fmt_time(tb, sizeof tb, cli_bench_median(ts, nt));
         else snprintf(tb, sizeof tb, "-");
         fprintf(o, "| %s | %s |", mname[m], tb);
         for (int c = 0; c < NCASE; c++) {
@@ -615,7 +597,7 @@ static int spectra_png(lx_ctx *ctx, FILE *o, const char *png, const spec_res *r)
                 if (is_line == g && !isnan(r->err[m][c][0])) w = fmax(w, r->err[m][c][0]);
             }
             if (!nt) continue;
-            pts[np++] = (lx_plot_point){acc_median(ts, nt), w, mlabel[m], g};
+            pts[np++] = (lx_plot_point){cli_bench_median(ts, nt), w, mlabel[m], g};
         }
     static const char *series[2] = {"D65, FL2, HP1, 1000 K", "laser, Na doublet"};
     if (lx_error_time_write_png(ctx, png, "Spectra: worst relative error in Y", "time per spectrum (s), median",
@@ -667,7 +649,7 @@ int cli_bench_accuracy(FILE *out, const char *outpath)
     }
     lx_ctx *ctx = cli_ctx("bench");
     if (!ctx) return CLI_RUNTIME;
-    double t0 = acc_now_s();
+    double t0 = cli_bench_now_s();
     fprintf(out, "# bench accuracy: error against time\n\n");
     int rc = acc_spectra(ctx, out, *base ? p1 : NULL);
     if (!rc) rc = acc_radiance(ctx, out, *base ? p2 : NULL);
@@ -681,7 +663,7 @@ int cli_bench_accuracy(FILE *out, const char *outpath)
         } else {
             fprintf(out, "(PNG plots are written with -o DIR/NAME.md, as DIR/NAME_spectra.png, _radiance.png, _lighting.png, _nearfield.png.)\n\n");
         }
-        fprintf(out, "bench accuracy: %.1f s in all.\n\n", acc_now_s() - t0);
+        fprintf(out, "bench accuracy: %.1f s in all.\n\n", cli_bench_now_s() - t0);
     }
     lx_ctx_destroy(ctx);
     return rc;

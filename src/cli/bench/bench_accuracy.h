@@ -5,10 +5,9 @@
 
 #include <stdio.h>
 
+#include "bench_common.h"
 #include "luxcalc.h"
 
-double acc_now_s(void);
-double acc_median(double *v, int n); /* sorts v */
 /* Seconds per call of fn(arg): median of 5 runs of enough calls (at most cap) to last 3 ms. */
 double acc_time(void (*fn)(void *), void *arg, long cap);
 void acc_fmt_time(char *buf, size_t n, double s);

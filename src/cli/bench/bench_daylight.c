@@ -5,6 +5,7 @@
  * the error of the mean daylight factor and of the worst point against a converged reference
  * (patch 0.18 m, tolerance 1e-5), the time (plan and evaluation), patches and memory. */
 #include "cli/cli.h"
+#include "bench_common.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -12,23 +13,7 @@
 #include <string.h>
 #include <time.h>
 
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + ts.tv_nsec * 1e-9;
-}
 
-static double loadavg1(void)
-{
-    FILE *f = fopen("/proc/loadavg", "r");
-    double l = NAN;
-    if (f) {
-        if (fscanf(f, "%lf", &l) != 1) l = NAN;
-        fclose(f);
-    }
-    return l;
-}
 
 static void scene_text(char *buf, size_t n, const char *tol, const char *extra)
 {
@@ -56,11 +41,11 @@ static lx_status run_day(lx_ctx *ctx, const char *tol, const char *extra, day_ru
     lx_scene *sc = NULL;
     lx_scene_plan *plan = NULL;
     lx_scene_result *res = NULL;
-    double t0 = now_s();
+    double t0 = cli_bench_now_s();
     lx_status st = lx_scene_read_mem(ctx, "bench_daylight.scene", text, strlen(text), &sc);
     if (st == LX_OK) st = lx_scene_plan_make(ctx, sc, LX_BACKEND_CPU, &plan);
     if (st == LX_OK) st = lx_scene_eval(ctx, sc, plan, NULL, &res);
-    out->seconds = now_s() - t0;
+    out->seconds = cli_bench_now_s() - t0;
     if (st == LX_OK && res->daylight_factor) {
         out->n = res->n_points;
         out->df = malloc(out->n * sizeof *out->df);
@@ -125,7 +110,7 @@ int cli_bench_daylight(FILE *out)
             snprintf(msg, sizeof msg, "%s", lx_ctx_errmsg(ctx));
             for (char *p = msg; *p; p++)
                 if (*p == '|') *p = '/';
-            fprintf(out, "| %s | | | | | | refused: %s | | %.2f |\n", tols[k], msg, loadavg1());
+            fprintf(out, "| %s | | | | | | refused: %s | | %.2f |\n", tols[k], msg, cli_bench_load1());
             free(r.df);
             continue;
         }
@@ -133,7 +118,7 @@ int cli_bench_daylight(FILE *out)
         errors(&r, &ref, &me, &w);
         fprintf(out, "| %s%s | %zu | %zu | %.1f | %.2f (%.2f) | %.4f | %.1e | %.1e | %.2f |\n", tols[k],
                 k == 3 ? " (default)" : "", r.patches, r.elements, r.memory / 1048576.0, r.seconds, r.seconds_daylight, r.mean,
-                me, w, loadavg1());
+                me, w, cli_bench_load1());
         fflush(out);
         free(r.df);
     }

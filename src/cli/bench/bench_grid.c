@@ -4,6 +4,7 @@
  * the exact bilinear result, beside the numpy peer ../shared/peers/illum_numpy.py run in the same
  * process tree. */
 #include "cli/cli.h"
+#include "bench_common.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -11,12 +12,6 @@
 #include <time.h>
 
 
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + ts.tv_nsec * 1e-9;
-}
 
 static int cmp_d(const void *a, const void *b)
 {
@@ -39,25 +34,15 @@ static double time_grid(lx_ctx *ctx, const lx_placement *pl, size_t m, const dou
     if (lx_grid_illuminance(ctx, pl, m, pts, n, nz, 1, &o, E)) return NAN;
     *used = lx_ctx_backend_used(ctx);
     for (int r = 0; r < reps; r++) {
-        double t0 = now_s();
+        double t0 = cli_bench_now_s();
         if (lx_grid_illuminance(ctx, pl, m, pts, n, nz, 1, &o, E)) return NAN;
-        t[r] = now_s() - t0;
+        t[r] = cli_bench_now_s() - t0;
     }
     qsort(t, (size_t)reps, sizeof t[0], cmp_d);
     return t[reps / 2];
 }
 
 /* The 1-minute load average (other work on the cores), NaN when unknown. */
-static double loadavg1(void)
-{
-    FILE *f = fopen("/proc/loadavg", "r");
-    double l = NAN;
-    if (f) {
-        if (fscanf(f, "%lf", &l) != 1) l = NAN;
-        fclose(f);
-    }
-    return l;
-}
 
 static double peer_numpy(size_t n, int m)
 {
@@ -175,7 +160,7 @@ int cli_bench_grid(FILE *out)
             }
             fprintf(out, "| %s | %s | %s | %.3f | %.1f | %.1f | %s | %.2f |\n", names[L], runs[r].path,
                     used == LX_BACKEND_OPENCL ? "opencl" : "cpu", t, n * (double)M / t / 1e6, n * (double)M / cs / 1e6, err,
-                    loadavg1());
+                    cli_bench_load1());
             fflush(out);
         }
     }

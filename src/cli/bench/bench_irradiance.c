@@ -2,6 +2,7 @@
  * sky-with-sun map of ../shared/peers/envmap_numpy.py at 512x256, 2048x1024 and 4096x2048, beside
  * the numpy peer (run in the same session when /tmp/peers/bin/python and the script are found). */
 #include "cli/cli.h"
+#include "bench_common.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -12,12 +13,6 @@
 
 #define PI CLI_PI
 
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 static int cmp_d(const void *a, const void *b)
 {
@@ -122,18 +117,18 @@ int cli_bench_irradiance(FILE *out)
         lx_envmap_write_exr(ctx, path, m, NULL);
         double t[5], tread, tsh9, tfast, tbrute = NAN;
         for (int k = 0; k < 5; k++) {
-            double t0 = now_s();
+            double t0 = cli_bench_now_s();
             lx_exr_read(ctx, path, &r);
-            t[k] = now_s() - t0;
+            t[k] = cli_bench_now_s() - t0;
             if (k < 4) lx_envmap_free(r), r = NULL;
         }
         qsort(t, 5, sizeof *t, cmp_d);
         tread = t[2];
         lx_irr_opts o = {.method = LX_IRR_SH9};
         for (int k = 0; k < 5; k++) {
-            double t0 = now_s();
+            double t0 = cli_bench_now_s();
             lx_irradiance_map(ctx, r, 0, 0, &o, &e);
-            t[k] = now_s() - t0;
+            t[k] = cli_bench_now_s() - t0;
             lx_envmap_free(e), e = NULL;
         }
         qsort(t, 5, sizeof *t, cmp_d);
@@ -144,18 +139,18 @@ int cli_bench_irradiance(FILE *out)
         for (int k = 0; k < NO; k++) lx_envmap_direction(64, 32, k / 64 + 0.5, k % 64 + 0.5, dirs + 3 * k);
         o.method = LX_IRR_FAST;
         for (int k = 0; k < 5; k++) {
-            double t0 = now_s();
+            double t0 = cli_bench_now_s();
             lx_irradiance_dirs(ctx, r, NO, dirs, &o, E);
-            t[k] = now_s() - t0;
+            t[k] = cli_bench_now_s() - t0;
         }
         qsort(t, 5, sizeof *t, cmp_d);
         tfast = t[2];
         lum(r, E, NO, ref);
         if (W <= 2048) {
             o.method = LX_IRR_BRUTE, o.backend = LX_BACKEND_CPU;
-            double t0 = now_s();
+            double t0 = cli_bench_now_s();
             lx_irradiance_dirs(ctx, r, NO, dirs, &o, E);
-            tbrute = now_s() - t0;
+            tbrute = cli_bench_now_s() - t0;
         }
         double sh_max, sh_mean, nn_max, nn_mean, bf_max, bf_mean;
         o.method = LX_IRR_SH9;

@@ -4,6 +4,7 @@
  * three in one pass (lx_lab_batch), against the goal of 1e6 spectra/s; the per-spectrum calls beside
  * them for scale. */
 #include "cli/cli.h"
+#include "bench_common.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -15,12 +16,6 @@ int cli_bench_lab(FILE *out);
 #define NLAM 401 /* 380-780 nm at 1 nm */
 #define RUNS 5
 
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 /* CPU time of the whole process (every thread): what the work costs, whatever else the machine runs */
 static double cpu_s(void)
@@ -43,13 +38,13 @@ static double timed(lx_ctx *ctx, const lx_batch *b, int what, lx_par *par, lx_ha
 {
     double t[RUNS], c[RUNS];
     for (int r = 0; r < RUNS; r++) {
-        double t0 = now_s(), c0 = cpu_s();
+        double t0 = cli_bench_now_s(), c0 = cpu_s();
         lx_status st = LX_OK;
         if (what == 0) st = lx_par_batch(ctx, b, NULL, par);
         if (what == 1) st = lx_hazard_batch(ctx, b, NULL, hz);
         if (what == 2) st = lx_binning_batch(ctx, b, NULL, bin);
         if (what == 3) st = lx_lab_batch(ctx, b, NULL, par, hz, bin); /* one pass over the values */
-        t[r] = now_s() - t0;
+        t[r] = cli_bench_now_s() - t0;
         c[r] = cpu_s() - c0;
         if (st != LX_OK) *fail = 1;
     }
@@ -65,7 +60,7 @@ static double one_by_one(lx_ctx *ctx, const float *v, size_t n)
 {
     double wl[NLAM], val[NLAM];
     for (int j = 0; j < NLAM; j++) wl[j] = 380 + j;
-    double t0 = now_s();
+    double t0 = cli_bench_now_s();
     for (size_t i = 0; i < n; i++) {
         for (int j = 0; j < NLAM; j++) val[j] = v[i * NLAM + j];
         lx_spd s = {NULL, NLAM, wl, val};
@@ -78,7 +73,7 @@ static double one_by_one(lx_ctx *ctx, const float *v, size_t n)
         if (lx_spd_colorimetry(ctx, &s, LX_OBSERVER_2, LX_METHOD_CIE15, &c) == LX_OK)
             lx_binning_compute(ctx, c.x, c.y, c.cct_K, c.duv, &b);
     }
-    return (now_s() - t0) / (double)n;
+    return (cli_bench_now_s() - t0) / (double)n;
 }
 
 int cli_bench_lab(FILE *out)

@@ -1,6 +1,7 @@
 /* bench_metrics.c - `luxcalc bench metrics`: colour rendering (CIE 13.3 CRI, CIE 224 / TM-30) and
  * alpha-opic throughput over 1e5 spectra on every core, beside colour-science and luxpy if installed. */
 #include "cli/cli.h"
+#include "bench_common.h"
 
 #include <math.h>
 #include <pthread.h>
@@ -21,12 +22,6 @@ typedef struct job {
     double checksum;
 } job;
 
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 static void *worker(void *arg)
 {
@@ -60,7 +55,7 @@ static double run_threads(const double *v, size_t n, int what, int nt, size_t *r
 {
     job jobs[64];
     pthread_t th[64];
-    double t0 = now_s();
+    double t0 = cli_bench_now_s();
     for (int k = 0; k < nt; k++) {
         jobs[k] = (job){v, n * (size_t)k / (size_t)nt, n * (size_t)(k + 1) / (size_t)nt, what, 0, 0};
         if (pthread_create(&th[k], NULL, worker, &jobs[k]) != 0) worker(&jobs[k]), th[k] = 0;
@@ -70,7 +65,7 @@ static double run_threads(const double *v, size_t n, int what, int nt, size_t *r
         if (th[k]) pthread_join(th[k], NULL);
         *refused += jobs[k].refused;
     }
-    return now_s() - t0;
+    return cli_bench_now_s() - t0;
 }
 
 /* ms per spectrum of a peer (python snippet printing one number), or NaN when it fails. */
@@ -137,9 +132,9 @@ int cli_bench_metrics(FILE *o)
     static const char *const bname[3] = {"CPU", "OpenCL, first call: start-up and kernel build", "OpenCL, warm"};
     for (int be = 0; res && be < 3; be++) {
         lx_batch_opts opt = {.backend = be ? LX_BACKEND_OPENCL : LX_BACKEND_CPU};
-        double t0 = now_s();
+        double t0 = cli_bench_now_s();
         lx_status st = lx_alphaopic_batch(ctx, &b, &opt, res);
-        double t = now_s() - t0;
+        double t = cli_bench_now_s() - t0;
         if (st == LX_OK)
             fprintf(o, "| alpha-opic batch (lx_alphaopic_batch, %s) | %zu | %.3f | %.0f | - | 0 |\n", bname[be], n,
                     t, (double)n / t);

@@ -4,6 +4,7 @@
  * the error of the work-plane mean and of the worst point against a converged reference (patch
  * 0.2 m, tolerance 1e-5), the time (plan and evaluation), patches and memory. */
 #include "cli/cli.h"
+#include "bench_common.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -11,23 +12,7 @@
 #include <string.h>
 #include <time.h>
 
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + ts.tv_nsec * 1e-9;
-}
 
-static double loadavg1(void)
-{
-    FILE *f = fopen("/proc/loadavg", "r");
-    double l = NAN;
-    if (f) {
-        if (fscanf(f, "%lf", &l) != 1) l = NAN;
-        fclose(f);
-    }
-    return l;
-}
 
 /* The scene; `extra`: more [scene] keys. Named in samples/scenes so its IES path resolves. */
 static void scene_text(char *buf, size_t n, const char *tol, const char *extra)
@@ -62,11 +47,11 @@ static lx_status run_room(lx_ctx *ctx, const char *tol, const char *extra, lx_ba
     lx_scene *sc = NULL;
     lx_scene_plan *plan = NULL;
     lx_scene_result *res = NULL;
-    double t0 = now_s();
+    double t0 = cli_bench_now_s();
     lx_status st = lx_scene_read_mem(ctx, "samples/scenes/bench_room.scene", text, strlen(text), &sc);
     if (st == LX_OK) st = lx_scene_plan_make(ctx, sc, backend, &plan);
     if (st == LX_OK) st = lx_scene_eval(ctx, sc, plan, NULL, &res);
-    out->seconds = now_s() - t0;
+    out->seconds = cli_bench_now_s() - t0;
     if (st == LX_OK) {
         out->n = res->n_points;
         out->E = malloc(out->n * sizeof *out->E);
@@ -134,7 +119,7 @@ int cli_bench_room(FILE *out)
                 snprintf(msg, sizeof msg, "%s", lx_ctx_errmsg(ctx));
                 for (char *p = msg; *p; p++)
                     if (*p == '|') *p = '/';
-                fprintf(out, "| %s | %s | | | | | refused: %s | | %.2f |\n", tols[k], b ? "opencl" : "cpu", msg, loadavg1());
+                fprintf(out, "| %s | %s | | | | | refused: %s | | %.2f |\n", tols[k], b ? "opencl" : "cpu", msg, cli_bench_load1());
                 fflush(out);
                 free(r.E);
                 continue;
@@ -143,7 +128,7 @@ int cli_bench_room(FILE *out)
             errors(&r, &ref, &me, &w);
             fprintf(out, "| %s | %s | %zu | %zu | %.1f | %.2f | %.1e | %.1e | %.2f |\n", tols[k],
                     r.backend == LX_BACKEND_OPENCL ? "opencl" : "cpu", r.patches, r.elements, r.memory / 1048576.0,
-                    r.seconds, me, w, loadavg1());
+                    r.seconds, me, w, cli_bench_load1());
             fflush(out);
             free(r.E);
         }

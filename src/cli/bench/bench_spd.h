@@ -6,13 +6,12 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "bench_common.h"
 #include "luxcalc.h"
 
 #define BENCH_NL 471 /* samples of a bench spectrum: 360-830 nm at 1 nm */
 
-double cli_bench_now_s(void);
 double cli_bench_cpu_s(void); /* this process's CPU time, every thread */
-double cli_bench_median(double *v, int n);
 /* Writes ns spectra of v (ns x BENCH_NL floats) as a rows-layout CSV: header "id,360,...,830" when
  * named (rows "s0,...") else numpy's (wavelengths only), values %.6g. 0, or -1 on failure. */
 int cli_bench_write_csv(const char *path, const float *v, size_t ns, int named);
