@@ -9,6 +9,9 @@
 #include <math.h>
 #include <stddef.h>
 
+/* Bytes of an intensity table of `rows` x `cols` floats before its pairs (lx__plum.pair). */
+#define LX__TABLE_PAIRS_AT(rows, cols) (((rows) * (cols) * sizeof(float) + 15) / 16 * 16)
+
 /* Per-luminaire data of one computation. */
 typedef struct lx__plum {
     const lx_luminaire *lum;
@@ -20,6 +23,9 @@ typedef struct lx__plum {
     const float *table; /* LX_INTERP_TABLE: rows x cols */
     int ns, nq, cols;   /* table: rows per hemisphere - 1, columns per quadrant (0: axial), columns */
     size_t toff;        /* offset of the table in the shared table array */
+    const double *pair; /* axial tables: per row (value, next row's value - value) in double, 16-byte
+                         * aligned, in the table's allocation (the SIMD loops: one 16-byte load a point);
+                         * NULL otherwise */
 } lx__plum;
 
 /* The table lookup in local coordinates (x, y, z) at distance d (the CPU twin of grid.cl).

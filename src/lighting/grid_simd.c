@@ -3,6 +3,7 @@
  * and AVX-512 (8 at a time, the same operations), chosen at run time. Same formulas as lx__table_eval and kernels/grid.cl. */
 #include "grid_private.h"
 
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -43,6 +44,20 @@ __attribute__((target("avx2,fma"))) static inline void gather2(const float *T, _
     /* p01 = a0 b0 a1 b1, p23 = a2 b2 a3 b3 */
     *first = _mm256_cvtps_pd(_mm_shuffle_ps(p01, p23, _MM_SHUFFLE(2, 0, 2, 0)));
     *second = _mm256_cvtps_pd(_mm_shuffle_ps(p01, p23, _MM_SHUFFLE(3, 1, 3, 1)));
+}
+
+/* The (value, step) pairs of an axial table at rows idx[k] for 4 lanes (lx__plum.pair): four
+ * 16-byte loads (aligned: the pairs sit at a 16-byte offset of a malloc block), two inserts and
+ * two unpacks; no conversion, no subtraction. */
+__attribute__((target("avx2,fma"))) static inline void pairs4(const double *P, __m128i idx, __m256d *value,
+                                                                __m256d *step)
+{
+    __m256d x02 = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(P + 2 * _mm_cvtsi128_si32(idx))),
+                                       _mm_loadu_pd(P + 2 * _mm_extract_epi32(idx, 2)), 1);
+    __m256d x13 = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(P + 2 * _mm_extract_epi32(idx, 1))),
+                                       _mm_loadu_pd(P + 2 * _mm_extract_epi32(idx, 3)), 1);
+    *value = _mm256_unpacklo_pd(x02, x13);
+    *step = _mm256_unpackhi_pd(x02, x13);
 }
 
 __attribute__((target("avx2,fma"))) static void block_avx2(const lx__plum *p, size_t nb, const double *X,
@@ -95,9 +110,9 @@ __attribute__((target("avx2,fma"))) static void block_avx2(const lx__plum *p, si
         if (!axial) idx = _mm_mullo_epi32(idx, colsi);
         __m256d I;
         if (axial) {
-            __m256d a, b;
-            gather2(p->table, idx, &a, &b);
-            I = _mm256_fmadd_pd(fr, _mm256_sub_pd(b, a), a);
+            __m256d a, st;
+            pairs4(p->pair, idx, &a, &st);
+            I = _mm256_fmadd_pd(fr, st, a);
         } else {
             __m256d ax = _mm256_andnot_pd(sign, lx), ay = _mm256_andnot_pd(sign, ly), s = _mm256_add_pd(ax, ay);
             __m256d yge = _mm256_cmp_pd(ly, zero, _CMP_GE_OQ), xge = _mm256_cmp_pd(lx, zero, _CMP_GE_OQ);
@@ -143,6 +158,23 @@ __attribute__((target("avx512f,avx512dq,avx512vl,fma"))) static inline void gath
     __m256 b = _mm256_set_m128(_mm_shuffle_ps(p45, p67, _MM_SHUFFLE(3, 1, 3, 1)), _mm_shuffle_ps(p01, p23, _MM_SHUFFLE(3, 1, 3, 1)));
     *first = _mm512_cvtps_pd(a);
     *second = _mm512_cvtps_pd(b);
+}
+
+/* pairs4 for 8 lanes: eight 16-byte loads into two vectors of four pairs, two unpacks. */
+__attribute__((target("avx512f,avx512dq,avx512vl,fma"))) static inline void pairs8(const double *P, __m256i idx,
+                                                                                    __m512d *value, __m512d *step)
+{
+    int32_t k[8];
+    _mm256_storeu_si256((__m256i *)(void *)k, idx);
+    __m512d x = _mm512_castpd128_pd512(_mm_loadu_pd(P + 2 * k[0])), y = _mm512_castpd128_pd512(_mm_loadu_pd(P + 2 * k[1]));
+    x = _mm512_insertf64x2(x, _mm_loadu_pd(P + 2 * k[2]), 1);
+    y = _mm512_insertf64x2(y, _mm_loadu_pd(P + 2 * k[3]), 1);
+    x = _mm512_insertf64x2(x, _mm_loadu_pd(P + 2 * k[4]), 2);
+    y = _mm512_insertf64x2(y, _mm_loadu_pd(P + 2 * k[5]), 2);
+    x = _mm512_insertf64x2(x, _mm_loadu_pd(P + 2 * k[6]), 3);
+    y = _mm512_insertf64x2(y, _mm_loadu_pd(P + 2 * k[7]), 3);
+    *value = _mm512_unpacklo_pd(x, y);
+    *step = _mm512_unpackhi_pd(x, y);
 }
 
 __attribute__((target("avx512f,avx512dq,avx512vl,fma"))) static void block_avx512(const lx__plum *p, size_t nb,
@@ -193,9 +225,9 @@ __attribute__((target("avx512f,avx512dq,avx512vl,fma"))) static void block_avx51
         if (!axial) idx = _mm256_mullo_epi32(idx, colsi);
         __m512d I;
         if (axial) {
-            __m512d a, b;
-            gather2x8(p->table, idx, &a, &b);
-            I = _mm512_fmadd_pd(fr, _mm512_sub_pd(b, a), a);
+            __m512d a, st;
+            pairs8(p->pair, idx, &a, &st);
+            I = _mm512_fmadd_pd(fr, st, a);
         } else {
             __m512d ax = _mm512_abs_pd(lx), ay = _mm512_abs_pd(ly), s = _mm512_add_pd(ax, ay);
             __mmask8 yge = _mm512_cmp_pd_mask(ly, zero, _CMP_GE_OQ), xge = _mm512_cmp_pd_mask(lx, zero, _CMP_GE_OQ);
