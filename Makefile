@@ -16,12 +16,14 @@ ALL_CFLAGS = $(WARN) $(CFLAGS) -fPIC -fvisibility=hidden
 EXR_PC = $(shell pkg-config --silence-errors --libs OpenEXR)
 EXR_CFLAGS = $(or $(shell pkg-config --silence-errors --cflags-only-I OpenEXR),-I/usr/include/OpenEXR)
 EXR_LIB = $(or $(filter -lOpenEXRCore%,$(EXR_PC)),-lOpenEXRCore)
-# cairo draws the plots (PNG through its own writer, text in DejaVu Sans through fontconfig)
+# cairo draws the plots (PNG through its own writer, text in DejaVu Sans through fontconfig); the
+# library opens libcairo.so.2 on the first plot (src/plot/cairo_load.c), so only the tests, which
+# read the PNGs back through cairo, link it
 CAIRO_CFLAGS := $(or $(shell pkg-config --silence-errors --cflags cairo),-I/usr/include/cairo)
 CAIRO_LIB := $(or $(shell pkg-config --silence-errors --libs cairo),-lcairo)
 ALL_CPPFLAGS = $(CPPFLAGS) -D_POSIX_C_SOURCE=200809L -Isrc -I$(BUILD)/gen $(EXR_CFLAGS) $(CAIRO_CFLAGS) \
   -DLX_OPENCL=$(LX_OPENCL) -DCL_TARGET_OPENCL_VERSION=120
-LIBS = $(CAIRO_LIB) $(EXR_LIB) -lm -lpthread
+LIBS = $(EXR_LIB) -lm -lpthread -ldl
 PKGS := libopenexr-dev libcairo2-dev fonts-dejavu-core libcmocka-dev pkg-config
 ifeq ($(LX_OPENCL),1)
 LIBS += -lOpenCL
@@ -154,7 +156,7 @@ $(BUILD)/tests/test_faults: $(FAULT_LIB)
 TEST_LIB = $(STATIC)
 $(BUILD)/tests/%: tests/%.c $(STATIC)
 	@mkdir -p $(dir $@)
-	$(CC) $(ALL_CPPFLAGS) $(ALL_CFLAGS) -Itests -MMD -MP -MF $@.d -MT $@ -o $@ $< $(TEST_LIB) -lcmocka $(LIBS)
+	$(CC) $(ALL_CPPFLAGS) $(ALL_CFLAGS) -Itests -MMD -MP -MF $@.d -MT $@ -o $@ $< $(TEST_LIB) -lcmocka $(LIBS) $(CAIRO_LIB)
 
 -include $(wildcard $(BUILD)/obj/*/*.d $(BUILD)/obj/cli/bench/*.d $(BUILD)/obj-faults/*/*.d \
   $(BUILD)/tests/*.d $(BUILD)/tests/hard_cases/*.d)

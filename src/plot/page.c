@@ -27,6 +27,8 @@ lx_status lx__page_init(lx_ctx *ctx, lx__page *pg, int w, int h, const unsigned 
 {
     memset(pg, 0, sizeof *pg);
     if (w < 1 || h < 1 || w > 16384 || h > 16384) return lx__error(ctx, LX_EINVAL, NULL, 0, "invalid plot size %dx%d", w, h);
+    lx_status st = lx__cairo_load(ctx);
+    if (st) return st;
     pg->surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h);
     if (cairo_surface_status(pg->surface) != CAIRO_STATUS_SUCCESS) {
         cairo_surface_destroy(pg->surface);

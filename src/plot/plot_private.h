@@ -10,6 +10,72 @@
 
 #include <cairo.h>
 
+/* ---- cairo, loaded on the first plot (cairo_load.c) ----
+ * luxcalc links no cairo: libcairo.so.2 and the 20-odd libraries it needs (fontconfig, freetype,
+ * pixman, X11...) cost 1.3-1.6 ms at every process start, which a command that plots nothing (a
+ * one-off `luxcalc spd`) should not pay. lx__cairo_load opens it once per process (thread-safe)
+ * and fills the table below; every cairo_* call of this layer goes through it (the macros). Each
+ * drawing starts with lx__page_init, which loads it, so no call precedes the load. */
+#define LX__CAIRO_FNS(F) F(arc) F(arc_negative) F(clip) F(close_path) F(create) F(destroy) F(fill) \
+    F(fill_preserve) F(font_extents) F(get_source) F(image_surface_create) F(image_surface_get_data) \
+    F(image_surface_get_stride) F(line_to) F(move_to) F(new_path) F(paint) F(pattern_set_filter) \
+    F(rectangle) F(restore) F(rotate) F(save) F(scale) F(select_font_face) F(set_font_size) F(set_line_cap) \
+    F(set_line_join) F(set_line_width) F(set_source_rgb) F(set_source_rgba) F(set_source_surface) \
+    F(show_text) F(status) F(status_to_string) F(stroke) F(surface_destroy) F(surface_flush) \
+    F(surface_mark_dirty) F(surface_status) F(surface_write_to_png_stream) F(text_extents) F(text_path) \
+    F(translate)
+typedef struct lx__cairo_api {
+#define LX__CAIRO_FIELD(n) __typeof__(cairo_##n) *n;
+    LX__CAIRO_FNS(LX__CAIRO_FIELD)
+#undef LX__CAIRO_FIELD
+} lx__cairo_api;
+extern lx__cairo_api lx__cairo;
+/* Loads cairo (once per process); LX_EUNSUPPORTED naming what failed when it cannot. */
+lx_status lx__cairo_load(lx_ctx *ctx);
+#define cairo_arc (lx__cairo.arc)
+#define cairo_arc_negative (lx__cairo.arc_negative)
+#define cairo_clip (lx__cairo.clip)
+#define cairo_close_path (lx__cairo.close_path)
+#define cairo_create (lx__cairo.create)
+#define cairo_destroy (lx__cairo.destroy)
+#define cairo_fill (lx__cairo.fill)
+#define cairo_fill_preserve (lx__cairo.fill_preserve)
+#define cairo_font_extents (lx__cairo.font_extents)
+#define cairo_get_source (lx__cairo.get_source)
+#define cairo_image_surface_create (lx__cairo.image_surface_create)
+#define cairo_image_surface_get_data (lx__cairo.image_surface_get_data)
+#define cairo_image_surface_get_stride (lx__cairo.image_surface_get_stride)
+#define cairo_line_to (lx__cairo.line_to)
+#define cairo_move_to (lx__cairo.move_to)
+#define cairo_new_path (lx__cairo.new_path)
+#define cairo_paint (lx__cairo.paint)
+#define cairo_pattern_set_filter (lx__cairo.pattern_set_filter)
+#define cairo_rectangle (lx__cairo.rectangle)
+#define cairo_restore (lx__cairo.restore)
+#define cairo_rotate (lx__cairo.rotate)
+#define cairo_save (lx__cairo.save)
+#define cairo_scale (lx__cairo.scale)
+#define cairo_select_font_face (lx__cairo.select_font_face)
+#define cairo_set_font_size (lx__cairo.set_font_size)
+#define cairo_set_line_cap (lx__cairo.set_line_cap)
+#define cairo_set_line_join (lx__cairo.set_line_join)
+#define cairo_set_line_width (lx__cairo.set_line_width)
+#define cairo_set_source_rgb (lx__cairo.set_source_rgb)
+#define cairo_set_source_rgba (lx__cairo.set_source_rgba)
+#define cairo_set_source_surface (lx__cairo.set_source_surface)
+#define cairo_show_text (lx__cairo.show_text)
+#define cairo_status (lx__cairo.status)
+#define cairo_status_to_string (lx__cairo.status_to_string)
+#define cairo_stroke (lx__cairo.stroke)
+#define cairo_surface_destroy (lx__cairo.surface_destroy)
+#define cairo_surface_flush (lx__cairo.surface_flush)
+#define cairo_surface_mark_dirty (lx__cairo.surface_mark_dirty)
+#define cairo_surface_status (lx__cairo.surface_status)
+#define cairo_surface_write_to_png_stream (lx__cairo.surface_write_to_png_stream)
+#define cairo_text_extents (lx__cairo.text_extents)
+#define cairo_text_path (lx__cairo.text_path)
+#define cairo_translate (lx__cairo.translate)
+
 /* ---- what a plot drew (page.c) ---- */
 
 /* Kinds of label, for placement rules and for tests. */
