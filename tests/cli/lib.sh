@@ -17,7 +17,7 @@ run_stdin() { # run_stdin FILE ARGS...: feeds FILE on standard input
 ok() { echo "ok $1"; }
 notok() { echo "not ok $1: $2"; }
 skip() { echo "skip $1: $2"; } # a check this machine cannot make: counted as skipped, never passed
-# slow: how much slower than natively luxcalc runs here (LX_TEST_SLOW; make valgrind sets 20): the
+# slow: how much slower than natively luxcalc runs here (LX_TEST_SLOW; make valgrind sets 20, make asan 3): the
 # cases' time bounds are multiplied by it
 slow=${LX_TEST_SLOW:-1}
 # opencl_state: "device" (OpenCL built in and at least one device), "none" (built in, no device) or
