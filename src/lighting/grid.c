@@ -173,12 +173,13 @@ static void table_dir(int h, int r, int ns, int k, int nq, double d[3])
     d[2] = h == 0 ? -au : au;
 }
 
-static float *build_table(const lx_luminaire *lum, int ns, int nq, int *cols)
+static float *build_table(const lx_luminaire *lum, int ns, int nq, int *cols, const double **pair)
 {
     int axial = lum->photometric_type == 1 && lum->n_c == 1;
     if (axial) nq = 0;
     int nc = nq > 0 ? 4 * nq + 1 : 1;
-    size_t rows = 2 * (size_t)(ns + 1), at = LX__TABLE_PAIRS_AT(rows, (size_t)nc);
+    /* an axial table's pairs follow its floats at the next 16-byte offset */
+    size_t rows = 2 * (size_t)(ns + 1), at = (rows * sizeof(float) + 15) / 16 * 16;
     float *t = malloc(nc == 1 ? at + 2 * rows * sizeof(double) : rows * (size_t)nc * sizeof *t);
     if (!t) return NULL;
     for (int h = 0; h < 2; h++)
@@ -188,12 +189,14 @@ static float *build_table(const lx_luminaire *lum, int ns, int nq, int *cols)
                 table_dir(h, r, ns, k, nq, d);
                 t[((size_t)h * (ns + 1) + r) * nc + k] = (float)lx_luminaire_intensity_dir(lum, LX_INTERP_BILINEAR, d[0], d[1], d[2]);
             }
+    *pair = NULL;
     if (nc == 1) { /* the pairs of an axial table: the value and the step to the next row, as lx__table_eval forms them */
         double *pr = (double *)(void *)((char *)t + at);
         for (size_t r = 0; r < rows; r++) {
             pr[2 * r] = t[r];
             pr[2 * r + 1] = r + 1 < rows ? (double)(t[r + 1] - t[r]) : 0;
         }
+        *pair = pr;
     }
     *cols = nc;
     return t;
@@ -554,12 +557,9 @@ static lx_status grid_place(lx_ctx *ctx, const lx_placement *lums, size_t m, con
                 break;
             }
         if (!q->table) {
-            own[i] = build_table(p->lum, ns, nq, &q->cols);
+            own[i] = build_table(p->lum, ns, nq, &q->cols, &q->pair);
             if (!own[i]) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for the intensity table");
             q->table = own[i];
-            q->pair = q->cols == 1 ? (const double *)(const void *)((const char *)own[i] +
-                                                                    LX__TABLE_PAIRS_AT(2 * (size_t)(ns + 1), (size_t)1))
-                                   : NULL;
             q->ns = ns;
             q->nq = q->cols > 1 ? nq : 0;
             q->toff = *tables_n;

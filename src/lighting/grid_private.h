@@ -9,9 +9,6 @@
 #include <math.h>
 #include <stddef.h>
 
-/* Bytes of an intensity table of `rows` x `cols` floats before its pairs (lx__plum.pair). */
-#define LX__TABLE_PAIRS_AT(rows, cols) (((rows) * (cols) * sizeof(float) + 15) / 16 * 16)
-
 /* Per-luminaire data of one computation. */
 typedef struct lx__plum {
     const lx_luminaire *lum;

@@ -32,10 +32,11 @@ static void block_c(const lx__plum *p, size_t nb, const double *X, const double 
 /* The 8 bytes (two adjacent floats) at T + i, in the low half of a vector (movq: no alignment). */
 #define LX_PAIR(T, i) _mm_loadl_epi64((const __m128i_u *)(const void *)((T) + (i)))
 
-/* Two adjacent floats at T + idx[k] for 4 lanes: first and second as doubles. Four 8-byte loads
- * rather than vpgatherdq: on AMD Zen the gather is microcoded, and this loop is bound by the
- * latency of one point's chain, which the gather lengthened (with the division moved off the
- * chain's end, below: 1 thread, axial table, Zen 4, 200 -> 250 M point-luminaires/s). */
+/* Two adjacent floats at T + idx[k] for 4 lanes: first and second as doubles (the asymmetric
+ * table; an axial one reads its pairs with pairs4). Four 8-byte loads rather than vpgatherdq: on
+ * AMD Zen the gather is microcoded, and this loop is bound by the latency of one point's chain,
+ * which the gather lengthened (with the division moved off the chain's end, below: 1 thread,
+ * axial table read through here, Zen 4, 200 -> 250 M point-luminaires/s). */
 __attribute__((target("avx2,fma"))) static inline void gather2(const float *T, __m128i idx, __m256d *first,
                                                                  __m256d *second)
 {
