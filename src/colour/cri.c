@@ -291,6 +291,6 @@ lx_status lx_cri_compute(lx_ctx *ctx, const lx_spd *spd, lx_cri *out)
     int te = lx__spd_tiny_scale(spd, &up, &ubuf);
     if (te == INT_MIN) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     st = cri_compute_spd(ctx, te ? &up : spd, out);
-    free(ubuf);
+    lx__free(ubuf);
     return st;
 }

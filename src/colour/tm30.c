@@ -292,6 +292,6 @@ lx_status lx_tm30_compute(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out)
     int te = lx__spd_tiny_scale(spd, &up, &ubuf);
     if (te == INT_MIN) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     st = tm30_compute_spd(ctx, te ? &up : spd, out);
-    free(ubuf);
+    lx__free(ubuf);
     return st;
 }

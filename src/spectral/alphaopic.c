@@ -31,7 +31,7 @@ lx_status lx_alphaopic_compute(lx_ctx *ctx, const lx_spd *spd, lx_method method,
     if (te) {
         lx_alphaopic a;
         st = lx_alphaopic_compute(ctx, &up, method, &a);
-        free(ubuf);
+        lx__free(ubuf);
         if (st != LX_OK) return st;
         for (int k = 0; k < 5; k++) a.irradiance[k] = ldexp(a.irradiance[k], te), a.edi[k] = ldexp(a.edi[k], te);
         a.illuminance = ldexp(a.illuminance, te);

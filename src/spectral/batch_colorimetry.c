@@ -86,12 +86,12 @@ static void range_keep(lx_observer obs, const lx_batch *b, double lo, double hi)
 static lx_status row_exact(lx_ctx *ctx, const job *j, size_t i)
 {
     size_t n = j->b->n_lambda;
-    double *buf = malloc(2 * n * sizeof *buf);
+    double *buf = lx__alloc_n(2 * n, sizeof *buf);
     if (!buf) return LX_ENOMEM;
     for (size_t k = 0; k < n; k++) buf[k] = j->b->start_nm + (double)k * j->b->step_nm, buf[n + k] = value_at(j->b, i, k, 0);
     lx_spd s = {.n = n, .lambda_nm = buf, .value = buf + n, .name = "row"};
     lx_status st = lx_spd_colorimetry(ctx, &s, j->obs, LX_METHOD_CIE15, &j->out[i]);
-    free(buf);
+    lx__free(buf);
     return st;
 }
 

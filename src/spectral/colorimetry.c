@@ -159,7 +159,7 @@ lx_status lx_spd_colorimetry(lx_ctx *ctx, const lx_spd *spd, lx_observer obs, lx
     if (te) {
         lx_colorimetry r;
         st = lx_spd_colorimetry(ctx, &up, obs, method, &r);
-        free(ubuf);
+        lx__free(ubuf);
         if (st != LX_OK) return st;
         r.X = ldexp(r.X, te), r.Y = ldexp(r.Y, te), r.Z = ldexp(r.Z, te);
         r.radiant = ldexp(r.radiant, te), r.scotopic_Y = ldexp(r.scotopic_Y, te);

@@ -117,7 +117,7 @@ int lx__spd_tiny_scale(const lx_spd *spd, lx_spd *scaled, double **buf)
     if (!(m > 0) || m >= LX__SPD_TINY) return 0;
     int e = 0;
     frexp(m, &e); /* m = f 2^e, 0.5 <= f < 1 */
-    double *v = malloc(spd->n * sizeof *v);
+    double *v = lx__alloc_n(spd->n, sizeof *v);
     if (!v) return INT_MIN;
     for (size_t i = 0; i < spd->n; i++) v[i] = ldexp(spd->value[i], -e); /* scaling up: exact, subnormals too */
     scaled->value = v;
@@ -141,7 +141,7 @@ static lx_status integrate_scaled(lx_ctx *ctx, const lx_spd *spd, const void *ar
     if (te == INT_MIN) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     if (te) {
         lx_status st = integral(ctx, &up, arg, out);
-        free(ubuf);
+        lx__free(ubuf);
         if (st == LX_OK) *out = ldexp(*out, te);
         return st;
     }
