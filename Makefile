@@ -30,7 +30,7 @@ LIBS += -lOpenCL
 PKGS += pocl-opencl-icd ocl-icd-opencl-dev opencl-headers
 endif
 
-LAYERS := core tables spectral colour lighting radiance scene plot
+LAYERS := core tables spectral colour lighting radiance radiosity scene plot
 LIB_SRC := $(wildcard $(LAYERS:%=src/%/*.c))
 CLI_SRC := $(wildcard src/cli/*.c src/cli/bench/*.c)
 TEST_SRC := $(wildcard tests/test_*.c tests/hard_cases/test_*.c)
