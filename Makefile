@@ -44,7 +44,7 @@ TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 
 # the test build of the library: the files that call OpenCL again with LX_FAULTS (OpenCL fault
 # injection, src/core/cl_faults.c), linked into test_faults and a CLI for tests/cli/faults.sh only
-CL_USERS := $(shell grep -l 'clCreateBuffer\|clEnqueue\|clBuildProgram\|clGetPlatformIDs\|clFinish' $(LIB_SRC)) src/core/cl_faults.c
+CL_USERS := $(shell grep -l 'clCreateBuffer\|clEnqueue\|clBuildProgram\|clGetPlatformIDs\|clFinish' $(LIB_SRC)) src/core/cl_faults.c src/core/alloc.c
 FAULT_OBJ := $(CL_USERS:src/%.c=$(BUILD)/obj-faults/%.o)
 FAULT_LIB := $(BUILD)/faults/libluxcalc.a
 FAULT_CLI := $(BUILD)/tests/luxcalc-faults

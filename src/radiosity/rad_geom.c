@@ -10,9 +10,9 @@
 void lx__rad_geom_free(lx__rad_geom *g)
 {
     if (!g) return;
-    for (size_t i = 0; i < g->n_poly; i++) free((char *)g->poly[i].name);
-    free(g->poly);
-    free(g->v_m);
+    for (size_t i = 0; i < g->n_poly; i++) lx__free((char *)g->poly[i].name);
+    lx__free(g->poly);
+    lx__free(g->v_m);
     memset(g, 0, sizeof *g);
 }
 
@@ -115,7 +115,7 @@ static lx_status grow(lx_ctx *ctx, void **p, size_t *cap, size_t need, size_t si
     if (need <= *cap) return LX_OK;
     size_t nc = *cap ? *cap : 64;
     while (nc < need) nc *= 2;
-    void *np = realloc(*p, nc * size);
+    void *np = lx__realloc_n(*p, nc, size);
     if (!np) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for the polygons");
     *p = np;
     *cap = nc;
@@ -166,7 +166,7 @@ lx_status lx__rad_geom_add(lx_ctx *ctx, lx__rad_geom *g, const double *v_m, int 
     char *name = NULL;
     if (info->name) {
         size_t l = strlen(info->name) + 1;
-        name = malloc(l);
+        name = lx__alloc(l);
         if (!name) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for the polygons");
         memcpy(name, info->name, l);
     }
