@@ -27,7 +27,7 @@ static void put(sbuf *b, const char *fmt, ...)
     if (b->n + len + 1 > b->cap) {
         size_t cap = b->cap ? 2 * b->cap : 4096;
         while (cap < b->n + len + 1) cap *= 2;
-        char *ns = realloc(b->s, cap);
+        char *ns = lx__realloc(b->s, cap);
         if (!ns) {
             b->oom = 1;
             return;
@@ -74,7 +74,7 @@ lx_status lx_ugr_table_text(lx_ctx *ctx, const lx_ugr_table *tab, char **text)
         put(&b, "\n");
     }
     if (b.oom) {
-        free(b.s);
+        lx__free(b.s);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "UGR table text: out of memory");
     }
     *text = b.s;
