@@ -3,6 +3,7 @@
  * CIE sums for uniformly sampled data, exact integration of line spectra. */
 #include "colour/colour_private.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -40,7 +41,7 @@ lx_status lx__qgrid_make(lx_ctx *ctx, const lx_spd *spd, double start_nm, double
     if (!g->exact) {
         double step = cie15_step(spd);
         size_t n = (size_t)lround((end_nm - start_nm) / step) + 1;
-        g->lam = malloc(2 * n * sizeof *g->lam);
+        g->lam = lx__alloc(2 * n * sizeof *g->lam);
         if (!g->lam) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
         g->w = g->lam + n;
         for (size_t i = 0; i < n; i++) g->lam[i] = start_nm + (double)i * step, g->w[i] = step;
@@ -49,7 +50,7 @@ lx_status lx__qgrid_make(lx_ctx *ctx, const lx_spd *spd, double start_nm, double
     }
     /* the breakpoints: every whole nm of [start, end] and every sample of the data inside it */
     size_t nw = (size_t)lround(end_nm - start_nm) + 1, nb = 0;
-    double *bp = malloc((nw + spd->n) * sizeof *bp);
+    double *bp = lx__alloc((nw + spd->n) * sizeof *bp);
     if (!bp) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t i = 0; i < nw; i++) bp[nb++] = start_nm + (double)i;
     for (size_t i = 0; i < spd->n; i++)
@@ -59,14 +60,14 @@ lx_status lx__qgrid_make(lx_ctx *ctx, const lx_spd *spd, double start_nm, double
     for (size_t i = 0; i < nb; i++)
         if (m == 0 || bp[i] > bp[m - 1]) bp[m++] = bp[i];
     if (m < 2) {
-        free(bp);
+        lx__free(bp);
         return lx__error(ctx, LX_EINVAL, NULL, 0, "an empty wavelength range (%g-%g nm)", start_nm, end_nm);
     }
     /* Simpson on each interval: nodes at the breakpoints (shared) and the midpoints */
     size_t n = 2 * m - 1;
-    g->lam = malloc(2 * n * sizeof *g->lam);
+    g->lam = lx__alloc(2 * n * sizeof *g->lam);
     if (!g->lam) {
-        free(bp);
+        lx__free(bp);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
     g->w = g->lam + n;
@@ -79,13 +80,13 @@ lx_status lx__qgrid_make(lx_ctx *ctx, const lx_spd *spd, double start_nm, double
     }
     g->lam[n - 1] = bp[m - 1];
     g->n = n;
-    free(bp);
+    lx__free(bp);
     return LX_OK;
 }
 
 void lx__qgrid_free(lx__qgrid *g)
 {
-    free(g->lam);
+    lx__free(g->lam);
     g->lam = g->w = NULL;
 }
 
@@ -127,7 +128,7 @@ static void cmf2_grid(const lx__qgrid *g, double *xyz)
 double lx__quality_outside(const double *ref, const lx__qgrid *g, double lo_nm, double hi_nm)
 {
     size_t n = g->n;
-    double *cmf = malloc(sizeof(double) * 3 * n);
+    double *cmf = lx__alloc(sizeof(double) * 3 * n);
     if (!cmf) return INFINITY;
     cmf2_grid(g, cmf);
     double worst = 0.0;
@@ -140,7 +141,7 @@ double lx__quality_outside(const double *ref, const lx__qgrid *g, double lo_nm, 
         }
         if (all > 0 && out / all > worst) worst = out / all;
     }
-    free(cmf);
+    lx__free(cmf);
     return worst;
 }
 
@@ -264,7 +265,7 @@ lx_status lx__cri_grid_make(lx_ctx *ctx, const lx_spd *spd, lx__cri_grid *cg)
     lx_status st = lx__qgrid_make(ctx, spd, CRI_START, CRI_END, &cg->g);
     if (st != LX_OK) return st;
     size_t n = cg->g.n;
-    if (!(cg->cmf = malloc(sizeof(double) * n * (3 + NTCS)))) {
+    if (!(cg->cmf = lx__alloc(sizeof(double) * n * (3 + NTCS)))) {
         lx__qgrid_free(&cg->g);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "CRI: out of memory");
     }
@@ -280,7 +281,7 @@ lx_status lx__cri_grid_make(lx_ctx *ctx, const lx_spd *spd, lx__cri_grid *cg)
 
 void lx__cri_grid_free(lx__cri_grid *cg)
 {
-    free(cg->cmf);
+    lx__free(cg->cmf);
     lx__qgrid_free(&cg->g);
     cg->cmf = cg->tcs = NULL;
 }
@@ -296,16 +297,14 @@ lx_status lx__cri_outside(lx_ctx *ctx, const lx__cri_grid *cg, const lx_spd *spd
     return LX_OK;
 }
 
-lx_status lx_cri_compute(lx_ctx *ctx, const lx_spd *spd, lx_cri *out)
+/* The work of lx_cri_compute on a checked spectrum. */
+static lx_status cri_compute_spd(lx_ctx *ctx, const lx_spd *spd, lx_cri *out)
 {
-    LX__NEED_CTX(ctx);
-    if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "CRI: output is NULL");
-    lx_status st = lx_spd_check(ctx, spd);
-    if (st != LX_OK) return st;
+    lx_status st;
     lx__cri_grid cg;
     if ((st = lx__cri_grid_make(ctx, spd, &cg)) != LX_OK) return st;
     size_t n = cg.g.n;
-    double *buf = malloc(sizeof(double) * 2 * n), Lt[LX__CRI_NINT], Lr[LX__CRI_NINT];
+    double *buf = lx__alloc(sizeof(double) * 2 * n), Lt[LX__CRI_NINT], Lr[LX__CRI_NINT];
     if (!buf) {
         lx__cri_grid_free(&cg);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "CRI: out of memory");
@@ -320,7 +319,24 @@ lx_status lx_cri_compute(lx_ctx *ctx, const lx_spd *spd, lx_cri *out)
         lx__cri_integrals(&cg, ref, Lr);
         lx__cri_indices(Lt, Lr, T, duv, out);
     }
-    free(buf);
+    lx__free(buf);
     lx__cri_grid_free(&cg);
+    return st;
+}
+
+lx_status lx_cri_compute(lx_ctx *ctx, const lx_spd *spd, lx_cri *out)
+{
+    LX__NEED_CTX(ctx);
+    if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "CRI: output is NULL");
+    lx_status st = lx_spd_check(ctx, spd);
+    if (st != LX_OK) return st;
+    /* values near the bottom of the double range: the same spectrum scaled up by a power of two
+     * (exact; every result is scale-free) */
+    lx_spd up;
+    double *ubuf;
+    int te = lx__spd_tiny_scale(spd, &up, &ubuf);
+    if (te == INT_MIN) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    st = cri_compute_spd(ctx, te ? &up : spd, out);
+    lx__free(ubuf);
     return st;
 }

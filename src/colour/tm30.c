@@ -2,6 +2,7 @@
  * 16 hue-bin values, in CAM02-UCS (CIECAM02 forward model, Luo et al. 2006 UCS) with 99 CES. */
 #include "colour/colour_private.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -241,7 +242,7 @@ lx_status lx__tm30_grid_make(lx_ctx *ctx, const lx_spd *spd, lx__tm30_grid *tg)
     lx_status st = lx__qgrid_make(ctx, spd, TM_START, TM_END, &tg->g);
     if (st != LX_OK) return st;
     size_t n = tg->g.n;
-    if (!(tg->ces = malloc(sizeof(double) * n * (NCES + 3 + 3 + 3)))) {
+    if (!(tg->ces = lx__alloc(sizeof(double) * n * (NCES + 3 + 3 + 3)))) {
         lx__qgrid_free(&tg->g);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "TM-30: out of memory");
     }
@@ -261,7 +262,7 @@ lx_status lx__tm30_grid_make(lx_ctx *ctx, const lx_spd *spd, lx__tm30_grid *tg)
 
 void lx__tm30_grid_free(lx__tm30_grid *tg)
 {
-    free(tg->ces);
+    lx__free(tg->ces);
     lx__qgrid_free(&tg->g);
     tg->ces = tg->cmf10 = tg->cmf2 = tg->scratch = NULL;
 }
@@ -297,16 +298,14 @@ lx_status lx__tm30_outside(lx_ctx *ctx, const lx__tm30_grid *tg, const lx_spd *s
     return LX_OK;
 }
 
-lx_status lx_tm30_compute(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out)
+/* The work of lx_tm30_compute on a checked spectrum. */
+static lx_status tm30_compute_spd(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out)
 {
-    LX__NEED_CTX(ctx);
-    if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "TM-30: output is NULL");
-    lx_status st = lx_spd_check(ctx, spd);
-    if (st != LX_OK) return st;
+    lx_status st;
     lx__tm30_grid tg;
     if ((st = lx__tm30_grid_make(ctx, spd, &tg)) != LX_OK) return st;
     size_t n = tg.g.n;
-    double *buf = malloc(sizeof(double) * (3 * n + 2 * LX__TM30_NINT));
+    double *buf = lx__alloc(sizeof(double) * (3 * n + 2 * LX__TM30_NINT));
     if (!buf) {
         lx__tm30_grid_free(&tg);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "TM-30: out of memory");
@@ -324,7 +323,24 @@ lx_status lx_tm30_compute(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out)
         lx__tm30_integrals(&tg, ref, Lr, tg.scratch);
         lx__tm30_indices(Lt, Lr, T, duv, out);
     }
-    free(buf);
+    lx__free(buf);
     lx__tm30_grid_free(&tg);
+    return st;
+}
+
+lx_status lx_tm30_compute(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out)
+{
+    LX__NEED_CTX(ctx);
+    if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "TM-30: output is NULL");
+    lx_status st = lx_spd_check(ctx, spd);
+    if (st != LX_OK) return st;
+    /* values near the bottom of the double range: the same spectrum scaled up by a power of two
+     * (exact; every result is scale-free) */
+    lx_spd up;
+    double *ubuf;
+    int te = lx__spd_tiny_scale(spd, &up, &ubuf);
+    if (te == INT_MIN) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    st = tm30_compute_spd(ctx, te ? &up : spd, out);
+    lx__free(ubuf);
     return st;
 }

@@ -40,13 +40,13 @@ typedef void (*node_weights_fn)(const void *grid, int r, double *f);
 static lx_status rows_from(lx_ctx *ctx, const lx_spd *spd, const lx__qgrid *g, int nint, node_weights_fn fw, const void *grid,
                            double *A)
 {
-    double *f = malloc(g->n * sizeof *f);
+    double *f = lx__alloc(g->n * sizeof *f);
     if (!f) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (int r = 0; r < nint; r++) {
         fw(grid, r, f);
         spread(spd, g, f, A + (size_t)r * spd->n);
     }
-    free(f);
+    lx__free(f);
     return LX_OK;
 }
 
@@ -100,13 +100,13 @@ static lx_status cri_rows(lx_ctx *ctx, void *self, const lx_spd *spd, double *A)
 static void *cri_scratch_new(void *self)
 {
     struct lx__unc_cri_state *s = self;
-    return malloc(s->cg.g.n * sizeof(double));
+    return lx__alloc(s->cg.g.n * sizeof(double));
 }
 
 static void cri_scratch_free(void *self, void *p)
 {
     (void)self;
-    free(p);
+    lx__free(p);
 }
 
 /* The reference's integrals at T: daylight from the basis, Planck at the nodes. 0 when undefined. */
@@ -145,23 +145,23 @@ void lx__unc_cri_free(lx__unc_cri_state *s)
 {
     if (!s) return;
     lx__cri_grid_free(&s->cg);
-    free(s);
+    lx__free(s);
 }
 
 lx_status lx__unc_cri_provider(lx_ctx *ctx, const lx_spd *spd, lx__unc_cri_state **out, lx__unc_provider *p)
 {
     *out = NULL;
-    struct lx__unc_cri_state *s = calloc(1, sizeof *s);
+    struct lx__unc_cri_state *s = lx__calloc(1, sizeof *s);
     if (!s) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     lx_status st = lx__cri_grid_make(ctx, spd, &s->cg);
-    double *ref = st == LX_OK ? malloc(s->cg.g.n * sizeof *ref) : NULL;
+    double *ref = st == LX_OK ? lx__alloc(s->cg.g.n * sizeof *ref) : NULL;
     if (st == LX_OK && !ref) st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     if (st == LX_OK) st = basis_integrals(ctx, &s->cg.g, ref, s->B, cri_integrals, &s->cg, NULL);
     if (st == LX_OK) { /* the refusal of the measured spectrum (the data's range against its reference) */
         lx_cri c;
         s->refused = lx_cri_compute(ctx, spd, &c) != LX_OK;
     }
-    free(ref);
+    lx__free(ref);
     if (st != LX_OK) {
         lx__unc_cri_free(s);
         return st;
@@ -211,7 +211,7 @@ static lx_status tm30_rows(lx_ctx *ctx, void *self, const lx_spd *spd, double *A
 static void *tm30_scratch_new(void *self)
 {
     struct lx__unc_tm30_state *s = self;
-    return malloc((4 * s->tg.g.n + LX__TM30_NINT) * sizeof(double));
+    return lx__alloc((4 * s->tg.g.n + LX__TM30_NINT) * sizeof(double));
 }
 
 /* The reference's integrals at T (CIE 224: Planck below 4000 K, daylight from 5000 K, between a mix
@@ -239,8 +239,8 @@ static int tm30_ref(lx_ctx *ctx, const struct lx__unc_tm30_state *s, double T, d
 static void tm30_eval(lx_ctx *ctx, void *self, void *scratch, size_t m, const double *L, size_t ldl, double *y, size_t ldy)
 {
     const struct lx__unc_tm30_state *s = self;
-    double *Lr = malloc(LX__TM30_NINT * sizeof *Lr);
-    lx_tm30 *r = malloc(sizeof *r);
+    double *Lr = lx__alloc(LX__TM30_NINT * sizeof *Lr);
+    lx_tm30 *r = lx__alloc(sizeof *r);
     for (size_t t = 0; t < m; t++) {
         const double *Lt = L + t * ldl;
         double *o = y + t * ldy, d = Lt[0] + 15 * Lt[1] + 3 * Lt[2], T, duv;
@@ -252,31 +252,31 @@ static void tm30_eval(lx_ctx *ctx, void *self, void *scratch, size_t m, const do
         lx__tm30_indices(Lt, Lr, T, duv, r);
         o[0] = r->rf, o[1] = r->rg;
     }
-    free(Lr), free(r);
+    lx__free(Lr), lx__free(r);
 }
 
 void lx__unc_tm30_free(lx__unc_tm30_state *s)
 {
     if (!s) return;
     lx__tm30_grid_free(&s->tg);
-    free(s);
+    lx__free(s);
 }
 
 lx_status lx__unc_tm30_provider(lx_ctx *ctx, const lx_spd *spd, lx__unc_tm30_state **out, lx__unc_provider *p)
 {
     *out = NULL;
-    struct lx__unc_tm30_state *s = calloc(1, sizeof *s);
+    struct lx__unc_tm30_state *s = lx__calloc(1, sizeof *s);
     if (!s) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     lx_status st = lx__tm30_grid_make(ctx, spd, &s->tg);
-    double *ref = st == LX_OK ? malloc(s->tg.g.n * sizeof *ref) : NULL;
+    double *ref = st == LX_OK ? lx__alloc(s->tg.g.n * sizeof *ref) : NULL;
     if (st == LX_OK && !ref) st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     if (st == LX_OK) st = basis_integrals(ctx, &s->tg.g, ref, s->B, tm30_integrals, &s->tg, s->tg.scratch);
     if (st == LX_OK) {
-        lx_tm30 *c = malloc(sizeof *c);
+        lx_tm30 *c = lx__alloc(sizeof *c);
         s->refused = !c || lx_tm30_compute(ctx, spd, c) != LX_OK;
-        free(c);
+        lx__free(c);
     }
-    free(ref);
+    lx__free(ref);
     if (st != LX_OK) {
         lx__unc_tm30_free(s);
         return st;

@@ -75,12 +75,12 @@ static void why(lx_scene_plan *p, lx_effect e, int on, const char *fmt, ...)
 void lx_scene_plan_free(lx_scene_plan *plan)
 {
     if (!plan) return;
-    free(plan->near);
-    free(plan->near_err);
-    free(plan->near_why);
-    free(plan->device);
+    lx__free(plan->near);
+    lx__free(plan->near_err);
+    lx__free(plan->near_why);
+    lx__free(plan->device);
     lx__room_plan_free(plan);
-    free(plan);
+    lx__free(plan);
 }
 
 /* Patches the near-field integration is expected to evaluate for one pair (levels 4, 8, 16 ...
@@ -134,12 +134,12 @@ static lx_status plan_near(lx_ctx *ctx, const lx_scene *sc, lx_scene_plan *p, si
 {
     size_t nl = sc->n_lum, np = p->n_points;
     lx_effect_force F = sc->force[LX_EFFECT_NEAR_FIELD];
-    lx__scene_lum *le = calloc(nl, sizeof *le);
-    lx__nf_probe *pr = malloc(nl * sizeof *pr);
-    unsigned char *nf = malloc(nl);
-    size_t *ord = malloc(nl * sizeof *ord), *idx = malloc(nl * sizeof *idx);
+    lx__scene_lum *le = lx__calloc(nl, sizeof *le);
+    lx__nf_probe *pr = lx__alloc_n(nl, sizeof *pr);
+    unsigned char *nf = lx__alloc(nl);
+    size_t *ord = lx__alloc_n(nl, sizeof *ord), *idx = lx__alloc_n(nl, sizeof *idx);
     if (!le || !pr || !nf || !ord || !idx) {
-        free(le), free(pr), free(nf), free(ord), free(idx);
+        lx__free(le), lx__free(pr), lx__free(nf), lx__free(ord), lx__free(idx);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
     int any_file = 0;
@@ -203,7 +203,7 @@ static lx_status plan_near(lx_ctx *ctx, const lx_scene *sc, lx_scene_plan *p, si
     for (size_t c = 0; c < sizeof p->planning / sizeof *o; c++) o[c] = a[c] - b[c];
     p->planning.nearfield_probes = *n_probed;
     ctx->counters.nearfield_probes += *n_probed;
-    free(le), free(pr), free(nf), free(ord), free(idx);
+    lx__free(le), lx__free(pr), lx__free(nf), lx__free(ord), lx__free(idx);
     return LX_OK;
 }
 
@@ -286,16 +286,16 @@ static lx_status plan_environment(lx_ctx *ctx, const lx_scene *sc, lx_scene_plan
 /* A plan with its per-pair and per-block arrays, sized for the scene; NULL on no memory. */
 static lx_scene_plan *plan_alloc(const lx_scene *sc)
 {
-    lx_scene_plan *p = calloc(1, sizeof *p);
+    lx_scene_plan *p = lx__calloc(1, sizeof *p);
     if (!p) return NULL;
     for (size_t r = 0; r < sc->n_rec; r++)
         p->n_points += sc->rec[r].n;
     p->n_pairs = p->n_points * sc->n_lum;
     p->n_normals = sc->n_rec;
-    p->near = calloc(p->n_pairs ? p->n_pairs : 1, 1);
-    p->near_why = calloc(p->n_pairs ? p->n_pairs : 1, 1);
-    p->near_err = malloc((p->n_pairs ? p->n_pairs : 1) * sizeof *p->near_err);
-    p->device = calloc(sc->n_lum * sc->n_rec > 0 ? sc->n_lum * sc->n_rec : 1, 1);
+    p->near = lx__calloc(p->n_pairs ? p->n_pairs : 1, 1);
+    p->near_why = lx__calloc(p->n_pairs ? p->n_pairs : 1, 1);
+    p->near_err = lx__alloc_n(p->n_pairs ? p->n_pairs : 1, sizeof *p->near_err);
+    p->device = lx__calloc(sc->n_lum * sc->n_rec > 0 ? sc->n_lum * sc->n_rec : 1, 1);
     if (!p->near || !p->near_why || !p->near_err || !p->device) {
         lx_scene_plan_free(p);
         return NULL;

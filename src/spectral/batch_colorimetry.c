@@ -81,6 +81,20 @@ static void range_keep(lx_observer obs, const lx_batch *b, double lo, double hi)
     pthread_mutex_unlock(&ranges_lock);
 }
 
+/* Spectrum i of the batch through lx_spd_colorimetry (cie15 at the grid), which scales values near the
+ * bottom of the double range up before integrating (the batch sums round every subnormal term). */
+static lx_status row_exact(lx_ctx *ctx, const job *j, size_t i)
+{
+    size_t n = j->b->n_lambda;
+    double *buf = lx__alloc_n(2 * n, sizeof *buf);
+    if (!buf) return LX_ENOMEM;
+    for (size_t k = 0; k < n; k++) buf[k] = j->b->start_nm + (double)k * j->b->step_nm, buf[n + k] = value_at(j->b, i, k, 0);
+    lx_spd s = {.n = n, .lambda_nm = buf, .value = buf + n, .name = "row"};
+    lx_status st = lx_spd_colorimetry(ctx, &s, j->obs, LX_METHOD_CIE15, &j->out[i]);
+    lx__free(buf);
+    return st;
+}
+
 /* Spectra [i0, i1) on thread t, with a context of its own (a context is one thread's). */
 static void work(void *arg, long i0, long i1, int t)
 {
@@ -88,9 +102,14 @@ static void work(void *arg, long i0, long i1, int t)
     lx_ctx *ctx = NULL;
     if ((j->st[t] = lx_ctx_create(&ctx)) != LX_OK) return;
     for (long i = i0; i < i1 && j->st[t] == LX_OK; i++) {
+        const double *q = j->ints + 4 * i;
+        double rad = lx__batch_radiant(j->b, i), big = fmax(fmax(fabs(q[0]), fabs(q[1])), fmax(fmax(fabs(q[2]), fabs(q[3])), fabs(rad)));
+        if (big > 0 && big < 0x1p-540) { /* a row of values below 2^-600 or so: its integrals lost digits */
+            j->st[t] = row_exact(ctx, j, (size_t)i);
+            continue;
+        }
         j->out[i].method = LX_METHOD_CIE15;
-        j->st[t] = lx__colorimetry_fast(ctx, j->obs, j->ints + 4 * i, j->ints[4 * i + 3], lx__batch_radiant(j->b, i), j->lo_K,
-                                        j->hi_K, &j->out[i]);
+        j->st[t] = lx__colorimetry_fast(ctx, j->obs, q, q[3], rad, j->lo_K, j->hi_K, &j->out[i]);
     }
     lx_ctx_destroy(ctx);
 }
@@ -106,11 +125,11 @@ lx_status lx_batch_colorimetry(lx_ctx *ctx, const lx_batch *b, lx_observer obs, 
     if (b->n_lambda < 2) return lx__error(ctx, LX_EINVAL, NULL, 0, "a spectrum needs at least 2 samples");
     lx_function f0 = obs == LX_OBSERVER_2 ? LX_FN_XBAR_2 : LX_FN_XBAR_10;
     lx_function fns[4] = {f0, f0 + 1, f0 + 2, LX_FN_VPRIME};
-    double *ints = malloc(sizeof(double) * 4 * b->n_spectra);
+    double *ints = lx__alloc_n(4 * b->n_spectra, sizeof(double));
     if (!ints) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for %zu spectra", b->n_spectra);
     lx_status st = lx_batch_integrate(ctx, b, fns, 4, opts, ints);
     if (st != LX_OK) {
-        free(ints);
+        lx__free(ints);
         return st;
     }
     /* below 256 spectra a thread costs more than the CCT solves it takes over */
@@ -119,17 +138,17 @@ lx_status lx_batch_colorimetry(lx_ctx *ctx, const lx_batch *b, lx_observer obs, 
     /* the range ends through the grid's own sampling (the batch sums at the grid's step, the CIE 015
      * rule), as lx_spd_colorimetry takes them: a blackbody at an end is in the range */
     if (!range_cached(obs, b, &J.lo_K, &J.hi_K)) {
-        double *grid = malloc(b->n_lambda * sizeof *grid);
+        double *grid = lx__alloc_n(b->n_lambda, sizeof *grid);
         if (grid) {
             for (size_t k = 0; k < b->n_lambda; k++) grid[k] = b->start_nm + (double)k * b->step_nm;
             lx_spd g = {.n = b->n_lambda, .lambda_nm = grid, .value = grid, .name = "grid"};
             lx__cct_range_ends(ctx, &g, obs, LX_METHOD_CIE15, &J.lo_K, &J.hi_K);
-            free(grid);
+            lx__free(grid);
             range_keep(obs, b, J.lo_K, J.hi_K);
         }
     }
     lx__parallel_for(ctx, nt, (long)b->n_spectra, work, &J);
-    free(ints);
+    lx__free(ints);
     for (int t = 0; t < nt; t++)
         if (J.st[t] != LX_OK) return lx__error(ctx, J.st[t], NULL, 0, "batch colorimetry failed: %s", lx_strerror(J.st[t]));
     return LX_OK;

@@ -2,6 +2,7 @@
  * chromaticities, CCT and Duv, luminous efficacy of radiation, scotopic quantities. */
 #include "spectral/spectral_private.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -116,7 +117,7 @@ lx_status lx_colorimetry_from_integrals(lx_ctx *ctx, lx_observer obs, const doub
  * 999.99935 K, a 100000 K one to 100066 K). NaN when that cannot be computed. */
 static double apparent_cct(lx_ctx *ctx, const lx_spd *spd, lx_observer obs, lx_method method, double T_K)
 {
-    double *v = malloc(spd->n * sizeof *v);
+    double *v = lx__alloc_n(spd->n, sizeof *v);
     if (!v) return NAN;
     for (size_t i = 0; i < spd->n; i++) v[i] = lx_planck(spd->lambda_nm[i], T_K);
     lx_spd p = *spd;
@@ -130,7 +131,7 @@ static double apparent_cct(lx_ctx *ctx, const lx_spd *spd, lx_observer obs, lx_m
     }
     double d = xyz[0] + 15 * xyz[1] + 3 * xyz[2];
     if (ok && d > 0) T = solve_cct(ctx, obs, 4 * xyz[0] / d, 6 * xyz[1] / d, &duv);
-    free(v);
+    lx__free(v);
     return T;
 }
 
@@ -149,6 +150,22 @@ lx_status lx_spd_colorimetry(lx_ctx *ctx, const lx_spd *spd, lx_observer obs, lx
         return lx__error(ctx, LX_EINVAL, NULL, 0, "observer must be 2 or 10 degrees, not %d", (int)obs);
     lx_status st = lx_spd_check(ctx, spd);
     if (st != LX_OK) return st;
+    /* values near the bottom of the range: the colorimetry of the spectrum scaled up by 2^-e
+     * (exact), its absolute quantities scaled back; chromaticities, CCT and ratios as they are */
+    lx_spd up;
+    double *ubuf;
+    int te = lx__spd_tiny_scale(spd, &up, &ubuf);
+    if (te == INT_MIN) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    if (te) {
+        lx_colorimetry r;
+        st = lx_spd_colorimetry(ctx, &up, obs, method, &r);
+        lx__free(ubuf);
+        if (st != LX_OK) return st;
+        r.X = ldexp(r.X, te), r.Y = ldexp(r.Y, te), r.Z = ldexp(r.Z, te);
+        r.radiant = ldexp(r.radiant, te), r.scotopic_Y = ldexp(r.scotopic_Y, te);
+        *out = r;
+        return LX_OK;
+    }
     method = lx_method_resolve(spd, method);
     lx_function f0 = obs == LX_OBSERVER_2 ? LX_FN_XBAR_2 : LX_FN_XBAR_10;
     double xyz[3], scot, radiant;

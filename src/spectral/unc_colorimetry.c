@@ -42,15 +42,15 @@ typedef struct color_scratch {
 static void *color_scratch_new(void *self)
 {
     (void)self;
-    return calloc(1, sizeof(color_scratch));
+    return lx__calloc(1, sizeof(color_scratch));
 }
 
 static void color_scratch_free(void *self, void *p)
 {
     (void)self;
     color_scratch *s = p;
-    if (s) free(s->u);
-    free(s);
+    if (s) lx__free(s->u);
+    lx__free(s);
 }
 
 static double km_of(lx_observer obs) { return obs == LX_OBSERVER_10 ? LX__KM_10 : LX__KM_2; }
@@ -61,8 +61,8 @@ static void color_eval(lx_ctx *ctx, void *self, void *scratch, size_t m, const d
     color_scratch *s = scratch;
     double km = km_of(st->obs);
     if (s && s->cap < m) {
-        free(s->u);
-        s->u = malloc(4 * m * sizeof *s->u);
+        lx__free(s->u);
+        s->u = lx__alloc(4 * m * sizeof *s->u);
         s->cap = s->u ? m : 0;
         if (s->u) s->v = s->u + m, s->T = s->v + m, s->duv = s->T + m;
     }

@@ -107,7 +107,7 @@ static int cmp_double(const void *a, const void *b)
 lx_status lx__sym_eigenvalues(size_t n, const double *a, double *ev)
 {
     if (n == 0) return LX_OK;
-    double *w = malloc(sizeof(double) * (n * n + 3 * n));
+    double *w = lx__alloc(sizeof(double) * (n * n + 3 * n));
     if (!w) return LX_ENOMEM;
     double *e = w + n * n, *v = e + n, *p = v + n;
     /* symmetrise (the mean of a and its transpose: a file's last digits may differ) */
@@ -115,7 +115,7 @@ lx_status lx__sym_eigenvalues(size_t n, const double *a, double *ev)
         for (size_t j = 0; j < n; j++) w[i * n + j] = 0.5 * (a[i * n + j] + a[j * n + i]);
     tridiagonalise(n, w, ev, e, v, p);
     int bad = tridiagonal_ql(n, ev, e);
-    free(w);
+    lx__free(w);
     if (bad) return LX_ERANGE;
     qsort(ev, n, sizeof *ev, cmp_double);
     return LX_OK;
@@ -125,10 +125,10 @@ double lx__pivoted_cholesky(size_t n, const double *a, double tol, double *g, si
 {
     *rank = 0;
     if (n == 0) return 0.0;
-    size_t *perm = malloc(n * sizeof *perm);
-    double *d = malloc(n * sizeof *d);
+    size_t *perm = lx__alloc(n * sizeof *perm);
+    double *d = lx__alloc(n * sizeof *d);
     if (!perm || !d) {
-        free(perm), free(d);
+        lx__free(perm), lx__free(d);
         return NAN;
     }
     double maxd = 0.0;
@@ -164,7 +164,7 @@ double lx__pivoted_cholesky(size_t n, const double *a, double tol, double *g, si
     for (size_t j = k; j < n; j++)
         if (maxd > 0 && d[perm[j]] / maxd < rest) rest = d[perm[j]] / maxd;
     *rank = k;
-    free(perm), free(d);
+    lx__free(perm), lx__free(d);
     return rest;
 }
 

@@ -21,18 +21,18 @@ lx_status lx_unc_model_create(lx_ctx *ctx, lx_unc_model **out)
 
 static void comp_free(lx__unc_comp *c)
 {
-    free((void *)c->c.lambda_nm);
-    free((void *)c->c.u);
-    free((void *)c->c.cov);
-    free((void *)c->c.label);
+    lx__free((void *)c->c.lambda_nm);
+    lx__free((void *)c->c.u);
+    lx__free((void *)c->c.cov);
+    lx__free((void *)c->c.label);
 }
 
 void lx_unc_model_free(lx_unc_model *m)
 {
     if (!m) return;
     for (size_t i = 0; i < m->count; i++) comp_free(&m->comp[i]);
-    free(m->comp);
-    free(m);
+    lx__free(m->comp);
+    lx__free(m);
 }
 
 size_t lx_unc_model_count(const lx_unc_model *m) { return m ? m->count : 0; }
@@ -50,7 +50,7 @@ int lx_unc_model_uses(const lx_unc_model *m, const lx_spd *spd)
 static double *dup(const double *p, size_t n)
 {
     if (!p || !n) return NULL;
-    double *q = malloc(n * sizeof *q);
+    double *q = lx__alloc(n * sizeof *q);
     if (q) memcpy(q, p, n * sizeof *q);
     return q;
 }
@@ -100,7 +100,7 @@ lx_status lx_unc_model_add(lx_ctx *ctx, lx_unc_model *m, const lx_unc_component 
     if (st != LX_OK) return st;
     if (m->count == m->cap) {
         size_t cap = m->cap ? 2 * m->cap : 4;
-        lx__unc_comp *p = realloc(m->comp, cap * sizeof *p);
+        lx__unc_comp *p = lx__realloc(m->comp, cap * sizeof *p);
         if (!p) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
         m->comp = p, m->cap = cap;
     }
@@ -110,7 +110,7 @@ lx_status lx_unc_model_add(lx_ctx *ctx, lx_unc_model *m, const lx_unc_component 
     k.c.lambda_nm = dup(c->lambda_nm, c->n);
     k.c.u = c->kind == LX_UNC_NOISE ? dup(c->u, c->n) : NULL;
     k.c.cov = c->kind == LX_UNC_COVARIANCE ? dup(c->cov, c->n * c->n) : NULL;
-    k.c.label = strdup(name);
+    k.c.label = lx__strdup(name);
     if ((c->lambda_nm && c->n && !k.c.lambda_nm) || (c->kind == LX_UNC_NOISE && c->u && c->n && !k.c.u) ||
         (c->kind == LX_UNC_COVARIANCE && !k.c.cov) || !k.c.label) {
         comp_free(&k);
@@ -161,20 +161,20 @@ static lx_status same_grid(lx_ctx *ctx, const lx_unc_component *c, const lx_spd 
  * smallest eigenvalue above -1e-10 of its largest (rounding of a singular matrix). */
 static lx_status psd_check(lx_ctx *ctx, const char *label, size_t n, const double *C)
 {
-    double *ev = malloc(n * sizeof *ev);
+    double *ev = lx__alloc(n * sizeof *ev);
     if (!ev) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t i = 0; i < n; i++)
         for (size_t j = i + 1; j < n; j++) {
             double a = C[i * n + j], b = C[j * n + i];
             if (fabs(a - b) > 1e-9 * fmax(fabs(a), fabs(b)) + 1e-12 * sqrt(fabs(C[i * n + i] * C[j * n + j]))) {
-                free(ev);
+                lx__free(ev);
                 return lx__error(ctx, LX_EINVAL, NULL, 0, "%s: not symmetric: element (%zu, %zu) is %g, (%zu, %zu) is %g", label,
                                  i + 1, j + 1, a, j + 1, i + 1, b);
             }
         }
     lx_status st = lx__sym_eigenvalues(n, C, ev);
     if (st != LX_OK) {
-        free(ev);
+        lx__free(ev);
         return st == LX_ENOMEM ? lx__error(ctx, st, NULL, 0, "out of memory")
                                : lx__error(ctx, LX_EINVAL, NULL, 0, "%s: its eigenvalues do not converge", label);
     }
@@ -182,7 +182,7 @@ static lx_status psd_check(lx_ctx *ctx, const char *label, size_t n, const doubl
     size_t neg = 0;
     for (size_t i = 0; i < n; i++)
         if (ev[i] < -1e-10 * fabs(hi)) neg++;
-    free(ev);
+    lx__free(ev);
     if (neg || !(hi >= 0))
         return lx__error(ctx, LX_EINVAL, NULL, 0,
                          "%s: not positive semi-definite: %zu negative eigenvalue%s, the smallest %.6g (the largest %.6g); "
@@ -221,7 +221,7 @@ static lx_status bind_one(lx_ctx *ctx, const lx_unc_component *c, const lx_spd *
     switch (c->kind) {
     case LX_UNC_NOISE:
         if (c->u && (st = same_grid(ctx, c, spd)) != LX_OK) return st;
-        if (!(b->u2 = malloc(n * sizeof *b->u2))) break;
+        if (!(b->u2 = lx__alloc(n * sizeof *b->u2))) break;
         for (size_t i = 0; i < n; i++) {
             double u = !c->u ? (c->absolute ? c->sigma : c->sigma * spd->value[i]) : c->relative ? c->u[i] * spd->value[i] : c->u[i];
             b->u2[i] = u * u;
@@ -230,7 +230,7 @@ static lx_status bind_one(lx_ctx *ctx, const lx_unc_component *c, const lx_spd *
     case LX_UNC_COVARIANCE:
         if ((st = same_grid(ctx, c, spd)) != LX_OK) return st;
         if ((st = psd_check(ctx, c->label, n, c->cov)) != LX_OK) return st;
-        if (!(b->u2 = malloc(n * n * sizeof *b->u2))) break;
+        if (!(b->u2 = lx__alloc(n * n * sizeof *b->u2))) break;
         for (size_t i = 0; i < n; i++)
             for (size_t j = 0; j < n; j++) {
                 double v = 0.5 * (c->cov[i * n + j] + c->cov[j * n + i]);
@@ -242,11 +242,11 @@ static lx_status bind_one(lx_ctx *ctx, const lx_unc_component *c, const lx_spd *
         if (!(b->vec = dup(spd->value, n))) break;
         return LX_OK;
     case LX_UNC_SHIFT:
-        if (!(b->vec = malloc(n * sizeof *b->vec))) break;
+        if (!(b->vec = lx__alloc(n * sizeof *b->vec))) break;
         slopes(spd, b->vec);
         return LX_OK;
     case LX_UNC_BANDWIDTH:
-        if (!(b->vec = malloc(n * sizeof *b->vec))) break;
+        if (!(b->vec = lx__alloc(n * sizeof *b->vec))) break;
         second_differences(spd, b->vec);
         b->b0 = c->bandwidth_nm > 0 ? c->bandwidth_nm : (spd->lambda_nm[n - 1] - spd->lambda_nm[0]) / (double)(n - 1);
         return LX_OK;
@@ -257,14 +257,14 @@ static lx_status bind_one(lx_ctx *ctx, const lx_unc_component *c, const lx_spd *
 void lx__unc_unbind(lx__unc_bound *b, size_t count)
 {
     if (!b) return;
-    for (size_t i = 0; i < count; i++) free(b[i].u2), free(b[i].vec);
-    free(b);
+    for (size_t i = 0; i < count; i++) lx__free(b[i].u2), lx__free(b[i].vec);
+    lx__free(b);
 }
 
 lx_status lx__unc_bind(lx_ctx *ctx, const lx_unc_model *m, const lx_spd *spd, lx__unc_bound **out)
 {
     *out = NULL;
-    lx__unc_bound *b = calloc(m->count ? m->count : 1, sizeof *b);
+    lx__unc_bound *b = lx__calloc(m->count ? m->count : 1, sizeof *b);
     if (!b) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t i = 0; i < m->count; i++) {
         lx_status st = bind_one(ctx, &m->comp[i].c, spd, &b[i]);

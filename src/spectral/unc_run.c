@@ -32,9 +32,9 @@ unsigned lx__unc_group(int q)
 void lx_unc_result_free(lx_unc_result *r)
 {
     if (!r) return;
-    free(r->q);
-    free(r->history_trials), free(r->history_ratio), free(r->history_worst);
-    free(r);
+    lx__free(r->q);
+    lx__free(r->history_trials), lx__free(r->history_ratio), lx__free(r->history_worst);
+    lx__free(r);
 }
 
 static double now_s(void)
@@ -78,7 +78,7 @@ static lx_status eval_at(run *R, const double *L, size_t m, double *y, size_t ld
             return lx__error(R->ctx, LX_ENOMEM, NULL, 0, "out of memory");
         }
     }
-    double *tmp = malloc(m * R->maxout * sizeof *tmp);
+    double *tmp = lx__alloc(m * R->maxout * sizeof *tmp);
     lx_status st = tmp ? LX_OK : lx__error(R->ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t p = 0; st == LX_OK && p < R->nprov; p++) {
         const lx__unc_provider *P = &R->prov[p];
@@ -86,7 +86,7 @@ static lx_status eval_at(run *R, const double *L, size_t m, double *y, size_t ld
         for (size_t t = 0; t < m; t++)
             for (int k = 0; k < P->nout; k++) y[t * ldy + R->pout[p] + (size_t)k] = tmp[t * (size_t)P->nout + (size_t)k];
     }
-    free(tmp);
+    lx__free(tmp);
     for (size_t p = 0; p < R->nprov; p++)
         if (R->prov[p].scratch_free) R->prov[p].scratch_free(R->prov[p].self, scratch[p]);
     return st;
@@ -98,16 +98,16 @@ static lx_status numeric_jacobian(run *R, size_t p)
 {
     const lx__unc_provider *P = &R->prov[p];
     size_t K = R->sp.K, ni = (size_t)P->nint, off = R->pint[p];
-    double *L = malloc(2 * ni * K * sizeof *L), *y = malloc(2 * ni * R->nout * sizeof *y);
+    double *L = lx__alloc(2 * ni * K * sizeof *L), *y = lx__alloc(2 * ni * R->nout * sizeof *y);
     if (!L || !y) {
-        free(L), free(y);
+        lx__free(L), lx__free(y);
         return lx__error(R->ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
     double big = 0.0;
     for (size_t i = 0; i < ni; i++) big = fmax(big, fabs(R->sp.L0[off + i]));
-    double *h = malloc(ni * sizeof *h);
+    double *h = lx__alloc(ni * sizeof *h);
     if (!h) {
-        free(L), free(y);
+        lx__free(L), lx__free(y);
         return lx__error(R->ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
     for (size_t i = 0; i < ni; i++) {
@@ -125,27 +125,27 @@ static lx_status numeric_jacobian(run *R, size_t p)
         for (size_t i = 0; i < ni; i++)
             R->J[q * K + off + i] = (y[(2 * i) * R->nout + q] - y[(2 * i + 1) * R->nout + q]) / (2 * h[i]);
     }
-    free(L), free(y), free(h);
+    lx__free(L), lx__free(y), lx__free(h);
     return st;
 }
 
 static lx_status jacobians(run *R)
 {
     size_t K = R->sp.K;
-    R->J = calloc(R->nout * K, sizeof *R->J);
+    R->J = lx__calloc(R->nout * K, sizeof *R->J);
     if (!R->J) return lx__error(R->ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t p = 0; p < R->nprov; p++) {
         const lx__unc_provider *P = &R->prov[p];
         size_t ni = (size_t)P->nint, off = R->pint[p];
-        double *j = malloc((size_t)P->nout * ni * sizeof *j);
+        double *j = lx__alloc((size_t)P->nout * ni * sizeof *j);
         if (!j) return lx__error(R->ctx, LX_ENOMEM, NULL, 0, "out of memory");
         if (P->jacobian && P->jacobian(R->ctx, P->self, R->sp.L0 + off, j)) {
             for (int k = 0; k < P->nout; k++)
                 for (size_t i = 0; i < ni; i++) R->J[(R->pout[p] + (size_t)k) * K + off + i] = j[(size_t)k * ni + i];
-            free(j);
+            lx__free(j);
             continue;
         }
-        free(j);
+        lx__free(j);
         lx_status st = numeric_jacobian(R, p);
         if (st != LX_OK) return st;
     }
@@ -254,7 +254,7 @@ static void mc_worker(void *arg, int thread)
     size_t K = R->sp.K;
     lx_ctx *ctx = NULL;
     void *scratch[16] = {0};
-    double *L = malloc(CHUNK * K * sizeof *L), *Y = malloc(CHUNK * R->maxout * sizeof *Y);
+    double *L = lx__alloc(CHUNK * K * sizeof *L), *Y = lx__alloc(CHUNK * R->maxout * sizeof *Y);
     int ok = L && Y && lx_ctx_create(&ctx) == LX_OK;
     for (size_t p = 0; ok && p < R->nprov; p++)
         if (R->prov[p].scratch_new && !(scratch[p] = R->prov[p].scratch_new(R->prov[p].self))) ok = 0;
@@ -284,16 +284,16 @@ static void mc_worker(void *arg, int thread)
     for (size_t p = 0; p < R->nprov; p++)
         if (scratch[p] && R->prov[p].scratch_free) R->prov[p].scratch_free(R->prov[p].self, scratch[p]);
     lx_ctx_destroy(ctx);
-    free(L), free(Y);
+    lx__free(L), lx__free(Y);
 }
 
 static lx_status grow(run *R, size_t cap)
 {
     if (cap <= R->cap) return LX_OK;
-    if (!R->vals && !(R->vals = calloc(R->ns ? R->ns : 1, sizeof *R->vals)))
+    if (!R->vals && !(R->vals = lx__calloc(R->ns ? R->ns : 1, sizeof *R->vals)))
         return lx__error(R->ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t s = 0; s < R->ns; s++) {
-        double *v = realloc(R->vals[s], cap * sizeof *v);
+        double *v = lx__realloc(R->vals[s], cap * sizeof *v);
         if (!v) return lx__error(R->ctx, LX_ENOMEM, NULL, 0, "out of memory for %zu trials of %zu quantities", cap, R->ns);
         R->vals[s] = v;
     }
@@ -327,7 +327,7 @@ static lx_status mc_trials(run *R, uint64_t t0, size_t count)
     }
     if (used == LX_BACKEND_OPENCL) R->on_device = 1;
     st = mc_run_cpu(R, t0, count, L);
-    free(L);
+    lx__free(L);
     R->res->backend = used;
     return st;
 }
@@ -341,7 +341,7 @@ static int seq_push(run *R, seq_stats *S, size_t first, size_t M, double *tmp)
 {
     if (S->h == S->cap) {
         size_t cap = S->cap ? 2 * S->cap : 16;
-        double *p = realloc(S->mean, 5 * cap * R->ns * sizeof *p);
+        double *p = lx__realloc(S->mean, 5 * cap * R->ns * sizeof *p);
         if (!p) return -1;
         /* the five blocks move apart as the room grows */
         for (int b = 4; b >= 1; b--) memmove(p + b * cap * R->ns, p + b * S->cap * R->ns, S->h * R->ns * sizeof *p);
@@ -408,11 +408,11 @@ static double stability(run *R, const seq_stats *S, int *worst, int *stable_of)
 static int history_push(lx_unc_result *res, size_t trials, double ratio, int worst)
 {
     size_t n = res->nhistory + 1;
-    size_t *t = realloc(res->history_trials, n * sizeof *t);
+    size_t *t = lx__realloc(res->history_trials, n * sizeof *t);
     if (t) res->history_trials = t;
-    double *r = realloc(res->history_ratio, n * sizeof *r);
+    double *r = lx__realloc(res->history_ratio, n * sizeof *r);
     if (r) res->history_ratio = r;
-    int *w = realloc(res->history_worst, n * sizeof *w);
+    int *w = lx__realloc(res->history_worst, n * sizeof *w);
     if (w) res->history_worst = w;
     if (!t || !r || !w) return -1;
     t[n - 1] = trials, r[n - 1] = ratio, w[n - 1] = worst;
@@ -431,8 +431,8 @@ static lx_status monte_carlo(run *R)
     size_t maxt = R->o.max_trials ? R->o.max_trials : ((size_t)1 << 26) / (R->ns ? R->ns : 1);
     if (!R->o.max_trials && maxt > 10000000) maxt = 10000000;
     seq_stats S = {0};
-    int *stable_of = calloc(R->ns + 1, sizeof *stable_of);
-    double *tmp = malloc((fixed > M ? fixed : M) * sizeof *tmp);
+    int *stable_of = lx__calloc(R->ns + 1, sizeof *stable_of);
+    double *tmp = lx__alloc((fixed > M ? fixed : M) * sizeof *tmp);
     lx_status st = stable_of && tmp ? LX_OK : lx__error(R->ctx, LX_ENOMEM, NULL, 0, "out of memory");
     int all_stable = -1;
     if (st == LX_OK && fixed) {
@@ -474,7 +474,7 @@ static lx_status monte_carlo(run *R)
         all_stable = 0;
     }
     if (st == LX_OK && total > (fixed > M ? fixed : M)) {
-        double *t2 = realloc(tmp, total * sizeof *tmp);
+        double *t2 = lx__realloc(tmp, total * sizeof *tmp);
         if (t2) tmp = t2;
         else st = lx__error(R->ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
@@ -495,7 +495,7 @@ static lx_status monte_carlo(run *R)
             v->stable = all_stable < 0 ? -1 : stable_of[s];
         }
     }
-    free(S.mean), free(stable_of), free(tmp);
+    lx__free(S.mean), lx__free(stable_of), lx__free(tmp);
     return st;
 }
 
@@ -528,7 +528,7 @@ static lx_status setup(run *R, const lx_unc_model *m)
 {
     lx_ctx *ctx = R->ctx;
     size_t nout = 0, K = 0, maxout = 0;
-    R->pout = malloc(2 * R->nprov * sizeof *R->pout);
+    R->pout = lx__alloc(2 * R->nprov * sizeof *R->pout);
     if (!R->pout) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     R->pint = R->pout + R->nprov;
     for (size_t p = 0; p < R->nprov; p++) {
@@ -541,8 +541,8 @@ static lx_status setup(run *R, const lx_unc_model *m)
     if (st != LX_OK) return st;
     R->ncomp = m->count;
     if ((st = lx__unc_space_make(ctx, R->spd, R->b, R->ncomp, R->prov, R->nprov, &R->sp)) != LX_OK) return st;
-    R->y0 = malloc(nout * sizeof *R->y0);
-    R->qid = malloc(2 * nout * sizeof *R->qid);
+    R->y0 = lx__alloc(nout * sizeof *R->y0);
+    R->qid = lx__alloc(2 * nout * sizeof *R->qid);
     if (!R->y0 || !R->qid) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     R->slot = R->qid + nout;
     for (size_t p = 0; p < R->nprov; p++)
@@ -552,10 +552,10 @@ static lx_status setup(run *R, const lx_unc_model *m)
 
 static lx_status result_new(run *R)
 {
-    lx_unc_result *res = calloc(1, sizeof *res);
-    if (res) res->q = calloc(LX_UQ_COUNT, sizeof *res->q);
+    lx_unc_result *res = lx__calloc(1, sizeof *res);
+    if (res) res->q = lx__calloc(LX_UQ_COUNT, sizeof *res->q);
     if (!res || !res->q) {
-        free(res);
+        lx__free(res);
         return lx__error(R->ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
     R->res = res;
@@ -607,8 +607,8 @@ static void run_free(run *R)
 {
     lx__unc_space_free(&R->sp);
     lx__unc_unbind(R->b, R->ncomp);
-    for (size_t s = 0; R->vals && s < R->ns; s++) free(R->vals[s]);
-    free(R->pout), free(R->y0), free(R->J), free(R->qid), free(R->vals);
+    for (size_t s = 0; R->vals && s < R->ns; s++) lx__free(R->vals[s]);
+    lx__free(R->pout), lx__free(R->y0), lx__free(R->J), lx__free(R->qid), lx__free(R->vals);
 }
 
 lx_status lx__unc_run(lx_ctx *ctx, const lx_spd *spd, const lx_unc_model *m, const lx_unc_opts *opts,

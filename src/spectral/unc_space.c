@@ -55,16 +55,16 @@ static lx_status shift_table(lx_ctx *ctx, lx__unc_space *sp)
     const lx_spd *spd = sp->spd;
     size_t n = sp->n, K = sp->K;
     double dmax = LX__UNC_Z_MAX * sp->shift_sigma * (1 + 1e-9);
-    double *d = malloc((SHIFT_TABLE_MAX + 2) * sizeof *d);
+    double *d = lx__alloc((SHIFT_TABLE_MAX + 2) * sizeof *d);
     if (!d) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     size_t nb = shift_breakpoints(spd, dmax, d, SHIFT_TABLE_MAX);
     if (nb > SHIFT_TABLE_MAX) { /* a dense irregular grid: the shift is integrated per trial */
-        free(d);
+        lx__free(d);
         return LX_OK;
     }
-    double *T = malloc(nb * K * sizeof *T), *s = malloc(n * sizeof *s);
+    double *T = lx__alloc(nb * K * sizeof *T), *s = lx__alloc(n * sizeof *s);
     if (!T || !s) {
-        free(d), free(T), free(s);
+        lx__free(d), lx__free(T), lx__free(s);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
     for (size_t b = 0; b < nb; b++) {
@@ -73,7 +73,7 @@ static lx_status shift_table(lx_ctx *ctx, lx__unc_space *sp)
         matvec(sp->A, K, n, s, T + b * K);
         for (size_t k = 0; k < K; k++) T[b * K + k] -= sp->L0[k];
     }
-    free(s);
+    lx__free(s);
     sp->nshift = nb, sp->shift_d = d, sp->shift_T = T;
     return LX_OK;
 }
@@ -84,9 +84,9 @@ static lx_status shift_table(lx_ctx *ctx, lx__unc_space *sp)
 static lx_status normal_factor(lx_ctx *ctx, lx__unc_space *sp)
 {
     size_t K = sp->K;
-    double *U = calloc(K * K, sizeof *U), *g = calloc(K * K, sizeof *g), *s = malloc(K * sizeof *s);
+    double *U = lx__calloc(K * K, sizeof *U), *g = lx__calloc(K * K, sizeof *g), *s = lx__alloc(K * sizeof *s);
     if (!U || !g || !s) {
-        free(U), free(g), free(s);
+        lx__free(U), lx__free(g), lx__free(s);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
     int any = 0;
@@ -109,14 +109,14 @@ static lx_status normal_factor(lx_ctx *ctx, lx__unc_space *sp)
         lx__pivoted_cholesky(K, U, 1e-14, g, &r);
     }
     sp->r = r;
-    sp->G = malloc((K * r > 0 ? K * r : 1) * sizeof *sp->G);
+    sp->G = lx__alloc((K * r > 0 ? K * r : 1) * sizeof *sp->G);
     if (!sp->G) {
-        free(U), free(g), free(s);
+        lx__free(U), lx__free(g), lx__free(s);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
     for (size_t i = 0; i < K; i++) /* stored by columns: column k of the factor is row k of G */
         for (size_t k = 0; k < r; k++) sp->G[k * K + i] = s[i] * g[i * K + k];
-    free(U), free(g), free(s);
+    lx__free(U), lx__free(g), lx__free(s);
     return LX_OK;
 }
 
@@ -125,10 +125,10 @@ static lx_status fourier_vectors(lx_ctx *ctx, lx__unc_space *sp, lx__unc_fourier
 {
     size_t n = sp->n, K = sp->K;
     const lx_spd *spd = sp->spd;
-    f->F = malloc((2 * (size_t)nmax + 1) * K * sizeof *f->F);
-    double *v = malloc(n * sizeof *v);
+    f->F = lx__alloc((2 * (size_t)nmax + 1) * K * sizeof *f->F);
+    double *v = lx__alloc(n * sizeof *v);
     if (!f->F || !v) {
-        free(v);
+        lx__free(v);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
     memcpy(f->F, sp->L0, K * sizeof *f->F);
@@ -141,7 +141,7 @@ static lx_status fourier_vectors(lx_ctx *ctx, lx__unc_space *sp, lx__unc_fourier
             }
             matvec(sp->A, K, n, v, f->F + (2 * (size_t)i - 1 + (size_t)c) * K);
         }
-    free(v);
+    lx__free(v);
     return LX_OK;
 }
 
@@ -150,7 +150,7 @@ static lx_status fourier_vectors(lx_ctx *ctx, lx__unc_space *sp, lx__unc_fourier
 static lx_status fourier_factor(const lx__unc_space *sp, const lx__unc_fourier *f, lx__unc_factor *out)
 {
     size_t K = sp->K, m = 2 * (size_t)f->terms + 1;
-    if (!(out->F = malloc(m * K * sizeof *out->F))) return LX_ENOMEM;
+    if (!(out->F = lx__alloc(m * K * sizeof *out->F))) return LX_ENOMEM;
     out->m = m;
     double s0 = f->sigma / sqrt(f->terms + 1.0), s1 = s0 / sqrt(2.0);
     for (size_t r = 0; r < m; r++)
@@ -168,14 +168,14 @@ static lx_status comp_factor(lx_ctx *ctx, lx__unc_space *sp, const lx__unc_bound
     size_t m = b->kind == LX_UNC_NOISE ? n : b->kind == LX_UNC_COVARIANCE || b->kind == LX_UNC_FOURIER ? 0 : 1;
     double *V = NULL, *col = NULL;
     if (b->kind == LX_UNC_COVARIANCE) { /* U = V V^T, then F = (A V)^T */
-        if (!(V = malloc(n * n * sizeof *V)) || !(col = malloc(n * sizeof *col))) {
-            free(V);
+        if (!(V = lx__alloc(n * n * sizeof *V)) || !(col = lx__alloc(n * sizeof *col))) {
+            lx__free(V);
             return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
         }
         lx__pivoted_cholesky(n, b->u2, 1e-14, V, &m);
     }
-    if (m && !(out->F = malloc(m * K * sizeof *out->F))) {
-        free(V), free(col);
+    if (m && !(out->F = lx__alloc(m * K * sizeof *out->F))) {
+        lx__free(V), lx__free(col);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
     out->m = m;
@@ -202,7 +202,7 @@ static lx_status comp_factor(lx_ctx *ctx, lx__unc_space *sp, const lx__unc_bound
         break;
     case LX_UNC_FOURIER: break;
     }
-    free(V), free(col);
+    lx__free(V), lx__free(col);
     return LX_OK;
 }
 
@@ -211,8 +211,8 @@ static lx_status make_rows(lx_ctx *ctx, const lx_spd *spd, const lx__unc_provide
     size_t K = 0, n = spd->n;
     for (size_t p = 0; p < nprov; p++) K += (size_t)prov[p].nint;
     sp->n = n, sp->K = K, sp->spd = spd;
-    sp->A = malloc(K * n * sizeof *sp->A);
-    sp->L0 = malloc(K * sizeof *sp->L0);
+    sp->A = lx__alloc(K * n * sizeof *sp->A);
+    sp->L0 = lx__alloc(K * sizeof *sp->L0);
     if (!sp->A || !sp->L0) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     size_t row = 0;
     for (size_t p = 0; p < nprov; p++) {
@@ -232,11 +232,11 @@ lx_status lx__unc_space_make(lx_ctx *ctx, const lx_spd *spd, const lx__unc_bound
     if (st != LX_OK) return st;
     size_t K = sp->K;
     sp->ncomp = ncomp;
-    sp->fac = calloc(ncomp ? ncomp : 1, sizeof *sp->fac);
-    sp->gauss = calloc(ncomp ? ncomp : 1, sizeof *sp->gauss);
-    sp->bw_sigma = calloc(2 * ncomp + 1, sizeof *sp->bw_sigma);
-    sp->bw_D = calloc(ncomp * K + 1, sizeof *sp->bw_D);
-    sp->fourier = calloc(ncomp ? ncomp : 1, sizeof *sp->fourier);
+    sp->fac = lx__calloc(ncomp ? ncomp : 1, sizeof *sp->fac);
+    sp->gauss = lx__calloc(ncomp ? ncomp : 1, sizeof *sp->gauss);
+    sp->bw_sigma = lx__calloc(2 * ncomp + 1, sizeof *sp->bw_sigma);
+    sp->bw_D = lx__calloc(ncomp * K + 1, sizeof *sp->bw_D);
+    sp->fourier = lx__calloc(ncomp ? ncomp : 1, sizeof *sp->fourier);
     if (!sp->fac || !sp->gauss || !sp->bw_sigma || !sp->bw_D || !sp->fourier)
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     sp->bw_b0 = sp->bw_sigma + ncomp;
@@ -282,11 +282,11 @@ lx_status lx__unc_space_finish(lx__unc_space *sp, const lx__unc_bound *b)
 
 void lx__unc_space_free(lx__unc_space *sp)
 {
-    free(sp->A), free(sp->L0);
-    for (size_t c = 0; sp->fac && c < sp->ncomp; c++) free(sp->fac[c].F);
-    free(sp->fac), free(sp->gauss), free(sp->G), free(sp->shift_d), free(sp->shift_T);
-    free(sp->bw_sigma), free(sp->bw_D);
-    for (size_t f = 0; sp->fourier && f < sp->nfourier; f++) free(sp->fourier[f].F);
-    free(sp->fourier);
+    lx__free(sp->A), lx__free(sp->L0);
+    for (size_t c = 0; sp->fac && c < sp->ncomp; c++) lx__free(sp->fac[c].F);
+    lx__free(sp->fac), lx__free(sp->gauss), lx__free(sp->G), lx__free(sp->shift_d), lx__free(sp->shift_T);
+    lx__free(sp->bw_sigma), lx__free(sp->bw_D);
+    for (size_t f = 0; sp->fourier && f < sp->nfourier; f++) lx__free(sp->fourier[f].F);
+    lx__free(sp->fourier);
     memset(sp, 0, sizeof *sp);
 }

@@ -41,7 +41,7 @@ static int push(double **v, size_t *n, size_t *cap, double x)
 {
     if (*n == *cap) {
         size_t c = *cap ? 2 * *cap : 1024;
-        double *p = realloc(*v, c * sizeof *p);
+        double *p = lx__realloc(*v, c * sizeof *p);
         if (!p) return -1;
         *v = p, *cap = c;
     }
@@ -58,9 +58,9 @@ static lx_status read_rows(lx_ctx *ctx, const char *path, const char *text, size
         if (s == e || *s == '#') continue;
         if (R->nrows == R->rcap) {
             size_t c = R->rcap ? 2 * R->rcap : 64;
-            size_t *l = realloc(R->len, c * sizeof *l);
+            size_t *l = lx__realloc(R->len, c * sizeof *l);
             if (l) R->len = l;
-            long *ln = realloc(R->line, c * sizeof *ln);
+            long *ln = lx__realloc(R->line, c * sizeof *ln);
             if (ln) R->line = ln;
             if (!l || !ln) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
             R->rcap = c;
@@ -102,7 +102,7 @@ static lx_status covariance_file(lx_ctx *ctx, const char *path, lx_unc_component
     rows R;
     memset(&R, 0, sizeof R);
     st = read_rows(ctx, path, text, len, &R);
-    free(text);
+    lx__free(text);
     size_t n = 0;
     if (st == LX_OK && R.nrows == 0) st = lx__error(ctx, LX_EPARSE, path, 0, "no numbers: expected a covariance matrix");
     if (st == LX_OK) {
@@ -134,9 +134,9 @@ static lx_status covariance_file(lx_ctx *ctx, const char *path, lx_unc_component
             memcpy(*cov + i * n, row, n * sizeof *row);
         }
     }
-    free(R.v), free(R.len), free(R.line);
+    lx__free(R.v), lx__free(R.len), lx__free(R.line);
     if (st != LX_OK) {
-        free(*cov), free(*lam);
+        lx__free(*cov), lx__free(*lam);
         *cov = *lam = NULL;
         return st;
     }
@@ -186,12 +186,12 @@ static lx_status term_column(lx_ctx *ctx, lx_unc_model *m, const char *term, cha
     c.kind = LX_UNC_NOISE, c.n = col->n, c.lambda_nm = col->lambda_nm, c.u = col->value, c.label = term;
     double *u = NULL;
     if (pc) { /* per cent of the values */
-        if (!(u = malloc(col->n * sizeof *u))) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+        if (!(u = lx__alloc(col->n * sizeof *u))) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
         for (size_t i = 0; i < col->n; i++) u[i] = col->value[i] / 100.0;
         c.u = u, c.relative = 1;
     }
     lx_status st = lx_unc_model_add(ctx, m, &c);
-    free(u);
+    lx__free(u);
     return st;
 }
 
@@ -210,7 +210,7 @@ static lx_status term_file(lx_ctx *ctx, lx_unc_model *m, const char *term, char 
         if (st != LX_OK) return st;
         c.kind = LX_UNC_COVARIANCE, c.relative = rel;
         st = lx_unc_model_add(ctx, m, &c);
-        free(lam), free(cov);
+        lx__free(lam), lx__free(cov);
         return st;
     }
     lx_spd_set *set = NULL;
@@ -223,7 +223,7 @@ static lx_status term_file(lx_ctx *ctx, lx_unc_model *m, const char *term, char 
                          term, k);
     }
     const lx_spd *s = &set->spd[0];
-    double *u = malloc(s->n * sizeof *u);
+    double *u = lx__alloc(s->n * sizeof *u);
     if (!u) {
         lx_spd_set_free(set);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
@@ -231,7 +231,7 @@ static lx_status term_file(lx_ctx *ctx, lx_unc_model *m, const char *term, char 
     for (size_t i = 0; i < s->n; i++) u[i] = pc ? s->value[i] / 100.0 : s->value[i];
     c.kind = LX_UNC_NOISE, c.n = s->n, c.lambda_nm = s->lambda_nm, c.u = u, c.relative = pc;
     st = lx_unc_model_add(ctx, m, &c);
-    free(u);
+    lx__free(u);
     lx_spd_set_free(set);
     return st;
 }
@@ -252,7 +252,7 @@ static lx_status term(lx_ctx *ctx, lx_unc_model *m, const char *t, const lx_spd_
         return lx_unc_model_add(ctx, m, &c);
     }
     size_t kl = (size_t)(eq - t);
-    char *v = strdup(eq + 1);
+    char *v = lx__strdup(eq + 1);
     if (!v) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     lx_status st = LX_OK;
     const char *ve = v + strlen(v);
@@ -294,7 +294,7 @@ static lx_status term(lx_ctx *ctx, lx_unc_model *m, const char *t, const lx_spd_
         st = bad(ctx, t, "unknown key (expected noise, column, file, scale, shift, bandwidth, fourier or covariance)");
     }
 #undef KEY
-    free(v);
+    lx__free(v);
     return st;
 }
 
@@ -314,7 +314,7 @@ lx_status lx_unc_model_parse(lx_ctx *ctx, const char *spec, const lx_spd_set *se
         while (*r == ' ') r++;
         if (*q == '+' && (q == p || !*r || *r == '+')) st = lx__error(ctx, LX_EINVAL, NULL, 0, "uncertainty '%s': an empty term", spec);
     }
-    char *copy = st == LX_OK ? strdup(spec) : NULL;
+    char *copy = st == LX_OK ? lx__strdup(spec) : NULL;
     if (st != LX_OK) {
         lx_unc_model_free(m);
         return st;
@@ -331,7 +331,7 @@ lx_status lx_unc_model_parse(lx_ctx *ctx, const char *spec, const lx_spd_set *se
         else st = term(ctx, m, tok, set);
     }
     if (st == LX_OK && m->count == 0) st = lx__error(ctx, LX_EINVAL, NULL, 0, "uncertainty: no term in '%s'", spec);
-    free(copy);
+    lx__free(copy);
     if (st != LX_OK) {
         lx_unc_model_free(m);
         return st;

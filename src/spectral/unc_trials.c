@@ -72,8 +72,8 @@ void lx__unc_trials_cpu(const lx__unc_space *sp, uint64_t seed, uint64_t t0, siz
 {
     size_t K = sp->K, r = sp->r, nn = sp->nnormal, nu = sp->nuniform;
     double zs[64], us[64];
-    double *z = nn > 64 ? malloc(nn * sizeof *z) : zs, *u = nu > 64 ? malloc(nu * sizeof *u) : us;
-    double *tmp = sp->shift_sigma > 0 && !sp->nshift ? malloc(sp->n * sizeof *tmp) : NULL;
+    double *z = nn > 64 ? lx__alloc(nn * sizeof *z) : zs, *u = nu > 64 ? lx__alloc(nu * sizeof *u) : us;
+    double *tmp = sp->shift_sigma > 0 && !sp->nshift ? lx__alloc(sp->n * sizeof *tmp) : NULL;
     if (!z || !u || (sp->shift_sigma > 0 && !sp->nshift && !tmp)) { /* out of memory: NaN trials */
         for (size_t i = 0; i < m * K; i++) L[i] = NAN;
         goto done;
@@ -102,9 +102,9 @@ void lx__unc_trials_cpu(const lx__unc_space *sp, uint64_t seed, uint64_t t0, siz
         }
     }
 done:
-    if (z != zs) free(z);
-    if (u != us) free(u);
-    free(tmp);
+    if (z != zs) lx__free(z);
+    if (u != us) lx__free(u);
+    lx__free(tmp);
 }
 
 /* Break-even of LX_BACKEND_AUTO in multiply-adds (trials x K x draws per trial), measured with
@@ -124,7 +124,7 @@ static cl_mem upload(lx_ctx *ctx, lx__cl *cl, const double *v, size_t n, int fp6
     double one = 0;
     if (!n) v = &one, n = 1;
     if (!fp64) {
-        float *f = malloc(n * sizeof *f);
+        float *f = lx__alloc(n * sizeof *f);
         if (!f) {
             *st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
             return NULL;
@@ -133,7 +133,7 @@ static cl_mem upload(lx_ctx *ctx, lx__cl *cl, const double *v, size_t n, int fp6
         tmp = f;
     }
     cl_mem m = clCreateBuffer(cl->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, n * es, tmp ? tmp : (void *)v, &err);
-    free(tmp);
+    lx__free(tmp);
     *st = lx__cl_check(ctx, err, "clCreateBuffer(uncertainty)");
     return *st == LX_OK ? m : NULL;
 }
@@ -154,7 +154,7 @@ static lx_status trials_opencl(lx_ctx *ctx, const lx__unc_space *sp, uint64_t se
     size_t K = sp->K, es = fp64 ? sizeof(double) : sizeof(float);
     size_t nfv = 0;
     for (size_t f = 0; f < sp->nfourier; f++) nfv += (2 * (size_t)sp->fourier[f].terms + 1) * K;
-    double *bw = malloc((2 * sp->nbw + 2 * sp->nfourier + 2) * sizeof *bw), *F = malloc((nfv + 1) * sizeof *F);
+    double *bw = lx__alloc((2 * sp->nbw + 2 * sp->nfourier + 2) * sizeof *bw), *F = lx__alloc((nfv + 1) * sizeof *F);
     cl_mem m[8] = {0}, out = NULL;
     void *host = NULL;
     if (!bw || !F) {
@@ -177,7 +177,7 @@ static lx_status trials_opencl(lx_ctx *ctx, const lx__unc_space *sp, uint64_t se
     size_t chunk = (size_t)(max_alloc / (K * es));
     if (chunk > (1u << 20)) chunk = 1u << 20;
     if (chunk > count) chunk = count;
-    if (!(host = malloc(chunk * K * es))) {
+    if (!(host = lx__alloc(chunk * K * es))) {
         st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
         goto done;
     }
@@ -224,7 +224,7 @@ done:
         if (m[i]) clReleaseMemObject(m[i]);
     if (out) clReleaseMemObject(out);
     clReleaseKernel(kern);
-    free(bw), free(F), free(host);
+    lx__free(bw), lx__free(F), lx__free(host);
     return st;
 }
 #endif
@@ -240,14 +240,14 @@ lx_status lx__unc_trials_device(lx_ctx *ctx, const lx__unc_space *sp, uint64_t s
     lx_status st = lx__backend_choose(ctx, "uncertainty trials", asked, work, LX_UNC_COLD_FMA, LX_UNC_WARM_FMA, &b);
     if (st != LX_OK || b == LX_BACKEND_CPU) return st;
 #if LX_OPENCL
-    double *buf = malloc(count * sp->K * sizeof *buf);
+    double *buf = lx__alloc(count * sp->K * sizeof *buf);
     if (!buf) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for %zu trials of %zu integrals", count, sp->K);
     st = trials_opencl(ctx, sp, seed, t0, count, buf);
     if (st == LX_OK) {
         *L = buf, *used = LX_BACKEND_OPENCL;
         return LX_OK;
     }
-    free(buf);
+    lx__free(buf);
     if (lx__backend_fallback(ctx, "uncertainty trials", asked, st)) return LX_OK; /* the CPU draws them */
     return st;
 #else
