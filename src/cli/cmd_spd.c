@@ -343,6 +343,7 @@ typedef struct spd_run {
     cli_reports reports;
     cli_table *row; /* --uncertainty: the plain row of a spectrum, before its uncertainty joins it */
     lx_unc_model *model; /* --uncertainty without column=: parsed once for every file */
+    const char *stream_file; /* the file a stream's rows belong to */
     int rc;
 } spd_run;
 
@@ -370,6 +371,51 @@ static void fail(spd_run *R, lx_status st)
 {
     int e = cli_fail(R->a->cmd, R->ctx, st);
     if (e > R->rc) R->rc = e;
+}
+
+/* The plain row of one spectrum into t (the columns without uncertainty): 0 when it has none (the
+ * reason printed, R->rc raised). line < 0: file says where ("FILE (data row N)"). */
+static int plain_row(spd_run *R, cli_table *t, const lx_spd *spd, const char *file, long line, int u,
+                     const lx_vendor_results *vendor, const char *inst)
+{
+    spd_args *a = R->a;
+    char where[1100];
+    if (line >= 0) snprintf(where, sizeof where, "%s:%ld", file, line);
+    else snprintf(where, sizeof where, "%s", file);
+    const char *label = spd->name ? spd->name : "";
+    lx_colorimetry r;
+    lx_status st = lx_spd_colorimetry(R->ctx, spd, a->obs, a->method, &r);
+    if (st == LX_OK) st = lx_colorimetry_check(R->ctx, &r, NAN); /* before printing: no blank columns */
+    if (st != LX_OK) {
+        cli_error(a->cmd, "%s: spectrum '%s': %s", where, label, lx_ctx_errmsg(R->ctx));
+        if (cli_exit_code(st) > R->rc) R->rc = cli_exit_code(st);
+        return 0;
+    }
+    if (!r.cct_valid && !cli_quiet) { /* every empty cell says why */
+        char why[LX__ERRMSG_MAX_CLI];
+        cli_cct_reason(R->ctx, &r, a->obs, why, sizeof why);
+        cli_error(a->cmd, "%s: spectrum '%s': cct_K and duv empty: %s", where, label, why);
+    }
+    cli_table_str(t, line >= 0 ? file : R->stream_file);
+    cli_table_str(t, label);
+    double v[] = {r.X, r.Y, r.Z, r.x, r.y, r.u_prime, r.v_prime, r.cct_K, r.duv, r.ler_lm_per_W, r.scotopic_Y, r.sp_ratio, r.radiant};
+    for (size_t j = 0; j < sizeof v / sizeof *v; j++) cli_table_num(t, v[j]);
+    cli_table_str(t, method_name(r.method));
+    if (a->msel.any && cli_metrics_row(t, R->ctx, &a->msel, spd, a->method, units[u].name, &r, vendor, file, line, a->cmd) > 0 &&
+        R->rc < CLI_INPUT)
+        R->rc = CLI_INPUT;
+    cli_table_json(t, inst);
+    return 1;
+}
+
+/* cli_unc_stream's plain row: a streamed spectrum of the current file (where: "FILE (data row N)") */
+static int stream_plain(void *arg, cli_table *t, const lx_spd *spd, const char *where)
+{
+    spd_run *R = arg;
+    int rc0 = R->rc, ok = plain_row(R, t, spd, where, -1, R->table_unit, NULL, NULL);
+    int e = R->rc;
+    R->rc = rc0;
+    return ok ? (e > rc0 ? e : 0) : -(e > 0 ? e : CLI_INPUT);
 }
 
 static void do_set(spd_run *R, lx_spd_set *set)
@@ -407,38 +453,14 @@ static void do_set(spd_run *R, lx_spd_set *set)
     for (size_t k = 0; k < set->count; k++) {
         cli_progress_update(k);
         if (model && lx_unc_model_uses(model, &set->spd[k])) continue; /* a column of uncertainties */
-        lx_colorimetry r;
         long line = set->line ? set->line[k] : 0L;
-        lx_status st = lx_spd_colorimetry(R->ctx, &set->spd[k], a->obs, a->method, &r);
-        if (st == LX_OK) st = lx_colorimetry_check(R->ctx, &r, NAN); /* before printing: no blank columns */
-        if (st != LX_OK) {
-            cli_error(a->cmd, "%s:%ld: spectrum '%s': %s", set->file, line, set->spd[k].name ? set->spd[k].name : "",
-                      lx_ctx_errmsg(R->ctx));
-            if (cli_exit_code(st) > R->rc) R->rc = cli_exit_code(st);
-            continue;
-        }
-        if (!r.cct_valid && !cli_quiet) { /* every empty cell says why */
-            char why[LX__ERRMSG_MAX_CLI];
-            cli_cct_reason(R->ctx, &r, a->obs, why, sizeof why);
-            cli_error(a->cmd, "%s:%ld: spectrum '%s': cct_K and duv empty: %s", set->file, line,
-                      set->spd[k].name ? set->spd[k].name : "", why);
-        }
-        cli_table_str(t, set->file);
-        cli_table_str(t, set->spd[k].name ? set->spd[k].name : "");
-        double v[] = {r.X, r.Y, r.Z, r.x, r.y, r.u_prime, r.v_prime, r.cct_K, r.duv, r.ler_lm_per_W,
-                      r.scotopic_Y, r.sp_ratio, r.radiant};
-        for (size_t j = 0; j < sizeof v / sizeof *v; j++) cli_table_num(t, v[j]);
-        cli_table_str(t, method_name(r.method));
-        if (a->msel.any &&
-            cli_metrics_row(t, R->ctx, &a->msel, &set->spd[k], a->method, units[u].name, &r,
-                            have_vendor ? &vendor : NULL, set->file, line, a->cmd) > 0 && R->rc < CLI_INPUT)
-            R->rc = CLI_INPUT;
-        cli_table_json(t, inst);
-        if (model) {
+        int ok = plain_row(R, t, &set->spd[k], set->file, line, u, have_vendor ? &vendor : NULL, inst);
+        if (ok && model) {
             int e2 = cli_unc_row(&a->unc, R->t, t, R->ctx, &set->spd[k], a->obs, a->method, model, set->file, line, a->cmd);
             if (e2 > R->rc) R->rc = e2;
+            if (cli_table_rows(R->t) % 64 == 0) spd_flush(&R->so); /* a long batch goes out as it comes */
         }
-        if (a->report_dir) {
+        if (ok && a->report_dir) {
             R->reports.opts.unit = units[u].name;
             int re = cli_spd_report(&R->reports, R->ctx, set->file, k, &set->spd[k]);
             if (re > R->rc) R->rc = re;
@@ -465,6 +487,16 @@ static void do_file(spd_run *R, const char *arg, double g_start, double g_step, 
     set_unit(R, a->unit);
     R->B.unit = units[a->unit].name;
     lx_spd_set *set = NULL;
+    if (a->unc.spec && R->model && !a->report_dir && !a->reader_opts) { /* a large rows-layout file: streamed */
+        cli_unc_rows rows = {.plain = stream_plain, .flush = spd_flush, .arg = R, .row = R->row, .dst = R->t, .flush_arg = &R->so};
+        int rc = 0;
+        R->stream_file = arg;
+        if (cli_unc_stream(&a->unc, R->ctx, arg, R->model, a->obs, a->method, &rows, a->cmd, &rc)) {
+            if (rc > R->rc) R->rc = rc;
+            spd_flush(&R->so);
+            return;
+        }
+    }
     int streamed = (!a->msel.any || cli_metrics_batchable(&a->msel)) && !a->report_dir && !a->reader_opts && !a->unc.spec
                        ? cli_spd_batch_file(&R->B, arg, &set) : 0;
     if (streamed < 0 && -streamed > R->rc) R->rc = -streamed;

@@ -260,11 +260,11 @@ static char *details(const cli_unc *u, const lx_unc_result *r, const lx_unc_mode
 
 /* ---- --explain ---- */
 
-static void explain(const cli_unc *u, const lx_unc_result *r, const lx_unc_model *m, const char *file, long line,
-                    const char *label, const char *cmd)
+static void explain(const cli_unc *u, const lx_unc_result *r, const lx_unc_model *m, const char *where, const char *label,
+                    const char *cmd)
 {
     FILE *f = stderr;
-    fprintf(f, "luxcalc: %s: %s:%ld: spectrum '%s': uncertainty by %s, coverage %g %%, model ", cmd, file, line, label,
+    fprintf(f, "luxcalc: %s: %s: spectrum '%s': uncertainty by %s, coverage %g %%, model ", cmd, where, label,
             r->method == LX_UNC_GUM ? "the GUM law of propagation (JCGM 100)"
             : r->method == LX_UNC_BOTH ? "Monte Carlo (JCGM 101) and GUM (JCGM 100), GUM validated per JCGM 101 8"
                                        : "Monte Carlo (JCGM 101)",
@@ -319,17 +319,24 @@ static void explain(const cli_unc *u, const lx_unc_result *r, const lx_unc_model
 
 /* ---- a row ---- */
 
-int cli_unc_row(const cli_unc *u, cli_table *dst, cli_table *src, lx_ctx *ctx, const lx_spd *spd, lx_observer obs,
-                lx_method method, const lx_unc_model *m, const char *file, long line, const char *cmd)
+lx_unc_result *cli_unc_compute(const cli_unc *u, lx_ctx *ctx, const lx_spd *spd, lx_observer obs, lx_method method,
+                               const lx_unc_model *m, int threads, lx_status *st, char **msg)
 {
     lx_unc_opts o = u->o;
     o.observer = obs, o.integration = method, o.quantities = u->groups ? u->groups : LX_UNC_COLORIMETRY;
+    if (threads) o.threads = threads;
     lx_unc_result *r = NULL;
+    *st = lx_spd_uncertainty(ctx, spd, m, &o, &r);
+    *msg = *st != LX_OK ? strdup(lx_ctx_errmsg(ctx)) : NULL;
+    return r;
+}
+
+int cli_unc_write(const cli_unc *u, cli_table *dst, cli_table *src, lx_unc_result *r, lx_status st, const char *msg,
+                  const lx_unc_model *m, const char *where, const char *label, const char *cmd)
+{
     int rc = 0;
-    const char *label = spd->name ? spd->name : "";
-    lx_status st = lx_spd_uncertainty(ctx, spd, m, &o, &r);
     if (st != LX_OK) {
-        cli_error(cmd, "%s:%ld: spectrum '%s': no uncertainty: %s", file, line, label, lx_ctx_errmsg(ctx));
+        cli_error(cmd, "%s: spectrum '%s': no uncertainty: %s", where, label, msg ? msg : "out of memory");
         rc = cli_exit_code(st);
     }
     for (int i = 0; i < u->n; i++) {
@@ -358,11 +365,23 @@ int cli_unc_row(const cli_unc *u, cli_table *dst, cli_table *src, lx_ctx *ctx, c
         }
     }
     cli_table_discard(src);
-    if (r && u->explain && !cli_quiet) explain(u, r, m, file, line, label, cmd);
+    if (r && u->explain && !cli_quiet) explain(u, r, m, where, label, cmd);
     if (r && r->sequence && r->stable == 0 && !cli_quiet)
-        cli_error(cmd, "%s:%ld: spectrum '%s': warning: the Monte Carlo results are not stable to %d digits after %zu trials "
+        cli_error(cmd, "%s: spectrum '%s': warning: the Monte Carlo results are not stable to %d digits after %zu trials "
                        "(the most; --trials N runs more, --digits 1 asks less)",
-                  file, line, label, r->digits, r->trials);
+                  where, label, r->digits, r->trials);
     lx_unc_result_free(r);
+    return rc;
+}
+
+int cli_unc_row(const cli_unc *u, cli_table *dst, cli_table *src, lx_ctx *ctx, const lx_spd *spd, lx_observer obs,
+                lx_method method, const lx_unc_model *m, const char *file, long line, const char *cmd)
+{
+    lx_status st;
+    char *msg = NULL, where[1100];
+    lx_unc_result *r = cli_unc_compute(u, ctx, spd, obs, method, m, 0, &st, &msg);
+    snprintf(where, sizeof where, "%s:%ld", file, line);
+    int rc = cli_unc_write(u, dst, src, r, st, msg, m, where, spd->name ? spd->name : "", cmd);
+    free(msg);
     return rc;
 }

@@ -43,6 +43,32 @@ void cli_unc_table_flags(const cli_unc *u, cli_table *t);
 int cli_unc_row(const cli_unc *u, cli_table *dst, cli_table *src, lx_ctx *ctx, const lx_spd *spd, lx_observer obs,
                 lx_method method, const lx_unc_model *m, const char *file, long line, const char *cmd);
 
+/* The two halves of cli_unc_row, for rows computed on other threads: the uncertainty of spd (on
+ * ctx, `threads` threads for Monte Carlo, 0: u's), its status and message (malloc'ed) on failure;
+ * and the row written from it (r is freed; where: "FILE:LINE" or "FILE (data row N)"). */
+lx_unc_result *cli_unc_compute(const cli_unc *u, lx_ctx *ctx, const lx_spd *spd, lx_observer obs, lx_method method,
+                               const lx_unc_model *m, int threads, lx_status *st, char **msg);
+int cli_unc_write(const cli_unc *u, cli_table *dst, cli_table *src, lx_unc_result *r, lx_status st, const char *msg,
+                  const lx_unc_model *m, const char *where, const char *label, const char *cmd);
+
+/* The rows of a rows-layout CSV streamed (spd_unc_stream.c): a first pass checks the whole file
+ * (a bad row: 0, the caller's general reader reports it as for any file), the second parses it part
+ * by part on every core and computes each spectrum's uncertainty there (Monte Carlo on one thread a
+ * spectrum), and the rows go out in file order as the parts come: plain(arg, t, spd, where) appends
+ * the spectrum's plain row to t (returns an exit status), then its uncertainty joins it in dst, and
+ * flush(arg) writes dst's rows. Returns 1 when it did the file (*rc its worst exit status), 0 when
+ * the caller reads it (not a regular file, not a rows layout on a uniform grid, a bad row). */
+typedef struct cli_unc_rows {
+    /* > 0 or 0: the row was added (its exit status), < 0: none (minus the exit status; printed) */
+    int (*plain)(void *arg, cli_table *t, const lx_spd *spd, const char *where);
+    void (*flush)(void *arg);
+    void *arg;
+    cli_table *row, *dst;
+    void *flush_arg;
+} cli_unc_rows;
+int cli_unc_stream(const cli_unc *u, lx_ctx *ctx, const char *path, const lx_unc_model *m, lx_observer obs,
+                   lx_method method, const cli_unc_rows *rows, const char *cmd, int *rc);
+
 void cli_unc_free(cli_unc *u);
 
 #endif /* LX_SPD_UNC_H */

@@ -95,4 +95,18 @@ run spd --uncertainty 1% --uncertainty-method gum --metrics cri --format csv sam
 expect_rc 0 "batch exits 0"
 n=$(printf '%s\n' "$out" | awk -F, 'NR==1{for(i=1;i<=NF;i++) if($i=="cri_ra_u")c=i} NR>1 && $c > 0 {k++} END{print k+0}')
 [ "$n" = 4 ] && ok "every spectrum of the batch has u(Ra)" || notok "every spectrum of the batch has u(Ra)" "$n rows"
+# a large rows-layout batch (1100 spectra) is streamed, each spectrum on the cores in turn: its rows
+# are the rows the general reader gives the same spectra (the trials depend on the seed alone)
+awk 'BEGIN{printf "id"; for(l=380;l<=780;l+=5) printf ",%d", l; print "";
+  for(i=0;i<1100;i++){printf "s%d", i; for(l=380;l<=780;l+=5){a=(l-450-i%20)/12; p=(l-580)/50; printf ",%.6f", exp(-0.5*a*a)+0.8*exp(-0.5*p*p)} print ""}}' > "$T/big.csv"
+(head -n 1 "$T/big.csv"; sed -n 3p "$T/big.csv") > "$T/one.csv"
+for m in "--uncertainty-method gum" "--trials 1000"; do
+  run spd --uncertainty '1%+shift=0.2nm' $m --format csv "$T/big.csv"
+  rows=$(printf '%s\n' "$out" | awk 'END{print NR - 1}')
+  a=$(printf '%s\n' "$out" | sed -n 3p | cut -d, -f2-)
+  run spd --uncertainty '1%+shift=0.2nm' $m --format csv "$T/one.csv"
+  b=$(printf '%s\n' "$out" | sed -n 2p | cut -d, -f2-)
+  [ "$rows" = 1100 ] && [ -n "$a" ] && [ "$a" = "$b" ] && ok "streamed batch ($m): every row, the general reader's values" ||
+    notok "streamed batch ($m): every row, the general reader's values" "$rows rows; $a vs $b"
+done
 exit 0
