@@ -1115,7 +1115,8 @@ typedef struct lx_unc_opts {
     unsigned quantities;    /* LX_UNC_* groups; 0: LX_UNC_COLORIMETRY */
     lx_observer observer;   /* 0: 2 deg */
     lx_method integration;  /* the integration method of the quantities (lx_spd_colorimetry) */
-    size_t trials;          /* Monte Carlo trials; 0: adaptive (JCGM 101 7.9): sequences of
+    size_t trials;          /* Monte Carlo trials (their values may take at most 2 GB: LX_EINVAL beyond);
+                             * 0: adaptive (JCGM 101 7.9): sequences of
                              * max(10^4, 100 / (1 - coverage)) trials until the mean, u and the
                              * interval's ends are stable to `digits` significant digits of u */
     int digits;             /* adaptive: significant digits of u (1 or 2; 0: 2) */

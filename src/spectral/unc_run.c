@@ -435,6 +435,11 @@ static lx_status monte_carlo(run *R)
     double *tmp = lx__alloc((fixed > M ? fixed : M) * sizeof *tmp);
     lx_status st = stable_of && tmp ? LX_OK : lx__error(R->ctx, LX_ENOMEM, NULL, 0, "out of memory");
     int all_stable = -1;
+    size_t most = ((size_t)1 << 31) / sizeof(double) / (R->ns ? R->ns : 1); /* 2 GB of trial values */
+    if (st == LX_OK && fixed > most)
+        st = lx__error(R->ctx, LX_EINVAL, NULL, 0,
+                       "%zu trials of %zu quantities would hold %.1f GB of values; at most %zu trials (2 GB)", fixed,
+                       R->ns, (double)fixed * (double)R->ns * 8e-9, most);
     if (st == LX_OK && fixed) {
         if ((st = grow(R, fixed)) == LX_OK && (st = mc_trials(R, 0, fixed)) == LX_OK) total = fixed;
         /* the stability of the trials asked for, over the whole sequences they hold */
