@@ -970,7 +970,7 @@ LX_API lx_status lx_tm30_compute(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out);
 /* ============================================================================================ */
 
 /* Units and quantities (units.c). Values are converted to and from the SI unit of their
- * quantity (lm, W, cd, W/sr, lx, W/m2, cd/m2, W/sr/m2, sr, m, rad, K, lm/W). */
+ * quantity (lm, W, cd, W/sr, lx, W/m2, cd/m2, W/sr/m2, sr, m, rad, K, lm/W, s, m2). */
 
 /** Physical quantities the unit parser knows. */
 typedef enum lx_quantity {
@@ -988,6 +988,8 @@ typedef enum lx_quantity {
     LX_Q_ANGLE,              /* rad */
     LX_Q_TEMPERATURE,        /* K */
     LX_Q_EFFICACY,           /* lm/W */
+    LX_Q_TIME,               /* s (also h, and a = 365 d = 8760 h, the year of EN 15193-1) */
+    LX_Q_AREA,               /* m2 */
     LX_Q_COUNT
 } lx_quantity;
 
@@ -2141,6 +2143,9 @@ typedef struct lx_scene {
     /* openings in the faces of rooms (README "Daylight") */
     size_t n_open;
     lx_scene_opening *open;
+    /* the deliverable: maintenance factors, EN 12464-1 areas and requirements, emergency lighting,
+     * energy (README "The deliverable"; never NULL in a scene the library read) */
+    struct lx_scene_design *design;
 } lx_scene;
 
 /** Reads a scene file ('-' is standard input); includes are resolved relative to the including
@@ -2244,6 +2249,12 @@ typedef struct lx_scene_plan {
     lx_scene_room_plan room;
     /* daylight through openings (README "Daylight") */
     lx_scene_daylight_plan daylight;
+    /* the deliverable (README "The deliverable") */
+    int mode;                         /* lx_scene_mode the plan was made for */
+    double *lum_scale;                /* n_lum: the factor every luminaire's light is multiplied by in this mode:
+                                       * its maintenance factor; in emergency operation MF x emergency flux / flux
+                                       * (0 for a luminaire dark in the mode); owned */
+    void *internal;                   /* the planner's own state (owned) */
 } lx_scene_plan;
 
 /** Plans a scene: which effects, and which pairs take the near-field path. backend: AUTO lets
@@ -2254,6 +2265,21 @@ typedef struct lx_scene_plan {
  * on failure) and frees it with lx_scene_plan_free, which accepts NULL. The plan refers to the
  * scene: use it only with that scene, and free it before the scene. */
 LX_API lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *scene, lx_backend backend, lx_scene_plan **out);
+
+/** The operation a scene is planned for. */
+typedef enum lx_scene_mode {
+    LX_SCENE_NORMAL = 0,    /* every luminaire but the non-maintained emergency ones, at its maintenance factor */
+    LX_SCENE_EMERGENCY = 1  /* EN 1838: the emergency luminaires alone at their emergency flux (times their
+                             * maintenance factor), direct light only: interreflection, daylight and the sky
+                             * are off (the standard counts no reflected light) */
+} lx_scene_mode;
+
+/** lx_scene_plan_make for an operation (lx_scene_plan_make is LX_SCENE_NORMAL). In emergency
+ * operation the reasons of interreflection, daylight and environment say why they are off. Errors:
+ * those of lx_scene_plan_make; LX_EINVAL (an unknown mode); LX_EPARSE (emergency operation of a
+ * scene without an emergency luminaire, naming the scene file). */
+LX_API lx_status lx_scene_plan_make_mode(lx_ctx *ctx, const lx_scene *scene, lx_backend backend, lx_scene_mode mode,
+                                         lx_scene_plan **out);
 LX_API void lx_scene_plan_free(lx_scene_plan *plan);
 
 /** One face's results (`luxcalc scene --surfaces`): area-weighted averages over its exposed area
@@ -2381,6 +2407,52 @@ typedef struct lx_scene_glare {
  * forced off); the scene's evaluation errors. Free with lx_scene_glare_free. */
 LX_API lx_status lx_scene_glare_eval(lx_ctx *ctx, const lx_scene *scene, lx_scene_glare **out);
 LX_API void lx_scene_glare_free(lx_scene_glare *glare);
+
+/* ---- The deliverable (README "The deliverable"): maintained values, EN 12464-1 areas and
+ * requirements, emergency lighting (EN 1838), energy (EN 15193-1) (src/scene/design_*.c) ---- */
+
+/** A maintenance scheme ([maintenance NAME]): CIE 97:2005 MF = LLMF x LSF x LMF x RSMF. Each factor is
+ * typed as a value, or as a table against time that the user reads off the publication or the
+ * lamp maker's data (luxcalc ships no copy of those tables), interpolated linearly at the scheme's
+ * burning hours (LLMF, LSF) or cleaning intervals (LMF, RSMF). An element of lx_scene_design.maint
+ * (ABI policy: reserved space, as results). */
+typedef struct lx_maintenance {
+    char *name;
+    const char *file;           /* the scene file and line of its section header */
+    long line;
+    double llmf, lsf, lmf, rsmf;/* lamp lumen maintenance, lamp survival, luminaire maintenance and room
+                                 * surface maintenance factors (1 where not given) */
+    double mf;                  /* their product: the maintenance factor */
+    double burning_h;           /* lamp burning hours the lamp factors are read at (NaN: not given) */
+    double cleaning_a;          /* luminaire cleaning interval, years (NaN: not given) */
+    double room_cleaning_a;     /* room surface cleaning interval, years (NaN: not given) */
+    char *lamp_type, *luminaire_type, *environment; /* free text for the report ("" when not given) */
+    long long reserved[4];      /* zero: room for later fields */
+} lx_maintenance;
+
+/** Luminaire modes ([luminaire] emergency). */
+typedef enum lx_lum_mode {
+    LX_LUM_NORMAL = 0,       /* lights in normal operation only */
+    LX_LUM_MAINTAINED = 1,   /* normal operation and, at its emergency flux, emergency operation */
+    LX_LUM_EMERGENCY = 2     /* emergency operation only (a non-maintained emergency luminaire) */
+} lx_lum_mode;
+
+/** What a scene holds for the deliverable (a struct only the library allocates: ABI policy). */
+typedef struct lx_scene_design {
+    size_t n_maint;
+    lx_maintenance *maint;      /* [maintenance NAME] schemes */
+    double *lum_mf;             /* n_lum: each luminaire's maintenance factor (1: new values) */
+    long *lum_maint;            /* n_lum: the scheme it takes its factor from (-1: typed, or none) */
+    int maintained;             /* 1 when a maintenance factor or scheme is given (for the scene or a luminaire):
+                                 * results are maintained values; 0: new values */
+    double scene_mf;            /* [scene] maintenance_factor or its scheme's (1 when none) */
+    long scene_maint;           /* [scene] maintenance: the scheme (-1: none) */
+    double *lum_power_W;        /* n_lum: the luminaire's power ([luminaire] power; an IES file's input
+                                 * watts), NaN when unknown */
+    lx_lum_mode *lum_mode;      /* n_lum */
+    double *lum_emergency_lm;   /* n_lum: the flux in emergency operation (0 for LX_LUM_NORMAL) */
+    void *internal;             /* the reader's own state (owned) */
+} lx_scene_design;
 
 /* ============================================================================================ */
 /* 15. Plots (PNG with cairo, written atomically) (src/plot) */

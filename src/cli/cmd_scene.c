@@ -2,6 +2,7 @@
  * evaluates it and prints the receivers' results, or (--explain) the plan with its reasons and
  * the estimated and measured work. */
 #include "grid.h"
+#include "design.h"
 #include "spd_report.h"
 
 #include <getopt.h>
@@ -271,7 +272,10 @@ static void explain(FILE *f, const lx_scene *sc, const lx_scene_plan *p, const l
             fprintf(f, "%s\n    \"%s\": ", e ? "," : "", lx_effect_name((lx_effect)e));
             json_string(f, p->reason[e]);
         }
-        fputs("\n  },\n  \"forced\": {", f);
+        char vt[128];
+        fputs("\n  },\n  \"values\": ", f);
+        json_string(f, cli_scene_values(sc, vt, sizeof vt));
+        fputs(",\n  \"forced\": {", f);
         for (int e = 0; e < LX_EFFECT_COUNT; e++)
             fprintf(f, "%s\"%s\": %s", e ? ", " : "", lx_effect_name((lx_effect)e), p->forced[e] ? "true" : "false");
         fprintf(f, "},\n  \"pairs\": {\"total\": %zu, \"near_field\": %zu, \"costly\": [", p->n_pairs, p->n_near);
@@ -319,6 +323,9 @@ static void explain(FILE *f, const lx_scene *sc, const lx_scene_plan *p, const l
     for (int e = 0; e < LX_EFFECT_COUNT; e++)
         fprintf(f, "  %-15s %-3s %s%s\n", lx_effect_name((lx_effect)e), p->on[e] ? "on" : "off",
                 p->forced[e] ? "[forced] " : "", p->reason[e]);
+    char vt[128];
+    fprintf(f, "\nvalues: %s\n", cli_scene_values(sc, vt, sizeof vt));
+    cli_scene_maintenance_text(f, sc);
     fprintf(f, "\npairs: %zu luminaire-receiver point pairs, %zu on the near-field path\n", p->n_pairs, p->n_near);
     for (size_t l = 0; l < sc->n_lum; l++)
         for (size_t r = 0; r < sc->n_rec; r++) {
@@ -373,6 +380,7 @@ typedef struct {
 static void summary_columns(const lx_scene *sc, const lx_scene_result *res, const res_cols *w, col_list *c)
 {
     COL("points", "");
+    COL("values", "");
     COL("illuminance_avg_lx", "lx");
     COL("illuminance_min_lx", "lx");
     COL("illuminance_max_lx", "lx");
@@ -417,6 +425,7 @@ static void point_columns(const lx_scene *sc, const lx_scene_result *res, const 
         }
         if (w->sky) COL("E_sky_lx", "lx");
     }
+    if (sc->design && sc->design->maintained) COL("values", "");
 }
 
 #undef COL
@@ -443,8 +452,10 @@ static void summary_row(cli_table *t, const lx_scene *sc, const lx_scene_result 
         avg = 0;
         for (size_t g = a; g < b; g++) avg += res->E_lx[g] / n;
     }
+    char vt[128];
     cli_table_str(t, sc->rec[r].name);
     cli_table_int(t, (long long)(b - a));
+    cli_table_str(t, cli_scene_values(sc, vt, sizeof vt));
     cli_table_num(t, avg);
     cli_table_num(t, mn);
     cli_table_num(t, mx);
@@ -489,6 +500,7 @@ static void point_rows(cli_table *t, const lx_scene *sc, const lx_scene_result *
         if (sc->want_melanopic) cli_table_num(t, res->melanopic_edi_lx[g]);
         if (w->contrib)
             for (size_t l = 0; l < sc->n_lum + (size_t)w->sky; l++) cli_table_num(t, res->contrib_lx[g * (sc->n_lum + 1) + l]);
+        if (sc->design && sc->design->maintained) cli_table_str(t, "maintained");
     }
 }
 

@@ -67,7 +67,7 @@ static lx_status direct_light(lx_ctx *ctx, const lx_scene *sc, const lx_scene_pl
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
     for (size_t l = 0; l < sc->n_lum; l++) {
-        lx__scene_lum_init(&le[l], &sc->lum[l], plan);
+        lx__scene_lum_init(&le[l], sc, l, plan);
         lc[l] = lx__room_cell(sc, sc->lum[l].pos_m);
     }
     *J = (direct_job){sc, m, le, lc, only, fmax(sc->nearfield_tol, m->quad_tol), E_dir, {{0}}};

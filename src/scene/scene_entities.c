@@ -1,6 +1,6 @@
 /* scene_entities.c - the keys of [luminaire], [receiver] and [sky] sections, their checks when a
  * section ends (required keys, exclusive keys, ranges), and the scene's own life cycle. */
-#include "scene_private.h"
+#include "scene/design_private.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -40,7 +40,7 @@ lx_scene *lx__scene_new(const char *file)
     sc->nearfield_tol = 1e-5;
     sc->interreflection_tol = 1e-3;
     sc->patch_refinement = 1;
-    if (!sc->file || !sc->title) {
+    if (!sc->file || !sc->title || lx__design_new(sc) != LX_OK) {
         lx_scene_free(sc);
         return NULL;
     }
@@ -70,6 +70,7 @@ void lx_scene_free(lx_scene *sc)
     lx_envmap_free(sc->sky_map);
     lx__room_scene_free(sc);
     lx__daylight_scene_free(sc);
+    lx__design_free(sc);
     for (size_t i = 0; i < sc->n_obs; i++) free(sc->obs[i].name);
     free(sc->obs);
     free(sc->title);
@@ -105,6 +106,7 @@ void lx__scene_lum_raw_free(scene__lum_raw *r)
     free(r->lum_file);
     free(r->spd);
     free(r->spectrum);
+    lx__design_lum_raw_free(&r->design);
     memset(r, 0, sizeof *r);
 }
 
@@ -145,9 +147,12 @@ lx_status lx__scene_lum_key(lx_ctx *ctx, scene__lum_raw *r, const char *file, lo
     VEC("length", 1, LX_Q_LENGTH, &r->length, r->has_length)
     VEC("cct", 1, LX_Q_TEMPERATURE, &r->cct, r->has_cct)
     VEC("multiplier", 1, LX_Q_NONE, &r->multiplier, r->has_multiplier)
+    lx_status st = LX_OK;
+    if (lx__design_lum_key(ctx, &r->design, file, line, key, value, &st)) return st;
     return lx__error(ctx, LX_EPARSE, file, line,
                      "unknown key '%s' in [luminaire] (keys: type, position, aim, rotate, flux, intensity, exponent, "
-                     "beam, luminance, radius, width, length, file, multiplier, spd, spectrum, cct)",
+                     "beam, luminance, radius, width, length, file, multiplier, spd, spectrum, cct, "
+                     "maintenance_factor, maintenance, power, emergency, emergency_flux)",
                      key);
 }
 
@@ -411,6 +416,7 @@ lx_status lx__scene_lum_finish(lx_ctx *ctx, lx_scene *sc, scene__lum_raw *r)
     l.name = r->name;
     r->name = NULL;
     sc->lum[sc->n_lum++] = l;
+    st = lx__design_lum_finish(ctx, sc, &r->design);
     goto out;
 fail_l:
     lx_luminaire_free(l.lum);

@@ -1,0 +1,65 @@
+/* design_private.h - the deliverable's internals (scene layer; never installed): the scene file's
+ * maintenance schemes, luminaire power and emergency keys, and what the reader keeps until the
+ * whole scene is read (design_read.c). */
+#ifndef LX_DESIGN_PRIVATE_H
+#define LX_DESIGN_PRIVATE_H
+
+#include "scene/scene_private.h"
+
+/* A factor typed as a value, or as a table (t_i, v_i) against time, read at a time (design_read.c). */
+typedef struct lx__factor {
+    int given;     /* 0: not given (1) */
+    size_t n;      /* 0: a value; else table points */
+    double value;  /* the value, or the factor read off the table at the scheme's time */
+    double *t_s, *v;
+    long line;
+} lx__factor;
+
+/* A maintenance scheme's raw keys, checked when the whole scene is read. */
+typedef struct lx__maint_raw {
+    lx__factor f[4];           /* LLMF, LSF, LMF, RSMF */
+    int has_burning, has_cleaning, has_room_cleaning;
+    double burning_s, cleaning_s, room_cleaning_s;
+    long burning_line, cleaning_line, room_cleaning_line;
+} lx__maint_raw;
+
+/* lx_scene_design.internal */
+typedef struct lx__design {
+    lx__maint_raw *maint;      /* parallel to lx_scene_design.maint */
+    int section;               /* the open design section (LX__DSEC_*), 0 none */
+    int scene_has_mf;
+    double scene_mf;
+    long scene_mf_line;
+    char *scene_maint;
+    const char *scene_file;    /* the file of [scene] maintenance */
+    long scene_maint_line;
+    char **lum_maint_name;     /* n_lum: the scheme a luminaire names (NULL: none), resolved at the end */
+    long *lum_maint_line;      /* n_lum: its line */
+    long *lum_mf_line;         /* n_lum: the line of its maintenance_factor (0: none) */
+    size_t n_lum;              /* the per-luminaire arrays' length */
+} lx__design;
+
+enum { LX__DSEC_NONE = 0, LX__DSEC_MAINT = 1 };
+
+/* A new design (every array empty) and its release with the scene. */
+lx_status lx__design_new(lx_scene *sc);
+void lx__design_free(lx_scene *sc);
+
+/* [luminaire] keys of the deliverable: 1 when key is one (its status in *st). */
+int lx__design_lum_key(lx_ctx *ctx, scene__lum_design *d, const char *file, long line, const char *key,
+                       const char *value, lx_status *st);
+void lx__design_lum_raw_free(scene__lum_design *d);
+/* The luminaire just appended to sc->lum takes its design keys. */
+lx_status lx__design_lum_finish(lx_ctx *ctx, lx_scene *sc, scene__lum_design *d);
+/* [scene] keys of the deliverable (maintenance_factor, maintenance): 1 when key is one. */
+int lx__design_scene_key(lx_ctx *ctx, lx_scene *sc, const char *file, long line, const char *key, const char *value,
+                         lx_status *st);
+/* A section of the deliverable by its kind ("maintenance"): its LX__DSEC_* (0 when kind is none);
+ * opening it (named), its keys. */
+int lx__design_section_kind(const char *kind);
+lx_status lx__design_open(lx_ctx *ctx, lx_scene *sc, int sec, const char *name, const char *file, long line);
+lx_status lx__design_key(lx_ctx *ctx, lx_scene *sc, const char *file, long line, const char *key, const char *value);
+/* The whole-scene step, after every section is read: schemes evaluated, references resolved. */
+lx_status lx__design_finish(lx_ctx *ctx, lx_scene *sc);
+
+#endif /* LX_DESIGN_PRIVATE_H */

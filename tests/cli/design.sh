@@ -1,0 +1,22 @@
+# design.sh - CLI cases of the deliverable (README "The deliverable"): maintained values and how
+# every output says so, the errors of its keys with file and line. Reference values: closed forms
+# in each comment.
+. tests/cli/lib.sh
+# 400 cd at 2 m: 100 lx new; maintained 100 x 0.8 + 100 x 0.5 = 130 lx
+run scene tests/data/design/mf.scene --format csv
+expect_rc 0 "maintained scene runs"
+expect_out_match '^receiver,x,y,z,illuminance_lx,values$' "csv says which values: a values column"
+expect_field 1 illuminance_lx 130 1e-12 "maintained: 100 x 0.8 + 100 x 0.5 lx"
+expect_out_match ',maintained$' "csv rows say maintained"
+run scene tests/data/design/mf.scene
+expect_out_match '^values +maintained \(MF 0\.5 to 0\.8\)$' "table: the values row names the factors"
+run scene tests/data/scenes/point.scene
+expect_out_match '^values +new \(no maintenance factor\)$' "table: new values said so"
+run scene tests/data/design/mf.scene --explain
+expect_out_match '^values: maintained \(MF 0\.5 to 0\.8\)$' "--explain: the values line"
+expect_out_match '^  b +MF 0\.5$' "--explain: each luminaire's factor"
+run scene tests/data/design/mf.scene --explain --format json
+expect_out_match '"values": "maintained \(MF 0\.5 to 0\.8\)"' "--explain json: values"
+run scene tests/data/design/bad_mf.scene
+expect_rc 2 "MF outside (0, 1]: input error"
+expect_err_match '^luxcalc: scene: tests/data/design/bad_mf.scene:6: maintenance_factor: must be greater than 0 and at most 1 \(got 1\.25\)' "MF error names file and line"

@@ -1,0 +1,242 @@
+/* test_design.c - the deliverable: maintained values (maintained = new x MF wherever light is
+ * computed: points, near-field integration, occlusion, interreflection), the CIE 97:2005 product
+ * LLMF x LSF x LMF x RSMF from typed tables (interpolated by hand in the comments), and the
+ * scene-file errors of the deliverable's keys (file and line). */
+#include "lx_test.h"
+
+#include <string.h>
+
+/* Reads, plans (mode) and evaluates a scene given as text. */
+typedef struct run {
+    lx_scene *sc;
+    lx_scene_plan *plan;
+    lx_scene_result *res;
+} run;
+
+static lx_status run_mode(lx_ctx *ctx, const char *name, const char *text, lx_scene_mode mode, run *r)
+{
+    memset(r, 0, sizeof *r);
+    lx_status st = lx_scene_read_mem(ctx, name, text, strlen(text), &r->sc);
+    if (st == LX_OK) st = lx_scene_plan_make_mode(ctx, r->sc, LX_BACKEND_CPU, mode, &r->plan);
+    if (st == LX_OK) st = lx_scene_eval(ctx, r->sc, r->plan, NULL, &r->res);
+    return st;
+}
+
+static run must_run(lx_ctx *ctx, const char *name, const char *text, lx_scene_mode mode)
+{
+    run r;
+    lx_assert_ok(ctx, run_mode(ctx, name, text, mode, &r));
+    return r;
+}
+
+static void run_free(run *r)
+{
+    lx_scene_result_free(r->res);
+    lx_scene_plan_free(r->plan);
+    lx_scene_free(r->sc);
+}
+
+static void expect_error(lx_ctx *ctx, const char *text, long line, const char *fragment)
+{
+    lx_scene *sc = NULL;
+    lx_status st = lx_scene_read_mem(ctx, "bad.scene", text, strlen(text), &sc);
+    lx_scene_free(sc);
+    if (st == LX_OK) print_error("accepted: %s\n", text);
+    assert_int_not_equal(st, LX_OK);
+    if (line >= 0 && lx_ctx_errline(ctx) != line)
+        print_error("line %ld, expected %ld: %s\n", lx_ctx_errline(ctx), line, lx_ctx_errmsg(ctx));
+    if (line >= 0) assert_int_equal(lx_ctx_errline(ctx), line);
+    if (!strstr(lx_ctx_errmsg(ctx), fragment)) print_error("message '%s' lacks '%s'\n", lx_ctx_errmsg(ctx), fragment);
+    assert_non_null(strstr(lx_ctx_errmsg(ctx), fragment));
+    assert_non_null(strstr(lx_ctx_errmsg(ctx), "bad.scene"));
+}
+
+/* ---- maintained = new x MF ---- */
+
+/* A small room lit by the office's IES downlights (near-field integration at the desk), a point and
+ * a disk, with an obstruction (occlusion) and interreflection at a coarse fixed patch size: every
+ * path a luminaire's light takes. */
+#define ROOM_SCENE(MF)                                                                                                 \
+    "[scene]\ninterreflection_tolerance = 1e-2\npatch_size = 0.75 m\n" MF                                              \
+    "[room r]\nsize = 3 m, 2.5 m, 2.5 m\n"                                                                             \
+    "[obstruction box]\nmin = 1.2 m, 1.0 m, 0 m\nmax = 1.6 m, 1.4 m, 0.5 m\nreflectance = 0.3\n"                       \
+    "[luminaire dl]\ntype = file\nfile = ../ies/downlight_lambert_1000lm.ies\nposition = 1 m, 1 m, 2.45 m\n"          \
+    "[luminaire p]\ntype = point\nposition = 2.2 m, 1.5 m, 2.2 m\nflux = 800 lm\n"                                    \
+    "[luminaire d]\ntype = disk\nposition = 2 m, 0.8 m, 2.4 m\nradius = 0.15 m\nflux = 600 lm\n"                       \
+    "[receiver plane]\ntype = grid\nx = 0.25 m, 2.75 m\ny = 0.25 m, 2.25 m\nz = 0.8 m\nspacing = 0.5 m\n"            \
+    "[receiver near]\ntype = point\nposition = 1.05 m, 1 m, 2.2 m\n"                                                   \
+    "[receiver wall]\ntype = point\nposition = 2.99 m, 1.2 m, 1.2 m\nnormal = -1, 0, 0\n"
+
+static void test_maintained_is_new_times_mf(void **state)
+{
+    lx_ctx *ctx = *state;
+    const char *name = "samples/scenes/mf_test.scene"; /* the IES path is relative to samples/scenes */
+    run a = must_run(ctx, name, ROOM_SCENE(""), LX_SCENE_NORMAL);
+    run b = must_run(ctx, name, ROOM_SCENE("maintenance_factor = 0.8\n"), LX_SCENE_NORMAL);
+    assert_true(a.plan->on[LX_EFFECT_INTERREFLECTION] && a.plan->on[LX_EFFECT_OCCLUSION] && a.plan->n_near > 0);
+    assert_int_equal(a.sc->design->maintained, 0);
+    assert_int_equal(b.sc->design->maintained, 1);
+    assert_int_equal(a.res->n_points, b.res->n_points);
+    double worst = 0;
+    for (size_t g = 0; g < a.res->n_points; g++) {
+        assert_true(a.res->E_lx[g] > 0);
+        lx_assert_near(b.res->E_lx[g], 0.8 * a.res->E_lx[g], 0, 1e-12);
+        lx_assert_near(b.res->indirect_lx[g], 0.8 * a.res->indirect_lx[g], 0, 1e-12);
+        for (size_t l = 0; l < a.sc->n_lum; l++)
+            lx_assert_near(b.res->contrib_lx[g * 4 + l], 0.8 * a.res->contrib_lx[g * 4 + l], 1e-300, 1e-12);
+        worst = fmax(worst, fabs(b.res->E_lx[g] / (0.8 * a.res->E_lx[g]) - 1));
+    }
+    for (size_t s = 0; s < a.res->n_surfaces; s++) {
+        if (isnan(a.res->surfaces[s].E_lx)) { /* no exposed area (the box's bottom on the floor) */
+            assert_true(isnan(b.res->surfaces[s].E_lx));
+            continue;
+        }
+        lx_assert_near(b.res->surfaces[s].E_lx, 0.8 * a.res->surfaces[s].E_lx, 0, 1e-12);
+    }
+    print_message("maintained / (0.8 x new) - 1: at most %.2g over %zu points\n", worst, a.res->n_points);
+    run_free(&a);
+    run_free(&b);
+}
+
+/* A luminaire's own factor scales its own part only (linearity). */
+static void test_per_luminaire_factor(void **state)
+{
+    lx_ctx *ctx = *state;
+    const char *t = "[luminaire a]\ntype = point\nposition = 0 m, 0 m, 2 m\nintensity = 400 cd\nmaintenance_factor = 0.9\n"
+                    "[luminaire b]\ntype = point\nposition = 1 m, 0 m, 2 m\nintensity = 400 cd\n"
+                    "[receiver r]\ntype = point\nposition = 0 m, 0 m, 0 m\n";
+    run r = must_run(ctx, "t.scene", t, LX_SCENE_NORMAL);
+    /* a: 400 / 2^2 = 100 lx x 0.9; b: 400 cos / d^2 with d^2 = 5, cos = 2 / sqrt 5, MF 1 */
+    lx_assert_near(r.res->contrib_lx[0], 90, 0, 1e-14);
+    lx_assert_near(r.res->contrib_lx[1], 400 * 2 / sqrt(5.0) / 5, 0, 1e-14);
+    assert_int_equal(r.sc->design->maintained, 1);
+    lx_assert_near(r.sc->design->lum_mf[1], 1, 0, 0);
+    run_free(&r);
+}
+
+/* ---- emergency operation (EN 1838): the emergency luminaires alone at their emergency flux, direct
+ * light only ---- */
+static void test_emergency_mode(void **state)
+{
+    lx_ctx *ctx = *state;
+    const char *t = "[scene]\nmaintenance_factor = 0.9\n[room r]\nsize = 4 m, 3 m, 3 m\n"
+                    "[luminaire main]\ntype = point\nposition = 1 m, 1.5 m, 2.9 m\nflux = 4000 lm\n"
+                    "[luminaire em]\ntype = point\nposition = 3 m, 1.5 m, 2.9 m\nflux = 1000 lm\n"
+                    "emergency = non-maintained\nemergency_flux = 200 lm\n"
+                    "[luminaire both]\ntype = point\nposition = 2 m, 1 m, 2.9 m\nflux = 1000 lm\nemergency = maintained\n"
+                    "emergency_flux = 100 lm\n"
+                    "[receiver floor]\ntype = point\nposition = 3 m, 1.5 m, 0 m\n";
+    run n = must_run(ctx, "t.scene", t, LX_SCENE_NORMAL);
+    run e = must_run(ctx, "t.scene", t, LX_SCENE_EMERGENCY);
+    /* normal operation: the non-maintained luminaire is dark */
+    lx_assert_near(n.plan->lum_scale[0], 0.9, 0, 0);
+    lx_assert_near(n.plan->lum_scale[1], 0, 0, 0);
+    lx_assert_near(n.plan->lum_scale[2], 0.9, 0, 0);
+    assert_true(n.plan->on[LX_EFFECT_INTERREFLECTION]);
+    assert_true(n.res->contrib_lx[1] == 0);
+    /* emergency: main dark; em at 200 lm x MF, 2.9 m straight above: I / d^2 = 200 / (4 pi) / 2.9^2 x 0.9 */
+    assert_int_equal(e.plan->mode, LX_SCENE_EMERGENCY);
+    assert_false(e.plan->on[LX_EFFECT_INTERREFLECTION]);
+    assert_non_null(strstr(e.plan->reason[LX_EFFECT_INTERREFLECTION], "EN 1838"));
+    assert_null(e.res->indirect_lx);
+    lx_assert_near(e.res->contrib_lx[0], 0, 0, 0);
+    lx_assert_near(e.res->contrib_lx[1], 0.9 * 200 / (4 * M_PI) / (2.9 * 2.9), 0, 1e-14);
+    /* both: 100 lm at (2, 1, 2.9): d^2 = 1 + 0.25 + 8.41, cos = 2.9 / d */
+    double d2 = 1 + 0.25 + 2.9 * 2.9;
+    lx_assert_near(e.res->contrib_lx[2], 0.9 * 100 / (4 * M_PI) * (2.9 / sqrt(d2)) / d2, 0, 1e-14);
+    run_free(&n);
+    run_free(&e);
+    /* a scene without an emergency luminaire has no emergency operation */
+    lx_scene *sc = NULL;
+    lx_scene_plan *p = NULL;
+    const char *plain = "[luminaire a]\ntype = point\nposition = 0 m, 0 m, 2 m\nflux = 1000 lm\n"
+                        "[receiver r]\ntype = point\nposition = 0 m, 0 m, 0 m\n";
+    lx_assert_ok(ctx, lx_scene_read_mem(ctx, "plain.scene", plain, strlen(plain), &sc));
+    assert_int_equal(lx_scene_plan_make_mode(ctx, sc, LX_BACKEND_CPU, LX_SCENE_EMERGENCY, &p), LX_EPARSE);
+    assert_non_null(strstr(lx_ctx_errmsg(ctx), "no luminaire has 'emergency"));
+    assert_null(p);
+    lx_scene_free(sc);
+}
+
+/* ---- CIE 97:2005: MF = LLMF x LSF x LMF x RSMF from typed tables ----
+ * The publication's tables are the user's to type (luxcalc ships no copy); what is checked here is
+ * the method: each factor read off its table at the scheme's time by linear interpolation (at a
+ * node: the node's value), and the product. Hand computation of the scheme below:
+ *   LLMF at 30000 h between (25000 h, 0.90) and (50000 h, 0.80): 0.90 - 0.10 x 5000 / 25000 = 0.88
+ *   LSF at 30000 h between (20000 h, 1.00) and (40000 h, 0.96): 1 - 0.04 x 10000 / 20000 = 0.98
+ *   LMF at 1.5 a between (1 a, 0.95) and (2 a, 0.92): 0.935
+ *   RSMF at 3 a, a node: 0.94
+ *   MF = 0.88 x 0.98 x 0.935 x 0.94 = 0.757983... */
+static const char scheme[] = "[scene]\nmaintenance = office\n"
+                             "[maintenance office]\n"
+                             "lamp_type = LED module L80 at 50000 h\n"
+                             "lamp_lumen_maintenance = 0 h: 1, 25000 h: 0.90, 50000 h: 0.80\n"
+                             "lamp_survival = 0 h: 1, 20000 h: 1, 40000 h: 0.96\n"
+                             "luminaire_maintenance = 0.5 a: 0.97, 1 a: 0.95, 2 a: 0.92, 3 a: 0.90\n"
+                             "room_surface_maintenance = 1 a: 0.97, 2 a: 0.96, 3 a: 0.94\n"
+                             "burning_hours = 30000 h\ncleaning_interval = 1.5 a\nroom_cleaning_interval = 3 a\n"
+                             "[luminaire a]\ntype = point\nposition = 0 m, 0 m, 2 m\nintensity = 400 cd\n"
+                             "[receiver r]\ntype = point\nposition = 0 m, 0 m, 0 m\n";
+
+static void test_cie97_scheme(void **state)
+{
+    lx_ctx *ctx = *state;
+    run r = must_run(ctx, "t.scene", scheme, LX_SCENE_NORMAL);
+    const lx_scene_design *d = r.sc->design;
+    assert_int_equal(d->n_maint, 1);
+    const lx_maintenance *m = &d->maint[0];
+    lx_assert_near(m->llmf, 0.88, 0, 1e-15);
+    lx_assert_near(m->lsf, 0.98, 0, 1e-15);
+    lx_assert_near(m->lmf, 0.935, 0, 1e-15);
+    lx_assert_near(m->rsmf, 0.94, 0, 0); /* a node: exactly its value */
+    lx_assert_near(m->mf, 0.88 * 0.98 * 0.935 * 0.94, 0, 1e-15);
+    lx_assert_near(m->burning_h, 30000, 0, 1e-15);
+    lx_assert_near(m->cleaning_a, 1.5, 0, 1e-15);
+    assert_string_equal(m->lamp_type, "LED module L80 at 50000 h");
+    /* the scene's default reaches the luminaire, and its light: 400 / 4 x MF */
+    assert_int_equal(d->lum_maint[0], 0);
+    lx_assert_near(d->lum_mf[0], m->mf, 0, 0);
+    lx_assert_near(r.res->E_lx[0], 100 * m->mf, 0, 1e-14);
+    run_free(&r);
+}
+
+/* ---- errors ---- */
+
+#define LAMP "[luminaire a]\ntype = point\nposition = 0 m, 0 m, 2 m\nflux = 1000 lm\n"
+#define DESK "[receiver r]\ntype = point\nposition = 0 m, 0 m, 0 m\n"
+
+static void test_errors(void **state)
+{
+    lx_ctx *ctx = *state;
+    expect_error(ctx, LAMP "maintenance_factor = 1.2\n" DESK, 5, "maintenance_factor: must be greater than 0 and at most 1");
+    expect_error(ctx, LAMP "maintenance_factor = 0\n" DESK, 5, "at most 1 (got 0)");
+    expect_error(ctx, "[scene]\nmaintenance_factor = -0.5\n" LAMP DESK, 2, "maintenance_factor");
+    expect_error(ctx, LAMP "maintenance_factor = 0.8\nmaintenance = x\n" DESK, 6, "not both");
+    expect_error(ctx, LAMP "maintenance = nowhere\n" DESK, 5, "no [maintenance nowhere] section");
+    expect_error(ctx, "[scene]\nmaintenance = x\n" LAMP DESK, 2, "no [maintenance x] section");
+    expect_error(ctx, "[maintenance m]\nlamp_lumen_maintenance = 0 h: 1, 10000 h: 0.9\nburning_hours = 20000 h\n" LAMP DESK,
+                 2, "burning_hours 20000 h lies outside the table of lamp_lumen_maintenance (0 to 10000 h");
+    expect_error(ctx, "[maintenance m]\nluminaire_maintenance = 1 a: 0.9, 2 a: 0.8\n" LAMP DESK, 2,
+                 "luminaire_maintenance is a table against time: give 'cleaning_interval'");
+    expect_error(ctx, "[maintenance m]\nlamp_survival = 10000 h: 0.9, 5000 h: 0.95\n" LAMP DESK, 2, "the times must increase");
+    expect_error(ctx, "[maintenance m]\nlamp_survival = 10000: 0.9, 20000 h: 0.95\n" LAMP DESK, 2, "must be a time with its unit");
+    expect_error(ctx, "[maintenance m]\nlamp_survival = 1 h: 0.9, 2 h: 1.5\n" LAMP DESK, 2, "at most 1");
+    expect_error(ctx, "[maintenance m]\nburning_hours = 100 h\n" LAMP DESK, 1, "give at least one of");
+    expect_error(ctx, "[maintenance m]\ncolour = red\n" LAMP DESK, 2, "unknown key 'colour' in [maintenance]");
+    expect_error(ctx, "[maintenance m]\nlamp_survival = 0.9\n[maintenance m]\n" LAMP DESK, 3, "defined twice");
+    expect_error(ctx, LAMP "emergency_flux = 100 lm\n" DESK, 5, "emergency_flux needs 'emergency");
+    expect_error(ctx, LAMP "emergency = sometimes\n" DESK, 5, "emergency: expected no, maintained");
+    expect_error(ctx, LAMP "power = 0 W\n" DESK, 5, "power: must be greater than zero");
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_maintained_is_new_times_mf),
+        cmocka_unit_test(test_per_luminaire_factor),
+        cmocka_unit_test(test_cie97_scheme),
+        cmocka_unit_test(test_emergency_mode),
+        cmocka_unit_test(test_errors),
+    };
+    return cmocka_run_group_tests(tests, lx_test_ctx_setup, lx_test_ctx_teardown);
+}
