@@ -2356,6 +2356,13 @@ typedef struct lx_scene_result {
                                  * the plane facing the line of sight (NULL without interreflection or
                                  * observers) */
     lx_scene_daylight_stats daylight;
+    /* the deliverable: the luminaires' light on small vertical cylinders (direct and interreflected;
+     * daylight not included), NULL when no receiver asks; NaN at the points of receivers that do not */
+    double *cylindrical_lx;     /* n_points: E_z */
+    double *semicylindrical_lx; /* n_points: E_sz towards the receiver's facing direction */
+    double *modelling;          /* n_points: E_z / E_h with E_h the luminaires' horizontal illuminance (receivers
+                                 * facing up; NaN elsewhere) */
+    double cylinder_tol;        /* the relative tolerance the interreflected part of E_z and E_sz met */
 } lx_scene_result;
 
 /** Options of lx_scene_eval (zero-initialise for defaults: everything; ABI policy: reserved stays
@@ -2452,7 +2459,19 @@ typedef struct lx_scene_design {
     lx_lum_mode *lum_mode;      /* n_lum */
     double *lum_emergency_lm;   /* n_lum: the flux in emergency operation (0 for LX_LUM_NORMAL) */
     void *internal;             /* the reader's own state (owned) */
+    unsigned char *rec_cylinder;/* n_rec: LX_REC_CYLINDRICAL | LX_REC_SEMICYLINDRICAL ([receiver] cylindrical,
+                                 * semicylindrical) */
+    double *rec_facing;         /* n_rec x 3: the direction a semi-cylinder faces (unit, horizontal) */
 } lx_scene_design;
+
+/** What a receiver asks besides its plane's illuminance (lx_scene_design.rec_cylinder). */
+enum {
+    LX_REC_CYLINDRICAL = 1,     /* the cylindrical illuminance E_z (EN 12464-1): the mean illuminance on the curved
+                                 * surface of a very small vertical cylinder at the point; with a receiver facing up
+                                 * (normal 0, 0, 1), the modelling ratio E_z / E_h */
+    LX_REC_SEMICYLINDRICAL = 2  /* the semi-cylindrical illuminance E_sz: the mean on the curved half of such a
+                                 * cylinder facing rec_facing */
+};
 
 /* ============================================================================================ */
 /* 15. Plots (PNG with cairo, written atomically) (src/plot) */

@@ -158,6 +158,143 @@ static void test_emergency_mode(void **state)
     lx_scene_free(sc);
 }
 
+/* ---- cylindrical and semi-cylindrical illuminance ----
+ * A point source of intensity I at distance d, at angle theta from the vertical: a beam of E_n = I / d^2
+ * lights the element of a small vertical cylinder whose horizontal normal is at azimuth psi with
+ * E_n sin(theta) max(0, cos(psi - phi)); the mean over the curved surface is E_z = E_n sin(theta) / pi,
+ * over the half facing f: E_sz = E_n sin(theta) (1 + cos phi_f) / pi (phi_f: the source's azimuth seen
+ * from f). sin(theta) = h / d, h the horizontal distance. */
+static void test_cylindrical_point_source(void **state)
+{
+    lx_ctx *ctx = *state;
+    const char *t = "[luminaire a]\ntype = point\nposition = 0 m, 0 m, 3 m\nflux = 1000 lm\n"
+                    "[luminaire s]\ntype = spot\nposition = 2.5 m, 1 m, 2.6 m\naim = -0.3, -0.2, -1\nflux = 500 lm\nexponent = 4\n"
+                    "[receiver towards]\ntype = point\nposition = 2 m, 0 m, 1.2 m\ncylindrical = yes\nsemicylindrical = -1, 0, 0\n"
+                    "[receiver away]\ntype = point\nposition = 2 m, 0 m, 1.2 m\nsemicylindrical = 1, 0, 0\n"
+                    "[receiver side]\ntype = point\nposition = 2 m, 0 m, 1.2 m\nsemicylindrical = 0, 1, 0\n"
+                    "[receiver below]\ntype = point\nposition = 0 m, 0 m, 0 m\ncylindrical = yes\n";
+    run r = must_run(ctx, "t.scene", t, LX_SCENE_NORMAL);
+    double I = 1000 / (4 * M_PI), h = 2, d = sqrt(4 + 1.8 * 1.8);
+    /* the spot: I(a) = (S + 1) F / (2 pi) cos^S a, a the angle from its axis */
+    double ax[3] = {-0.3, -0.2, -1}, na = sqrt(0.09 + 0.04 + 1), v[3] = {2 - 2.5, 0 - 1, 1.2 - 2.6};
+    double ds = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]), hs = hypot(v[0], v[1]);
+    double ca = (v[0] * ax[0] + v[1] * ax[1] + v[2] * ax[2]) / (ds * na), Is = 5 * 500 / (2 * M_PI) * pow(ca, 4);
+    double ez = I * h / (M_PI * d * d * d) + Is * hs / (M_PI * ds * ds * ds);
+    lx_assert_near(r.res->cylindrical_lx[0], ez, 0, 1e-12);
+    /* semi-cylinders at the same point: facing the point source (cos phi = 1), away (-1: 0), sideways
+     * (0); the spot's azimuth seen from each facing: -v_h . f / h */
+    double cf[3] = {-(v[0] * -1) / hs, -(v[0] * 1) / hs, -(v[1] * 1) / hs};
+    double ppart[3] = {2, 0, 1};
+    for (int k = 0; k < 3; k++) {
+        double e = ppart[k] * I * h / (M_PI * d * d * d) + Is * hs * (1 + cf[k]) / (M_PI * ds * ds * ds);
+        lx_assert_near(r.res->semicylindrical_lx[k], e, 1e-300, 1e-12);
+    }
+    assert_true(isnan(r.res->cylindrical_lx[1])); /* not asked */
+    /* modelling: E_z / E_h on a receiver facing up */
+    lx_assert_near(r.res->modelling[0], r.res->cylindrical_lx[0] / r.res->E_lx[0], 0, 1e-15);
+    /* straight below the point source: only the spot's light is on the cylinder */
+    double w[3] = {0 - 2.5, 0 - 1, 0 - 2.6}, dw = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]), hw = hypot(w[0], w[1]);
+    double cw = (w[0] * ax[0] + w[1] * ax[1] + w[2] * ax[2]) / (dw * na);
+    lx_assert_near(r.res->cylindrical_lx[3], 5 * 500 / (2 * M_PI) * pow(cw, 4) * hw / (M_PI * dw * dw * dw), 0, 1e-12);
+    run_free(&r);
+}
+
+/* A Lambertian disk (luminous area): the kernel integrated over the disk, against an independent
+ * polar quadrature (Gauss-Legendre in the radius, the periodic trapezoid rule in the angle) of
+ * L cos(emission) h / (pi d^3) dA. */
+static double gl_x[16], gl_w[16];
+static void gauss16(void)
+{
+    /* nodes and weights of 16-point Gauss-Legendre on [-1, 1] by Newton on P16 */
+    for (int i = 0; i < 16; i++) {
+        double x = cos(M_PI * (i + 0.75) / 16.5), dp = 0;
+        for (int it = 0; it < 100; it++) {
+            double p0 = 1, p1 = x;
+            for (int k = 2; k <= 16; k++) {
+                double p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
+                p0 = p1, p1 = p2;
+            }
+            dp = 16 * (x * p1 - p0) / (x * x - 1);
+            double dx = p1 / dp;
+            x -= dx;
+            if (fabs(dx) < 1e-16) break;
+        }
+        gl_x[i] = x;
+        gl_w[i] = 2 / ((1 - x * x) * dp * dp);
+    }
+}
+
+static double disk_ez(double L, double R, const double c[3], const double q[3], const double *f)
+{
+    gauss16();
+    double sum = 0;
+    for (int seg = 0; seg < 8; seg++) /* the radius in 8 pieces of 16 Gauss nodes */
+        for (int i = 0; i < 16; i++) {
+            double r = R * (seg + 0.5 + 0.5 * gl_x[i]) / 8, wr = R / 16 * gl_w[i];
+            for (int j = 0; j < 512; j++) {
+                double a = 2 * M_PI * (j + 0.5) / 512, s[3] = {c[0] + r * cos(a), c[1] + r * sin(a), c[2]};
+                double v[3] = {q[0] - s[0], q[1] - s[1], q[2] - s[2]}, d = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+                double h = hypot(v[0], v[1]), ce = -v[2] / d; /* emission cosine (disk faces down) */
+                double g = f ? h - (v[0] * f[0] + v[1] * f[1]) : h;
+                if (ce > 0 && g > 0) sum += L * ce * g / (M_PI * d * d * d) * r * wr * (2 * M_PI / 512);
+            }
+        }
+    return sum;
+}
+
+static void test_cylindrical_area_source(void **state)
+{
+    lx_ctx *ctx = *state;
+    const char *t = "[luminaire d]\ntype = disk\nposition = 1 m, 1 m, 2 m\nradius = 0.3 m\nluminance = 5000 cd/m2\n"
+                    "[receiver near]\ntype = point\nposition = 1.4 m, 1.1 m, 1.5 m\ncylindrical = yes\nsemicylindrical = -1, 0, 0\n"
+                    "[receiver far]\ntype = point\nposition = 4 m, 3 m, 1.2 m\ncylindrical = yes\n";
+    run r = must_run(ctx, "t.scene", t, LX_SCENE_NORMAL);
+    double c[3] = {1, 1, 2}, q1[3] = {1.4, 1.1, 1.5}, q2[3] = {4, 3, 1.2}, f[3] = {-1, 0, 0};
+    double ez1 = disk_ez(5000, 0.3, c, q1, NULL), esz1 = disk_ez(5000, 0.3, c, q1, f), ez2 = disk_ez(5000, 0.3, c, q2, NULL);
+    print_message("disk: E_z %.9g (ref %.9g), E_sz %.9g (ref %.9g), far %.9g (ref %.9g)\n", r.res->cylindrical_lx[0], ez1,
+                  r.res->semicylindrical_lx[0], esz1, r.res->cylindrical_lx[1], ez2);
+    lx_assert_near(r.res->cylindrical_lx[0], ez1, 0, 2e-5);
+    lx_assert_near(r.res->semicylindrical_lx[0], esz1, 0, 2e-5);
+    lx_assert_near(r.res->cylindrical_lx[1], ez2, 0, 2e-5);
+    run_free(&r);
+}
+
+/* The interreflected part: the mean over azimuth of the vertical illuminance (E_z), and over the half
+ * turn about the facing direction (E_sz); the same room's gather on 64 vertical point receivers at the
+ * same point (the trapezoid rule over 64 azimuths; Simpson's over the 33 of the half turn) is the
+ * reference of the quadrature. */
+static void test_cylindrical_interreflection(void **state)
+{
+    lx_ctx *ctx = *state;
+    char *t = malloc(20000);
+    size_t n = (size_t)snprintf(t, 20000,
+                                "[scene]\ninterreflection_tolerance = 1e-3\npatch_size = 0.5 m\n"
+                                "[room r]\nsize = 3 m, 2.5 m, 2.5 m\n"
+                                "[luminaire a]\ntype = point\nposition = 0.8 m, 0.7 m, 2.3 m\nflux = 3000 lm\n"
+                                "[receiver c]\ntype = point\nposition = 1.7 m, 1.4 m, 1.2 m\ncylindrical = yes\n"
+                                "semicylindrical = 0, 1, 0\n");
+    for (int k = 0; k < 64; k++)
+        n += (size_t)snprintf(t + n, 20000 - n, "[receiver v%d]\ntype = point\nposition = 1.7 m, 1.4 m, 1.2 m\nnormal = %.17g, %.17g, 0\n",
+                              k, cos(2 * M_PI * k / 64), sin(2 * M_PI * k / 64));
+    run r = must_run(ctx, "t.scene", t, LX_SCENE_NORMAL);
+    double mean = 0, simpson = 0;
+    for (int k = 0; k < 64; k++) mean += r.res->indirect_lx[1 + k] / 64;
+    for (int k = 0; k <= 32; k++) /* psi from 0 to pi (facing +y: pi/2 +- pi/2) */
+        simpson += (k == 0 || k == 32 ? 1 : k % 2 ? 4 : 2) * r.res->indirect_lx[1 + k];
+    simpson *= (M_PI / 32) / 3 / M_PI;
+    /* the direct parts in closed form */
+    double I = 3000 / (4 * M_PI), v[3] = {1.7 - 0.8, 1.4 - 0.7, 1.2 - 2.3}, d = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    double h = hypot(v[0], v[1]), ez_dir = I * h / (M_PI * d * d * d), esz_dir = I * (h - v[1]) / (M_PI * d * d * d);
+    print_message("indirect E_z %.6g (64 azimuths: %.6g), E_sz %.6g (Simpson: %.6g)\n", r.res->cylindrical_lx[0] - ez_dir,
+                  mean, r.res->semicylindrical_lx[0] - esz_dir, simpson);
+    assert_true(mean > 0.1 * ez_dir);
+    lx_assert_near(r.res->cylindrical_lx[0], ez_dir + mean, 0, 1e-3);
+    lx_assert_near(r.res->semicylindrical_lx[0], esz_dir + simpson, 0, 1e-3);
+    lx_assert_near(r.res->modelling[0], r.res->cylindrical_lx[0] / r.res->E_lx[0], 0, 1e-15);
+    run_free(&r);
+    free(t);
+}
+
 /* ---- CIE 97:2005: MF = LLMF x LSF x LMF x RSMF from typed tables ----
  * The publication's tables are the user's to type (luxcalc ships no copy); what is checked here is
  * the method: each factor read off its table at the scheme's time by linear interpolation (at a
@@ -236,6 +373,9 @@ int main(void)
         cmocka_unit_test(test_per_luminaire_factor),
         cmocka_unit_test(test_cie97_scheme),
         cmocka_unit_test(test_emergency_mode),
+        cmocka_unit_test(test_cylindrical_point_source),
+        cmocka_unit_test(test_cylindrical_area_source),
+        cmocka_unit_test(test_cylindrical_interreflection),
         cmocka_unit_test(test_errors),
     };
     return cmocka_run_group_tests(tests, lx_test_ctx_setup, lx_test_ctx_teardown);

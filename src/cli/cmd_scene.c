@@ -392,6 +392,8 @@ static void summary_columns(const lx_scene *sc, const lx_scene_result *res, cons
     if (sc->want_luminance) COL("luminance_avg_cd_m2", "cd/m2");
     if (sc->want_cct) COL("cct_avg_K", "K");
     if (sc->want_melanopic) COL("melanopic_edi_avg_lx", "lx");
+    if (res->cylindrical_lx)
+        COL("cylindrical_avg_lx", "lx"), COL("semicylindrical_avg_lx", "lx"), COL("modelling_min", ""), COL("modelling_max", "");
     if (w->contrib) {
         for (size_t l = 0; l < sc->n_lum; l++) {
             char b[300];
@@ -417,6 +419,7 @@ static void point_columns(const lx_scene *sc, const lx_scene_result *res, const 
     if (sc->want_luminance) COL("luminance_cd_m2", "cd/m2");
     if (sc->want_cct) COL("cct_K", "K"), COL("duv", "");
     if (sc->want_melanopic) COL("melanopic_edi_lx", "lx");
+    if (res->cylindrical_lx) COL("cylindrical_lx", "lx"), COL("semicylindrical_lx", "lx"), COL("modelling", "");
     if (w->contrib) {
         for (size_t l = 0; l < sc->n_lum; l++) {
             char b[300];
@@ -471,6 +474,7 @@ static void summary_row(cli_table *t, const lx_scene *sc, const lx_scene_result 
     if (sc->want_luminance) cli_table_num(t, ls / n);
     if (sc->want_cct) cli_table_num(t, cn == b - a ? cs / (double)cn : NAN);
     if (sc->want_melanopic) cli_table_num(t, ms / n);
+    if (res->cylindrical_lx) cli_scene_cylinder_summary(t, res, a, b);
     for (size_t l = 0; w->contrib && l < sc->n_lum + (size_t)w->sky; l++) {
         double c = 0;
         for (size_t g = a; g < b; g++) c += res->contrib_lx[g * (sc->n_lum + 1) + l];
@@ -498,6 +502,11 @@ static void point_rows(cli_table *t, const lx_scene *sc, const lx_scene_result *
         if (sc->want_luminance) cli_table_num(t, res->L_cd_m2[g]);
         if (sc->want_cct) cli_table_num(t, res->cct_K[g]), cli_table_num(t, res->duv[g]);
         if (sc->want_melanopic) cli_table_num(t, res->melanopic_edi_lx[g]);
+        if (res->cylindrical_lx) {
+            cli_table_num(t, res->cylindrical_lx[g]);
+            cli_table_num(t, res->semicylindrical_lx[g]);
+            cli_table_num(t, res->modelling[g]);
+        }
         if (w->contrib)
             for (size_t l = 0; l < sc->n_lum + (size_t)w->sky; l++) cli_table_num(t, res->contrib_lx[g * (sc->n_lum + 1) + l]);
         if (sc->design && sc->design->maintained) cli_table_str(t, "maintained");

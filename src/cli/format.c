@@ -180,7 +180,8 @@ static void style(const char *name, const char *unit, int *dec, int *sig, int *t
     else if (!strcmp(unit, "K")) *dec = 1;
     else if (!strncmp(name, "tm30_rhs", 8)) *dec = 3;
     else if (!strncmp(name, "cri_", 4) || !strncmp(name, "tm30_", 5)) *dec = 1;
-    else if (!strcmp(name, "U0") || strstr(name, "uniformity") || !strcmp(name, "lor") || !strcmp(name, "downward_fraction"))
+    else if (!strcmp(name, "U0") || strstr(name, "uniformity") || !strcmp(name, "lor") || !strcmp(name, "downward_fraction") ||
+             !strncmp(name, "modelling", 9))
         *dec = 3;
     else if (!strcmp(unit, "m") || !strcmp(unit, "ft") || !strcmp(unit, "deg")) *dec = 3, *trim = 1;
     else

@@ -40,3 +40,18 @@ void cli_scene_maintenance_text(FILE *f, const lx_scene *sc)
         fprintf(f, "  %-12s MF %.4g%s%s%s\n", sc->lum[l].name, d->lum_mf[l], d->lum_maint[l] >= 0 ? " (scheme " : "",
                 d->lum_maint[l] >= 0 ? d->maint[d->lum_maint[l]].name : "", d->lum_maint[l] >= 0 ? ")" : "");
 }
+
+void cli_scene_cylinder_summary(cli_table *t, const lx_scene_result *res, size_t a, size_t b)
+{
+    double sz = 0, ssz = 0, mlo = INFINITY, mhi = -INFINITY;
+    size_t nz = 0, nsz = 0;
+    for (size_t g = a; g < b; g++) {
+        if (!isnan(res->cylindrical_lx[g])) sz += res->cylindrical_lx[g], nz++;
+        if (!isnan(res->semicylindrical_lx[g])) ssz += res->semicylindrical_lx[g], nsz++;
+        if (!isnan(res->modelling[g])) mlo = fmin(mlo, res->modelling[g]), mhi = fmax(mhi, res->modelling[g]);
+    }
+    cli_table_num(t, nz ? sz / (double)nz : NAN);
+    cli_table_num(t, nsz ? ssz / (double)nsz : NAN);
+    cli_table_num(t, mhi >= mlo ? mlo : NAN);
+    cli_table_num(t, mhi >= mlo ? mhi : NAN);
+}

@@ -41,6 +41,23 @@ typedef struct lx__design {
 
 enum { LX__DSEC_NONE = 0, LX__DSEC_MAINT = 1 };
 
+/* ---- cylindrical and semi-cylindrical illuminance (design_cylinder.c) ---- */
+/* E_z (facing NULL) or E_sz (facing: unit horizontal) of luminaire le at q, times the plan's factor;
+ * a luminous area integrated to tol; with vis its rays are tested. */
+double lx__design_cyl_E(lx_counters *cnt, const lx__scene_lum *le, const double q[3], const double *facing, double tol,
+                        const lx__scene_vis *vis);
+/* res->cylindrical_lx, semicylindrical_lx, modelling when some receiver asks (NaN elsewhere). */
+lx_status lx__design_cyl_alloc(lx_ctx *ctx, const lx_scene *sc, lx_scene_result *res);
+/* The luminaires' direct E_z and E_sz at the receivers that ask (only >= 0: that luminaire alone). */
+void lx__design_cyl_direct(lx_counters *cnt, const lx_scene *sc, const lx_scene_plan *plan, const lx__scene_lum *le,
+                           const lx__scene_vis *vis, long only, lx_scene_result *res);
+/* The interreflected part from the room's elements of exitance Be, to tol of each point's total. */
+struct lx__room_mesh;
+lx_status lx__design_room_cylinder(lx_ctx *ctx, const lx_scene *sc, const struct lx__room_mesh *m, const double *Be,
+                                   int backend, double tol, lx_scene_result *res);
+/* E_z / E_h at the cylindrical receivers facing up (after the interreflected part is in E_lx). */
+void lx__design_cyl_modelling(const lx_scene *sc, lx_scene_result *res);
+
 /* A new design (every array empty) and its release with the scene. */
 lx_status lx__design_new(lx_scene *sc);
 void lx__design_free(lx_scene *sc);
@@ -51,6 +68,11 @@ int lx__design_lum_key(lx_ctx *ctx, scene__lum_design *d, const char *file, long
 void lx__design_lum_raw_free(scene__lum_design *d);
 /* The luminaire just appended to sc->lum takes its design keys. */
 lx_status lx__design_lum_finish(lx_ctx *ctx, lx_scene *sc, scene__lum_design *d);
+/* [receiver] keys of the deliverable (cylindrical, semicylindrical): 1 when key is one; the
+ * receiver just appended to sc->rec takes them. */
+int lx__design_rec_key(lx_ctx *ctx, scene__rec_design *d, const char *file, long line, const char *key,
+                       const char *value, lx_status *st);
+lx_status lx__design_rec_finish(lx_ctx *ctx, lx_scene *sc, const scene__rec_design *d);
 /* [scene] keys of the deliverable (maintenance_factor, maintenance): 1 when key is one. */
 int lx__design_scene_key(lx_ctx *ctx, lx_scene *sc, const char *file, long line, const char *key, const char *value,
                          lx_status *st);

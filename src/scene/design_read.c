@@ -68,6 +68,8 @@ void lx__design_free(lx_scene *sc)
     free(d->lum_power_W);
     free(d->lum_mode);
     free(d->lum_emergency_lm);
+    free(d->rec_cylinder);
+    free(d->rec_facing);
     free(d);
     sc->design = NULL;
 }
@@ -179,6 +181,46 @@ lx_status lx__design_lum_finish(lx_ctx *ctx, lx_scene *sc, scene__lum_design *r)
     d->lum_power_W[i] = r->has_power ? r->power : l->lum && l->lum->input_watts > 0 ? l->lum->input_watts : NAN;
     d->lum_mode[i] = (lx_lum_mode)r->mode;
     d->lum_emergency_lm[i] = r->mode == LX_LUM_NORMAL ? 0 : r->has_eflux ? r->eflux : l->flux_lm;
+    return LX_OK;
+}
+
+/* ---- receivers ---- */
+
+int lx__design_rec_key(lx_ctx *ctx, scene__rec_design *d, const char *file, long line, const char *key,
+                       const char *value, lx_status *st)
+{
+    if (!strcmp(key, "cylindrical")) {
+        d->line = line;
+        *st = LX_OK;
+        if (!strcmp(value, "yes")) d->cyl |= LX_REC_CYLINDRICAL;
+        else if (strcmp(value, "no"))
+            *st = lx__error(ctx, LX_EPARSE, file, line, "cylindrical: expected yes or no, got '%s'", value);
+    } else if (!strcmp(key, "semicylindrical")) {
+        d->line = line;
+        d->cyl |= LX_REC_SEMICYLINDRICAL;
+        d->has_facing = 1;
+        *st = lx__scene_parse_vec(ctx, file, line, key, value, 3, 3, LX_Q_NONE, NULL, d->facing, NULL);
+        double h = hypot(d->facing[0], d->facing[1]);
+        if (*st == LX_OK && !(h > 0 && isfinite(h)))
+            *st = lx__error(ctx, LX_EPARSE, file, line,
+                            "semicylindrical: the direction the half-cylinder faces needs a horizontal part (x, y)");
+        if (*st == LX_OK) d->facing[0] /= h, d->facing[1] /= h, d->facing[2] = 0;
+    } else
+        return 0;
+    return 1;
+}
+
+lx_status lx__design_rec_finish(lx_ctx *ctx, lx_scene *sc, const scene__rec_design *r)
+{
+    lx_scene_design *d = sc->design;
+    size_t n = sc->n_rec, i = n - 1;
+    unsigned char *c = realloc(d->rec_cylinder, n * sizeof *c);
+    if (c) d->rec_cylinder = c;
+    double *f = c ? realloc(d->rec_facing, 3 * n * sizeof *f) : NULL;
+    if (f) d->rec_facing = f;
+    if (!c || !f) return lx__error(ctx, LX_ENOMEM, sc->rec[i].file, sc->rec[i].line, "out of memory");
+    c[i] = (unsigned char)r->cyl;
+    f[3 * i] = r->has_facing ? r->facing[0] : 1, f[3 * i + 1] = r->has_facing ? r->facing[1] : 0, f[3 * i + 2] = 0;
     return LX_OK;
 }
 

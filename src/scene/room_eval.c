@@ -3,6 +3,7 @@
  * the form factors and the solve on the patches; the gather at every element centre (from the
  * patches) and at the receiver points (from the elements); the faces' results. */
 #include "scene/room_private.h"
+#include "scene/design_private.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -218,6 +219,8 @@ lx_status lx__room_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
     for (size_t k = 0; k < n_eg; k++) Ei[elist[k]] = Eg[k];
     for (size_t e = 0; e < ne; e++) Be[e] = m->elem[e].rho * (Ed[e] + Ei[e]);
     if (sc->n_obs && (st = lx__glare_room_background(ctx, sc, m, Be, backend, res)) != LX_OK) goto out; /* UGR's Lb */
+    /* cylindrical receivers: the interreflected light on small vertical cylinders */
+    if ((st = lx__design_room_cylinder(ctx, sc, m, Be, backend, 0.25 * plan->room.tolerance, res)) != LX_OK) goto out;
     /* 4. the gather at the receiver points from the elements */
     size_t g = 0;
     for (size_t r = 0; r < sc->n_rec; r++)

@@ -456,6 +456,10 @@ lx_status lx__scene_rec_key(lx_ctx *ctx, scene__rec_raw *r, const char *file, lo
     VEC("normal", 3, LX_Q_NONE, r->normal, r->has_normal)
     VEC("reflectance", 1, LX_Q_NONE, &r->refl, r->has_refl)
     VEC("spacing", 1, LX_Q_LENGTH, &r->spacing, r->has_spacing)
+    {
+        lx_status st = LX_OK;
+        if (lx__design_rec_key(ctx, &r->design, file, line, key, value, &st)) return st;
+    }
     if (!strcmp(key, "x") || !strcmp(key, "y") || !strcmp(key, "z")) {
         int *n = key[0] == 'x' ? &r->nx : key[0] == 'y' ? &r->ny : &r->nz;
         double *d = key[0] == 'x' ? r->xr : key[0] == 'y' ? r->yr : r->zr;
@@ -475,7 +479,7 @@ lx_status lx__scene_rec_key(lx_ctx *ctx, scene__rec_raw *r, const char *file, lo
     }
     return lx__error(ctx, LX_EPARSE, file, line,
                      "unknown key '%s' in [receiver] (keys: type, position, normal, reflectance, x, y, z, spacing, "
-                     "points)",
+                     "points, cylindrical, semicylindrical)",
                      key);
 }
 
@@ -602,6 +606,9 @@ lx_status lx__scene_rec_finish(lx_ctx *ctx, lx_scene *sc, scene__rec_raw *r)
     rc.name = r->name;
     r->name = NULL;
     sc->rec[sc->n_rec++] = rc;
+    scene__rec_design dz = r->design;
+    lx__scene_rec_raw_free(r);
+    return lx__design_rec_finish(ctx, sc, &dz);
 out:
     if (st != LX_OK) free(rc.points);
     lx__scene_rec_raw_free(r);

@@ -2,6 +2,7 @@
  * computed once (point law or near-field patches) and summed (linearity), plus the sky, the
  * Lambertian luminance and the spectral quantities; counts the work per effect. */
 #include "scene/daylight_private.h"
+#include "scene/design_private.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -38,6 +39,9 @@ void lx_scene_result_free(lx_scene_result *res)
     free(res->externally_reflected);
     free(res->internally_reflected);
     free(res->observer_indirect_lx);
+    free(res->cylindrical_lx);
+    free(res->semicylindrical_lx);
+    free(res->modelling);
     for (size_t i = 0; i < res->n_surfaces; i++) free(res->surfaces[i].name);
     free(res->surfaces);
     free(res);
@@ -84,6 +88,11 @@ static double intensity(lx_counters *cnt, const lum_eval *le, const double u[3],
                lx_luminaire_intensity_dir(l->lum, LX_INTERP_BILINEAR, dot(u, le->ex), dot(u, le->ey), dot(u, le->ez));
     }
     return 0;
+}
+
+double lx__scene_intensity(lx_counters *cnt, const lx__scene_lum *le, const double u[3], double frac)
+{
+    return intensity(cnt, le, u, frac);
 }
 
 /* E at receiver point q (normal n) from a point source at s with intensity I(u) scaled by frac;
@@ -513,11 +522,15 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
         }
     }
     res->first[sc->n_rec] = g;
+    /* cylindrical receivers: the luminaires' direct light on small vertical cylinders */
+    if ((st = lx__design_cyl_alloc(ctx, sc, res)) != LX_OK) goto fail;
+    lx__design_cyl_direct(&ctx->counters, sc, plan, le, &vis, only, res);
     /* daylight through the openings at the points (the sky's column) */
     if (day && (st = lx__daylight_points(ctx, day, res)) != LX_OK) goto fail;
     /* the interreflected part: E_lx gains indirect_lx (the daylight's too) */
     if (plan->on[LX_EFFECT_INTERREFLECTION] && (st = lx__room_eval(ctx, sc, plan, only, day, res)) != LX_OK) goto fail;
     if (day && (st = lx__daylight_finish(ctx, day, res)) != LX_OK) goto fail;
+    lx__design_cyl_modelling(sc, res);
     point_colour(ctx, sc, plan, res, spec, only, day, spectral);
     if ((st = check_finite(ctx, sc, res, nl, spectral)) != LX_OK) goto fail;
     lx__daylight_free(day);

@@ -32,6 +32,13 @@ typedef struct scene__lum_raw {
     scene__lum_design design;
 } scene__lum_raw;
 
+/* The deliverable's keys of a [receiver] section (design_read.c): cylindrical, semicylindrical. */
+typedef struct scene__rec_design {
+    int cyl, has_facing;
+    double facing[3];
+    long line;
+} scene__rec_design;
+
 /* Raw keys of a [receiver] section. */
 typedef struct scene__rec_raw {
     char *name;
@@ -43,6 +50,7 @@ typedef struct scene__rec_raw {
     int nx, ny, nz; /* values given for x, y, z (0: key absent) */
     double pos[3], normal[3], refl, spacing, xr[2], yr[2], zr[2];
     long points[2];
+    scene__rec_design design;
 } scene__rec_raw;
 
 void lx__scene_lum_raw_init(scene__lum_raw *r, const char *name, const char *file, long line);
@@ -148,6 +156,9 @@ typedef struct lx__scene_lum {
 } lx__scene_lum;
 /* Luminaire l of scene sc as the plan evaluates it. */
 void lx__scene_lum_init(lx__scene_lum *e, const lx_scene *sc, size_t l, const lx_scene_plan *plan);
+/* The luminaire's intensity (cd, before the plan's factor k) towards the unit direction u (from the
+ * luminaire), or that of a fraction frac of its luminous area; counts its spot and table work. */
+double lx__scene_intensity(lx_counters *cnt, const lx__scene_lum *le, const double u[3], double frac);
 /* E at receiver point q (unit normal n) of the luminaire as a point source at s carrying frac of
  * its intensity (the point model; counts its spot and table work). */
 double lx__scene_point_E(lx_ctx *ctx, const lx__scene_lum *le, const double s[3], const double q[3], const double n[3],

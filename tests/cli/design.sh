@@ -20,3 +20,12 @@ expect_out_match '"values": "maintained \(MF 0\.5 to 0\.8\)"' "--explain json: v
 run scene tests/data/design/bad_mf.scene
 expect_rc 2 "MF outside (0, 1]: input error"
 expect_err_match '^luxcalc: scene: tests/data/design/bad_mf.scene:6: maintenance_factor: must be greater than 0 and at most 1 \(got 1\.25\)' "MF error names file and line"
+# cylindrical illuminance: I = 1000 / (4 pi) cd, h = 2 m, d = sqrt(2^2 + 1.8^2) m:
+# E_z = I h / (pi d^3) = 2.60053324213; E_sz facing the source 5.20106648427; E_h = I 1.8 / d^3
+run scene tests/data/design/cylinder.scene --format csv
+expect_out_match '^receiver,x,y,z,illuminance_lx,cylindrical_lx,semicylindrical_lx,modelling$' "cylinder columns"
+expect_field 1 cylindrical_lx 2.60053324213 1e-10 "E_z of a point source: I h / (pi d^3)"
+expect_field 1 semicylindrical_lx 5.20106648427 1e-10 "E_sz facing the source: 2 I h / (pi d^3)"
+expect_field 1 modelling 0.353677651315 1e-10 "modelling E_z / E_h = h / (pi 1.8)"
+run scene tests/data/design/cylinder.scene
+expect_out_match '^modelling_min +0\.354$' "table: modelling to 3 decimals"
