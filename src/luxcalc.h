@@ -1978,7 +1978,12 @@ typedef struct lx_scene_luminaire {
 } lx_scene_luminaire;
 
 /** Receiver kinds. */
-typedef enum lx_scene_rec_kind { LX_SREC_POINT = 0, LX_SREC_GRID = 1 } lx_scene_rec_kind;
+typedef enum lx_scene_rec_kind {
+    LX_SREC_POINT = 0,
+    LX_SREC_GRID = 1,
+    LX_SREC_SET = 2   /* points of an area that is not a whole grid (an EN 12464-1 band): the cell centres of
+                       * na x nb cells that lie inside it (lx_scene_design.area) */
+} lx_scene_rec_kind;
 
 /** One receiver: a point, or a grid of na x nb points on a plane x, y or z = level. An element of
  * lx_scene.rec (ABI policy: reserved space, as results). */
@@ -2437,6 +2442,61 @@ typedef struct lx_maintenance {
     long long reserved[4];      /* zero: room for later fields */
 } lx_maintenance;
 
+/** Kinds of an area ([area NAME] type; the bands are generated from a task area). */
+typedef enum lx_area_kind {
+    LX_AREA_TASK = 0,        /* EN 12464-1 task area: a rectangle on a horizontal plane */
+    LX_AREA_SURROUNDING,     /* its immediate surrounding: a band around it (0.5 m), clipped at the room's walls */
+    LX_AREA_BACKGROUND,      /* its background: a band around the surrounding (3 m), clipped at the walls */
+    LX_AREA_ROOM,            /* a room's plane at a height, less a margin from the walls (0.5 m) */
+    LX_AREA_WALL,            /* a wall of a room (one area each), less a margin */
+    LX_AREA_CEILING,         /* a room's ceiling, less a margin */
+    LX_AREA_KIND_COUNT
+} lx_area_kind;
+
+/** Rounding of EN 12464-1's number of grid points d / p. */
+typedef enum lx_grid_rounding {
+    LX_GRID_ROUND_NEAREST = 0, /* the nearest whole number (EN 12464-1:2021) */
+    LX_GRID_ROUND_UP = 1       /* the next whole number up (EN 12464-1:2011) */
+} lx_grid_rounding;
+
+/** An EN 12464-1 calculation grid (lx_en12464_grid). */
+typedef struct lx_en12464_grid {
+    double d_m;              /* the dimension the rule was applied to */
+    double p_m;              /* the maximum cell size 0.2 x 5^log10(d), at most 10 m */
+    size_t n[2];             /* cells (points at their centres) along the first and second sides */
+    double cell_m[2];        /* the cell sizes: side / n */
+    long long reserved[4];   /* zero: room for later results */
+} lx_en12464_grid;
+
+/** The calculation grid EN 12464-1 (after EN 12193) gives an area of sides a x b (m): the maximum cell
+ * size p = 0.2 x 5^log10(d), at most 10 m, with d the longer side, or the shorter one where the longer
+ * is at least twice it; along d, n = d / p cells (rounded as `rounding` says, at least 1), of size
+ * d / n; along the other side as many cells of about that size (the same rounding), so that the cells
+ * are nearly square. Points lie at the cells' centres. Errors: LX_EINVAL (a side not positive and
+ * finite, an unknown rounding). Pure, thread-safe. */
+LX_API lx_status lx_en12464_grid_size(lx_ctx *ctx, double a_m, double b_m, lx_grid_rounding rounding, lx_en12464_grid *out);
+
+/** An area of a scene ([area NAME], and the bands of a task area): its plane, outline and grid, and
+ * the receiver that holds its points. An element of lx_scene_design.area (ABI policy: reserved space). */
+typedef struct lx_scene_area {
+    char *name;                /* the receiver's name: NAME, NAME.surrounding, NAME.background, NAME.wall_xmin ... */
+    const char *file;          /* the scene file and line of its section */
+    long line;
+    lx_area_kind kind;
+    size_t rec;                /* its receiver (index into lx_scene.rec) */
+    long task;                 /* a band: the index of its task area (-1 otherwise) */
+    long room;                 /* its room (index into lx_scene.room; -1 none) */
+    double origin_m[3], u[3], v[3]; /* its plane: origin + a u + b v (u, v unit) */
+    size_t n_outline;          /* the outline's vertices (plane coordinates a, b; counter-clockwise) */
+    double *outline;           /* n_outline x 2 (owned) */
+    size_t n_inner;            /* a band's inner edge (the area it surrounds, clipped), 0 otherwise */
+    double *inner;             /* n_inner x 2 (owned) */
+    double area_m2;            /* the outline's area less the inner edge's */
+    lx_en12464_grid grid;      /* the grid over the outline's bounding box; a band keeps the cell centres inside it */
+    double box_m[4];           /* that box: a0, a1, b0, b1 */
+    long long reserved[4];     /* zero: room for later fields */
+} lx_scene_area;
+
 /** Luminaire modes ([luminaire] emergency). */
 typedef enum lx_lum_mode {
     LX_LUM_NORMAL = 0,       /* lights in normal operation only */
@@ -2462,7 +2522,70 @@ typedef struct lx_scene_design {
     unsigned char *rec_cylinder;/* n_rec: LX_REC_CYLINDRICAL | LX_REC_SEMICYLINDRICAL ([receiver] cylindrical,
                                  * semicylindrical) */
     double *rec_facing;         /* n_rec x 3: the direction a semi-cylinder faces (unit, horizontal) */
+    size_t n_area;
+    lx_scene_area *area;        /* the areas: each task area is followed by its bands */
+    size_t n_req;               /* [requirement NAME] sections (checked by lx_scene_check) */
+    long *obs_group;            /* n_obs: the [observer] section each observer came from (index into
+                                 * obs_group_name); NULL when every observer is its own section */
+    char **obs_group_name;
+    size_t n_obs_group;
+    int check_glare;            /* 1 when a requirement rates UGR (lx_scene_check needs lx_scene_glare_eval's) */
+    int check_emergency;        /* 1 when a requirement rates emergency lighting (it needs the emergency results) */
 } lx_scene_design;
+
+/** Statistics of a receiver's points (an area's grid): the mean, minimum and maximum and the
+ * uniformities U0 = E_min / E_mean and E_min / E_max, of its illuminance and, where asked, of its
+ * cylindrical illuminance (NaN otherwise). */
+typedef struct lx_area_stats {
+    size_t n;                   /* points */
+    double mean_lx, min_lx, max_lx, u0, min_max;
+    double cyl_mean_lx, cyl_min_lx, cyl_u0;
+    double modelling_min, modelling_max;
+    long long reserved[4];      /* zero: room for later results */
+} lx_area_stats;
+
+/** The statistics of receiver rec's points in res. Errors: LX_EINVAL (rec outside the scene, res of
+ * another scene). */
+LX_API lx_status lx_scene_area_stats(lx_ctx *ctx, const lx_scene *scene, const lx_scene_result *res, size_t rec,
+                                     lx_area_stats *out);
+
+/** One line of the check against the requirements ([requirement NAME]). */
+typedef struct lx_check {
+    const char *requirement;    /* the requirement's name */
+    const char *reference;      /* its `reference` text ("" when none) */
+    const char *file;           /* the scene file and line of the key it checks */
+    long line;
+    const char *target;         /* what is rated: an area (receiver), an observer, a luminaire */
+    const char *quantity;       /* "E_m", "U_0", "E_min", "E_z", "U_0,z", "modelling", "UGR", "R_a", "E_max/E_min" */
+    const char *unit;           /* "lx" or "" */
+    int at_most;                /* 0: value >= required; 1: value <= required */
+    double required;
+    double value;               /* computed (maintained values where a maintenance factor is given) */
+    int pass;                   /* 1 when the value meets the requirement */
+    int emergency;              /* 1: rated in emergency operation */
+    long long reserved[4];      /* zero: room for later fields (an element of lx_scene_checks.check) */
+} lx_check;
+
+/** The checks of a scene against its requirements; made by lx_scene_check, freed with
+ * lx_scene_checks_free (a struct only the library allocates). */
+typedef struct lx_scene_checks {
+    size_t n;
+    lx_check *check;
+    int all_pass;               /* 1 when every line passes */
+    size_t n_fail;
+} lx_scene_checks;
+
+/** Checks the scene's results against its [requirement] sections: each given quantity of the
+ * requirement's area (E_m, U_0, E_min of the area and of its bands, E_z and U_0,z, the modelling range
+ * of its points, the walls' and the ceiling's E_m and U_0) from res, UGR at its observers from glare
+ * (the highest of each observer's directions), R_a of the luminaires that light the area (CIE 13.3
+ * from their spectra), and the emergency lighting's minimum and E_max / E_min from emergency.
+ * glare and emergency may be NULL when no requirement needs them (LX_EINVAL otherwise). The quantities
+ * a requirement may name were checked when the scene was read (an error there names the key's line
+ * when nothing computes one). */
+LX_API lx_status lx_scene_check(lx_ctx *ctx, const lx_scene *scene, const lx_scene_result *res,
+                                const lx_scene_result *emergency, const lx_scene_glare *glare, lx_scene_checks **out);
+LX_API void lx_scene_checks_free(lx_scene_checks *checks);
 
 /** What a receiver asks besides its plane's illuminance (lx_scene_design.rec_cylinder). */
 enum {

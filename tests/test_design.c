@@ -295,6 +295,282 @@ static void test_cylindrical_interreflection(void **state)
     free(t);
 }
 
+/* ---- EN 12464-1 calculation grids ----
+ * The rule: p = 0.2 x 5^log10(d) (d the longer side, or the shorter where the longer is at least twice
+ * it), n = d / p rounded, points at the cells' centres. References: (1) the 2021 rule (rounded to the
+ * nearest whole number) as F. Rudawski's egrid implements it (frudawski.de/egrid): a 5 m x 4 m area
+ * gives 8 x 6 points; (2) the examples of typical grid sizes quoted from EN 12464-1 (fagerhult.com,
+ * "Number of calculation points"): square areas of side 1, 2, 5, 10, 100 m give 5, 6, 8, 10, 20 points
+ * a side (the rows for 0.4, 0.6, 25 and 50 m list 3, 3, 12, 17 points, which follow from p rounded to
+ * 0.15, 0.2, 2 and 3 m rather than from the formula, which gives 4, 4, 13, 16: those rows are not
+ * asserted); (3) p itself: 0.2 m at d = 1 m, 1 m at 10 m, 5 m at 100 m, capped at 10 m. */
+static void test_grid_rule(void **state)
+{
+    lx_ctx *ctx = *state;
+    lx_en12464_grid g;
+    lx_assert_ok(ctx, lx_en12464_grid_size(ctx, 5, 4, LX_GRID_ROUND_NEAREST, &g));
+    assert_int_equal(g.n[0], 8);
+    assert_int_equal(g.n[1], 6);
+    lx_assert_near(g.d_m, 5, 0, 0);
+    lx_assert_near(g.p_m, 0.2 * pow(5, log10(5.0)), 0, 1e-15);
+    lx_assert_near(g.cell_m[0], 0.625, 0, 1e-15);
+    lx_assert_near(g.cell_m[1], 4.0 / 6, 0, 1e-15);
+    static const double side[] = {1, 2, 5, 10, 100};
+    static const size_t n_table[] = {5, 6, 8, 10, 20};
+    for (int k = 0; k < 5; k++) {
+        lx_assert_ok(ctx, lx_en12464_grid_size(ctx, side[k], side[k], LX_GRID_ROUND_NEAREST, &g));
+        assert_int_equal(g.n[0], n_table[k]);
+        assert_int_equal(g.n[1], n_table[k]);
+    }
+    lx_assert_ok(ctx, lx_en12464_grid_size(ctx, 1, 1, LX_GRID_ROUND_NEAREST, &g));
+    lx_assert_near(g.p_m, 0.2, 0, 1e-15);
+    lx_assert_ok(ctx, lx_en12464_grid_size(ctx, 10, 10, LX_GRID_ROUND_NEAREST, &g));
+    lx_assert_near(g.p_m, 1, 0, 1e-15);
+    lx_assert_ok(ctx, lx_en12464_grid_size(ctx, 100, 100, LX_GRID_ROUND_NEAREST, &g));
+    lx_assert_near(g.p_m, 5, 0, 1e-14);
+    lx_assert_ok(ctx, lx_en12464_grid_size(ctx, 2000, 2000, LX_GRID_ROUND_NEAREST, &g));
+    lx_assert_near(g.p_m, 10, 0, 0); /* 0.2 x 5^3.3 = 40 m, capped */
+    /* the ratio rule: 20 m x 2 m takes d = 2 m: p = 0.2 x 5^log10(2) = 0.3249, n = round(6.16) = 6 across,
+     * cells of 1/3 m, 60 along */
+    lx_assert_ok(ctx, lx_en12464_grid_size(ctx, 20, 2, LX_GRID_ROUND_NEAREST, &g));
+    lx_assert_near(g.d_m, 2, 0, 0);
+    assert_int_equal(g.n[1], 6);
+    assert_int_equal(g.n[0], 60);
+    /* EN 12464-1:2011 rounds up: 5 m x 4 m: 5 / 0.6170 = 8.10 -> 9; 4 / (5/9) = 7.2 -> 8 */
+    lx_assert_ok(ctx, lx_en12464_grid_size(ctx, 5, 4, LX_GRID_ROUND_UP, &g));
+    assert_int_equal(g.n[0], 9);
+    assert_int_equal(g.n[1], 8);
+    /* d / p exactly whole is not rounded up past it: 1 m / 0.2 m = 5 */
+    lx_assert_ok(ctx, lx_en12464_grid_size(ctx, 1, 1, LX_GRID_ROUND_UP, &g));
+    assert_int_equal(g.n[0], 5);
+    assert_int_equal(lx_en12464_grid_size(ctx, 0, 1, LX_GRID_ROUND_NEAREST, &g), LX_EINVAL);
+}
+
+/* A task area 0.2 m from a wall: its surrounding (0.5 m) and background (3 m) bands clipped there.
+ * By hand: room [0, 6] x [0, 4]; task [0.2, 1.8] x [1, 2] at 0.75 m.
+ * Surrounding: [-0.3, 2.3] x [0.5, 2.5] clipped to x >= 0: 2.3 x 2 = 4.6 m2 less the task's 1.6: 3.0 m2.
+ * Its cells: d = 0.5 m (a band's shorter side): p = 0.2 x 5^log10(0.5) = 0.1232, 0.5 / p = 4.06 -> 4
+ * cells of 0.125 m across; the strips below and above (2.6 m long: 21 cells, 4 rows) lose the 2
+ * columns with x < 0 (centres -0.238, -0.114): 19 x 4 each; the left strip (0.5 m: 4 columns of 8)
+ * keeps 2 (centres 0.0125, 0.1375): 16; the right one 32: 76 + 76 + 16 + 32 = 200 points.
+ * Background: [-3.3, 5.3] x [-2.5, 5.5] clipped to the room: [0, 5.3] x [0, 4] = 21.2 m2, less the
+ * surrounding's outer edge clipped ([0, 2.3] x [0.5, 2.5] = 4.6 m2): 16.6 m2. */
+static void test_task_bands(void **state)
+{
+    lx_ctx *ctx = *state;
+    const char *t = "[room r]\nsize = 6 m, 4 m, 3 m\n"
+                    "[luminaire a]\ntype = point\nposition = 3 m, 2 m, 2.8 m\nflux = 3000 lm\n"
+                    "[area desk]\ntype = task\nx = 0.2 m, 1.8 m\ny = 1 m, 2 m\nz = 0.75 m\n"
+                    "[effects]\ninterreflection = off\n";
+    lx_scene *sc = NULL;
+    lx_assert_ok(ctx, lx_scene_read_mem(ctx, "t.scene", t, strlen(t), &sc));
+    const lx_scene_design *d = sc->design;
+    assert_int_equal(d->n_area, 3);
+    const lx_scene_area *task = &d->area[0], *sur = &d->area[1], *bg = &d->area[2];
+    assert_int_equal(task->kind, LX_AREA_TASK);
+    assert_int_equal(sur->kind, LX_AREA_SURROUNDING);
+    assert_int_equal(bg->kind, LX_AREA_BACKGROUND);
+    assert_string_equal(sc->rec[sur->rec].name, "desk.surrounding");
+    assert_int_equal(sur->task, 0);
+    lx_assert_near(task->area_m2, 1.6, 0, 1e-14);
+    lx_assert_near(sur->area_m2, 3.0, 0, 1e-12);
+    lx_assert_near(bg->area_m2, 16.6, 0, 1e-12);
+    /* the clipped outline of the surrounding: x from the wall at 0 to 2.3, y 0.5 to 2.5 */
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (size_t k = 0; k < sur->n_outline; k++)
+        for (int c = 0; c < 2; c++) lo[c] = fmin(lo[c], sur->outline[2 * k + c]), hi[c] = fmax(hi[c], sur->outline[2 * k + c]);
+    lx_assert_near(lo[0], 0, 1e-15, 0);
+    lx_assert_near(hi[0], 2.3, 0, 1e-15);
+    lx_assert_near(lo[1], 0.5, 0, 1e-15);
+    lx_assert_near(hi[1], 2.5, 0, 1e-15);
+    lx_assert_near(sur->grid.cell_m[0], 0.125, 0, 1e-15);
+    const lx_scene_receiver *rs = &sc->rec[sur->rec];
+    assert_int_equal(rs->kind, LX_SREC_SET);
+    assert_int_equal(rs->n, 200);
+    for (size_t i = 0; i < rs->n; i++) {
+        const double *q = rs->points + 3 * i;
+        int in_task = q[0] >= 0.2 && q[0] <= 1.8 && q[1] >= 1 && q[1] <= 2;
+        int in_band = q[0] >= 0 && q[0] <= 2.3 && q[1] >= 0.5 && q[1] <= 2.5;
+        assert_true(in_band && !in_task);
+        lx_assert_near(q[2], 0.75, 0, 0);
+    }
+    /* the task area: 1.6 x 1 m: d = 1.6 m, p = 0.2 x 5^log10(1.6) = 0.2781, n = round(5.75) = 6 cells of
+     * 0.2667 m, across round(3.75) = 4: 24 points at the cells' centres */
+    const lx_scene_receiver *rt = &sc->rec[task->rec];
+    assert_int_equal(rt->kind, LX_SREC_GRID);
+    assert_int_equal(rt->na, 6);
+    assert_int_equal(rt->nb, 4);
+    lx_assert_near(rt->points[0], 0.2 + 1.6 / 12, 0, 1e-15);
+    lx_assert_near(rt->points[1], 1 + 1.0 / 8, 0, 1e-15);
+    const lx_scene_receiver *rb = &sc->rec[bg->rec];
+    for (size_t i = 0; i < rb->n; i++) {
+        const double *q = rb->points + 3 * i;
+        assert_true(q[0] >= 0 && q[0] <= 5.3 && q[1] >= 0 && q[1] <= 4);
+        assert_false(q[0] <= 2.3 && q[1] >= 0.5 && q[1] <= 2.5);
+    }
+    lx_scene_free(sc);
+}
+
+/* A room's work plane less its 0.5 m margin, its walls and its ceiling. By hand: room 6 x 4 x 2.8 m;
+ * the plane 5 x 3 m: d = 5, p = 0.617, 8 x 5 cells (0.625 x 0.6 m); a 4 m x 2.8 m wall: d = 4,
+ * p = 0.527, 8 x 6 (cells 0.5 x 0.467 m); a 6 m x 2.8 m wall, more than twice as long as high: d = 2.8,
+ * p = 0.411, 7 cells of 0.4 m up and 15 along; the ceiling 6 x 4: d = 6, p = 0.700, 9 x 6. An obstruction takes the plane's points inside it. */
+static void test_room_areas(void **state)
+{
+    lx_ctx *ctx = *state;
+    const char *t = "[room r]\nsize = 6 m, 4 m, 2.8 m\n"
+                    "[obstruction cabinet]\nmin = 5 m, 2.9 m, 0 m\nmax = 6 m, 4 m, 2 m\nreflectance = 0.3\n"
+                    "[luminaire a]\ntype = point\nposition = 3 m, 2 m, 2.7 m\nflux = 3000 lm\n"
+                    "[area plane]\ntype = room\nz = 0.8 m\n"
+                    "[area w]\ntype = walls\n"
+                    "[area c]\ntype = ceiling\n";
+    lx_scene *sc = NULL;
+    lx_assert_ok(ctx, lx_scene_read_mem(ctx, "t.scene", t, strlen(t), &sc));
+    const lx_scene_design *d = sc->design;
+    assert_int_equal(d->n_area, 6);
+    const lx_scene_receiver *plane = &sc->rec[d->area[0].rec];
+    assert_int_equal(d->area[0].grid.n[0], 8);
+    assert_int_equal(d->area[0].grid.n[1], 5);
+    /* cells of the last column (x 5.1875) in the top row (y 3.2) lie in the cabinet: 1 point lost */
+    assert_int_equal(plane->n, 39);
+    assert_int_equal(plane->kind, LX_SREC_SET);
+    lx_assert_near(plane->points[0], 0.5 + 0.3125, 0, 1e-15);
+    lx_assert_near(plane->points[1], 0.5 + 0.3, 0, 1e-15);
+    static const size_t na[4] = {8, 8, 15, 15}, nb[4] = {6, 6, 7, 7};
+    static const char *const names[4] = {"w.wall_xmin", "w.wall_xmax", "w.wall_ymin", "w.wall_ymax"};
+    for (int k = 0; k < 4; k++) {
+        const lx_scene_area *A = &d->area[1 + k];
+        const lx_scene_receiver *rc = &sc->rec[A->rec];
+        assert_string_equal(rc->name, names[k]);
+        assert_int_equal(A->kind, LX_AREA_WALL);
+        assert_int_equal(rc->na, na[k]);
+        assert_int_equal(rc->nb, nb[k]);
+        assert_int_equal(rc->kind, LX_SREC_GRID);
+        /* on the wall, facing into the room */
+        int ax = k / 2;
+        lx_assert_near(rc->points[ax], k % 2 ? (ax ? 4 : 6) : 0, 0, 0);
+        lx_assert_near(rc->normal[ax], k % 2 ? -1 : 1, 0, 0);
+    }
+    const lx_scene_receiver *ce = &sc->rec[d->area[5].rec];
+    assert_int_equal(ce->na, 9);
+    assert_int_equal(ce->nb, 6);
+    lx_assert_near(ce->points[2], 2.8, 0, 0);
+    lx_assert_near(ce->normal[2], -1, 0, 0);
+    lx_scene_free(sc);
+}
+
+static void test_area_errors(void **state)
+{
+    lx_ctx *ctx = *state;
+    const char *room = "[room r]\nsize = 4 m, 3 m, 3 m\n[luminaire a]\ntype = point\nposition = 2 m, 1 m, 2.5 m\nflux = 1 lm\n";
+    char t[2048];
+    snprintf(t, sizeof t, "%s[area desk]\ntype = task\nx = 3 m, 4.5 m\ny = 1 m, 2 m\nz = 0.75 m\n", room);
+    expect_error(ctx, t, 7, "the task area (x 3 to 4.5 m, y 1 to 2 m, z 0.75 m) reaches outside room 'r'");
+    snprintf(t, sizeof t, "%s[area desk]\ntype = task\nx = 5 m, 6 m\ny = 1 m, 2 m\nz = 0.75 m\n", room);
+    expect_error(ctx, t, 7, "area 'desk': outside every room");
+    snprintf(t, sizeof t, "%s[area desk]\ntype = task\nx = 1 m, 2 m\ny = 1 m, 2 m\n", room);
+    expect_error(ctx, t, 7, "a task area takes x and y ranges and its height z");
+    snprintf(t, sizeof t, "%s[area p]\ntype = room\nz = 0.8 m\nmargin = 2 m\n", room);
+    expect_error(ctx, t, 10, "the margin of 2 m leaves nothing");
+    snprintf(t, sizeof t, "%s[area p]\ntype = hall\n", room);
+    expect_error(ctx, t, 8, "type: expected task, room, walls or ceiling");
+    snprintf(t, sizeof t, "%s[area p]\nz = 0.8 m\n", room);
+    expect_error(ctx, t, 7, "missing 'type'");
+    snprintf(t, sizeof t, "%s[area p]\ntype = room\nz = 0.8 m\nsurrounding = 0.5 m\n", room);
+    expect_error(ctx, t, 10, "bands belong to task areas");
+    snprintf(t, sizeof t, "%s[receiver desk]\ntype = point\nposition = 1 m, 1 m, 1 m\n[area desk]\ntype = task\nx = 1 m, 2 m\n"
+                          "y = 1 m, 2 m\nz = 0.75 m\n", room);
+    expect_error(ctx, t, 10, "a receiver named 'desk' exists already");
+    expect_error(ctx, "[luminaire a]\ntype = point\nposition = 0 m, 0 m, 2 m\nflux = 1 lm\n[area w]\ntype = walls\n", 5,
+                 "a walls area needs a [room]");
+}
+
+/* ---- requirements and the check ----
+ * One isotropic point of 4000 lm (I = 4000 / 4 pi cd) 2 m above a task area: the check's values are the
+ * area's statistics (mean, U0 = min / mean) and pass exactly where the typed value is met. */
+static void test_check(void **state)
+{
+    lx_ctx *ctx = *state;
+    const char *t = "[scene]\nmaintenance_factor = 0.8\n[room r]\nsize = 4 m, 4 m, 3 m\n"
+                    "[luminaire a]\ntype = point\nposition = 2 m, 2 m, 2.75 m\nflux = 4000 lm\n"
+                    "[area desk]\ntype = task\nx = 1.5 m, 2.5 m\ny = 1.5 m, 2.5 m\nz = 0.75 m\nbackground = no\n"
+                    "[area w]\ntype = walls\n"
+                    "[requirement office]\narea = desk\nreference = typed for the test\n"
+                    "maintained_illuminance = 50 lx\nuniformity = 0.99\nminimum_illuminance = 10 lx\n"
+                    "surrounding_illuminance = 20 lx\nwall_uniformity = 0.1\n"
+                    "[effects]\ninterreflection = off\n";
+    run r = must_run(ctx, "t.scene", t, LX_SCENE_NORMAL);
+    lx_scene_checks *c = NULL;
+    lx_assert_ok(ctx, lx_scene_check(ctx, r.sc, r.res, NULL, NULL, &c));
+    /* maintained_illuminance, uniformity, minimum, surrounding, 4 walls' uniformity */
+    assert_int_equal(c->n, 8);
+    lx_area_stats st;
+    lx_assert_ok(ctx, lx_scene_area_stats(ctx, r.sc, r.res, r.sc->design->area[0].rec, &st));
+    /* the task's points by hand: 1 m x 1 m, d = 1 m, p = 0.2 m, 5 x 5 cells; E = 0.8 I h / d^3 */
+    double I = 4000 / (4 * M_PI), sum = 0, mn = INFINITY;
+    for (int j = 0; j < 5; j++)
+        for (int i = 0; i < 5; i++) {
+            double x = 1.5 + 0.2 * (i + 0.5) - 2, y = 1.5 + 0.2 * (j + 0.5) - 2, d2 = x * x + y * y + 4;
+            double e = 0.8 * I * 2 / (d2 * sqrt(d2));
+            sum += e, mn = fmin(mn, e);
+        }
+    lx_assert_near(st.mean_lx, sum / 25, 0, 1e-12);
+    lx_assert_near(st.min_lx, mn, 0, 1e-12);
+    const lx_check *k = &c->check[0];
+    assert_string_equal(k->quantity, "E_m");
+    assert_string_equal(k->target, "desk");
+    assert_string_equal(k->reference, "typed for the test");
+    assert_int_equal(k->line, 20);
+    lx_assert_near(k->value, sum / 25, 0, 1e-12);
+    assert_true(k->pass); /* 60.08 lx against 50 */
+    assert_string_equal(c->check[1].quantity, "U_0");
+    lx_assert_near(c->check[1].value, mn / (sum / 25), 0, 1e-12);
+    assert_false(c->check[1].pass); /* 0.99 is not met */
+    assert_string_equal(c->check[2].quantity, "E_min");
+    lx_assert_near(c->check[2].value, mn, 0, 1e-12);
+    assert_string_equal(c->check[3].target, "desk.surrounding");
+    assert_string_equal(c->check[4].target, "w.wall_xmin");
+    assert_int_equal(c->n_fail, 1);
+    assert_false(c->all_pass);
+    lx_scene_checks_free(c);
+    run_free(&r);
+}
+
+/* A requirement for a quantity that is not computed: an error naming the key's line. */
+static void test_requirement_errors(void **state)
+{
+    lx_ctx *ctx = *state;
+    const char *base = "[room r]\nsize = 4 m, 4 m, 3 m\n[luminaire a]\ntype = point\nposition = 2 m, 2 m, 2.5 m\nflux = 4000 lm\n"
+                       "[area desk]\ntype = task\nx = 1.5 m, 2.5 m\ny = 1.5 m, 2.5 m\nz = 0.75 m\n"
+                       "[requirement q]\narea = desk\n"; /* the section at line 12, its keys from 14 */
+    char t[2048];
+    snprintf(t, sizeof t, "%scylindrical_illuminance = 150 lx\n", base);
+    expect_error(ctx, t, 14, "cylindrical_illuminance is not computed: its area computes no cylindrical illuminance");
+    snprintf(t, sizeof t, "%smaintained_illuminance = 500 lx\nwall_illuminance = 75 lx\n", base);
+    expect_error(ctx, t, 15, "wall_illuminance is not computed: no [area] of type walls in its room");
+    snprintf(t, sizeof t, "%sugr_limit = 19\n", base);
+    expect_error(ctx, t, 14, "ugr_limit is not computed: no [observer] in its room");
+    snprintf(t, sizeof t, "%sra = 80\n", base);
+    expect_error(ctx, t, 14, "ra is not computed: luminaire 'a' has no spectrum");
+    snprintf(t, sizeof t, "%semergency_minimum = 1 lx\n", base);
+    expect_error(ctx, t, 14, "emergency_minimum is not computed: no luminaire has 'emergency");
+    snprintf(t, sizeof t, "%smodelling = 0.3, 0.6\n", base);
+    expect_error(ctx, t, 14, "modelling is not computed");
+    snprintf(t, sizeof t, "%suniformity = 1.5\n", base);
+    expect_error(ctx, t, 14, "uniformity: a ratio of at most 1");
+    snprintf(t, sizeof t, "%smodelling = 0.6, 0.3\n", base);
+    expect_error(ctx, t, 14, "from low to high");
+    snprintf(t, sizeof t, "%smaintained_illuminance = 500\n", base);
+    expect_error(ctx, t, 14, "bare number '500'");
+    snprintf(t, sizeof t, "%scolour = red\n", base);
+    expect_error(ctx, t, 14, "unknown key 'colour' in [requirement]");
+    snprintf(t, sizeof t, "%s", base);
+    expect_error(ctx, t, 12, "no quantity required");
+    expect_error(ctx, "[luminaire a]\ntype = point\nposition = 0 m, 0 m, 2 m\nflux = 1 lm\n[receiver r]\ntype = point\n"
+                      "position = 0 m, 0 m, 0 m\n[requirement q]\narea = nowhere\nuniformity = 0.5\n",
+                 9, "area: no area or receiver named 'nowhere'");
+}
+
 /* ---- CIE 97:2005: MF = LLMF x LSF x LMF x RSMF from typed tables ----
  * The publication's tables are the user's to type (luxcalc ships no copy); what is checked here is
  * the method: each factor read off its table at the scheme's time by linear interpolation (at a
@@ -376,6 +652,12 @@ int main(void)
         cmocka_unit_test(test_cylindrical_point_source),
         cmocka_unit_test(test_cylindrical_area_source),
         cmocka_unit_test(test_cylindrical_interreflection),
+        cmocka_unit_test(test_grid_rule),
+        cmocka_unit_test(test_task_bands),
+        cmocka_unit_test(test_room_areas),
+        cmocka_unit_test(test_area_errors),
+        cmocka_unit_test(test_check),
+        cmocka_unit_test(test_requirement_errors),
         cmocka_unit_test(test_errors),
     };
     return cmocka_run_group_tests(tests, lx_test_ctx_setup, lx_test_ctx_teardown);

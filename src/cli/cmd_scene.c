@@ -11,7 +11,7 @@
 #include <string.h>
 
 static const char help[] =
-    "usage: luxcalc scene FILE [--explain] [--contributions] [--surfaces] [--format table|csv|json]\n"
+    "usage: luxcalc scene FILE [--explain] [--contributions] [--surfaces] [--check] [--format table|csv|json]\n"
     "                     [-o FILE] [--png DIR] [--backend auto|cpu|opencl]\n"
     "\n"
     "Computes a lighting scene (see README \"Scenes\" for the file format): luminaires (point, spot,\n"
@@ -26,6 +26,8 @@ static const char help[] =
     "                    interreflection the reflected part is indirect_lx)\n"
     "  --glare           UGR (CIE 117) at each [observer]: one row per luminaire that counts with its\n"
     "                    luminance, solid angle, position index and term L^2 w / p^2, and the UGR\n"
+    "  --check           the checks against the scene's [requirement] sections: one row per line\n"
+    "                    (requirement, target, quantity, required, computed, pass or FAIL)\n"
     "  --surfaces        rooms: one row per room face, surface side and obstruction face instead:\n"
     "                    surface,area_m2,direct_lx,indirect_lx,illuminance_lx,luminance_cd_m2,reflectance\n"
     "                    (area-weighted averages: the flux each receives over its exposed area)\n"
@@ -667,10 +669,10 @@ int cmd_scene(int argc, char **argv)
     static const struct option opts[] = {{"explain", no_argument, 0, 'e'},      {"contributions", no_argument, 0, 'c'},
                                          {"format", required_argument, 0, 'f'}, {"backend", required_argument, 0, 'b'},
                                          {"png", required_argument, 0, 'p'},     {"glare", no_argument, 0, 'g'},
-                                         {"surfaces", no_argument, 0, 's'},
+                                         {"surfaces", no_argument, 0, 's'},      {"check", no_argument, 0, 'k'},
                                          {"help", no_argument, 0, 'h'},         {0, 0, 0, 0}};
     const char *cmd = "scene", *out = NULL, *backend_text = NULL, *png_dir = NULL;
-    int do_explain = 0, contrib = 0, glare = 0, do_surfaces = 0, c;
+    int do_explain = 0, contrib = 0, glare = 0, do_surfaces = 0, do_check = 0, c;
     cli_format fmt = CLI_FMT_TABLE;
     optind = 1;
     opterr = 0;
@@ -680,6 +682,7 @@ int cmd_scene(int argc, char **argv)
         case 'c': contrib = 1; break;
         case 'g': glare = 1; break;
         case 's': do_surfaces = 1; break;
+        case 'k': do_check = 1; break;
         case 'o': out = optarg; break;
         case 'b': backend_text = optarg; break;
         case 'p': png_dir = optarg; break;
@@ -739,6 +742,13 @@ int cmd_scene(int argc, char **argv)
         else if (do_explain) {
             explain(o.fp, sc, plan, res, fmt);
             if (cli_output_close(&o, !ferror(o.fp), cmd) != 0) rc = CLI_RUNTIME;
+        } else if (do_check) {
+            cli_design_results dr;
+            int drc = cli_design_evaluate(cmd, ctx, sc, backend, res, &dr);
+            if (drc) rc = drc;
+            else if (cli_check_write(o.fp, sc, dr.checks, fmt) != 0) rc = CLI_RUNTIME;
+            cli_design_results_free(&dr);
+            if (cli_output_close(&o, rc == CLI_OK, cmd) != 0 && rc == CLI_OK) rc = CLI_RUNTIME;
         } else if (do_surfaces) {
             cli_table *t = surfaces_table(res);
             int ok = t && cli_table_write(t, fmt, o.fp, 1) == 0;

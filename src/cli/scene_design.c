@@ -4,6 +4,8 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 const char *cli_scene_values(const lx_scene *sc, char *buf, size_t cap)
 {
@@ -54,4 +56,105 @@ void cli_scene_cylinder_summary(cli_table *t, const lx_scene_result *res, size_t
     cli_table_num(t, nsz ? ssz / (double)nsz : NAN);
     cli_table_num(t, mhi >= mlo ? mlo : NAN);
     cli_table_num(t, mhi >= mlo ? mhi : NAN);
+}
+
+void cli_design_results_free(cli_design_results *r)
+{
+    lx_scene_glare_free(r->glare);
+    lx_scene_result_free(r->em);
+    lx_scene_plan_free(r->em_plan);
+    lx_scene_checks_free(r->checks);
+    memset(r, 0, sizeof *r);
+}
+
+int cli_design_evaluate(const char *cmd, lx_ctx *ctx, const lx_scene *sc, lx_backend backend, const lx_scene_result *res,
+                        cli_design_results *out)
+{
+    memset(out, 0, sizeof *out);
+    const lx_scene_design *d = sc->design;
+    lx_status st = LX_OK;
+    if (d->check_glare) st = lx_scene_glare_eval(ctx, sc, &out->glare);
+    if (st == LX_OK && d->check_emergency) st = lx_scene_plan_make_mode(ctx, sc, backend, LX_SCENE_EMERGENCY, &out->em_plan);
+    if (st == LX_OK && d->check_emergency) st = lx_scene_eval(ctx, sc, out->em_plan, NULL, &out->em);
+    if (st == LX_OK) st = lx_scene_check(ctx, sc, res, out->em, out->glare, &out->checks);
+    if (st != LX_OK) {
+        cli_design_results_free(out);
+        return cli_fail(cmd, ctx, st);
+    }
+    return 0;
+}
+
+/* a check's number as people read it: lx to 4 significant digits (or fc), ratios to 3 decimals, UGR
+ * and R_a to 0.1 */
+static void value_text(char *buf, size_t cap, const lx_check *k, double v)
+{
+    cli_column col;
+    int ratio = !*k->unit && strcmp(k->quantity, "UGR") && strcmp(k->quantity, "R_a") && strcmp(k->quantity, "E_max/E_min");
+    cli_column_out(*k->unit ? "illuminance_lx" : ratio ? "uniformity" : "cri_ra", k->unit, &col);
+    if (!isfinite(v)) {
+        snprintf(buf, cap, "-");
+        return;
+    }
+    char n[64];
+    cli_number_text(n, sizeof n, &col, v);
+    snprintf(buf, cap, "%s%s%s", n, *col.unit ? " " : "", col.unit);
+}
+
+/* the table for people: one aligned line per check */
+static int check_lines(FILE *f, const lx_scene *sc, const lx_scene_checks *c)
+{
+    enum { NC = 6 };
+    static const char *const head[NC] = {"requirement", "target", "quantity", "required", "computed", "result"};
+    size_t n = c->n;
+    char(*cell)[NC][96] = calloc(n ? n : 1, sizeof *cell);
+    if (!cell) return -1;
+    int w[NC];
+    for (int j = 0; j < NC; j++) w[j] = (int)strlen(head[j]);
+    for (size_t i = 0; i < n; i++) {
+        const lx_check *k = &c->check[i];
+        char num[80];
+        snprintf(cell[i][0], 96, "%s", k->requirement);
+        snprintf(cell[i][1], 96, "%s", k->target);
+        snprintf(cell[i][2], 96, "%s%s", k->quantity, k->emergency ? " (emergency)" : "");
+        value_text(num, sizeof num, k, k->required);
+        snprintf(cell[i][3], 96, "%s %s", k->at_most ? "<=" : ">=", num);
+        value_text(cell[i][4], 96, k, k->value);
+        snprintf(cell[i][5], 96, "%s", k->pass ? "pass" : "FAIL");
+        for (int j = 0; j < NC; j++) w[j] = (int)strlen(cell[i][j]) > w[j] ? (int)strlen(cell[i][j]) : w[j];
+    }
+    for (int j = 0; j < NC; j++) fprintf(f, "%-*s%s", j < NC - 1 ? w[j] : 0, head[j], j < NC - 1 ? "  " : "\n");
+    for (size_t i = 0; i < n; i++)
+        for (int j = 0; j < NC; j++) /* numbers right-aligned */
+            fprintf(f, j == 3 || j == 4 ? "%*s%s" : "%-*s%s", j < NC - 1 ? w[j] : 0, cell[i][j], j < NC - 1 ? "  " : "\n");
+    char vt[128];
+    fprintf(f, "\nchecks: %zu of %zu pass; values %s\n", c->n - c->n_fail, c->n, cli_scene_values(sc, vt, sizeof vt));
+    free(cell);
+    return ferror(f) ? -1 : 0;
+}
+
+int cli_check_write(FILE *f, const lx_scene *sc, const lx_scene_checks *c, cli_format fmt)
+{
+    if (fmt == CLI_FMT_TABLE) return check_lines(f, sc, c);
+    static const char *const names[] = {"requirement", "target", "quantity", "operation", "comparison", "required",
+                                        "value", "unit", "pass", "reference", "line"};
+    static const char *const units[] = {"", "", "", "", "", "", "", "", "", "", ""};
+    cli_table *t = cli_table_new(11, names, units);
+    if (!t) return -1;
+    for (size_t i = 0; i < c->n; i++) {
+        const lx_check *k = &c->check[i];
+        cli_table_str(t, k->requirement);
+        cli_table_str(t, k->target);
+        cli_table_str(t, k->quantity);
+        cli_table_str(t, k->emergency ? "emergency" : "normal");
+        cli_table_str(t, k->at_most ? "at_most" : "at_least");
+        cli_table_num(t, k->required);
+        cli_table_num(t, k->value);
+        cli_table_str(t, k->unit);
+        cli_table_str(t, k->pass ? "pass" : "fail");
+        cli_table_str(t, k->reference);
+        cli_table_int(t, k->line);
+    }
+    int rc = cli_table_write(t, fmt, f, 1);
+    cli_table_free(t);
+    return rc || ferror(f) ? -1 : 0;
 }

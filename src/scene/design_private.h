@@ -23,6 +23,21 @@ typedef struct lx__maint_raw {
     long burning_line, cleaning_line, room_cleaning_line;
 } lx__maint_raw;
 
+/* An [area NAME] section's raw keys, turned into areas and receivers once the scene is read. */
+typedef struct lx__area_raw {
+    char *name, *room;
+    const char *file;
+    long line, room_line;
+    int type;                  /* lx_area_kind of the section (-1: not given) */
+    long type_line;
+    int nx, ny, nz;            /* values given for x, y, z */
+    double x[2], y[2], z[2];
+    int has_surround, has_background, has_margin, has_spacing, rounding;
+    double surround, background, margin, spacing;
+    long surround_line, background_line, margin_line;
+    scene__rec_design cyl;
+} lx__area_raw;
+
 /* lx_scene_design.internal */
 typedef struct lx__design {
     lx__maint_raw *maint;      /* parallel to lx_scene_design.maint */
@@ -37,9 +52,29 @@ typedef struct lx__design {
     long *lum_maint_line;      /* n_lum: its line */
     long *lum_mf_line;         /* n_lum: the line of its maintenance_factor (0: none) */
     size_t n_lum;              /* the per-luminaire arrays' length */
+    lx__area_raw *area;        /* [area NAME] sections */
+    size_t n_area;
+    void *req;                 /* [requirement NAME] sections (design_check.c) */
+    size_t n_req;
 } lx__design;
 
-enum { LX__DSEC_NONE = 0, LX__DSEC_MAINT = 1 };
+enum { LX__DSEC_NONE = 0, LX__DSEC_MAINT = 1, LX__DSEC_AREA = 2, LX__DSEC_REQ = 3 };
+
+/* ---- requirements (design_check.c) ---- */
+lx_status lx__req_open(lx_ctx *ctx, lx_scene *sc, const char *name, const char *file, long line);
+lx_status lx__req_key(lx_ctx *ctx, lx_scene *sc, const char *file, long line, const char *key, const char *value);
+/* Resolves each requirement's area; an error names the key whose quantity nothing computes. */
+lx_status lx__req_finish(lx_ctx *ctx, lx_scene *sc);
+void lx__req_free(lx_scene *sc);
+
+/* ---- EN 12464-1 areas (design_areas.c) ---- */
+lx_status lx__area_open(lx_ctx *ctx, lx_scene *sc, const char *name, const char *file, long line);
+lx_status lx__area_key(lx_ctx *ctx, lx_scene *sc, const char *file, long line, const char *key, const char *value);
+/* Every [area] becomes its areas (a task area and its bands) and their receivers. */
+lx_status lx__area_finish(lx_ctx *ctx, lx_scene *sc);
+void lx__area_free(lx_scene *sc);
+/* Grows the per-receiver arrays of the design to the scene's receivers (a receiver just appended). */
+lx_status lx__design_rec_grow(lx_scene *sc);
 
 /* ---- cylindrical and semi-cylindrical illuminance (design_cylinder.c) ---- */
 /* E_z (facing NULL) or E_sz (facing: unit horizontal) of luminaire le at q, times the plan's factor;

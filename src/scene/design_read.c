@@ -44,6 +44,11 @@ void lx__design_free(lx_scene *sc)
 {
     lx_scene_design *d = sc->design;
     if (!d) return;
+    lx__area_free(sc);
+    lx__req_free(sc);
+    for (size_t i = 0; i < d->n_obs_group; i++) free(d->obs_group_name[i]);
+    free(d->obs_group_name);
+    free(d->obs_group);
     lx__design *in = d->internal;
     for (size_t i = 0; i < d->n_maint; i++) {
         lx_maintenance *m = &d->maint[i];
@@ -210,15 +215,24 @@ int lx__design_rec_key(lx_ctx *ctx, scene__rec_design *d, const char *file, long
     return 1;
 }
 
-lx_status lx__design_rec_finish(lx_ctx *ctx, lx_scene *sc, const scene__rec_design *r)
+lx_status lx__design_rec_grow(lx_scene *sc)
 {
     lx_scene_design *d = sc->design;
-    size_t n = sc->n_rec, i = n - 1;
+    size_t n = sc->n_rec;
     unsigned char *c = realloc(d->rec_cylinder, n * sizeof *c);
     if (c) d->rec_cylinder = c;
     double *f = c ? realloc(d->rec_facing, 3 * n * sizeof *f) : NULL;
     if (f) d->rec_facing = f;
-    if (!c || !f) return lx__error(ctx, LX_ENOMEM, sc->rec[i].file, sc->rec[i].line, "out of memory");
+    return c && f ? LX_OK : LX_ENOMEM;
+}
+
+lx_status lx__design_rec_finish(lx_ctx *ctx, lx_scene *sc, const scene__rec_design *r)
+{
+    lx_scene_design *d = sc->design;
+    size_t i = sc->n_rec - 1;
+    if (lx__design_rec_grow(sc) != LX_OK) return lx__error(ctx, LX_ENOMEM, sc->rec[i].file, sc->rec[i].line, "out of memory");
+    unsigned char *c = d->rec_cylinder;
+    double *f = d->rec_facing;
     c[i] = (unsigned char)r->cyl;
     f[3 * i] = r->has_facing ? r->facing[0] : 1, f[3 * i + 1] = r->has_facing ? r->facing[1] : 0, f[3 * i + 2] = 0;
     return LX_OK;
@@ -246,6 +260,8 @@ int lx__design_scene_key(lx_ctx *ctx, lx_scene *sc, const char *file, long line,
 int lx__design_section_kind(const char *kind)
 {
     if (!strcmp(kind, "maintenance")) return LX__DSEC_MAINT;
+    if (!strcmp(kind, "area")) return LX__DSEC_AREA;
+    if (!strcmp(kind, "requirement")) return LX__DSEC_REQ;
     return LX__DSEC_NONE;
 }
 
@@ -254,6 +270,8 @@ lx_status lx__design_open(lx_ctx *ctx, lx_scene *sc, int sec, const char *name, 
     lx_scene_design *d = sc->design;
     lx__design *in = d->internal;
     in->section = sec;
+    if (sec == LX__DSEC_AREA) return lx__area_open(ctx, sc, name, file, line);
+    if (sec == LX__DSEC_REQ) return lx__req_open(ctx, sc, name, file, line);
     if (sec != LX__DSEC_MAINT) return LX_OK;
     for (size_t i = 0; i < d->n_maint; i++)
         if (!strcmp(d->maint[i].name, name))
@@ -348,6 +366,8 @@ lx_status lx__design_key(lx_ctx *ctx, lx_scene *sc, const char *file, long line,
 {
     lx_scene_design *d = sc->design;
     lx__design *in = d->internal;
+    if (in->section == LX__DSEC_AREA) return lx__area_key(ctx, sc, file, line, key, value);
+    if (in->section == LX__DSEC_REQ) return lx__req_key(ctx, sc, file, line, key, value);
     lx_maintenance *m = &d->maint[d->n_maint - 1];
     lx__maint_raw *r = &in->maint[d->n_maint - 1];
     for (int k = 0; k < 4; k++)
@@ -460,5 +480,6 @@ lx_status lx__design_finish(lx_ctx *ctx, lx_scene *sc)
             any = 1;
     }
     d->maintained = any;
-    return LX_OK;
+    lx_status ast = lx__area_finish(ctx, sc);
+    return ast == LX_OK ? lx__req_finish(ctx, sc) : ast;
 }

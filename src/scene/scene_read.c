@@ -183,7 +183,8 @@ static lx_status open_section(reader *r, const char *file, long line, char *s, c
     if (k == 12)
         return lx__error(r->ctx, LX_EPARSE, file, line,
                          "unknown section [%s] (sections: scene, luminaire NAME, receiver NAME, sky, sun, observer NAME, "
-                         "output, effects, room NAME, surface NAME, obstruction NAME, opening NAME, maintenance NAME)",
+                         "output, effects, room NAME, surface NAME, obstruction NAME, opening NAME, maintenance NAME, "
+                         "area NAME, requirement NAME)",
                          kind);
     int room_kind = k == 8 ? SCENE__ROOM : k == 9 ? SCENE__SURFACE : k == 10 ? SCENE__OBSTRUCTION : 0;
     int named = !strcmp(kind, "luminaire") || !strcmp(kind, "receiver") || !strcmp(kind, "observer") || !strcmp(kind, "opening") ||

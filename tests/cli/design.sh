@@ -29,3 +29,15 @@ expect_field 1 semicylindrical_lx 5.20106648427 1e-10 "E_sz facing the source: 2
 expect_field 1 modelling 0.353677651315 1e-10 "modelling E_z / E_h = h / (pi 1.8)"
 run scene tests/data/design/cylinder.scene
 expect_out_match '^modelling_min +0\.354$' "table: modelling to 3 decimals"
+# the check against typed requirements: E_m met, U0 0.99 not
+run scene tests/data/design/check.scene --check
+expect_rc 0 "--check runs"
+expect_out_match '^office +desk +E_m +>= 50\.00 lx +60\.08 lx +pass$' "check line: E_m met"
+expect_out_match '^office +desk +U_0 +>= 0\.990 +0\.944 +FAIL$' "check line: U0 not met"
+expect_out_match '^checks: 1 of 2 pass; values maintained \(MF 0\.8\)$' "closing count and values"
+run scene tests/data/design/check.scene --check --format csv
+expect_out_match '^requirement,target,quantity,operation,comparison,required,value,unit,pass,reference,line$' "check csv header"
+expect_out_match '^office,desk,U_0,normal,at_least,0\.99,0\.[0-9]+,,fail,typed for the test,25$' "check csv row with its line"
+run scene tests/data/design/bad_req.scene --check
+expect_rc 2 "a requirement for a quantity not computed: input error"
+expect_err_match '^luxcalc: scene: tests/data/design/bad_req.scene:15: requirement .office.: cylindrical_illuminance is not computed' "names file and line"
