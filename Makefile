@@ -30,7 +30,7 @@ LIBS += -lOpenCL
 PKGS += pocl-opencl-icd ocl-icd-opencl-dev opencl-headers
 endif
 
-LAYERS := core tables spectral colour lighting radiance scene plot
+LAYERS := core tables spectral colour lighting radiance radiosity scene plot
 LIB_SRC := $(wildcard $(LAYERS:%=src/%/*.c))
 CLI_SRC := $(wildcard src/cli/*.c src/cli/bench/*.c)
 TEST_SRC := $(wildcard tests/test_*.c tests/hard_cases/test_*.c)
@@ -44,7 +44,7 @@ TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 
 # the test build of the library: the files that call OpenCL again with LX_FAULTS (OpenCL fault
 # injection, src/core/cl_faults.c), linked into test_faults and a CLI for tests/cli/faults.sh only
-CL_USERS := $(shell grep -l 'clCreateBuffer\|clEnqueue\|clBuildProgram\|clGetPlatformIDs\|clFinish' $(LIB_SRC)) src/core/cl_faults.c
+CL_USERS := $(shell grep -l 'clCreateBuffer\|clEnqueue\|clBuildProgram\|clGetPlatformIDs\|clFinish' $(LIB_SRC)) src/core/cl_faults.c src/core/alloc.c
 FAULT_OBJ := $(CL_USERS:src/%.c=$(BUILD)/obj-faults/%.o)
 FAULT_LIB := $(BUILD)/faults/libluxcalc.a
 FAULT_CLI := $(BUILD)/tests/luxcalc-faults

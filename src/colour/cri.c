@@ -40,7 +40,7 @@ lx_status lx__qgrid_make(lx_ctx *ctx, const lx_spd *spd, double start_nm, double
     if (!g->exact) {
         double step = cie15_step(spd);
         size_t n = (size_t)lround((end_nm - start_nm) / step) + 1;
-        g->lam = malloc(2 * n * sizeof *g->lam);
+        g->lam = lx__alloc_n(2 * n, sizeof *g->lam);
         if (!g->lam) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
         g->w = g->lam + n;
         for (size_t i = 0; i < n; i++) g->lam[i] = start_nm + (double)i * step, g->w[i] = step;
@@ -49,7 +49,7 @@ lx_status lx__qgrid_make(lx_ctx *ctx, const lx_spd *spd, double start_nm, double
     }
     /* the breakpoints: every whole nm of [start, end] and every sample of the data inside it */
     size_t nw = (size_t)lround(end_nm - start_nm) + 1, nb = 0;
-    double *bp = malloc((nw + spd->n) * sizeof *bp);
+    double *bp = lx__alloc_n(nw + spd->n, sizeof *bp);
     if (!bp) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t i = 0; i < nw; i++) bp[nb++] = start_nm + (double)i;
     for (size_t i = 0; i < spd->n; i++)
@@ -59,14 +59,14 @@ lx_status lx__qgrid_make(lx_ctx *ctx, const lx_spd *spd, double start_nm, double
     for (size_t i = 0; i < nb; i++)
         if (m == 0 || bp[i] > bp[m - 1]) bp[m++] = bp[i];
     if (m < 2) {
-        free(bp);
+        lx__free(bp);
         return lx__error(ctx, LX_EINVAL, NULL, 0, "an empty wavelength range (%g-%g nm)", start_nm, end_nm);
     }
     /* Simpson on each interval: nodes at the breakpoints (shared) and the midpoints */
     size_t n = 2 * m - 1;
-    g->lam = malloc(2 * n * sizeof *g->lam);
+    g->lam = lx__alloc_n(2 * n, sizeof *g->lam);
     if (!g->lam) {
-        free(bp);
+        lx__free(bp);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
     g->w = g->lam + n;
@@ -79,13 +79,13 @@ lx_status lx__qgrid_make(lx_ctx *ctx, const lx_spd *spd, double start_nm, double
     }
     g->lam[n - 1] = bp[m - 1];
     g->n = n;
-    free(bp);
+    lx__free(bp);
     return LX_OK;
 }
 
 void lx__qgrid_free(lx__qgrid *g)
 {
-    free(g->lam);
+    lx__free(g->lam);
     g->lam = g->w = NULL;
 }
 
@@ -127,7 +127,7 @@ static void cmf2_grid(const lx__qgrid *g, double *xyz)
 double lx__quality_outside(const double *ref, const lx__qgrid *g, double lo_nm, double hi_nm)
 {
     size_t n = g->n;
-    double *cmf = malloc(sizeof(double) * 3 * n);
+    double *cmf = lx__alloc_n(3 * n, sizeof(double));
     if (!cmf) return INFINITY;
     cmf2_grid(g, cmf);
     double worst = 0.0;
@@ -140,7 +140,7 @@ double lx__quality_outside(const double *ref, const lx__qgrid *g, double lo_nm, 
         }
         if (all > 0 && out / all > worst) worst = out / all;
     }
-    free(cmf);
+    lx__free(cmf);
     return worst;
 }
 
@@ -222,7 +222,7 @@ lx_status lx_cri_compute(lx_ctx *ctx, const lx_spd *spd, lx_cri *out)
     lx__qgrid g;
     if ((st = lx__qgrid_make(ctx, spd, CRI_START, CRI_END, &g)) != LX_OK) return st;
     size_t n = g.n;
-    double *buf = malloc(sizeof(double) * n * (3 + NTCS + 2));
+    double *buf = lx__alloc_n(n * (3 + NTCS + 2), sizeof(double));
     if (!buf) {
         lx__qgrid_free(&g);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "CRI: out of memory");
@@ -274,7 +274,7 @@ lx_status lx_cri_compute(lx_ctx *ctx, const lx_spd *spd, lx_cri *out)
     r.ra = sum / 8.0;
     *out = r;
 done:
-    free(buf);
+    lx__free(buf);
     lx__qgrid_free(&g);
     return st;
 }

@@ -169,7 +169,7 @@ lx_status lx_tm30_compute(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out)
     lx__qgrid g;
     if ((st = lx__qgrid_make(ctx, spd, TM_START, TM_END, &g)) != LX_OK) return st;
     size_t n = g.n;
-    double *buf = malloc(sizeof(double) * n * (NCES + 3 + 3 + 3 + 4));
+    double *buf = lx__alloc_n(n * (NCES + 3 + 3 + 3 + 4), sizeof(double));
     if (!buf) {
         lx__qgrid_free(&g);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "TM-30: out of memory");
@@ -206,7 +206,7 @@ lx_status lx_tm30_compute(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out)
         why = msg;
     }
     if (!why && (st = reference(ctx, T, &g, cmf2 + n, ref, tmp)) != LX_OK) {
-        free(buf);
+        lx__free(buf);
         lx__qgrid_free(&g);
         return st;
     }
@@ -221,7 +221,7 @@ lx_status lx_tm30_compute(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out)
         }
     }
     if (why) {
-        free(buf);
+        lx__free(buf);
         lx__qgrid_free(&g);
         return lx__error(ctx, LX_ERANGE, NULL, 0, "TM-30: %s", why);
     }
@@ -274,7 +274,7 @@ lx_status lx_tm30_compute(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out)
         }
         r.rg = 100.0 * area_t / area_r;
     }
-    free(buf);
+    lx__free(buf);
     lx__qgrid_free(&g);
     *out = r;
     return LX_OK;

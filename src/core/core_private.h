@@ -1,7 +1,7 @@
 /* core_private.h - the bottom layer's internals, shared by every library file (never installed):
- * the context layout and its per-layer slots, error recording and the log, physical constants,
- * text input (whole-file reader, line cursor, number parsing), threads, CPU-feature dispatch,
- * the CPU/OpenCL backend rule and the OpenCL runtime. Nothing here knows a higher layer. */
+ * memory (the lx__alloc family), the context layout and its per-layer slots, error recording and the
+ * log, physical constants, text input (whole-file reader, line cursor, number parsing), threads,
+ * CPU-feature dispatch, the CPU/OpenCL backend rule and the OpenCL runtime. Nothing here knows a higher layer. */
 #ifndef LX_CORE_PRIVATE_H
 #define LX_CORE_PRIVATE_H
 
@@ -15,6 +15,38 @@
 #include "core/limits.h"
 
 #define LX__ERRMSG_MAX 1024
+
+/* ---- memory (alloc.c) ----
+ * The library allocates only through these (tests/cli/alloc.sh checks): every size is checked for
+ * overflow (a product that does not fit in size_t, or anything from PTRDIFF_MAX up, fails as out of
+ * memory), a zero size gives a unique pointer, and failure is NULL; the caller turns it into
+ * LX_ENOMEM. Memory from any of them is freed with lx__free (also fine for memory from libc). In the
+ * test build (LX_FAULTS) the k-th allocation can be made to fail (tests/test_nomem.c). */
+void *lx__alloc(size_t size);
+/* n * size bytes (uninitialised); NULL when the product overflows. */
+void *lx__alloc_n(size_t n, size_t size);
+/* n * size bytes, zeroed. */
+void *lx__calloc(size_t n, size_t size);
+/* realloc: on failure p is untouched and still owned by the caller. */
+void *lx__realloc(void *p, size_t size);
+void *lx__realloc_n(void *p, size_t n, size_t size);
+/* size bytes aligned to align (a power of two; size is rounded up to a multiple of it). */
+void *lx__alloc_aligned(size_t align, size_t size);
+/* A copy of the string s (NULL without memory). */
+char *lx__strdup(const char *s);
+void lx__free(void *p);
+/* a * b, or SIZE_MAX when it overflows (which then fails to allocate): for sizes of three factors,
+ * lx__alloc_n(lx__size_mul(w, h), sizeof *p). */
+size_t lx__size_mul(size_t a, size_t b);
+#if defined(LX_FAULTS)
+/* The test build: counting restarts at 0; the k-th allocation from now fails (k = 0: none), and with
+ * persistent every one after it too. */
+void lx__alloc_fault_set(long k, int persistent);
+/* Allocations asked for since lx__alloc_fault_set; allocations not yet freed (lx__alloc calls that
+ * returned memory minus lx__free calls on non-NULL pointers), since the process started. */
+long lx__alloc_calls(void);
+long lx__alloc_live(void);
+#endif
 
 /* ---- the context ---- */
 

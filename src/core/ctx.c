@@ -27,7 +27,7 @@ const char *lx_strerror(lx_status status)
 lx_status lx_ctx_create(lx_ctx **out)
 {
     if (!out) return LX_EINVAL;
-    *out = calloc(1, sizeof **out);
+    *out = lx__calloc(1, sizeof **out);
     if (!*out) return LX_ENOMEM;
     (*out)->log_max = LX_LOG_WARN;
     (*out)->irr_method = LX_IRR_AUTO;
@@ -41,7 +41,7 @@ void lx_ctx_destroy(lx_ctx *ctx)
     if (ctx->cl_release) ctx->cl_release(ctx);
     for (int i = 0; i < LX__SLOT_COUNT; i++)
         if (ctx->slot[i].data && ctx->slot[i].free_fn) ctx->slot[i].free_fn(ctx->slot[i].data);
-    free(ctx);
+    lx__free(ctx);
 }
 
 void *lx__slot_get(const lx_ctx *ctx, lx__slot_id id) { return ctx ? ctx->slot[id].data : NULL; }
@@ -110,7 +110,7 @@ lx_status lx__check_reserved(lx_ctx *ctx, const char *what, const void *p, size_
     return LX_OK;
 }
 
-void lx_text_free(char *text) { free(text); }
+void lx_text_free(char *text) { lx__free(text); }
 
 void lx__log(lx_ctx *ctx, lx_log_level level, const char *fmt, ...)
 {

@@ -212,15 +212,15 @@ lx_status lx__read_stream(lx_ctx *ctx, const char *path, lx_input_kind kind, FIL
     size_t n = prefix_len < cap ? prefix_len : cap, checked = 0;
     int probed = 0;
     lx_status st = LX_OK;
-    char *buf = malloc(cap);
+    char *buf = lx__alloc(cap);
     if (buf && n) memcpy(buf, prefix, n);
     while (buf) {
         if (n == cap) {
             if (n > limit) break;
             size_t nc = cap > limit / 2 ? limit + 1 : 2 * cap;
-            char *nb = realloc(buf, nc);
+            char *nb = lx__realloc(buf, nc);
             if (!nb) {
-                free(buf);
+                lx__free(buf);
                 buf = NULL;
                 break;
             }
@@ -245,7 +245,7 @@ lx_status lx__read_stream(lx_ctx *ctx, const char *path, lx_input_kind kind, FIL
     else if (!st && (n > limit || prefix_len > limit)) st = too_large(ctx, path, kind, limit);
     else if (!st && ferror(fp)) st = lx__error(ctx, LX_EIO, path, 0, "read error: %s", strerror(errno));
     if (st != LX_OK) {
-        free(buf);
+        lx__free(buf);
         return st;
     }
     *text = buf;

@@ -25,13 +25,13 @@ lx_status lx__wfile_open(lx_ctx *ctx, const char *path, lx__wfile *w)
         return LX_OK;
     }
     size_t n = strlen(path);
-    w->tmp = malloc(n + 16);
+    w->tmp = lx__alloc(n + 16);
     if (!w->tmp) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     snprintf(w->tmp, n + 16, "%s.tmpXXXXXX", path);
     w->fd = mkstemp(w->tmp);
     if (w->fd < 0) {
         lx_status st = lx__error(ctx, LX_EIO, path, 0, "cannot create: %s", strerror(errno));
-        free(w->tmp);
+        lx__free(w->tmp);
         w->tmp = NULL;
         return st;
     }
@@ -69,7 +69,7 @@ lx_status lx__wfile_close(lx_ctx *ctx, lx__wfile *w, lx_status st)
         if (!st && rename(w->tmp, w->path) != 0)
             st = lx__error(ctx, LX_EIO, w->path, 0, "cannot rename into place: %s", strerror(errno));
         if (st) unlink(w->tmp);
-        free(w->tmp);
+        lx__free(w->tmp);
         w->tmp = NULL;
     }
     return st;
@@ -87,7 +87,7 @@ char *lx__date_today(void)
     struct tm tm;
     char buf[32];
     if (!gmtime_r(&t, &tm) || !strftime(buf, sizeof buf, "%Y-%m-%d", &tm)) snprintf(buf, sizeof buf, "unknown");
-    char *s = malloc(strlen(buf) + 1);
+    char *s = lx__alloc(strlen(buf) + 1);
     if (s) memcpy(s, buf, strlen(buf) + 1);
     return s;
 }

@@ -21,7 +21,7 @@ int lx__next_line(lx__lines *it, const char **s, const char **e)
 char *lx__strndup(const char *s, const char *e)
 {
     size_t n = (size_t)(e - s);
-    char *r = malloc(n + 1);
+    char *r = lx__alloc(n + 1);
     if (!r) return NULL;
     memcpy(r, s, n);
     r[n] = '\0';

@@ -457,14 +457,14 @@ static double slow_path(const char *s, const char *end, char point)
 {
     char small[128];
     size_t n = (size_t)(end - s);
-    char *buf = n < sizeof small ? small : malloc(n + 1);
+    char *buf = n < sizeof small ? small : lx__alloc(n + 1);
     if (!buf) return NAN;
     const char *lp = localeconv()->decimal_point;
     char dp = lp && lp[0] ? lp[0] : '.';
     for (size_t i = 0; i < n; i++) buf[i] = (s[i] == '.' || (point && s[i] == point)) ? dp : s[i];
     buf[n] = '\0';
     double d = strtod(buf, NULL);
-    if (buf != small) free(buf);
+    if (buf != small) lx__free(buf);
     return d;
 }
 

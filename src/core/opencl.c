@@ -53,8 +53,8 @@ static void cl_release(lx_ctx *ctx)
     if (cl->program) clReleaseProgram(cl->program);
     if (cl->queue) clReleaseCommandQueue(cl->queue);
     if (cl->context) clReleaseContext(cl->context);
-    free(cl->build_log);
-    free(cl);
+    lx__free(cl->build_log);
+    lx__free(cl);
     ctx->cl = NULL;
     ctx->cl_release = NULL;
 }
@@ -63,7 +63,7 @@ static void cl_release(lx_ctx *ctx)
 static lx_status cl_state(lx_ctx *ctx, lx__cl **out)
 {
     if (!ctx->cl) {
-        lx__cl *cl = calloc(1, sizeof *cl);
+        lx__cl *cl = lx__calloc(1, sizeof *cl);
         if (!cl) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
         cl->sel_platform = cl->sel_device = -1;
         cl->sel_type = LX_CL_AUTO;
@@ -187,7 +187,7 @@ lx_status lx_cl_devices(lx_ctx *ctx, lx_cl_device_info **out, size_t *n)
     *out = NULL;
     *n = 0;
     if (cnt == 0) return LX_OK;
-    lx_cl_device_info *r = malloc((size_t)cnt * sizeof *r);
+    lx_cl_device_info *r = lx__alloc_n((size_t)cnt, sizeof *r);
     if (!r) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     memcpy(r, infos, (size_t)cnt * sizeof *r);
     *out = r;
@@ -301,13 +301,13 @@ static lx_status build_program(lx_ctx *ctx, lx__cl *cl)
 {
     int n = lx__nkernel_sources;
     if (n == 0) return lx__error(ctx, LX_EUNSUPPORTED, NULL, 0, "no OpenCL kernels were embedded in this build");
-    const char **srcs = calloc((size_t)n, sizeof *srcs);
-    char **owned = calloc((size_t)n, sizeof *owned);
-    size_t *lens = calloc((size_t)n, sizeof *lens);
+    const char **srcs = lx__calloc((size_t)n, sizeof *srcs);
+    char **owned = lx__calloc((size_t)n, sizeof *owned);
+    size_t *lens = lx__calloc((size_t)n, sizeof *lens);
     if (!srcs || !owned || !lens) {
-        free(srcs);
-        free(owned);
-        free(lens);
+        lx__free(srcs);
+        lx__free(owned);
+        lx__free(lens);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
     const char *dir = getenv("LX_KERNEL_DIR");
@@ -339,8 +339,8 @@ static lx_status build_program(lx_ctx *ctx, lx__cl *cl)
         err = clBuildProgram(prog, 1, &cl->device, opts, NULL, NULL);
         size_t len = 0;
         clGetProgramBuildInfo(prog, cl->device, CL_PROGRAM_BUILD_LOG, 0, NULL, &len);
-        free(cl->build_log);
-        cl->build_log = malloc(len + 1);
+        lx__free(cl->build_log);
+        cl->build_log = lx__alloc(len + 1);
         if (cl->build_log) {
             cl->build_log[0] = 0;
             clGetProgramBuildInfo(prog, cl->device, CL_PROGRAM_BUILD_LOG, len, cl->build_log, NULL);
@@ -355,10 +355,10 @@ static lx_status build_program(lx_ctx *ctx, lx__cl *cl)
             prog = NULL;
         }
     }
-    for (int i = 0; i < n; i++) free(owned[i]);
-    free(owned);
-    free(srcs);
-    free(lens);
+    for (int i = 0; i < n; i++) lx__free(owned[i]);
+    lx__free(owned);
+    lx__free(srcs);
+    lx__free(lens);
     if (!st) cl->program = prog;
     return st;
 }
@@ -421,4 +421,4 @@ int lx_cl_ready(const lx_ctx *ctx)
 
 #endif /* LX_OPENCL */
 
-void lx_cl_devices_free(lx_cl_device_info *devices) { free(devices); }
+void lx_cl_devices_free(lx_cl_device_info *devices) { lx__free(devices); }

@@ -60,7 +60,7 @@ lx_status lx_plane_points(lx_ctx *ctx, const lx_plane *p, double **points, size_
     *points = NULL;
     if (p->na < 1 || p->nb < 1) return lx__error(ctx, LX_EINVAL, NULL, 0, "a plane needs at least 1 x 1 points");
     size_t cnt = p->na * p->nb;
-    double *v = malloc(cnt * 3 * sizeof *v);
+    double *v = lx__alloc_n(cnt * 3, sizeof *v);
     if (!v) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for %zu points", cnt);
     for (size_t j = 0; j < p->nb; j++) {
         double b = p->nb > 1 ? p->b0 + (p->b1 - p->b0) * (double)j / (double)(p->nb - 1) : p->b0;
@@ -75,7 +75,7 @@ lx_status lx_plane_points(lx_ctx *ctx, const lx_plane *p, double **points, size_
     return LX_OK;
 }
 
-void lx_plane_points_free(double *points) { free(points); }
+void lx_plane_points_free(double *points) { lx__free(points); }
 
 lx_status lx_grid_stats_compute(lx_ctx *ctx, const double *E, size_t n, lx_grid_stats *out)
 {
@@ -180,7 +180,7 @@ static float *build_table(const lx_luminaire *lum, int ns, int nq, int *cols, co
     int nc = nq > 0 ? 4 * nq + 1 : 1;
     /* an axial table's pairs follow its floats at the next 16-byte offset */
     size_t rows = 2 * (size_t)(ns + 1), at = (rows * sizeof(float) + 15) / 16 * 16;
-    float *t = malloc(nc == 1 ? at + 2 * rows * sizeof(double) : rows * (size_t)nc * sizeof *t);
+    float *t = lx__alloc(nc == 1 ? at + 2 * rows * sizeof(double) : rows * (size_t)nc * sizeof *t);
     if (!t) return NULL;
     for (int h = 0; h < 2; h++)
         for (int r = 0; r <= ns; r++)
@@ -437,13 +437,13 @@ static lx_status run_jobs(lx_ctx *ctx, const plum *pl, size_t m, const double *p
     job jobs[64];
     size_t n_area = 0;
     for (size_t k = 0; k < m; k++) n_area += pl[k].size_m > 0;
-    size_t *area = malloc((n_area ? n_area : 1) * sizeof *area);
+    size_t *area = lx__alloc_n(n_area ? n_area : 1, sizeof *area);
     size_t per = n_area ? n_area : 1;
-    lx__nf_probe *pr = malloc((size_t)T * per * sizeof *pr);
-    unsigned char *nf = malloc((size_t)T * per);
-    size_t *ord = malloc((size_t)T * per * sizeof *ord);
+    lx__nf_probe *pr = lx__alloc_n((size_t)T * per, sizeof *pr);
+    unsigned char *nf = lx__alloc((size_t)T * per);
+    size_t *ord = lx__alloc_n((size_t)T * per, sizeof *ord);
     if (!area || !pr || !nf || !ord) {
-        free(area), free(pr), free(nf), free(ord);
+        lx__free(area), lx__free(pr), lx__free(nf), lx__free(ord);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
     for (size_t k = 0, a = 0; k < m; k++)
@@ -473,7 +473,7 @@ static lx_status run_jobs(lx_ctx *ctx, const plum *pl, size_t m, const double *p
     if (unconv)
         lx__log(ctx, LX_LOG_INFO, "grid: %llu near-field pairs did not reach the tolerance %g at %d cells per side", unconv,
                 tol, LX__NEAR_MAX);
-    free(area), free(pr), free(nf), free(ord);
+    lx__free(area), lx__free(pr), lx__free(nf), lx__free(ord);
     return LX_OK;
 }
 
@@ -576,12 +576,12 @@ static lx_status grid_run_opencl(lx_ctx *ctx, const plum *pl, size_t m, float *c
                                  const double *points, size_t n, const double *normals, int shared_normal,
                                  const lx_grid_opts *o, double tol, double *E, lx_backend *used, int *use_cl)
 {
-    float *all = malloc(tables_n * sizeof *all);
+    float *all = lx__alloc_n(tables_n, sizeof *all);
     if (!all) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t i = 0; i < m; i++)
         if (own[i]) memcpy(all + pl[i].toff, own[i], 2 * (size_t)(pl[i].ns + 1) * (size_t)pl[i].cols * sizeof *all);
     lx_status st = lx__grid_opencl(ctx, pl, m, all, tables_n, points, n, normals, shared_normal, o->fp32, E);
-    free(all);
+    lx__free(all);
     if (st == LX_OK) {
         *used = LX_BACKEND_OPENCL;
     } else if (!lx__backend_fallback(ctx, "grid", o->backend, st)) {
@@ -661,10 +661,10 @@ lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, c
     double mf = 1, tol = 0;
     lx_status st = grid_check_opts(ctx, &o, normals, n, shared_normal, &mf, &tol);
     if (st) return st;
-    plum *pl = calloc(m ? m : 1, sizeof *pl);
+    plum *pl = lx__calloc(m ? m : 1, sizeof *pl);
     if (!pl) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
-    float **own = calloc(m ? m : 1, sizeof *own);
-    double *E = malloc((n ? n : 1) * sizeof *E);
+    float **own = lx__calloc(m ? m : 1, sizeof *own);
+    double *E = lx__alloc_n(n ? n : 1, sizeof *E);
     if (!own || !E) {
         st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
         goto out;
@@ -681,10 +681,10 @@ lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, c
 out:
     if (own)
         for (size_t i = 0; i < m; i++)
-            free(own[i]);
-    free(own);
-    free(pl);
-    free(E);
+            lx__free(own[i]);
+    lx__free(own);
+    lx__free(pl);
+    lx__free(E);
     return st;
 }
 
@@ -702,7 +702,7 @@ lx_status lx__grid_opencl(lx_ctx *ctx, const plum *pl, size_t m, const float *ta
     cl_kernel k = NULL;
     if ((st = lx__cl_kernel(ctx, cl, f64 ? "lx_grid_f64" : "lx_grid_f32", &k))) return st;
     size_t nn = shared ? 1 : n;
-    void *hp = malloc(3 * n * rs), *hn = malloc(3 * nn * rs), *hl = malloc(16 * m * rs), *he = malloc(n * rs);
+    void *hp = lx__alloc(3 * n * rs), *hn = lx__alloc(3 * nn * rs), *hl = lx__alloc(16 * m * rs), *he = lx__alloc(n * rs);
     cl_mem bp = NULL, bn = NULL, bl = NULL, bt = NULL, be = NULL;
     cl_int err = CL_SUCCESS;
     if (!hp || !hn || !hl || !he) {
@@ -768,10 +768,10 @@ out:
     if (bt) clReleaseMemObject(bt);
     if (be) clReleaseMemObject(be);
     if (k) clReleaseKernel(k);
-    free(hp);
-    free(hn);
-    free(hl);
-    free(he);
+    lx__free(hp);
+    lx__free(hn);
+    lx__free(hl);
+    lx__free(he);
     return st;
 }
 #endif

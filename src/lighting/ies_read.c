@@ -22,10 +22,10 @@ static int toks_push(toks *t, double v, long line)
 {
     if (t->n == t->cap) {
         size_t cap = t->cap ? 2 * t->cap : 1024;
-        double *nv = realloc(t->v, cap * sizeof *nv);
+        double *nv = lx__realloc_n(t->v, cap, sizeof *nv);
         if (!nv) return -1;
         t->v = nv;
-        long *nl = realloc(t->line, cap * sizeof *nl);
+        long *nl = lx__realloc_n(t->line, cap, sizeof *nl);
         if (!nl) return -1;
         t->line = nl;
         t->cap = cap;
@@ -114,7 +114,7 @@ static lx_status tilt_file(lx_ctx *ctx, const char *file, long line, const char 
     if (st) return lx__error(ctx, st, file, line, "TILT file '%s': %s", path, lx_ctx_errmsg(ctx));
     lx__lines it = {buf, buf + len, 0};
     st = tokenize(ctx, path, &it, t);
-    free(buf);
+    lx__free(buf);
     return st;
 }
 
@@ -132,8 +132,8 @@ static lx_status read_tilt(lx_ctx *ctx, const char *file, toks *t, long last, lx
                          "%ld numbers, the file has %zu (truncated table or a count that lies)", n, 2 * n, t->n - t->pos);
     lum->tilt_geometry = (int)g;
     lum->n_tilt = (size_t)n;
-    lum->tilt_deg = malloc((size_t)n * sizeof(double));
-    lum->tilt_factor = malloc((size_t)n * sizeof(double));
+    lum->tilt_deg = lx__alloc_n((size_t)n, sizeof(double));
+    lum->tilt_factor = lx__alloc_n((size_t)n, sizeof(double));
     if (!lum->tilt_deg || !lum->tilt_factor) return lx__error(ctx, LX_ENOMEM, file, last, "out of memory");
     for (long i = 0; i < n; i++) {
         if ((st = take(ctx, file, t, last, "the end of the TILT angles", &lum->tilt_deg[i]))) return st;
@@ -181,7 +181,7 @@ static int keyword(lx_luminaire *lum, const char *s, const char *e, char ***last
         return *dst ? 0 : -1;
     }
     size_t a = strlen(*dst), b = (size_t)(e - v);
-    char *n = realloc(*dst, a + b + 2);
+    char *n = lx__realloc(*dst, a + b + 2);
     if (!n) return -1;
     n[a] = ' ';
     memcpy(n + a + 1, v, b);
@@ -232,8 +232,8 @@ static lx_status tilt_line(lx_ctx *ctx, const char *file, long line, const char 
     toks tt = {0};
     lx_status st = tilt_file(ctx, file, line, name, &tt);
     if (!st) st = read_tilt(ctx, name, &tt, line, lum);
-    free(tt.v);
-    free(tt.line);
+    lx__free(tt.v);
+    lx__free(tt.line);
     return st;
 }
 
@@ -401,9 +401,9 @@ static lx_status read_table(lx_ctx *ctx, const char *file, toks *t, long last, d
                          "the file ends before the end of the candela table: %zu vertical x %zu horizontal angles "
                          "need %zu numbers, the file has %zu (truncated table or counts that lie)",
                          nv, nh, nv + nh + nv * nh, t->n - t->pos);
-    lum->v_deg = malloc(nv * sizeof(double));
-    lum->h_deg = malloc(nh * sizeof(double));
-    lum->cd = malloc(nv * nh * sizeof(double));
+    lum->v_deg = lx__alloc_n(nv, sizeof(double));
+    lum->h_deg = lx__alloc_n(nh, sizeof(double));
+    lum->cd = lx__alloc_n(nv * nh, sizeof(double));
     if (!lum->v_deg || !lum->h_deg || !lum->cd) return lx__error(ctx, LX_ENOMEM, file, last, "out of memory");
     lx_status st;
     *line_v = t->pos < t->n ? t->line[t->pos] : last;
@@ -451,8 +451,8 @@ lx_status lx__ies_read(lx_ctx *ctx, const char *file, const char *text, size_t l
     lx_status st = read_header(ctx, file, &it, lum, &tilt);
     if (!st && !tilt) st = lx__error(ctx, LX_EPARSE, file, it.line, "no TILT= line: not an IES LM-63 file");
     if (!st) st = read_numbers(ctx, file, &it, lum, &t);
-    free(t.v);
-    free(t.line);
+    lx__free(t.v);
+    lx__free(t.line);
     if (st) {
         lx_luminaire_free(lum);
         return st;

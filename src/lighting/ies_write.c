@@ -19,7 +19,7 @@ static void put(sbuf *b, const char *s, size_t n)
     if (b->n + n + 1 > b->cap) {
         size_t cap = b->cap ? b->cap : 4096;
         while (b->n + n + 1 > cap) cap *= 2;
-        char *np = realloc(b->p, cap);
+        char *np = lx__realloc(b->p, cap);
         if (!np) {
             b->err = 1;
             return;
@@ -128,7 +128,7 @@ lx_status lx_luminaire_write_ies(lx_ctx *ctx, const lx_luminaire *l, char **text
     kw(&b, "TEST", l->test && *l->test ? l->test : other);
     kw(&b, "TESTLAB", l->testlab && *l->testlab ? l->testlab : other);
     kw(&b, "ISSUEDATE", l->issuedate && *l->issuedate ? l->issuedate : today ? today : "unknown");
-    free(today);
+    lx__free(today);
     kw(&b, "MANUFAC", l->manufacturer && *l->manufacturer ? l->manufacturer : other);
     kw(&b, "LUMCAT", l->catalog);
     kw(&b, "LUMINAIRE", l->description);
@@ -137,7 +137,7 @@ lx_status lx_luminaire_write_ies(lx_ctx *ctx, const lx_luminaire *l, char **text
         sbuf nb = {0};
         num(&nb, l->stated_lumens);
         kw(&b, "_ABSOLUTELUMENS", nb.p);
-        free(nb.p);
+        lx__free(nb.p);
     }
     if (strcmp(src, "(model)")) {
         snprintf(other, sizeof other, "written by luxcalc %s from %s (%s); candela values are absolute (multiplier and "
@@ -185,7 +185,7 @@ lx_status lx_luminaire_write_ies(lx_ctx *ctx, const lx_luminaire *l, char **text
     }
     for (size_t i = 0; i < nh; i++) list(&b, l->cd + (i < l->n_h ? i : 0) * l->n_v, l->n_v, 1);
     if (b.err) {
-        free(b.p);
+        lx__free(b.p);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
     *text = b.p;

@@ -56,7 +56,7 @@ static lx_status text(lx_ctx *ctx, ldt *r, const char *what, char **out)
     lx_status st = next(ctx, r, what);
     if (st) return st;
     if (out) {
-        free(*out);
+        lx__free(*out);
         *out = lx__strndup(r->s, r->e);
         if (!*out) return lx__error(ctx, LX_ENOMEM, r->file, r->it.line, "out of memory");
     }
@@ -268,17 +268,17 @@ static lx_status check_trailing(lx_ctx *ctx, ldt *r, long count, long ng)
 static lx_status read_table(lx_ctx *ctx, ldt *r, lx_luminaire *l, const ldt_head *h)
 {
     long first = 0, count = 0, cline = 0, gline = 0, ng = h->ng;
-    double *c = malloc((size_t)h->mc * sizeof *c);
-    double *g = malloc((size_t)ng * sizeof *g);
+    double *c = lx__alloc_n((size_t)h->mc, sizeof *c);
+    double *g = lx__alloc_n((size_t)ng, sizeof *g);
     lx_status st = !c || !g ? nomem(ctx, r) : read_angles(ctx, r, h, c, g, &cline, &gline);
     if (!st) st = stored_planes(ctx, r, h, &first, &count);
     if (!st) st = check_lines_left(ctx, r, count, ng);
     if (!st) {
         l->n_h = (size_t)count;
         l->n_v = (size_t)ng;
-        l->h_deg = malloc(l->n_h * sizeof(double));
-        l->v_deg = malloc(l->n_v * sizeof(double));
-        l->cd = malloc(l->n_h * l->n_v * sizeof(double));
+        l->h_deg = lx__alloc_n(l->n_h, sizeof(double));
+        l->v_deg = lx__alloc_n(l->n_v, sizeof(double));
+        l->cd = lx__alloc_n(l->n_h * l->n_v, sizeof(double));
         if (!l->h_deg || !l->v_deg || !l->cd) st = nomem(ctx, r);
     }
     if (!st) {
@@ -289,8 +289,8 @@ static lx_status read_table(lx_ctx *ctx, ldt *r, lx_luminaire *l, const ldt_head
         if (!st) st = check_trailing(ctx, r, count, ng);
         if (!st) st = lx__lum_finish(ctx, l, cline, gline, cdline);
     }
-    free(c);
-    free(g);
+    lx__free(c);
+    lx__free(g);
     return st;
 }
 

@@ -39,11 +39,11 @@ const char *lx_lum_symmetry_name(lx_lum_symmetry s)
 
 lx_luminaire *lx__lum_new(const char *file)
 {
-    lx_luminaire *l = calloc(1, sizeof *l);
+    lx_luminaire *l = lx__calloc(1, sizeof *l);
     if (!l) return NULL;
-    l->file = strdup(file ? file : "");
+    l->file = lx__strdup(file ? file : "");
     if (!l->file) {
-        free(l);
+        lx__free(l);
         return NULL;
     }
     l->lamp_lumens = l->stated_lumens = l->input_watts = NAN;
@@ -55,23 +55,23 @@ lx_luminaire *lx__lum_new(const char *file)
 void lx_luminaire_free(lx_luminaire *l)
 {
     if (!l) return;
-    free(l->file);
-    free(l->h_deg);
-    free(l->v_deg);
-    free(l->cd);
-    free(l->c_deg);
-    free(l->g_deg);
-    free(l->full_cd);
-    free(l->tilt_deg);
-    free(l->tilt_factor);
-    free(l->manufacturer);
-    free(l->catalog);
-    free(l->description);
-    free(l->test);
-    free(l->testlab);
-    free(l->issuedate);
-    free(l->lamp);
-    free(l);
+    lx__free(l->file);
+    lx__free(l->h_deg);
+    lx__free(l->v_deg);
+    lx__free(l->cd);
+    lx__free(l->c_deg);
+    lx__free(l->g_deg);
+    lx__free(l->full_cd);
+    lx__free(l->tilt_deg);
+    lx__free(l->tilt_factor);
+    lx__free(l->manufacturer);
+    lx__free(l->catalog);
+    lx__free(l->description);
+    lx__free(l->test);
+    lx__free(l->testlab);
+    lx__free(l->issuedate);
+    lx__free(l->lamp);
+    lx__free(l);
 }
 
 /* ---- reading ---- */
@@ -164,7 +164,7 @@ lx_status lx_luminaire_read_file(lx_ctx *ctx, const char *path, lx_luminaire **o
     lx_status st = lx__read_all(ctx, path, LX_INPUT_LUMINAIRE, &buf, &len);
     if (st != LX_OK) return st;
     st = lx_luminaire_read_mem(ctx, path, buf, len, out);
-    free(buf);
+    lx__free(buf);
     return st;
 }
 
@@ -221,8 +221,8 @@ lx_status lx__lum_finish(lx_ctx *ctx, lx_luminaire *l, long line_h, long line_v,
         else
             return lx__error(ctx, LX_EPARSE, f, line_h,
                              "incomplete horizontal angle set %g..%g (expected 0, 0-90, 0-180, 90-270 or 0-360)", h0, h1);
-        ci = malloc((4 * nh + 2) * sizeof *ci);
-        gi = malloc(nv * sizeof *gi);
+        ci = lx__alloc_n(4 * nh + 2, sizeof *ci);
+        gi = lx__alloc_n(nv, sizeof *gi);
         if (!ci || !gi) goto nomem;
         for (size_t j = 0; j < nv; j++) gi[ng++] = (img){l->v_deg[j], j};
         for (size_t i = 0; i < nh; i++) {
@@ -256,8 +256,8 @@ lx_status lx__lum_finish(lx_ctx *ctx, lx_luminaire *l, long line_h, long line_v,
         if (!(v0 >= -180 - ANG_EPS && v1 <= 180 + ANG_EPS) || nv < 2 || !(near(v0, 0) || v0 < 0))
             return lx__error(ctx, LX_EPARSE, f, line_v, "incomplete vertical angle set %g..%g (type B needs -90 or 0 to 90)", v0, v1);
         l->symmetry = near(h0, 0) ? LX_SYM_B_LATERAL : LX_SYM_NONE;
-        ci = malloc(2 * nh * sizeof *ci);
-        gi = malloc(2 * nv * sizeof *gi);
+        ci = lx__alloc_n(2 * nh, sizeof *ci);
+        gi = lx__alloc_n(2 * nv, sizeof *gi);
         if (!ci || !gi) goto nomem;
         for (size_t i = 0; i < nh; i++) {
             ci[nc++] = (img){l->h_deg[i], i};
@@ -272,20 +272,20 @@ lx_status lx__lum_finish(lx_ctx *ctx, lx_luminaire *l, long line_h, long line_v,
     ng = img_unique(gi, ng);
     l->n_c = nc;
     l->n_g = ng;
-    l->c_deg = malloc(nc * sizeof(double));
-    l->g_deg = malloc(ng * sizeof(double));
-    l->full_cd = malloc(nc * ng * sizeof(double));
+    l->c_deg = lx__alloc_n(nc, sizeof(double));
+    l->g_deg = lx__alloc_n(ng, sizeof(double));
+    l->full_cd = lx__alloc_n(nc * ng, sizeof(double));
     if (!l->c_deg || !l->g_deg || !l->full_cd) goto nomem;
     for (size_t i = 0; i < nc; i++) l->c_deg[i] = ci[i].ang;
     for (size_t j = 0; j < ng; j++) l->g_deg[j] = gi[j].ang;
     for (size_t i = 0; i < nc; i++)
         for (size_t j = 0; j < ng; j++) l->full_cd[i * ng + j] = l->cd[ci[i].src * nv + gi[j].src];
-    free(ci);
-    free(gi);
+    lx__free(ci);
+    lx__free(gi);
     return LX_OK;
 nomem:
-    free(ci);
-    free(gi);
+    lx__free(ci);
+    lx__free(gi);
     return lx__error(ctx, LX_ENOMEM, f, 0, "out of memory");
 }
 
@@ -549,13 +549,13 @@ lx_status lx_luminaire_summary(lx_ctx *ctx, const lx_luminaire *l, lx_lum_summar
         int e = 0;
         frexp(peak, &e);
         lx_luminaire scaled = *l;
-        double *cd = malloc(l->n_c * l->n_g * sizeof *cd);
+        double *cd = lx__alloc_n(l->n_c * l->n_g, sizeof *cd);
         if (!cd) return lx__error(ctx, LX_ENOMEM, l->file, 0, "out of memory");
         for (size_t k = 0; k < l->n_c * l->n_g; k++) cd[k] = ldexp(l->full_cd[k], -e);
         scaled.full_cd = cd;
         s.lumens = ldexp(tf * integrate(&scaled, -1e9, 1e9), e);
         if (l->photometric_type == 1) down = ldexp(tf * integrate(&scaled, -1e9, 90), e);
-        free(cd);
+        lx__free(cd);
     }
     if (!isfinite(s.lumens)) {
         char mb[48];
@@ -623,21 +623,21 @@ lx_status lx_luminaire_from_model(lx_ctx *ctx, const lx_lum_model *m, lx_luminai
     l->format = LX_LUM_LM63_2002;
     l->n_h = 1;
     l->n_v = n;
-    l->h_deg = calloc(1, sizeof(double));
-    l->v_deg = malloc(n * sizeof(double));
-    l->cd = malloc(n * sizeof(double));
+    l->h_deg = lx__calloc(1, sizeof(double));
+    l->v_deg = lx__alloc_n(n, sizeof(double));
+    l->cd = lx__alloc_n(n, sizeof(double));
     const char *what = m->kind == LX_LUM_MODEL_POINT ? "isotropic point source" : m->kind == LX_LUM_MODEL_WARN ? "Warn spotlight" : "Lambertian panel";
     char desc[160];
     if (m->kind == LX_LUM_MODEL_WARN)
         snprintf(desc, sizeof desc, "%s, exponent %.17g, %.17g lm (analytic model sampled by luxcalc)", what, m->exponent, m->flux_lm);
     else
         snprintf(desc, sizeof desc, "%s, %.17g lm (analytic model sampled by luxcalc)", what, m->flux_lm);
-    l->description = strdup(desc);
-    l->catalog = strdup(m->catalog ? m->catalog : what);
-    l->manufacturer = strdup("luxcalc (an analytic model, no manufacturer)");
-    l->test = strdup("computed by luxcalc " LX_VERSION_STRING " from an analytic model (not a measurement)");
-    l->testlab = strdup("none: an analytic model, not a measurement");
-    l->lamp = strdup(what);
+    l->description = lx__strdup(desc);
+    l->catalog = lx__strdup(m->catalog ? m->catalog : what);
+    l->manufacturer = lx__strdup("luxcalc (an analytic model, no manufacturer)");
+    l->test = lx__strdup("computed by luxcalc " LX_VERSION_STRING " from an analytic model (not a measurement)");
+    l->testlab = lx__strdup("none: an analytic model, not a measurement");
+    l->lamp = lx__strdup(what);
     l->issuedate = lx__date_today();
     if (!l->h_deg || !l->v_deg || !l->cd || !l->description || !l->catalog || !l->manufacturer || !l->test ||
         !l->testlab || !l->lamp || !l->issuedate) {

@@ -143,7 +143,7 @@ lx_status lx__error_time_png(lx_ctx *ctx, const char *path, const char *title, c
     if (title) lx__page_text(&pg, &ft, x0, 16, 0, 0, LX__TEXT_TITLE, NAN, title);
     if (x_title) lx__page_text(&pg, &fa, 0.5 * (x0 + x1), y1 + 32, 0.5, 0, LX__TEXT_AXIS, NAN, x_title);
     if (y_title) lx__page_text_up(&pg, &fa, 18, 0.5 * (y0 + y1), LX__TEXT_AXIS, y_title);
-    double (*xy)[2] = malloc(n * sizeof *xy);
+    double (*xy)[2] = lx__alloc_n(n, sizeof *xy);
     if (!xy) {
         lx__page_free(&pg);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
@@ -164,7 +164,7 @@ lx_status lx__error_time_png(lx_ctx *ctx, const char *path, const char *title, c
         int s = pts[k].series < 0 ? 0 : pts[k].series;
         if (*lab) place_label(&pg, area, xy[k][0], xy[k][1], lab, COLORS[s % 8]);
     }
-    free(xy);
+    lx__free(xy);
     for (int s = 0; s < n_series && series_names; s++) {
         double ly = y0 + 12 + 24 * s;
         marker(cr, x1 + 22, ly, s, COLORS[s % 8]);

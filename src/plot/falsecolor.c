@@ -28,7 +28,7 @@ static int cmp_double(const void *a, const void *b)
 static double low_positive(const double *v, size_t n)
 {
     size_t m = 0;
-    double *p = malloc((n ? n : 1) * sizeof *p), lo = INFINITY;
+    double *p = lx__alloc_n(n ? n : 1, sizeof *p), lo = INFINITY;
     for (size_t i = 0; i < n; i++)
         if (isfinite(v[i]) && v[i] > 0) {
             if (p) p[m++] = v[i];
@@ -38,7 +38,7 @@ static double low_positive(const double *v, size_t n)
         qsort(p, m, sizeof *p, cmp_double);
         lo = p[m / 100];
     }
-    free(p);
+    lx__free(p);
     return lo;
 }
 

@@ -82,13 +82,13 @@ static lx_status draw_field(lx_ctx *ctx, lx__page *pg, const iso *g)
     const lx__box F = g->field;
     int w = (int)lround(F.x1 - F.x0), h = (int)lround(F.y1 - F.y0);
     if (w < 1 || h < 1) return LX_OK;
-    double *img = malloc(sizeof(double) * (size_t)w * (size_t)h);
+    double *img = lx__alloc_n((size_t)w * (size_t)h, sizeof(double));
     if (!img) return lx__error(ctx, LX_ENOMEM, NULL, 0, "grid plot: out of memory");
     for (int y = 0; y < h; y++)
         for (int x = 0; x < w; x++)
             img[(size_t)y * w + x] = value_at(g, da_of(g, F.x0 + x + 0.5), db_of(g, F.y0 + y + 0.5));
     lx_status st = lx__page_map(ctx, pg, F, img, w, h, &g->scale);
-    free(img);
+    lx__free(img);
     return st;
 }
 
@@ -104,7 +104,7 @@ static void seg_add(void *arg, double x0, double y0, double x1, double y1)
     seg_list *s = arg;
     if (s->n == s->cap) {
         size_t cap = s->cap ? 2 * s->cap : 1024;
-        double *nx = realloc(s->xy, cap * 4 * sizeof *nx);
+        double *nx = lx__realloc_n(s->xy, cap * 4, sizeof *nx);
         if (!nx) {
             s->oom = 1;
             return;
@@ -122,7 +122,7 @@ static lx_status contours(lx_ctx *ctx, lx__page *pg, const iso *g, seg_list *seg
     const double step = 2;
     const lx__box F = g->field;
     int gw = (int)floor((F.x1 - F.x0) / step) + 1, gh = (int)floor((F.y1 - F.y0) / step) + 1;
-    double *v = malloc(sizeof(double) * (size_t)gw * (size_t)gh);
+    double *v = lx__alloc_n((size_t)gw * (size_t)gh, sizeof(double));
     if (!v) return lx__error(ctx, LX_ENOMEM, NULL, 0, "grid plot: out of memory");
     for (int j = 0; j < gh; j++)
         for (int i = 0; i < gw; i++)
@@ -132,7 +132,7 @@ static lx_status contours(lx_ctx *ctx, lx__page *pg, const iso *g, seg_list *seg
         segs[k] = (seg_list){.ox = F.x0, .oy = F.y0, .step = step};
         lx__contour(v, gw, gh, g->level[k], seg_add, &segs[k]);
         if (segs[k].oom) {
-            free(v);
+            lx__free(v);
             return lx__error(ctx, LX_ENOMEM, NULL, 0, "grid plot: out of memory");
         }
         unsigned char c[3];
@@ -154,7 +154,7 @@ static lx_status contours(lx_ctx *ctx, lx__page *pg, const iso *g, seg_list *seg
         pg->lay.level_segments[k] = segs[k].n;
     }
     pg->lay.n_levels = g->nlev;
-    free(v);
+    lx__free(v);
     return LX_OK;
 }
 
@@ -414,7 +414,7 @@ static void stat(lx__page *pg, double x, double y, const char *what, double valu
     lx__layout *L = &pg->lay;
     if (L->n_label == L->cap_label) {
         size_t cap = L->cap_label ? 2 * L->cap_label : 64;
-        lx__label *nl = realloc(L->label, cap * sizeof *nl);
+        lx__label *nl = lx__realloc_n(L->label, cap, sizeof *nl);
         if (!nl) {
             pg->oom = 1;
             return;
@@ -467,12 +467,12 @@ static lx_status setup(lx_ctx *ctx, iso *g, const lx_plane *p, const double *E_l
     g->eunit = o->imperial ? "fc" : "lx";
     g->white = o->background == LX_ISOLUX_WHITE;
     size_t n = p->na * p->nb;
-    double *E = malloc(n * sizeof *E);
+    double *E = lx__alloc_n(n, sizeof *E);
     if (!E) return lx__error(ctx, LX_ENOMEM, NULL, 0, "grid plot: out of memory");
     double mn = INFINITY, mx = -INFINITY;
     for (size_t i = 0; i < n; i++) {
         if (!isfinite(E_lx[i])) {
-            free(E);
+            lx__free(E);
             return lx__error(ctx, LX_EINVAL, NULL, 0, "grid plot: value %zu is not finite", i);
         }
         E[i] = o->imperial ? E_lx[i] / LX_PER_FC : E_lx[i];
@@ -571,10 +571,10 @@ lx_status lx__isolux_png(lx_ctx *ctx, const char *path, const lx_plane *p, const
     st = lx__page_write_png(ctx, &pg, path);
     if (!st && out) lx__page_take_layout(&pg, out);
 done:
-    for (int k = 0; k < LX__MAX_LEVELS; k++) free(segs[k].xy);
+    for (int k = 0; k < LX__MAX_LEVELS; k++) lx__free(segs[k].xy);
     lx__page_free(&pg);
 fail:
-    free(E);
+    lx__free(E);
     return st;
 }
 

@@ -19,14 +19,14 @@ static int cmp_double(const void *a, const void *b)
 /* min, median and max of the finite values ("min 0 - median 89.5 - max 179 cd/m²") */
 static lx_status summary(lx_ctx *ctx, const double *v, size_t n, const char *unit, char *buf, size_t cap)
 {
-    double *s = malloc((n ? n : 1) * sizeof *s);
+    double *s = lx__alloc_n(n ? n : 1, sizeof *s);
     if (!s) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     size_t m = 0;
     for (size_t i = 0; i < n; i++)
         if (isfinite(v[i])) s[m++] = v[i];
     if (!m) {
         snprintf(buf, cap, "no finite values");
-        free(s);
+        lx__free(s);
         return LX_OK;
     }
     qsort(s, m, sizeof *s, cmp_double);
@@ -35,7 +35,7 @@ static lx_status summary(lx_ctx *ctx, const double *v, size_t n, const char *uni
     lx__fmt_sig(b, sizeof b, m % 2 ? s[m / 2] : 0.5 * (s[m / 2 - 1] + s[m / 2]), 4);
     lx__fmt_sig(c, sizeof c, s[m - 1], 4);
     snprintf(buf, cap, "min %s  \u00b7  median %s  \u00b7  max %s%s%s", a, b, c, unit && *unit ? " " : "", unit ? unit : "");
-    free(s);
+    lx__free(s);
     return LX_OK;
 }
 
@@ -128,7 +128,7 @@ lx_status lx__irradiance_png(lx_ctx *ctx, const char *path, const lx_envmap *rad
     if (!path || !rad || !irr || !rad->data || !irr->data)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "irradiance preview: NULL argument");
     size_t n = (size_t)irr->width * irr->height;
-    double *E = malloc(n * sizeof *E);
+    double *E = lx__alloc_n(n, sizeof *E);
     if (!E) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t p = 0; p < n; p++) {
         const float *q = irr->data + p * irr->channels;
@@ -141,7 +141,7 @@ lx_status lx__irradiance_png(lx_ctx *ctx, const char *path, const lx_envmap *rad
     lx__page pg;
     lx_status st = lx__page_init(ctx, &pg, m + pw + m + pw + 20 + legend_w + m, 50 + lab + body + m, WHITE);
     if (st) {
-        free(E);
+        lx__free(E);
         return st;
     }
     const lx__font ft = {16, 1, {20, 20, 20}, 0}, f = {13, 0, {20, 20, 20}, 0}, fc = {12, 0, {90, 90, 90}, 0};
@@ -164,7 +164,7 @@ lx_status lx__irradiance_png(lx_ctx *ctx, const char *path, const lx_envmap *rad
     if (!st) st = lx__page_write_png(ctx, &pg, path);
     if (!st && out) lx__page_take_layout(&pg, out);
     lx__page_free(&pg);
-    free(E);
+    lx__free(E);
     return st;
 }
 

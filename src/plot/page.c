@@ -12,8 +12,8 @@
 void lx__layout_free(lx__layout *lay)
 {
     if (!lay) return;
-    free(lay->label);
-    free(lay->keep);
+    lx__free(lay->label);
+    lx__free(lay->keep);
     memset(lay, 0, sizeof *lay);
 }
 
@@ -129,7 +129,7 @@ static void record(lx__page *pg, lx__box b, int role, double value, const char *
     lx__layout *L = &pg->lay;
     if (L->n_label == L->cap_label) {
         size_t cap = L->cap_label ? 2 * L->cap_label : 64;
-        lx__label *nl = realloc(L->label, cap * sizeof *nl);
+        lx__label *nl = lx__realloc_n(L->label, cap, sizeof *nl);
         if (!nl) {
             pg->oom = 1;
             return;
@@ -215,7 +215,7 @@ void lx__page_keep(lx__page *pg, lx__box b)
     lx__layout *L = &pg->lay;
     if (L->n_keep == L->cap_keep) {
         size_t cap = L->cap_keep ? 2 * L->cap_keep : 32;
-        lx__box *nk = realloc(L->keep, cap * sizeof *nk);
+        lx__box *nk = lx__realloc_n(L->keep, cap, sizeof *nk);
         if (!nk) {
             pg->oom = 1;
             return;

@@ -250,7 +250,7 @@ lx_status lx__report_png(lx_ctx *ctx, const lx_spd *spd, const lx_report_opts *o
         return lx__error(ctx, LX_EINVAL, NULL, 0, "spectrum report: unknown diagram %d", (int)o.diagram);
     lx_status st = lx_spd_check(ctx, spd);
     if (st) return st;
-    lx__report *r = calloc(1, sizeof *r);
+    lx__report *r = lx__calloc(1, sizeof *r);
     if (!r) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     r->obs = o.observer;
     r->diagram = o.diagram;
@@ -285,7 +285,7 @@ lx_status lx__report_png(lx_ctx *ctx, const lx_spd *spd, const lx_report_opts *o
 page:
     lx__page_free(&pg);
 out:
-    free(r);
+    lx__free(r);
     return st;
 }
 

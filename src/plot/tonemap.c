@@ -23,7 +23,7 @@ lx_status lx__page_tonemap(lx_ctx *ctx, lx__page *pg, lx__box box, const float *
 {
     /* exposure from the median luminance of (at most 4096) samples, mapped to middle grey 0.18 */
     size_t n = (size_t)vw * vh, step = n > 4096 ? n / 4096 : 1, m = 0;
-    double *s = malloc((n / step + 1) * sizeof *s);
+    double *s = lx__alloc_n(n / step + 1, sizeof *s);
     if (!s) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t p = 0; p < n; p += step) {
         const float *q = v + p * channels;
@@ -31,7 +31,7 @@ lx_status lx__page_tonemap(lx_ctx *ctx, lx__page *pg, lx__box box, const float *
     }
     qsort(s, m, sizeof *s, cmp_double);
     double key = s[m / 2], k = key > 0 ? 0.18 / key : 1;
-    free(s);
+    lx__free(s);
     cairo_surface_t *img = cairo_image_surface_create(CAIRO_FORMAT_RGB24, vw, vh);
     if (cairo_surface_status(img) != CAIRO_STATUS_SUCCESS) {
         cairo_surface_destroy(img);

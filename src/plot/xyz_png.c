@@ -11,7 +11,7 @@ lx_status lx_xyz_image_write_png(lx_ctx *ctx, const char *path, const lx_xyz_ima
     /* XYZ -> linear sRGB (IEC 61966-2-1); lx__page_tonemap does exposure, tone curve, encoding */
     static const double M[3][3] = {{3.2406, -1.5372, -0.4986}, {-0.9689, 1.8758, 0.0415}, {0.0557, -0.2040, 1.0570}};
     size_t npix = (size_t)img->width * img->height;
-    float *rgb = malloc(sizeof(float) * 3 * npix);
+    float *rgb = lx__alloc_n(3 * npix, sizeof(float));
     if (!rgb) return lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
     for (size_t p = 0; p < npix; p++)
         for (int i = 0; i < 3; i++) {
@@ -33,6 +33,6 @@ lx_status lx_xyz_image_write_png(lx_ctx *ctx, const char *path, const lx_xyz_ima
     if (!st) st = lx__page_tonemap(ctx, &pg, (lx__box){0, 0, w, h}, rgb, 3, img->width, img->height);
     if (!st) st = lx__page_write_png(ctx, &pg, path);
     lx__page_free(&pg);
-    free(rgb);
+    lx__free(rgb);
     return st;
 }

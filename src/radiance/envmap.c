@@ -48,10 +48,10 @@ lx_status lx_envmap_create(lx_ctx *ctx, int width, int height, int channels, lx_
     *out = NULL;
     if (width < 1 || height < 1 || (channels != 1 && channels != 3) || (double)width * height > 1e9)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "invalid map size %dx%d with %d channels", width, height, channels);
-    lx_envmap *m = calloc(1, sizeof *m);
-    if (m) m->data = calloc((size_t)width * height * channels, sizeof *m->data);
+    lx_envmap *m = lx__calloc(1, sizeof *m);
+    if (m) m->data = lx__calloc((size_t)width * height * channels, sizeof *m->data);
     if (!m || !m->data) {
-        free(m);
+        lx__free(m);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for a %dx%d map", width, height);
     }
     m->width = width;
@@ -68,8 +68,8 @@ lx_status lx_envmap_create(lx_ctx *ctx, int width, int height, int channels, lx_
 void lx_envmap_free(lx_envmap *map)
 {
     if (!map) return;
-    free(map->data);
-    free(map);
+    lx__free(map->data);
+    lx__free(map);
 }
 
 void lx_envmap_direction(int width, int height, double row, double col, double dir[3])
@@ -119,8 +119,8 @@ lx_status lx__llgeom_init(lx_ctx *ctx, lx__llgeom *g, int w, int h)
     g->w = w;
     g->h = h;
     g->dphi = 2 * LX__PI / w;
-    g->row_sr = malloc(3 * (size_t)h * sizeof(double));
-    g->col_gx = malloc(2 * (size_t)w * sizeof(double));
+    g->row_sr = lx__alloc_n(3 * (size_t)h, sizeof(double));
+    g->col_gx = lx__alloc_n(2 * (size_t)w, sizeof(double));
     if (!g->row_sr || !g->col_gx) {
         lx__llgeom_free(g);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
@@ -135,8 +135,8 @@ lx_status lx__llgeom_init(lx_ctx *ctx, lx__llgeom *g, int w, int h)
 
 void lx__llgeom_free(lx__llgeom *g)
 {
-    free(g->row_sr);
-    free(g->col_gx);
+    lx__free(g->row_sr);
+    lx__free(g->col_gx);
     memset(g, 0, sizeof *g);
 }
 
@@ -174,7 +174,7 @@ lx_status lx_envmap_downsample(lx_ctx *ctx, const lx_envmap *in, int width, int 
     m->lum_per_unit = in->lum_per_unit;
     m->irradiance = in->irradiance;
     int fx = in->width / width, fy = in->height / height, C = in->channels;
-    double *acc = calloc((size_t)width * C, sizeof *acc);
+    double *acc = lx__calloc((size_t)width * C, sizeof *acc);
     if (!acc) {
         lx_envmap_free(m);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
@@ -193,7 +193,7 @@ lx_status lx_envmap_downsample(lx_ctx *ctx, const lx_envmap *in, int width, int 
             for (int c = 0; c < C; c++)
                 m->data[((size_t)J * width + I) * C + c] = (float)(acc[I * C + c] / (wsum * fx));
     }
-    free(acc);
+    lx__free(acc);
     *out = m;
     return LX_OK;
 }

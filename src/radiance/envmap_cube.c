@@ -132,11 +132,11 @@ void lx_envmap_texel_direction(const lx_envmap *map, int row, int col, double di
 
 double *lx__cube_table(int n)
 {
-    double *t = malloc((size_t)n * n * LX__CUBE_NT * sizeof *t);
-    double *c0 = malloc((size_t)(n + 1) * 7 * 2 * sizeof *c0);
+    double *t = lx__alloc_n((size_t)n * n * LX__CUBE_NT, sizeof *t);
+    double *c0 = lx__alloc_n((size_t)(n + 1) * 7 * 2, sizeof *c0);
     if (!t || !c0) {
-        free(t);
-        free(c0);
+        lx__free(t);
+        lx__free(c0);
         return NULL;
     }
     double *lo = c0, *hi = c0 + (size_t)(n + 1) * 7;
@@ -154,7 +154,7 @@ double *lx__cube_table(int n)
         lo = hi;
         hi = sw;
     }
-    free(c0);
+    lx__free(c0);
     return t;
 }
 
@@ -201,7 +201,7 @@ lx_status lx__sh9_project_cube(lx_ctx *ctx, const lx_envmap *map, lx_sh9 *out)
             out->c[8][c] += SH_C4 * (S[0][0] - S[1][1]);
         }
     }
-    free(t);
+    lx__free(t);
     return LX_OK;
 }
 
@@ -315,9 +315,9 @@ lx_status lx__irr_cube(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const d
                        double *out)
 {
     int N = map->width, C = map->channels;
-    double *mom = malloc((size_t)N * N * 3 * sizeof *mom);
-    double *acc = calloc(n_dirs ? n_dirs * C : 1, sizeof *acc);
-    double *pre = fast ? malloc((size_t)N * 3 * C * (N + 1) * sizeof *pre) : NULL;
+    double *mom = lx__alloc_n((size_t)N * N * 3, sizeof *mom);
+    double *acc = lx__calloc(n_dirs ? n_dirs * C : 1, sizeof *acc);
+    double *pre = fast ? lx__alloc_n((size_t)N * 3 * C * (N + 1), sizeof *pre) : NULL;
     lx_status st = LX_OK;
     if (!mom || !acc || (fast && !pre)) {
         st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for a %d-texel cube map", N);
@@ -335,8 +335,8 @@ lx_status lx__irr_cube(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const d
     }
     if (!st) memcpy(out, acc, n_dirs * C * sizeof *out);
 done:
-    free(mom);
-    free(acc);
-    free(pre);
+    lx__free(mom);
+    lx__free(acc);
+    lx__free(pre);
     return st;
 }

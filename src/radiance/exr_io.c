@@ -135,12 +135,12 @@ static lx_status exr_pixels(lx_ctx *ctx, const char *path, lx__exr_stream *s, ex
                             int single, lx_envmap *m)
 {
     long W = wh[0], H = wh[1], dw_w = wh[2], dw_h = wh[3];
-    float *buf = calloc((size_t)dw_w * dw_h * C, sizeof *buf);
+    float *buf = lx__calloc((size_t)dw_w * dw_h * C, sizeof *buf);
     if (!buf) return lx__error(ctx, LX_ENOMEM, path, 0, "out of memory for %ldx%ld pixels", dw_w, dw_h);
     const int slot_spec[2] = {C, single};
     lx_status st = lx__exr_read_pixels(ctx, path, s, e, storage, dw, buf, (int)dw_w, C, read_slot, slot_spec);
     if (st) {
-        free(buf);
+        lx__free(buf);
         return st;
     }
     /* place the data window into the display window */
@@ -153,7 +153,7 @@ static lx_status exr_pixels(lx_ctx *ctx, const char *path, lx__exr_stream *s, ex
             memcpy(m->data + ((size_t)my * W + mx) * C, buf + ((size_t)y * dw_w + x) * C, C * sizeof(float));
         }
     }
-    free(buf);
+    lx__free(buf);
     return LX_OK;
 }
 

@@ -147,7 +147,7 @@ lx_status lx__exr_check_channel(lx_ctx *ctx, const char *path, const exr_attr_ch
  * refuse as a non-finite value, instead of uninitialised memory or the previous chunk's pixels. */
 static void *decode_alloc(exr_transcoding_pipeline_buffer_id_t id, size_t n)
 {
-    void *p = malloc(n ? n : 1);
+    void *p = lx__alloc(n ? n : 1);
     if (p && id == EXR_TRANSCODE_BUFFER_UNPACKED) memset(p, 0xff, n);
     return p;
 }
@@ -155,7 +155,7 @@ static void *decode_alloc(exr_transcoding_pipeline_buffer_id_t id, size_t n)
 static void decode_free(exr_transcoding_pipeline_buffer_id_t id, void *p)
 {
     (void)id;
-    free(p);
+    lx__free(p);
 }
 
 /* Decodes one chunk into buf (see lx__exr_read_pixels), the chunk's first pixel at x0, y0. */

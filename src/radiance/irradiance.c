@@ -131,13 +131,13 @@ static lx_status map_by_dirs(lx_ctx *ctx, const lx_envmap *map, lx_envmap *m, co
 {
     size_t n = (size_t)m->width * m->height;
     lx_status st = LX_OK;
-    double *dirs = calloc(n * 3, sizeof *dirs), *res = malloc(n * map->channels * sizeof *res);
+    double *dirs = lx__calloc(n * 3, sizeof *dirs), *res = lx__alloc_n(n * map->channels, sizeof *res);
     if (!dirs || !res) st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for a %dx%d map", m->width, m->height);
     for (size_t k = 0; k < n && !st; k++) lx_envmap_texel_direction(m, (int)(k / m->width), (int)(k % m->width), dirs + 3 * k);
     if (!st) st = run_dirs(ctx, map, n, dirs, o, method, res, used);
     for (size_t k = 0; k < n * map->channels && !st; k++) m->data[k] = (float)res[k];
-    free(dirs);
-    free(res);
+    lx__free(dirs);
+    lx__free(res);
     return st;
 }
 
@@ -154,11 +154,11 @@ lx_status lx_irradiance_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, c
     if ((st = check_method(ctx, o))) return st;
     double ratio;
     lx_irr_method method = resolve(o, map, (double)n_dirs, 0, &ratio);
-    double *nd = malloc((n_dirs ? n_dirs : 1) * 3 * sizeof *nd);
-    double *res = malloc((n_dirs ? n_dirs : 1) * map->channels * sizeof *res);
+    double *nd = lx__alloc_n((n_dirs ? n_dirs : 1) * 3, sizeof *nd);
+    double *res = lx__alloc_n((n_dirs ? n_dirs : 1) * map->channels, sizeof *res);
     if (!nd || !res) {
-        free(nd);
-        free(res);
+        lx__free(nd);
+        lx__free(res);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
     for (size_t k = 0; k < n_dirs && !st; k++) {
@@ -181,8 +181,8 @@ lx_status lx_irradiance_dirs(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, c
         ctx->irr_method = method;
         ctx->irr_fast_cost_ratio = ratio;
     }
-    free(nd);
-    free(res);
+    lx__free(nd);
+    lx__free(res);
     return st;
 }
 
@@ -306,7 +306,7 @@ lx_status lx_envmap_concentration(lx_ctx *ctx, const lx_envmap *map, double max_
         if (sr >= max_sr || m == n || !(cut > 0)) break;
         cut *= 0.5;
     }
-    conc_px *c = malloc((m ? m : 1) * sizeof *c);
+    conc_px *c = lx__alloc_n(m ? m : 1, sizeof *c);
     if (!c) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     size_t k = 0;
     for (size_t p = 0; p < n && k < m; p++) {
@@ -317,7 +317,7 @@ lx_status lx_envmap_concentration(lx_ctx *ctx, const lx_envmap *map, double max_
     double sr = 0, pw = 0;
     size_t used = 0;
     for (; used < k && sr + c[used].sr <= max_sr; used++) sr += c[used].sr, pw += c[used].L * c[used].sr;
-    free(c);
+    lx__free(c);
     *fraction = pw / total;
     *pixels = used;
     return LX_OK;

@@ -61,14 +61,14 @@ lx_status lx__irr_brute_cpu(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, co
     lx_status st = lx__llgeom_init(ctx, &g, map->width, map->height);
     if (st) return st;
     int nt = lx__threads(threads, (long)n_dirs);
-    double *tcol = malloc((size_t)nt * map->width * sizeof *tcol);
+    double *tcol = lx__alloc_n((size_t)nt * map->width, sizeof *tcol);
     if (!tcol) {
         lx__llgeom_free(&g);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
     brute_job J = {map, &g, dirs, out, tcol};
     st = lx__parallel_for(ctx, nt, (long)n_dirs, brute_outputs, &J);
-    free(tcol);
+    lx__free(tcol);
     lx__llgeom_free(&g);
     return st;
 }
@@ -92,8 +92,8 @@ lx_status lx__irr_brute_cl(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, con
     }
     /* geometry: row_s2[H], row_scdp[H], col_gx[W], col_gy[W], dirs[3n] in the kernel's real type */
     size_t ngeo = 2 * (size_t)H + 2 * (size_t)W + 3 * n_dirs;
-    void *geo = malloc(ngeo * rs);
-    void *res = malloc(n_dirs * C * rs);
+    void *geo = lx__alloc(ngeo * rs);
+    void *res = lx__alloc(n_dirs * C * rs);
     cl_mem bL = NULL, bG = NULL, bO = NULL;
     cl_int err = CL_SUCCESS;
     if (!geo || !res) {
@@ -149,8 +149,8 @@ done:
     if (bG) clReleaseMemObject(bG);
     if (bO) clReleaseMemObject(bO);
     clReleaseKernel(k);
-    free(geo);
-    free(res);
+    lx__free(geo);
+    lx__free(res);
     lx__llgeom_free(&g);
     return st;
 }

@@ -234,11 +234,11 @@ lx_status lx__irr_fast(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const d
         return st;
     }
     int nt = lx__threads(threads, 0);
-    double *pre = malloc((size_t)BLOCK_ROWS * 3 * C * (W + 1) * sizeof *pre);
-    double *alpha = malloc((size_t)nt * LX__HZ_RAY_SCRATCH(W, H) * sizeof *alpha);
-    double *acc = calloc(n_dirs * C, sizeof *acc);
-    struct block_cache *cache = calloc((size_t)nt, sizeof *cache);
-    double *wbuf = malloc((size_t)nt * BLOCK_ROWS * W * sizeof *wbuf);
+    double *pre = lx__alloc_n((size_t)BLOCK_ROWS * 3 * C * (W + 1), sizeof *pre);
+    double *alpha = lx__alloc_n((size_t)nt * LX__HZ_RAY_SCRATCH(W, H), sizeof *alpha);
+    double *acc = lx__calloc(n_dirs * C, sizeof *acc);
+    struct block_cache *cache = lx__calloc((size_t)nt, sizeof *cache);
+    double *wbuf = lx__alloc_n((size_t)nt * BLOCK_ROWS * W, sizeof *wbuf);
     if (!pre || !alpha || !acc || !cache || !wbuf) {
         st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
         goto done;
@@ -253,11 +253,11 @@ lx_status lx__irr_fast(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, const d
     }
     if (!st) memcpy(out, acc, n_dirs * C * sizeof *out);
 done:
-    free(pre);
-    free(alpha);
-    free(acc);
-    free(cache);
-    free(wbuf);
+    lx__free(pre);
+    lx__free(alpha);
+    lx__free(acc);
+    lx__free(cache);
+    lx__free(wbuf);
     lx__hz_free(&z);
     lx__llgeom_free(&g);
     return st;

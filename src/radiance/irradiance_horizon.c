@@ -18,7 +18,7 @@ lx_status lx__hz_init(lx_ctx *ctx, lx__hz *z, int w, int h)
     z->h = h;
     z->dphi = 2 * LX__PI / w;
     z->dth = LX__PI / h;
-    z->ts = malloc(2 * ((size_t)w + (size_t)h + 2) * sizeof *z->ts);
+    z->ts = lx__alloc_n(2 * ((size_t)w + (size_t)h + 2), sizeof *z->ts);
     if (!z->ts) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     z->tc = z->ts + h + 1;
     z->ps = z->tc + h + 1;
@@ -37,7 +37,7 @@ lx_status lx__hz_init(lx_ctx *ctx, lx__hz *z, int w, int h)
 
 void lx__hz_free(lx__hz *z)
 {
-    free(z->ts);
+    lx__free(z->ts);
     z->ts = NULL;
 }
 
@@ -345,11 +345,11 @@ lx_status lx__irr_horizon_fix(lx_ctx *ctx, const lx_envmap *map, size_t n_dirs, 
         return st;
     }
     int nt = lx__threads(threads, (long)n_dirs);
-    double *alpha = malloc((size_t)nt * LX__HZ_RAY_SCRATCH(map->width, map->height) * sizeof *alpha);
+    double *alpha = lx__alloc_n((size_t)nt * LX__HZ_RAY_SCRATCH(map->width, map->height), sizeof *alpha);
     if (!alpha) st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     fix_job J = {map, &g, &z, dirs, out, alpha};
     if (!st) st = lx__parallel_for(ctx, nt, (long)n_dirs, fix_outputs, &J);
-    free(alpha);
+    lx__free(alpha);
     lx__hz_free(&z);
     lx__llgeom_free(&g);
     return st;
@@ -365,8 +365,8 @@ lx_status lx__irr_rows_exact(lx_ctx *ctx, int w, int h, const double *L, int row
         lx__llgeom_free(&g);
         return st;
     }
-    double *al = malloc(LX__HZ_RAY_SCRATCH(w, h) * sizeof *al);
-    unsigned char *crossed = malloc((size_t)w);
+    double *al = lx__alloc_n(LX__HZ_RAY_SCRATCH(w, h), sizeof *al);
+    unsigned char *crossed = lx__alloc((size_t)w);
     if (!al || !crossed) {
         st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     } else {
@@ -394,8 +394,8 @@ lx_status lx__irr_rows_exact(lx_ctx *ctx, int w, int h, const double *L, int row
         }
         *sum = s;
     }
-    free(al);
-    free(crossed);
+    lx__free(al);
+    lx__free(crossed);
     lx__hz_free(&z);
     lx__llgeom_free(&g);
     return st;

@@ -146,12 +146,12 @@ lx_status lx_sh9_project(lx_ctx *ctx, const lx_envmap *map, lx_sh9 *out)
     if (map->layout == LX_ENV_CUBE) return lx__sh9_project_cube(ctx, map, out);
     int W = map->width;
     double dp = 2 * LX__PI / W;
-    double *colf = malloc((size_t)W * 5 * sizeof *colf);
+    double *colf = lx__alloc_n((size_t)W * 5, sizeof *colf);
     int nt = lx__threads(0, map->height / 8 + 1);
-    double(*acc)[9][3] = calloc((size_t)nt, sizeof *acc);
+    double(*acc)[9][3] = lx__calloc((size_t)nt, sizeof *acc);
     if (!colf || !acc) {
-        free(colf);
-        free(acc);
+        lx__free(colf);
+        lx__free(acc);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
     for (int i = 0; i < W; i++) {
@@ -166,14 +166,14 @@ lx_status lx_sh9_project(lx_ctx *ctx, const lx_envmap *map, lx_sh9 *out)
 #ifdef LX_SH9_AVX2
     if (lx_simd_level() >= LX_SIMD_AVX2) {
         size_t n = (size_t)W * map->channels;
-        colx = malloc(5 * n * sizeof *colx);
+        colx = lx__alloc_n(5 * n, sizeof *colx);
         for (size_t x = 0; colx && x < n; x++)
             for (int k = 0; k < 5; k++) colx[k * n + x] = colf[5 * (x / map->channels) + k];
     }
 #endif
     proj_job J = {map, colf, colx, acc};
     lx_status st = lx__parallel_for(ctx, nt, map->height, proj_rows, &J);
-    free(colx);
+    lx__free(colx);
     if (!st) {
         memset(out, 0, sizeof *out);
         out->channels = map->channels;
@@ -181,8 +181,8 @@ lx_status lx_sh9_project(lx_ctx *ctx, const lx_envmap *map, lx_sh9 *out)
             for (int k = 0; k < 9; k++)
                 for (int c = 0; c < 3; c++) out->c[k][c] += acc[t][k][c];
     }
-    free(colf);
-    free(acc);
+    lx__free(colf);
+    lx__free(acc);
     return st;
 }
 
@@ -278,7 +278,7 @@ static void recon_rows(void *arg, long j0, long j1, int t)
 lx_status lx__irr_sh9_map(lx_ctx *ctx, const lx_sh9 *sh, lx_sh9_window window, lx_envmap *out)
 {
     int W = out->width;
-    double *cols = malloc((size_t)W * 4 * sizeof *cols), f[3];
+    double *cols = lx__alloc_n((size_t)W * 4, sizeof *cols), f[3];
     if (!cols) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     band_factors(window, f);
     for (int i = 0; i < W; i++) {
@@ -292,14 +292,14 @@ lx_status lx__irr_sh9_map(lx_ctx *ctx, const lx_sh9 *sh, lx_sh9_window window, l
 #ifdef LX_SH9_AVX2
     if (lx_simd_level() >= LX_SIMD_AVX2) {
         size_t n = (size_t)W * out->channels;
-        colx = malloc(4 * n * sizeof *colx);
+        colx = lx__alloc_n(4 * n, sizeof *colx);
         for (size_t x = 0; colx && x < n; x++)
             for (int k = 0; k < 4; k++) colx[k * n + x] = cols[4 * (x / out->channels) + k];
     }
 #endif
     recon_job J = {sh, f, cols, colx, out};
     lx_status st = lx__parallel_for(ctx, lx__threads(0, out->height / 8 + 1), out->height, recon_rows, &J);
-    free(cols);
-    free(colx);
+    lx__free(cols);
+    lx__free(colx);
     return st;
 }

@@ -146,11 +146,11 @@ double lx__sky_horizontal_rel(const lx_sky *s)
     static const double up[3] = {0, 0, 1};
     double prev = NAN;
     for (int nodes = 24; nodes <= 384; nodes *= 2) {
-        double *x = malloc(2 * (size_t)nodes * sizeof *x);
+        double *x = lx__alloc_n(2 * (size_t)nodes, sizeof *x);
         if (!x) return NAN;
         lx__gauss_legendre(nodes, x, x + nodes);
         double v = lx__sky_integral(s, up, nodes, x, x + nodes);
-        free(x);
+        lx__free(x);
         if (fabs(v - prev) <= 1e-12 * fabs(v)) return v;
         prev = v;
     }
@@ -166,12 +166,12 @@ lx_status lx_sky_illuminance(lx_ctx *ctx, const lx_sky *sky, const double n[3], 
     double u[3];
     lx_status st = lx__unit3(ctx, "sky illuminance: normal", n, u);
     if (st != LX_OK) return st;
-    double *x = malloc(2 * (size_t)nodes * sizeof *x);
+    double *x = lx__alloc_n(2 * (size_t)nodes, sizeof *x);
     if (!x) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     lx__gauss_legendre(nodes, x, x + nodes);
     double z = rel_zenith(sky);
     *E_lx = z > 0 ? sky->zenith_cd_m2 / z * lx__sky_integral(sky, u, nodes, x, x + nodes) : 0;
-    free(x);
+    lx__free(x);
     if (ctx) ctx->counters.environment_samples += 4ULL * (unsigned long long)nodes * (unsigned long long)nodes;
     return LX_OK;
 }

@@ -44,8 +44,8 @@ static int add_sun(lx_envmap *m, const double sdir[3], double Evn)
     int nsub = (int)ceil((dth > dphi ? dth : dphi) / (del / 8));
     nsub = nsub < 4 ? 4 : nsub > 512 ? 512 : nsub;
     size_t cap = 64, n = 0;
-    size_t *idx = malloc(cap * sizeof *idx);
-    double *cov = malloc(cap * sizeof *cov), total = 0;
+    size_t *idx = lx__alloc_n(cap, sizeof *idx);
+    double *cov = lx__alloc_n(cap, sizeof *cov), total = 0;
     if (!idx || !cov) goto nomem;
     for (int j = j0; j <= j1; j++) {
         double c0 = cos(dth * j), c1 = cos(dth * (j + 1));
@@ -68,10 +68,10 @@ static int add_sun(lx_envmap *m, const double sdir[3], double Evn)
             if (area <= 0) continue;
             if (n == cap) {
                 cap *= 2;
-                size_t *ni = realloc(idx, cap * sizeof *ni);
+                size_t *ni = lx__realloc_n(idx, cap, sizeof *ni);
                 if (!ni) goto nomem;
                 idx = ni;
-                double *nc = realloc(cov, cap * sizeof *nc);
+                double *nc = lx__realloc_n(cov, cap, sizeof *nc);
                 if (!nc) goto nomem;
                 cov = nc;
             }
@@ -92,12 +92,12 @@ static int add_sun(lx_envmap *m, const double sdir[3], double Evn)
         int j = (int)(idx[k] / W);
         m->data[idx[k]] += (float)(Evn * (cov[k] / total) / lx_envmap_pixel_sr(W, H, j));
     }
-    free(idx);
-    free(cov);
+    lx__free(idx);
+    lx__free(cov);
     return 0;
 nomem:
-    free(idx);
-    free(cov);
+    lx__free(idx);
+    lx__free(cov);
     return -1;
 }
 
@@ -121,7 +121,7 @@ lx_status lx_sky_map(lx_ctx *ctx, const lx_sky *sky, const lx_sky_map_opts *opts
     if (st != LX_OK) return st;
     m->units = LX_ENV_LUMINANCE;
     m->lum_per_unit = 1;
-    double *x = malloc(2 * (size_t)ns * sizeof *x);
+    double *x = lx__alloc_n(2 * (size_t)ns, sizeof *x);
     if (!x) {
         lx_envmap_free(m);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
@@ -137,7 +137,7 @@ lx_status lx_sky_map(lx_ctx *ctx, const lx_sky *sky, const lx_sky_map_opts *opts
             double L = pixel_sky(sky, scale, W, H, j, i, ns, x, x + ns, &above);
             m->data[(size_t)j * W + i] = (float)(L + (1 - above) * Lg);
         }
-    free(x);
+    lx__free(x);
     if (o.sun_normal_lx > 0 && sky->sun_dir[2] > 0 && add_sun(m, sky->sun_dir, o.sun_normal_lx) != 0) {
         lx_envmap_free(m);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");

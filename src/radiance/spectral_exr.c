@@ -167,7 +167,7 @@ static lx_status copy_channels(lx_ctx *ctx, const char *path, const chan *ch, in
 {
     size_t tot = 0;
     for (int k = 0; k < nl; k++) tot += strlen(ch[k].name) + 1;
-    chan *cp = malloc(sizeof *cp * (size_t)nl + tot);
+    chan *cp = lx__alloc(sizeof *cp * (size_t)nl + tot);
     if (!cp) return lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
     char *names = (char *)(cp + nl);
     for (int k = 0; k < nl; k++) {
@@ -190,13 +190,13 @@ static lx_status read_s0_pixels(lx_ctx *ctx, const char *path, lx__exr_stream *s
     long W = 0, H = 0;
     lx_status st = data_window(ctx, path, s, e, nl, &dw, &W, &H);
     if (st) return st;
-    float *buf = calloc((size_t)W * H * nl, sizeof *buf);
+    float *buf = lx__calloc((size_t)W * H * nl, sizeof *buf);
     if (!buf) return lx__error(ctx, LX_ENOMEM, path, 0, "out of memory for %ldx%ld pixels x %d channels", W, H, nl);
     const chan_set cs = {ch, nl};
     st = lx__exr_read_pixels(ctx, path, s, e, storage, &dw, buf, (int)W, nl, read_slot, &cs);
     if (!st) st = check_finite(ctx, path, buf, (size_t)W * H * nl, W, ch, nl);
     if (st) {
-        free(buf);
+        lx__free(buf);
         return st;
     }
     *buf_out = buf;
@@ -222,7 +222,7 @@ static lx_status read_spectral(lx_ctx *ctx, const char *path, float **data, chan
     const exr_attr_chlist_t *cl;
     lx_status st = lx__exr_read_begin(ctx, path, &s, &e, &storage, "deep images are not supported");
     if (!st) st = lx__exr_channels(ctx, path, &s, e, &cl);
-    if (!st && !(ch = calloc((size_t)cl->num_channels, sizeof *ch))) st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
+    if (!st && !(ch = lx__calloc((size_t)cl->num_channels, sizeof *ch))) st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
     if (!st) st = pick_s0_channels(ctx, path, cl, ch, &nl, npol);
     if (!st) st = read_s0_pixels(ctx, path, &s, e, storage, ch, nl, &buf, &W, &H);
     if (!st) st = copy_channels(ctx, path, ch, nl, chans);
@@ -235,17 +235,17 @@ static lx_status read_spectral(lx_ctx *ctx, const char *path, float **data, chan
     }
     if (e) exr_finish(&e);
     close(s.fd);
-    free(ch);
-    free(buf);
+    lx__free(ch);
+    lx__free(buf);
     return st;
 }
 
 void lx_xyz_image_free(lx_xyz_image *img)
 {
     if (!img) return;
-    free(img->xyz);
-    free(img->lambda_nm);
-    free(img);
+    lx__free(img->xyz);
+    lx__free(img->lambda_nm);
+    lx__free(img);
 }
 
 /* The linear1nm rule on nl channels at wavelengths lam as an nl x 3 matrix (row k: the integrals of
@@ -260,9 +260,9 @@ static lx_status nonuniform_weights(lx_ctx *ctx, const char *path, const double 
     /* the unit spectra in blocks of B, so that memory stays O(nl) however many channels the header names */
     enum { B = 64 };
     size_t n = (size_t)nl, ng = (size_t)(g1 - g0) + 1;
-    double *rl = malloc(sizeof(double) * B * n), *rv = malloc(sizeof(double) * B * n), *rg = malloc(sizeof(double) * B * ng),
-           *w = malloc(sizeof(double) * 3 * n);
-    size_t *roff = malloc(sizeof(size_t) * B), *rn = malloc(sizeof(size_t) * B);
+    double *rl = lx__alloc_n(B * n, sizeof(double)), *rv = lx__alloc_n(B * n, sizeof(double)), *rg = lx__alloc_n(B * ng, sizeof(double)),
+           *w = lx__alloc_n(3 * n, sizeof(double));
+    size_t *roff = lx__alloc_n(B, sizeof(size_t)), *rn = lx__alloc_n(B, sizeof(size_t));
     lx_status st = LX_OK;
     if (!rl || !rv || !rg || !w || !roff || !rn) {
         st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
@@ -281,8 +281,8 @@ static lx_status nonuniform_weights(lx_ctx *ctx, const char *path, const double 
             st = lx_batch_integrate(ctx, &b, fns, 3, opts, w + 3 * k0);
     }
 done:
-    free(rl), free(rv), free(rg), free(roff), free(rn);
-    if (st) free(w);
+    lx__free(rl), lx__free(rv), lx__free(rg), lx__free(roff), lx__free(rn);
+    if (st) lx__free(w);
     else *out = w;
     return st;
 }
@@ -300,12 +300,12 @@ lx_status lx_spectral_exr_read_xyz(lx_ctx *ctx, const char *path, lx_observer ob
     int nl = 0, W = 0, H = 0, npol = 0;
     lx_status st = read_spectral(ctx, path, &data, &ch, &nl, &W, &H, &npol);
     if (st) return st;
-    lx_xyz_image *img = calloc(1, sizeof *img);
+    lx_xyz_image *img = lx__calloc(1, sizeof *img);
     size_t npix = (size_t)W * H;
-    double *res = malloc(sizeof(double) * 3 * (npix < CHUNK_PIX ? npix : CHUNK_PIX)), *wts = NULL;
+    double *res = lx__alloc_n(3 * (npix < CHUNK_PIX ? npix : CHUNK_PIX), sizeof(double)), *wts = NULL;
     if (img) {
-        img->xyz = malloc(sizeof(double) * 3 * npix);
-        img->lambda_nm = malloc(sizeof(double) * (size_t)nl);
+        img->xyz = lx__alloc_n(3 * npix, sizeof(double));
+        img->lambda_nm = lx__alloc_n((size_t)nl, sizeof(double));
     }
     if (!img || !res || !img->xyz || !img->lambda_nm) {
         st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
@@ -350,10 +350,10 @@ lx_status lx_spectral_exr_read_xyz(lx_ctx *ctx, const char *path, lx_observer ob
         for (size_t i = 0; i < 3 * m; i++) img->xyz[3 * p0 + i] = km * res[i];
     }
 done:
-    free(wts);
-    free(res);
-    free(data);
-    free(ch);
+    lx__free(wts);
+    lx__free(res);
+    lx__free(data);
+    lx__free(ch);
     if (st) lx_xyz_image_free(img);
     else *out = img;
     return st;
@@ -372,7 +372,7 @@ lx_status lx_xyz_image_write_exr(lx_ctx *ctx, const char *path, const lx_xyz_ima
     exr_encode_pipeline_t enc = EXR_ENCODE_PIPELINE_INITIALIZER;
     int inited = 0, part = 0, W = img->width, H = img->height;
     size_t npix = (size_t)W * H;
-    float *f = malloc(sizeof(float) * 3 * (npix ? npix : 1));
+    float *f = lx__alloc_n(3 * (npix ? npix : 1), sizeof(float));
     if (!f) return lx__exr_write_end(ctx, path, &s, NULL, lx__error(ctx, LX_ENOMEM, path, 0, "out of memory"));
     for (size_t i = 0; i < 3 * npix; i++) f[i] = (float)img->xyz[i];
     exr_result_t rv = exr_start_write(&e, path, EXR_WRITE_FILE_DIRECTLY, &init);
@@ -398,6 +398,6 @@ lx_status lx_xyz_image_write_exr(lx_ctx *ctx, const char *path, const lx_xyz_ima
 done:
     if (inited) exr_encoding_destroy(e, &enc);
     st = lx__exr_write_end(ctx, path, &s, &e, st);
-    free(f);
+    lx__free(f);
     return st;
 }

@@ -32,15 +32,15 @@ lx_status lx__daylight_begin(lx_ctx *ctx, const lx_scene *sc, const lx_scene_pla
     if (st != LX_OK) return st;
     d->np = plan->n_points;
     size_t np = d->np ? d->np : 1;
-    d->sky_lx = calloc(np, sizeof *d->sky_lx);
-    d->ground_lx = calloc(np, sizeof *d->ground_lx);
-    d->sun_pt_lx = calloc(np, sizeof *d->sun_pt_lx);
-    d->ind_lx = calloc(np, sizeof *d->ind_lx);
+    d->sky_lx = lx__calloc(np, sizeof *d->sky_lx);
+    d->ground_lx = lx__calloc(np, sizeof *d->ground_lx);
+    d->sun_pt_lx = lx__calloc(np, sizeof *d->sun_pt_lx);
+    d->ind_lx = lx__calloc(np, sizeof *d->ind_lx);
     const lx__room_mesh *m = plan->room.mesh;
     if (plan->on[LX_EFFECT_INTERREFLECTION] && m && m->n_face) {
         d->n_face = m->n_face;
-        d->face_direct_lm = calloc(d->n_face, sizeof *d->face_direct_lm);
-        d->face_indirect_lm = calloc(d->n_face, sizeof *d->face_indirect_lm);
+        d->face_direct_lm = lx__calloc(d->n_face, sizeof *d->face_direct_lm);
+        d->face_indirect_lm = lx__calloc(d->n_face, sizeof *d->face_indirect_lm);
     }
     if (!d->sky_lx || !d->ground_lx || !d->sun_pt_lx || !d->ind_lx ||
         (d->n_face && (!d->face_direct_lm || !d->face_indirect_lm))) {
@@ -75,9 +75,9 @@ static void pt_run(void *arg, long i0, long i1, int t)
 /* Every receiver point and its normal, in result order. */
 static lx_status receiver_points(lx_ctx *ctx, const lx_scene *sc, size_t np, double **pts, double **nrm, int **cell)
 {
-    *pts = malloc(3 * (np ? np : 1) * sizeof **pts);
-    *nrm = malloc(3 * (np ? np : 1) * sizeof **nrm);
-    if (cell) *cell = malloc((np ? np : 1) * sizeof **cell);
+    *pts = lx__alloc_n(3 * (np ? np : 1), sizeof **pts);
+    *nrm = lx__alloc_n(3 * (np ? np : 1), sizeof **nrm);
+    if (cell) *cell = lx__alloc_n(np ? np : 1, sizeof **cell);
     if (!*pts || !*nrm || (cell && !*cell)) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     size_t g = 0;
     for (size_t r = 0; r < sc->n_rec; r++)
@@ -92,7 +92,7 @@ static lx_status receiver_points(lx_ctx *ctx, const lx_scene *sc, size_t np, dou
 lx_status lx__daylight_points(lx_ctx *ctx, lx__daylight *d, lx_scene_result *res)
 {
     double t0 = now_s(), *pts = NULL, *nrm = NULL;
-    pt_job *J = calloc(1, sizeof *J);
+    pt_job *J = lx__calloc(1, sizeof *J);
     lx_status st = J ? receiver_points(ctx, d->sc, d->np, &pts, &nrm, NULL) : lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     if (st == LX_OK) {
         J->d = d, J->pts = pts, J->nrm = nrm;
@@ -105,9 +105,9 @@ lx_status lx__daylight_points(lx_ctx *ctx, lx__daylight *d, lx_scene_result *res
             res->E_lx[g] += e;
         }
     }
-    free(J);
-    free(pts);
-    free(nrm);
+    lx__free(J);
+    lx__free(pts);
+    lx__free(nrm);
     d->stats.seconds += now_s() - t0;
     return st;
 }
@@ -151,18 +151,18 @@ typedef struct room_arrays {
 
 static void arrays_free(room_arrays *a)
 {
-    free(a->Ed), free(a->phi0), free(a->Ei), free(a->Be), free(a->ept), free(a->enr), free(a->pts), free(a->nrm);
-    free(a->ecell), free(a->eskip), free(a->cell);
+    lx__free(a->Ed), lx__free(a->phi0), lx__free(a->Ei), lx__free(a->Be), lx__free(a->ept), lx__free(a->enr), lx__free(a->pts), lx__free(a->nrm);
+    lx__free(a->ecell), lx__free(a->eskip), lx__free(a->cell);
 }
 
 static lx_status arrays_alloc(lx_ctx *ctx, const lx__daylight *d, const lx__room_mesh *m, room_arrays *a)
 {
     size_t n = m->n_patch ? m->n_patch : 1, ne = m->n_elem ? m->n_elem : 1;
     memset(a, 0, sizeof *a);
-    a->Ed = malloc(ne * sizeof *a->Ed), a->Ei = malloc(ne * sizeof *a->Ei), a->Be = malloc(ne * sizeof *a->Be);
-    a->phi0 = calloc(n, sizeof *a->phi0);
-    a->ept = malloc(3 * ne * sizeof *a->ept), a->enr = malloc(3 * ne * sizeof *a->enr);
-    a->ecell = malloc(ne * sizeof *a->ecell), a->eskip = malloc(ne * sizeof *a->eskip);
+    a->Ed = lx__alloc_n(ne, sizeof *a->Ed), a->Ei = lx__alloc_n(ne, sizeof *a->Ei), a->Be = lx__alloc_n(ne, sizeof *a->Be);
+    a->phi0 = lx__calloc(n, sizeof *a->phi0);
+    a->ept = lx__alloc_n(3 * ne, sizeof *a->ept), a->enr = lx__alloc_n(3 * ne, sizeof *a->enr);
+    a->ecell = lx__alloc_n(ne, sizeof *a->ecell), a->eskip = lx__alloc_n(ne, sizeof *a->eskip);
     if (!a->Ed || !a->Ei || !a->Be || !a->phi0 || !a->ept || !a->enr || !a->ecell || !a->eskip)
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t e = 0; e < m->n_elem; e++) {
@@ -184,7 +184,7 @@ lx_status lx__daylight_room(lx_ctx *ctx, lx__daylight *d, const lx__room_mesh *m
     lx__room_solution sol;
     memset(&a, 0, sizeof a);
     memset(&sol, 0, sizeof sol);
-    el_job *J = calloc(1, sizeof *J);
+    el_job *J = lx__calloc(1, sizeof *J);
     lx_status st = J ? arrays_alloc(ctx, d, m, &a) : lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     if (st != LX_OK) goto out;
     /* 1. the direct daylight on the elements: each patch receives its elements' flux */
@@ -217,7 +217,7 @@ lx_status lx__daylight_room(lx_ctx *ctx, lx__daylight *d, const lx__room_mesh *m
 out:
     lx__room_solution_free(&sol);
     arrays_free(&a);
-    free(J);
+    lx__free(J);
     d->stats.seconds += now_s() - t0;
     return st;
 }
@@ -230,7 +230,7 @@ lx_status lx__daylight_finish(lx_ctx *ctx, lx__daylight *d, lx_scene_result *res
     double **arr[5] = {&res->daylight_lx, &res->daylight_factor, &res->sky_component, &res->externally_reflected,
                        &res->internally_reflected};
     for (int k = 0; k < 5; k++)
-        if (!(*arr[k] = malloc(np * sizeof(double)))) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+        if (!(*arr[k] = lx__alloc_n(np, sizeof(double)))) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     const lx_scene *sc = d->sc;
     int df = d->plan->daylight.df;
     double k100 = df ? 100 / d->E_h : NAN, sum_ind = 0, sum_all = 0;

@@ -57,14 +57,14 @@ void lx__daylight_free(lx__daylight *d)
     if (!d) return;
     lx__scene_sky_map_free(d->map);
     lx__room_mesh_free(d->own_occ);
-    free(d->op);
-    free(d->sky_lx);
-    free(d->ground_lx);
-    free(d->sun_pt_lx);
-    free(d->ind_lx);
-    free(d->face_direct_lm);
-    free(d->face_indirect_lm);
-    free(d);
+    lx__free(d->op);
+    lx__free(d->sky_lx);
+    lx__free(d->ground_lx);
+    lx__free(d->sun_pt_lx);
+    lx__free(d->ind_lx);
+    lx__free(d->face_direct_lm);
+    lx__free(d->face_indirect_lm);
+    lx__free(d);
 }
 
 /* The occluders rays are tested against: the given ones or the plan's, else (when the planner kept
@@ -88,7 +88,7 @@ lx_status lx__daylight_sun_only(lx_ctx *ctx, const lx_scene *sc, const lx_scene_
     if (!(sc->has_sun && sc->sun_normal_lx > 0 && sc->sun_dir[2] > 0) || (!sc->n_room && !sc->n_surf && !sc->n_obst) ||
         sc->force[LX_EFFECT_OCCLUSION] == LX_FORCE_OFF)
         return LX_OK;
-    lx__daylight *d = calloc(1, sizeof *d);
+    lx__daylight *d = lx__calloc(1, sizeof *d);
     if (!d) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     d->sc = sc;
     d->plan = plan;
@@ -108,7 +108,7 @@ lx_status lx__daylight_setup(lx_ctx *ctx, const lx_scene *sc, const lx_scene_pla
                              lx__daylight **out)
 {
     *out = NULL;
-    lx__daylight *d = calloc(1, sizeof *d);
+    lx__daylight *d = lx__calloc(1, sizeof *d);
     if (!d) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     d->sc = sc;
     d->plan = plan;
@@ -128,7 +128,7 @@ lx_status lx__daylight_setup(lx_ctx *ctx, const lx_scene *sc, const lx_scene_pla
     d->far_m = lx__daylight_far(sc);
     if ((st = occluders(ctx, sc, plan, occ, d)) != LX_OK) goto fail;
     d->n_op = sc->n_open;
-    d->op = calloc(d->n_op ? d->n_op : 1, sizeof *d->op);
+    d->op = lx__calloc(d->n_op ? d->n_op : 1, sizeof *d->op);
     if (!d->op) {
         st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
         goto fail;
@@ -171,7 +171,7 @@ lx_status lx__daylight_mesh_openings(lx_ctx *ctx, const lx_scene *sc, const lx__
     *open = NULL;
     *n = 0;
     if (!sc->n_open) return LX_OK;
-    lx__room_opening *o = malloc(sc->n_open * sizeof *o);
+    lx__room_opening *o = lx__alloc_n(sc->n_open, sizeof *o);
     if (!o) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t k = 0; k < sc->n_open; k++) {
         const lx_scene_opening *so = &sc->open[k];
@@ -241,7 +241,7 @@ static double share(const lx_scene *sc, lx__daylight *d, const double *flux_room
     lx__daylight u = *d;
     u.closed = 1, u.L0 = d->E_h / LX__PI, u.L1 = 0, u.n_occ = 0;
     for (size_t k = 0; k < u.n_op; k++) u.op[k].outside_occ = 0; /* the copy shares op: restored below */
-    double *ind = calloc(sc->n_room ? sc->n_room : 1, sizeof *ind), worst = 0;
+    double *ind = lx__calloc(sc->n_room ? sc->n_room : 1, sizeof *ind), worst = 0;
     if (!ind) return 1;
     for (size_t r = 0; r < sc->n_room; r++) {
         const lx_scene_room *R = &sc->room[r];
@@ -264,7 +264,7 @@ static double share(const lx_scene *sc, lx__daylight *d, const double *flux_room
             double dir = out[0] + out[1] + out[2], s = ind[c] / (ind[c] + dir);
             worst = fmax(worst, s);
         }
-    free(ind);
+    lx__free(ind);
     return worst;
 }
 
@@ -296,7 +296,7 @@ lx_status lx__daylight_plan(lx_ctx *ctx, const lx_scene *sc, lx_scene_plan *p)
     D->closed_form = d->closed;
     int overcast = sc->sky == LX_SKY_UNIFORM || sc->sky == LX_SKY_OVERCAST || (sc->sky == LX_SKY_CIE && sc->sky_cie_type <= 5);
     D->df = overcast && !(d->sun_lx > 0) && d->E_h > 0;
-    double *flux_room = calloc(sc->n_room ? sc->n_room : 1, sizeof *flux_room), area = 0;
+    double *flux_room = lx__calloc(sc->n_room ? sc->n_room : 1, sizeof *flux_room), area = 0;
     if (!flux_room) {
         lx__daylight_free(d);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
@@ -307,12 +307,12 @@ lx_status lx__daylight_plan(lx_ctx *ctx, const lx_scene *sc, lx_scene_plan *p)
         flux_room[d->op[k].room] += phi;
         area += d->op[k].area_m2;
     }
-    unsigned char *saved = malloc(d->n_op ? d->n_op : 1);
+    unsigned char *saved = lx__alloc(d->n_op ? d->n_op : 1);
     for (size_t k = 0; saved && k < d->n_op; k++) saved[k] = (unsigned char)d->op[k].outside_occ;
     D->share_est = p->on[LX_EFFECT_INTERREFLECTION] || sc->force[LX_EFFECT_INTERREFLECTION] != LX_FORCE_OFF ? share(sc, d, flux_room) : 0;
     for (size_t k = 0; saved && k < d->n_op; k++) d->op[k].outside_occ = saved[k];
-    free(saved);
-    free(flux_room);
+    lx__free(saved);
+    lx__free(flux_room);
     /* the work: every receiver point inside a room with openings, once per opening of its room */
     for (size_t r = 0; r < sc->n_rec; r++)
         for (size_t i = 0; i < sc->rec[r].n; i++) {
@@ -382,7 +382,7 @@ lx_status lx__daylight_mesh_begin(lx_ctx *ctx, const lx_scene *sc, const lx_scen
 {
     *state = NULL;
     if (!sc->n_open) return LX_OK;
-    mesh_state *ms = calloc(1, sizeof *ms);
+    mesh_state *ms = lx__calloc(1, sizeof *ms);
     if (!ms) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     lx_status st = lx__daylight_mesh_openings(ctx, sc, occ, &ms->holes, &o->n_open);
     o->open = ms->holes;
@@ -417,7 +417,7 @@ void lx__daylight_mesh_end(lx__room_mesh_opts *o, void *state)
     o->probe_extra = NULL;
     o->probe_arg = NULL;
     if (!ms) return;
-    free(ms->holes);
+    lx__free(ms->holes);
     lx__daylight_free(ms->d);
-    free(ms);
+    lx__free(ms);
 }

@@ -19,13 +19,13 @@ lx_status lx__scene_open_section(lx_ctx *ctx, lx_scene *sc, const char *name, co
             return lx__error(ctx, LX_EPARSE, file, line, "opening '%s' defined twice (first at %s:%ld)", name, sc->open[i].file,
                              sc->open[i].line);
     if (sc->n_open >= MAX_OPENINGS) return lx__error(ctx, LX_EPARSE, file, line, "more than %d openings", MAX_OPENINGS);
-    lx_scene_opening *no = realloc(sc->open, (sc->n_open + 1) * sizeof *no);
+    lx_scene_opening *no = lx__realloc_n(sc->open, sc->n_open + 1, sizeof *no);
     if (!no) return lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
     sc->open = no;
     lx_scene_opening *o = &sc->open[sc->n_open];
     memset(o, 0, sizeof *o);
     size_t l = strlen(name) + 1;
-    if (!(o->name = malloc(l))) return lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
+    if (!(o->name = lx__alloc(l))) return lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
     memcpy(o->name, name, l);
     o->file = file;
     o->line = line;
@@ -206,6 +206,6 @@ lx_status lx__daylight_scene_check(lx_ctx *ctx, lx_scene *sc)
 
 void lx__daylight_scene_free(lx_scene *sc)
 {
-    for (size_t i = 0; i < sc->n_open; i++) free(sc->open[i].name);
-    free(sc->open);
+    for (size_t i = 0; i < sc->n_open; i++) lx__free(sc->open[i].name);
+    lx__free(sc->open);
 }

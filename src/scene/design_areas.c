@@ -127,14 +127,6 @@ static size_t room_outline(const lx_scene *sc, long r, double (*v)[2])
 
 /* ---- the [area] section ---- */
 
-static char *xstrdup(const char *s)
-{
-    size_t n = strlen(s) + 1;
-    char *p = malloc(n);
-    if (p) memcpy(p, s, n);
-    return p;
-}
-
 static const char *const kind_names[] = {"task", "surrounding", "background", "room", "walls", "ceiling"};
 
 lx_status lx__area_open(lx_ctx *ctx, lx_scene *sc, const char *name, const char *file, long line)
@@ -143,7 +135,7 @@ lx_status lx__area_open(lx_ctx *ctx, lx_scene *sc, const char *name, const char 
     for (size_t i = 0; i < in->n_area; i++)
         if (!strcmp(in->area[i].name, name)) return lx__error(ctx, LX_EPARSE, file, line, "area '%s' defined twice", name);
     if (strchr(name, '.')) return lx__error(ctx, LX_EPARSE, file, line, "area '%s': no dots in an area's name", name);
-    lx__area_raw *na = realloc(in->area, (in->n_area + 1) * sizeof *na);
+    lx__area_raw *na = lx__realloc_n(in->area, (in->n_area + 1), sizeof *na);
     if (!na) return lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
     in->area = na;
     lx__area_raw *a = &in->area[in->n_area++];
@@ -151,7 +143,7 @@ lx_status lx__area_open(lx_ctx *ctx, lx_scene *sc, const char *name, const char 
     a->file = file;
     a->line = line;
     a->type = -1;
-    a->name = xstrdup(name);
+    a->name = lx__strdup(name);
     return a->name ? LX_OK : lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
 }
 
@@ -184,8 +176,8 @@ lx_status lx__area_key(lx_ctx *ctx, lx_scene *sc, const char *file, long line, c
     }
     if (!strcmp(key, "room")) {
         a->room_line = line;
-        free(a->room);
-        a->room = xstrdup(value);
+        lx__free(a->room);
+        a->room = lx__strdup(value);
         return a->room ? LX_OK : lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
     }
     if (!strcmp(key, "x") || !strcmp(key, "y") || !strcmp(key, "z")) {
@@ -227,16 +219,16 @@ void lx__area_free(lx_scene *sc)
     lx_scene_design *d = sc->design;
     lx__design *in = d->internal;
     for (size_t i = 0; in && i < in->n_area; i++) {
-        free(in->area[i].name);
-        free(in->area[i].room);
+        lx__free(in->area[i].name);
+        lx__free(in->area[i].room);
     }
-    if (in) free(in->area), in->area = NULL, in->n_area = 0;
+    if (in) lx__free(in->area), in->area = NULL, in->n_area = 0;
     for (size_t i = 0; i < d->n_area; i++) {
-        free(d->area[i].name);
-        free(d->area[i].outline);
-        free(d->area[i].inner);
+        lx__free(d->area[i].name);
+        lx__free(d->area[i].outline);
+        lx__free(d->area[i].inner);
     }
-    free(d->area);
+    lx__free(d->area);
     d->area = NULL;
     d->n_area = 0;
 }
@@ -253,7 +245,7 @@ static int pts_add(pts *P, const double q[3])
 {
     if (P->n == P->cap) {
         size_t cap = P->cap ? 2 * P->cap : 256;
-        double *np = realloc(P->p, 3 * cap * sizeof *np);
+        double *np = lx__realloc_n(P->p, 3 * cap, sizeof *np);
         if (!np) return -1;
         P->p = np, P->cap = cap;
     }
@@ -286,7 +278,7 @@ static lx_status add_area(lx_ctx *ctx, lx_scene *sc, const lx__area_raw *r, lx_s
                          name);
     lx_scene_receiver rc;
     memset(&rc, 0, sizeof rc);
-    rc.name = xstrdup(name);
+    rc.name = lx__strdup(name);
     rc.file = r->file;
     rc.line = r->line;
     rc.kind = P->n == na * nb ? LX_SREC_GRID : LX_SREC_SET;
@@ -296,14 +288,14 @@ static lx_status add_area(lx_ctx *ctx, lx_scene *sc, const lx__area_raw *r, lx_s
     rc.na = na, rc.nb = nb;
     rc.n = P->n;
     rc.points = P->p;
-    lx_scene_receiver *nr = rc.name ? realloc(sc->rec, (sc->n_rec + 1) * sizeof *nr) : NULL;
-    lx_scene_area *ar = nr ? realloc(sc->design->area, (sc->design->n_area + 1) * sizeof *ar) : NULL;
+    lx_scene_receiver *nr = rc.name ? lx__realloc_n(sc->rec, (sc->n_rec + 1), sizeof *nr) : NULL;
+    lx_scene_area *ar = nr ? lx__realloc_n(sc->design->area, (sc->design->n_area + 1), sizeof *ar) : NULL;
     if (nr) sc->rec = nr;
     if (ar) sc->design->area = ar;
-    A->name = xstrdup(name);
+    A->name = lx__strdup(name);
     if (!nr || !ar || !A->name) {
-        free(rc.name);
-        free(A->name);
+        lx__free(rc.name);
+        lx__free(A->name);
         return lx__error(ctx, LX_ENOMEM, r->file, r->line, "out of memory");
     }
     P->p = NULL, P->n = P->cap = 0; /* the receiver owns them */
@@ -321,10 +313,10 @@ static lx_status add_area(lx_ctx *ctx, lx_scene *sc, const lx__area_raw *r, lx_s
 static lx_status set_outline(lx_ctx *ctx, const lx__area_raw *r, lx_scene_area *A, const double (*v)[2], size_t n,
                              const double (*w)[2], size_t m)
 {
-    A->outline = malloc((n ? n : 1) * 2 * sizeof(double));
-    A->inner = malloc((m ? m : 1) * 2 * sizeof(double));
+    A->outline = lx__alloc_n((n ? n : 1) * 2, sizeof(double));
+    A->inner = lx__alloc_n((m ? m : 1) * 2, sizeof(double));
     if (!A->outline || !A->inner) {
-        free(A->outline), free(A->inner);
+        lx__free(A->outline), lx__free(A->inner);
         A->outline = A->inner = NULL;
         return lx__error(ctx, LX_ENOMEM, r->file, r->line, "out of memory");
     }
@@ -337,7 +329,7 @@ static lx_status set_outline(lx_ctx *ctx, const lx__area_raw *r, lx_scene_area *
 
 static void free_outline(lx_scene_area *A)
 {
-    free(A->outline), free(A->inner);
+    lx__free(A->outline), lx__free(A->inner);
     A->outline = A->inner = NULL;
 }
 
@@ -427,7 +419,7 @@ static lx_status make_band(lx_ctx *ctx, lx_scene *sc, const lx__area_raw *r, lx_
     A.box_m[0] = outer[0], A.box_m[1] = outer[1], A.box_m[2] = outer[2], A.box_m[3] = outer[3];
     pts P = {0};
     if (band_points(sc, inner, w, c, z, (const double(*)[2])rv, nv, &P)) {
-        free(P.p), free_outline(&A);
+        lx__free(P.p), free_outline(&A);
         return lx__error(ctx, LX_ENOMEM, r->file, r->line, "out of memory");
     }
     char name[300];
@@ -438,7 +430,7 @@ static lx_status make_band(lx_ctx *ctx, lx_scene *sc, const lx__area_raw *r, lx_
         return LX_OK;
     }
     st = add_area(ctx, sc, r, &A, name, &P, 'z', 0, 0, up, 1);
-    if (st != LX_OK) free(P.p), free_outline(&A);
+    if (st != LX_OK) lx__free(P.p), free_outline(&A);
     return st;
 }
 
@@ -516,7 +508,7 @@ static lx_status make_task(lx_ctx *ctx, lx_scene *sc, const lx__area_raw *r)
         return st;
     return LX_OK;
 fail:
-    free(P.p);
+    lx__free(P.p);
     free_outline(&A);
     return st;
 }
@@ -554,7 +546,7 @@ static lx_status make_room_plane(lx_ctx *ctx, lx_scene *sc, const lx__area_raw *
     static const double up[3] = {0, 0, 1};
     if ((st = grid_rect(ctx, sc, r, &A, (const double(*)[2])rv, nv, margin, &P)) == LX_OK)
         st = add_area(ctx, sc, r, &A, r->name, &P, 'z', A.grid.n[0], A.grid.n[1], up, 1);
-    if (st != LX_OK) free(P.p), free_outline(&A);
+    if (st != LX_OK) lx__free(P.p), free_outline(&A);
     return st;
 }
 
@@ -600,7 +592,7 @@ static lx_status make_faces(lx_ctx *ctx, lx_scene *sc, const lx__area_raw *r, lo
         if ((st = grid_rect(ctx, sc, r, &A, NULL, 0, 0, &P)) == LX_OK)
             st = add_area(ctx, sc, r, &A, name, &P, axis, A.grid.n[0], A.grid.n[1], n, 0);
         if (st != LX_OK) {
-            free(P.p), free_outline(&A);
+            lx__free(P.p), free_outline(&A);
             return st;
         }
     }

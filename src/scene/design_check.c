@@ -10,14 +10,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static char *xstrdup(const char *s)
-{
-    size_t n = strlen(s) + 1;
-    char *p = malloc(n);
-    if (p) memcpy(p, s, n);
-    return p;
-}
-
 /* The quantities a requirement may give: key, the check's quantity name, unit, <= (1) or >= (0),
  * and where it is rated. */
 enum { ON_AREA, ON_SURROUNDING, ON_BACKGROUND, ON_WALLS, ON_CEILING, ON_CYL, ON_MODELLING, ON_UGR, ON_RA, ON_EMERGENCY };
@@ -68,23 +60,23 @@ lx_status lx__req_open(lx_ctx *ctx, lx_scene *sc, const char *name, const char *
     lx__req *reqs = in->req;
     for (size_t i = 0; i < in->n_req; i++)
         if (!strcmp(reqs[i].name, name)) return lx__error(ctx, LX_EPARSE, file, line, "requirement '%s' defined twice", name);
-    lx__req *nr = realloc(in->req, (in->n_req + 1) * sizeof *nr);
+    lx__req *nr = lx__realloc_n(in->req, (in->n_req + 1), sizeof *nr);
     if (!nr) return lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
     in->req = nr;
     lx__req *r = &nr[in->n_req++];
     memset(r, 0, sizeof *r);
     r->file = file;
     r->line = line;
-    r->name = xstrdup(name);
-    r->reference = xstrdup("");
+    r->name = lx__strdup(name);
+    r->reference = lx__strdup("");
     sc->design->n_req = in->n_req;
     return r->name && r->reference ? LX_OK : lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
 }
 
 static lx_status str_value(lx_ctx *ctx, const char *file, long line, const char *value, char **dst)
 {
-    free(*dst);
-    *dst = xstrdup(value);
+    lx__free(*dst);
+    *dst = lx__strdup(value);
     return *dst ? LX_OK : lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
 }
 
@@ -127,12 +119,12 @@ void lx__req_free(lx_scene *sc)
     lx__design *in = sc->design->internal;
     lx__req *reqs = in ? in->req : NULL;
     for (size_t i = 0; in && i < in->n_req; i++) {
-        free(reqs[i].name);
-        free(reqs[i].area);
-        free(reqs[i].reference);
-        free(reqs[i].observers);
+        lx__free(reqs[i].name);
+        lx__free(reqs[i].area);
+        lx__free(reqs[i].reference);
+        lx__free(reqs[i].observers);
     }
-    if (in) free(in->req), in->req = NULL, in->n_req = 0;
+    if (in) lx__free(in->req), in->req = NULL, in->n_req = 0;
 }
 
 /* ---- what each key rates ---- */
@@ -307,13 +299,13 @@ lx_status lx_scene_area_stats(lx_ctx *ctx, const lx_scene *sc, const lx_scene_re
 void lx_scene_checks_free(lx_scene_checks *c)
 {
     if (!c) return;
-    free(c->check);
-    free(c);
+    lx__free(c->check);
+    lx__free(c);
 }
 
 static lx_status push(lx_ctx *ctx, lx_scene_checks *c, const lx_check *k)
 {
-    lx_check *n = realloc(c->check, (c->n + 1) * sizeof *n);
+    lx_check *n = lx__realloc_n(c->check, (c->n + 1), sizeof *n);
     if (!n) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     c->check = n;
     c->check[c->n++] = *k;
@@ -431,7 +423,7 @@ lx_status lx_scene_check(lx_ctx *ctx, const lx_scene *sc, const lx_scene_result 
     LX__NEED_CTX(ctx);
     if (!sc || !res || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_check: NULL argument");
     *out = NULL;
-    lx_scene_checks *c = calloc(1, sizeof *c);
+    lx_scene_checks *c = lx__calloc(1, sizeof *c);
     if (!c) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     const lx__design *in = sc->design->internal;
     const lx__req *reqs = in->req;

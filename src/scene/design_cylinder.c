@@ -102,9 +102,9 @@ lx_status lx__design_cyl_alloc(lx_ctx *ctx, const lx_scene *sc, lx_scene_result 
     for (size_t r = 0; d && d->rec_cylinder && r < sc->n_rec; r++) any |= d->rec_cylinder[r];
     if (!any) return LX_OK;
     size_t n = res->n_points ? res->n_points : 1;
-    res->cylindrical_lx = malloc(n * sizeof(double));
-    res->semicylindrical_lx = malloc(n * sizeof(double));
-    res->modelling = malloc(n * sizeof(double));
+    res->cylindrical_lx = lx__alloc_n(n, sizeof(double));
+    res->semicylindrical_lx = lx__alloc_n(n, sizeof(double));
+    res->modelling = lx__alloc_n(n, sizeof(double));
     if (!res->cylindrical_lx || !res->semicylindrical_lx || !res->modelling)
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t g = 0; g < res->n_points; g++) res->cylindrical_lx[g] = res->semicylindrical_lx[g] = res->modelling[g] = NAN;
@@ -171,10 +171,10 @@ static lx_status gather_level(lx_ctx *ctx, const lx__room_mesh *m, const double 
     size_t k = 0, cap = 0;
     for (size_t i = 0; i < np; i++)
         if (!P[i].done) cap += first ? (size_t)(P[i].semi ? N + 1 : N) : (size_t)(N / 2);
-    free(*E);
-    *E = malloc((cap ? cap : 1) * sizeof **E);
-    double *pts = malloc(3 * (cap ? cap : 1) * sizeof *pts), *nrm = malloc(3 * (cap ? cap : 1) * sizeof *nrm);
-    int *cell = malloc((cap ? cap : 1) * sizeof *cell);
+    lx__free(*E);
+    *E = lx__alloc_n((cap ? cap : 1), sizeof **E);
+    double *pts = lx__alloc_n(3 * (cap ? cap : 1), sizeof *pts), *nrm = lx__alloc_n(3 * (cap ? cap : 1), sizeof *nrm);
+    int *cell = lx__alloc_n((cap ? cap : 1), sizeof *cell);
     lx_status st = LX_OK;
     if (!*E || !pts || !nrm || !cell) {
         st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
@@ -197,9 +197,9 @@ static lx_status gather_level(lx_ctx *ctx, const lx__room_mesh *m, const double 
         st = lx__room_gather(ctx, &job, (lx_backend)backend, *E, &used);
     }
 out:
-    free(pts);
-    free(nrm);
-    free(cell);
+    lx__free(pts);
+    lx__free(nrm);
+    lx__free(cell);
     return st;
 }
 
@@ -212,7 +212,7 @@ lx_status lx__design_room_cylinder(lx_ctx *ctx, const lx_scene *sc, const lx__ro
     for (size_t r = 0; r < sc->n_rec; r++)
         np += (size_t)((d->rec_cylinder[r] & 1) + ((d->rec_cylinder[r] >> 1) & 1)) * sc->rec[r].n;
     if (!np) return LX_OK;
-    pending *P = calloc(np, sizeof *P);
+    pending *P = lx__calloc(np, sizeof *P);
     double *E = NULL;
     lx_status st = LX_OK;
     if (!P) {
@@ -272,8 +272,8 @@ lx_status lx__design_room_cylinder(lx_ctx *ctx, const lx_scene *sc, const lx__ro
     }
     res->cylinder_tol = fmax(res->cylinder_tol, tol);
 out:
-    free(P);
-    free(E);
+    lx__free(P);
+    lx__free(E);
     return st;
 }
 

@@ -11,20 +11,12 @@
 #define HOUR_S 3600.0
 #define YEAR_S (8760.0 * 3600.0)
 
-static char *xstrdup(const char *s)
-{
-    size_t n = strlen(s) + 1;
-    char *p = malloc(n);
-    if (p) memcpy(p, s, n);
-    return p;
-}
-
 lx_status lx__design_new(lx_scene *sc)
 {
-    sc->design = calloc(1, sizeof *sc->design);
-    lx__design *in = calloc(1, sizeof *in);
+    sc->design = lx__calloc(1, sizeof *sc->design);
+    lx__design *in = lx__calloc(1, sizeof *in);
     if (!sc->design || !in) {
-        free(in);
+        lx__free(in);
         return LX_ENOMEM;
     }
     sc->design->internal = in;
@@ -35,8 +27,8 @@ lx_status lx__design_new(lx_scene *sc)
 
 static void factor_free(lx__factor *f)
 {
-    free(f->t_s);
-    free(f->v);
+    lx__free(f->t_s);
+    lx__free(f->v);
     memset(f, 0, sizeof *f);
 }
 
@@ -46,36 +38,36 @@ void lx__design_free(lx_scene *sc)
     if (!d) return;
     lx__area_free(sc);
     lx__req_free(sc);
-    for (size_t i = 0; i < d->n_obs_group; i++) free(d->obs_group_name[i]);
-    free(d->obs_group_name);
-    free(d->obs_group);
+    for (size_t i = 0; i < d->n_obs_group; i++) lx__free(d->obs_group_name[i]);
+    lx__free(d->obs_group_name);
+    lx__free(d->obs_group);
     lx__design *in = d->internal;
     for (size_t i = 0; i < d->n_maint; i++) {
         lx_maintenance *m = &d->maint[i];
-        free(m->name);
-        free(m->lamp_type);
-        free(m->luminaire_type);
-        free(m->environment);
+        lx__free(m->name);
+        lx__free(m->lamp_type);
+        lx__free(m->luminaire_type);
+        lx__free(m->environment);
         for (int k = 0; in && in->maint && k < 4; k++) factor_free(&in->maint[i].f[k]);
     }
-    free(d->maint);
+    lx__free(d->maint);
     if (in) {
-        free(in->maint);
-        free(in->scene_maint);
-        for (size_t i = 0; i < in->n_lum; i++) free(in->lum_maint_name[i]);
-        free(in->lum_maint_name);
-        free(in->lum_maint_line);
-        free(in->lum_mf_line);
-        free(in);
+        lx__free(in->maint);
+        lx__free(in->scene_maint);
+        for (size_t i = 0; i < in->n_lum; i++) lx__free(in->lum_maint_name[i]);
+        lx__free(in->lum_maint_name);
+        lx__free(in->lum_maint_line);
+        lx__free(in->lum_mf_line);
+        lx__free(in);
     }
-    free(d->lum_mf);
-    free(d->lum_maint);
-    free(d->lum_power_W);
-    free(d->lum_mode);
-    free(d->lum_emergency_lm);
-    free(d->rec_cylinder);
-    free(d->rec_facing);
-    free(d);
+    lx__free(d->lum_mf);
+    lx__free(d->lum_maint);
+    lx__free(d->lum_power_W);
+    lx__free(d->lum_mode);
+    lx__free(d->lum_emergency_lm);
+    lx__free(d->rec_cylinder);
+    lx__free(d->rec_facing);
+    lx__free(d);
     sc->design = NULL;
 }
 
@@ -93,8 +85,8 @@ static lx_status unit_factor(lx_ctx *ctx, const char *file, long line, const cha
 static lx_status name_key(lx_ctx *ctx, const char *file, long line, const char *key, const char *value, char **dst)
 {
     if (!*value) return lx__error(ctx, LX_EPARSE, file, line, "%s: name a [maintenance NAME] section", key);
-    free(*dst);
-    *dst = xstrdup(value);
+    lx__free(*dst);
+    *dst = lx__strdup(value);
     return *dst ? LX_OK : lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
 }
 
@@ -102,7 +94,7 @@ static lx_status name_key(lx_ctx *ctx, const char *file, long line, const char *
 
 void lx__design_lum_raw_free(scene__lum_design *d)
 {
-    free(d->maint);
+    lx__free(d->maint);
     memset(d, 0, sizeof *d);
 }
 
@@ -143,7 +135,7 @@ int lx__design_lum_key(lx_ctx *ctx, scene__lum_design *d, const char *file, long
 
 #define GROW(p, n)                                                                                                     \
     do {                                                                                                               \
-        void *q_ = realloc((p), (n) * sizeof *(p));                                                                    \
+        void *q_ = lx__realloc_n((p), (n), sizeof *(p));                                                                    \
         if (!q_) return LX_ENOMEM;                                                                                     \
         (p) = q_;                                                                                                      \
     } while (0)
@@ -219,9 +211,9 @@ lx_status lx__design_rec_grow(lx_scene *sc)
 {
     lx_scene_design *d = sc->design;
     size_t n = sc->n_rec;
-    unsigned char *c = realloc(d->rec_cylinder, n * sizeof *c);
+    unsigned char *c = lx__realloc_n(d->rec_cylinder, n, sizeof *c);
     if (c) d->rec_cylinder = c;
-    double *f = c ? realloc(d->rec_facing, 3 * n * sizeof *f) : NULL;
+    double *f = c ? lx__realloc_n(d->rec_facing, 3 * n, sizeof *f) : NULL;
     if (f) d->rec_facing = f;
     return c && f ? LX_OK : LX_ENOMEM;
 }
@@ -276,10 +268,10 @@ lx_status lx__design_open(lx_ctx *ctx, lx_scene *sc, int sec, const char *name, 
     for (size_t i = 0; i < d->n_maint; i++)
         if (!strcmp(d->maint[i].name, name))
             return lx__error(ctx, LX_EPARSE, file, line, "maintenance scheme '%s' defined twice", name);
-    lx_maintenance *nm = realloc(d->maint, (d->n_maint + 1) * sizeof *nm);
+    lx_maintenance *nm = lx__realloc_n(d->maint, (d->n_maint + 1), sizeof *nm);
     if (!nm) return lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
     d->maint = nm;
-    lx__maint_raw *nr = realloc(in->maint, (d->n_maint + 1) * sizeof *nr);
+    lx__maint_raw *nr = lx__realloc_n(in->maint, (d->n_maint + 1), sizeof *nr);
     if (!nr) return lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
     in->maint = nr;
     lx_maintenance *m = &d->maint[d->n_maint];
@@ -289,10 +281,10 @@ lx_status lx__design_open(lx_ctx *ctx, lx_scene *sc, int sec, const char *name, 
     m->file = file;
     m->line = line;
     m->burning_h = m->cleaning_a = m->room_cleaning_a = NAN;
-    m->name = xstrdup(name);
-    m->lamp_type = xstrdup("");
-    m->luminaire_type = xstrdup("");
-    m->environment = xstrdup("");
+    m->name = lx__strdup(name);
+    m->lamp_type = lx__strdup("");
+    m->luminaire_type = lx__strdup("");
+    m->environment = lx__strdup("");
     if (!m->name || !m->lamp_type || !m->luminaire_type || !m->environment)
         return lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
     return LX_OK;
@@ -308,8 +300,8 @@ static lx_status factor_key(lx_ctx *ctx, const char *file, long line, const char
     if (!strchr(value, ':')) return unit_factor(ctx, file, line, key, value, &f->value);
     size_t cap = 1;
     for (const char *p = value; *p; p++) cap += *p == ',';
-    f->t_s = malloc(cap * sizeof *f->t_s);
-    f->v = malloc(cap * sizeof *f->v);
+    f->t_s = lx__alloc_n(cap, sizeof *f->t_s);
+    f->v = lx__alloc_n(cap, sizeof *f->v);
     if (!f->t_s || !f->v) return lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
     const char *p = value;
     while (*p) {
@@ -354,8 +346,8 @@ static lx_status time_key(lx_ctx *ctx, const char *file, long line, const char *
 
 static lx_status text_key(lx_ctx *ctx, const char *file, long line, const char *value, char **dst)
 {
-    free(*dst);
-    *dst = xstrdup(value);
+    lx__free(*dst);
+    *dst = lx__strdup(value);
     return *dst ? LX_OK : lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
 }
 

@@ -43,9 +43,9 @@ static lx_status upload(lx_ctx *ctx, lx__cl *cl, const lx__room_mesh *m, const l
                         cl_mesh *c)
 {
     size_t no = m->n_occ;
-    double *P = malloc((n ? n : 1) * 21 * sizeof *P), *O = malloc((no ? no : 1) * 22 * sizeof *O), G[128];
-    double *R = malloc((n ? n : 1) * sizeof *R);
-    int *PI = malloc((n ? n : 1) * 4 * sizeof *PI), *K = malloc((no ? no : 1) * sizeof *K);
+    double *P = lx__alloc_n((n ? n : 1) * 21, sizeof *P), *O = lx__alloc_n((no ? no : 1) * 22, sizeof *O), G[128];
+    double *R = lx__alloc_n(n ? n : 1, sizeof *R);
+    int *PI = lx__alloc_n((n ? n : 1) * 4, sizeof *PI), *K = lx__alloc_n(no ? no : 1, sizeof *K);
     lx_status st = LX_OK;
     if (!P || !O || !PI || !K || !R) st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t i = 0; st == LX_OK && i < n; i++) {
@@ -91,11 +91,11 @@ static lx_status upload(lx_ctx *ctx, lx__cl *cl, const lx__room_mesh *m, const l
     if (st == LX_OK) st = buffer(ctx, cl, no * 22 * sizeof *O, O, &c->occ, "occluders");
     if (st == LX_OK) st = buffer(ctx, cl, no * sizeof *K, K, &c->okind, "occluder kinds");
     if (st == LX_OK) st = buffer(ctx, cl, sizeof G, G, &c->gauss, "gauss");
-    free(P);
-    free(R);
-    free(O);
-    free(PI);
-    free(K);
+    lx__free(P);
+    lx__free(R);
+    lx__free(O);
+    lx__free(PI);
+    lx__free(K);
     if (st != LX_OK) cl_mesh_release(c);
     return st;
 }
@@ -169,7 +169,7 @@ lx_status lx__room_cl_gather(lx_ctx *ctx, const lx__room_gather_job *g, double *
     cl_mem bB = NULL, bp = NULL, bn = NULL, bc = NULL, bs = NULL, out = NULL;
     cl_int err = CL_SUCCESS;
     size_t n = g->n;
-    int *skip = malloc((n ? n : 1) * sizeof *skip);
+    int *skip = lx__alloc_n(n ? n : 1, sizeof *skip);
     if (!skip) {
         clReleaseKernel(k);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
@@ -217,7 +217,7 @@ done:
     if (out) clReleaseMemObject(out);
     cl_mesh_release(&c);
     clReleaseKernel(k);
-    free(skip);
+    lx__free(skip);
     return st;
 }
 #else

@@ -60,11 +60,11 @@ static void direct_run(void *arg, long i0, long i1, int t)
 static lx_status direct_light(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *plan, const lx__room_mesh *m, long only,
                               double *E_dir)
 {
-    direct_job *J = calloc(1, sizeof *J);
-    lx__scene_lum *le = calloc(sc->n_lum ? sc->n_lum : 1, sizeof *le);
-    int *lc = calloc(sc->n_lum ? sc->n_lum : 1, sizeof *lc);
+    direct_job *J = lx__calloc(1, sizeof *J);
+    lx__scene_lum *le = lx__calloc(sc->n_lum ? sc->n_lum : 1, sizeof *le);
+    int *lc = lx__calloc(sc->n_lum ? sc->n_lum : 1, sizeof *lc);
     if (!J || !le || !lc) {
-        free(J), free(le), free(lc);
+        lx__free(J), lx__free(le), lx__free(lc);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
     for (size_t l = 0; l < sc->n_lum; l++) {
@@ -78,9 +78,9 @@ static lx_status direct_light(lx_ctx *ctx, const lx_scene *sc, const lx_scene_pl
         const unsigned long long *src = (const unsigned long long *)&J->cnt[t];
         for (size_t k = 0; k < sizeof(lx_counters) / sizeof *dst; k++) dst[k] += src[k];
     }
-    free(J);
-    free(le);
-    free(lc);
+    lx__free(J);
+    lx__free(le);
+    lx__free(lc);
     return LX_OK;
 }
 
@@ -88,9 +88,9 @@ static lx_status direct_light(lx_ctx *ctx, const lx_scene *sc, const lx_scene_pl
 static lx_status surfaces(lx_ctx *ctx, const lx__room_mesh *m, const double *phi0, const lx__room_solution *sol,
                           lx_scene_result *res)
 {
-    res->surfaces = calloc(m->n_face ? m->n_face : 1, sizeof *res->surfaces);
+    res->surfaces = lx__calloc(m->n_face ? m->n_face : 1, sizeof *res->surfaces);
     if (!res->surfaces) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
-    double *d = calloc(2 * (m->n_face ? m->n_face : 1), sizeof *d);
+    double *d = lx__calloc(2 * (m->n_face ? m->n_face : 1), sizeof *d);
     if (!d) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t i = 0; i < m->n_patch; i++) {
         d[2 * m->patch[i].face] += phi0[i];
@@ -100,9 +100,9 @@ static lx_status surfaces(lx_ctx *ctx, const lx__room_mesh *m, const double *phi
     for (size_t f = 0; f < m->n_face; f++) {
         lx_scene_surface_result *s = &res->surfaces[f];
         size_t nl = strlen(m->face[f].name) + 1;
-        s->name = malloc(nl);
+        s->name = lx__alloc(nl);
         if (!s->name) {
-            free(d);
+            lx__free(d);
             return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
         }
         memcpy(s->name, m->face[f].name, nl);
@@ -114,7 +114,7 @@ static lx_status surfaces(lx_ctx *ctx, const lx__room_mesh *m, const double *phi
         s->E_lx = s->direct_lx + s->indirect_lx;
         s->L_cd_m2 = s->reflectance * s->E_lx / LX__PI;
     }
-    free(d);
+    lx__free(d);
     return LX_OK;
 }
 
@@ -134,7 +134,7 @@ static lx_status stats(lx_ctx *ctx, const lx__room_mesh *m, const double *phi0, 
         R->indirect_lm += sol->phi_ind_lm[i];
         R->absorbed_lm += (1 - m->patch[i].rho) * (phi0[i] + sol->phi_ind_lm[i]);
     }
-    double *ga = calloc(n ? n : 1, sizeof *ga), w = 0, e2 = 0;
+    double *ga = lx__calloc(n ? n : 1, sizeof *ga), w = 0, e2 = 0;
     if (!ga) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t e = 0; e < m->n_elem; e++) ga[m->elem[e].parent] += Ei[e] * m->elem[e].area_m2;
     for (size_t i = 0; i < n; i++) {
@@ -142,7 +142,7 @@ static lx_status stats(lx_ctx *ctx, const lx__room_mesh *m, const double *phi0, 
         e2 += A * d * d;
         w += A * s * s;
     }
-    free(ga);
+    lx__free(ga);
     R->gather_check = w > 0 ? sqrt(e2 / w) : 0;
     return LX_OK;
 }
@@ -155,11 +155,11 @@ static lx_status element_points(const lx__room_mesh *m, double **pts, double **n
                                 size_t **list, size_t *count)
 {
     size_t n = m->n_elem ? m->n_elem : 1, k = 0;
-    *pts = malloc(3 * n * sizeof **pts);
-    *nrm = malloc(3 * n * sizeof **nrm);
-    *cell = malloc(n * sizeof **cell);
-    *skip = malloc(n * sizeof **skip);
-    *list = malloc(n * sizeof **list);
+    *pts = lx__alloc_n(3 * n, sizeof **pts);
+    *nrm = lx__alloc_n(3 * n, sizeof **nrm);
+    *cell = lx__alloc_n(n, sizeof **cell);
+    *skip = lx__alloc_n(n, sizeof **skip);
+    *list = lx__alloc_n(n, sizeof **list);
     if (!*pts || !*nrm || !*cell || !*skip || !*list) return LX_ENOMEM;
     for (size_t e = 0; e < m->n_elem; e++) {
         memcpy(*pts + 3 * k, m->elem[e].c, 3 * sizeof **pts);
@@ -178,14 +178,14 @@ lx_status lx__room_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
     const lx__room_mesh *m = plan->room.mesh;
     size_t n = m->n_patch, ne = m->n_elem, np = res->n_points;
     lx_backend backend = (lx_backend)plan->room.backend;
-    double *phi0 = calloc(n ? n : 1, sizeof *phi0), *F = NULL, *Ed = malloc((ne ? ne : 1) * sizeof *Ed);
-    double *Ei = malloc((ne ? ne : 1) * sizeof *Ei), *Be = malloc((ne ? ne : 1) * sizeof *Be);
-    double *pts = malloc(3 * (np ? np : 1) * sizeof *pts), *nrm = malloc(3 * (np ? np : 1) * sizeof *nrm);
-    double *ept = NULL, *enr = NULL, *Eg = malloc((ne ? ne : 1) * sizeof *Eg);
-    int *cell = malloc((np ? np : 1) * sizeof *cell), *ecell = NULL, *eskip = NULL;
+    double *phi0 = lx__calloc(n ? n : 1, sizeof *phi0), *F = NULL, *Ed = lx__alloc_n(ne ? ne : 1, sizeof *Ed);
+    double *Ei = lx__alloc_n(ne ? ne : 1, sizeof *Ei), *Be = lx__alloc_n(ne ? ne : 1, sizeof *Be);
+    double *pts = lx__alloc_n(3 * (np ? np : 1), sizeof *pts), *nrm = lx__alloc_n(3 * (np ? np : 1), sizeof *nrm);
+    double *ept = NULL, *enr = NULL, *Eg = lx__alloc_n(ne ? ne : 1, sizeof *Eg);
+    int *cell = lx__alloc_n(np ? np : 1, sizeof *cell), *ecell = NULL, *eskip = NULL;
     size_t *elist = NULL, n_eg = 0;
-    res->direct_lx = malloc((np ? np : 1) * sizeof *res->direct_lx);
-    res->indirect_lx = malloc((np ? np : 1) * sizeof *res->indirect_lx);
+    res->direct_lx = lx__alloc_n(np ? np : 1, sizeof *res->direct_lx);
+    res->indirect_lx = lx__alloc_n(np ? np : 1, sizeof *res->indirect_lx);
     lx__room_solution sol;
     memset(&sol, 0, sizeof sol);
     lx_status st = LX_OK;
@@ -205,7 +205,7 @@ lx_status lx__room_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
     double t2 = now_s();
     if ((st = lx__room_solve(ctx, m, F, phi0, plan->room.stop_unshot_lm, &sol)) != LX_OK) goto out;
     if (day && (st = lx__daylight_room(ctx, day, m, F)) != LX_OK) goto out; /* its own solve, the same F */
-    free(F);
+    lx__free(F);
     F = NULL;
     /* 3. the gather at the centre of every element from the patches: its exitance resolves what
      * varies within a patch (its own direct light, the indirect light arriving there) */
@@ -248,24 +248,24 @@ lx_status lx__room_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
     R->seconds_gather = t4 - t3;
 out:
     if (st != LX_OK) {
-        free(res->direct_lx);
-        free(res->indirect_lx);
+        lx__free(res->direct_lx);
+        lx__free(res->indirect_lx);
         res->direct_lx = res->indirect_lx = NULL;
     }
     lx__room_solution_free(&sol);
-    free(F);
-    free(phi0);
-    free(Ed);
-    free(Ei);
-    free(Be);
-    free(pts);
-    free(nrm);
-    free(cell);
-    free(ept);
-    free(enr);
-    free(ecell);
-    free(eskip);
-    free(elist);
-    free(Eg);
+    lx__free(F);
+    lx__free(phi0);
+    lx__free(Ed);
+    lx__free(Ei);
+    lx__free(Be);
+    lx__free(pts);
+    lx__free(nrm);
+    lx__free(cell);
+    lx__free(ept);
+    lx__free(enr);
+    lx__free(ecell);
+    lx__free(eskip);
+    lx__free(elist);
+    lx__free(Eg);
     return st;
 }

@@ -38,14 +38,14 @@ size_t lx__room_max_patches(void)
 void lx__room_mesh_free(lx__room_mesh *m)
 {
     if (!m) return;
-    free(m->face);
-    free(m->patch);
-    free(m->elem);
-    free(m->occ);
-    free(m->open);
-    free(m->obst_occ);
-    free(m->surf_occ);
-    free(m);
+    lx__free(m->face);
+    lx__free(m->patch);
+    lx__free(m->elem);
+    lx__free(m->occ);
+    lx__free(m->open);
+    lx__free(m->obst_occ);
+    lx__free(m->surf_occ);
+    lx__free(m);
 }
 
 static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
@@ -54,9 +54,9 @@ static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + 
 static lx_status make_occluders(lx_ctx *ctx, const lx_scene *sc, lx__room_mesh *m)
 {
     m->n_occ = sc->n_obst + sc->n_surf;
-    m->occ = calloc(m->n_occ ? m->n_occ : 1, sizeof *m->occ);
-    m->obst_occ = calloc(sc->n_obst ? sc->n_obst : 1, sizeof *m->obst_occ);
-    m->surf_occ = calloc(sc->n_surf ? sc->n_surf : 1, sizeof *m->surf_occ);
+    m->occ = lx__calloc(m->n_occ ? m->n_occ : 1, sizeof *m->occ);
+    m->obst_occ = lx__calloc(sc->n_obst ? sc->n_obst : 1, sizeof *m->obst_occ);
+    m->surf_occ = lx__calloc(sc->n_surf ? sc->n_surf : 1, sizeof *m->surf_occ);
     if (!m->occ || !m->obst_occ || !m->surf_occ) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     size_t k = 0;
     for (size_t i = 0; i < sc->n_obst; i++, k++) {
@@ -92,7 +92,7 @@ static void box_face(const double lo[3], const double hi[3], int k, int inward, 
 
 static lx_status add_face(lx_ctx *ctx, lx__room_mesh *m, const lx__room_face *f)
 {
-    lx__room_face *nf = realloc(m->face, (m->n_face + 1) * sizeof *nf);
+    lx__room_face *nf = lx__realloc_n(m->face, m->n_face + 1, sizeof *nf);
     if (!nf) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     m->face = nf;
     m->face[m->n_face++] = *f;
@@ -381,7 +381,7 @@ static lx_status push(builder *b, lx__room_patch **arr, size_t *n, size_t *cap, 
 {
     if (*n == *cap) {
         size_t nc = *cap ? 2 * *cap : 1024;
-        lx__room_patch *np = realloc(*arr, nc * sizeof *np);
+        lx__room_patch *np = lx__realloc_n(*arr, nc, sizeof *np);
         if (!np) return lx__error(b->ctx, LX_ENOMEM, NULL, 0, "out of memory for the patches");
         *arr = np;
         *cap = nc;
@@ -467,7 +467,7 @@ static lx_status refine(builder *b, int elements, int depth_max, size_t bound)
 {
     const double var = 0.5; /* a piece whose direct light varies by half its level (and the indirect's) */
     size_t *count = elements ? &b->m->n_elem : &b->m->n_patch;
-    size_t n = *count, *cand = malloc((n ? n : 1) * sizeof *cand), nc = n;
+    size_t n = *count, *cand = lx__alloc_n(n ? n : 1, sizeof *cand), nc = n;
     if (!cand) return lx__error(b->ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t i = 0; i < n; i++) cand[i] = i;
     lx_status st = LX_OK;
@@ -476,7 +476,7 @@ static lx_status refine(builder *b, int elements, int depth_max, size_t bound)
         for (size_t k = 0; k < nc; k++)
             if (wants_split(b, elements ? &b->m->elem[cand[k]] : &b->m->patch[cand[k]], var, elements)) cand[todo++] = cand[k];
         if (!todo || *count + 3 * todo > bound) break; /* the bound: stop refining */
-        size_t *next = malloc(4 * todo * sizeof *next), nn = 0;
+        size_t *next = lx__alloc_n(4 * todo, sizeof *next), nn = 0;
         if (!next) {
             st = lx__error(b->ctx, LX_ENOMEM, NULL, 0, "out of memory");
             break;
@@ -486,11 +486,11 @@ static lx_status refine(builder *b, int elements, int depth_max, size_t bound)
             for (int q = 0; q < 3; q++) next[nn++] = *count + (size_t)q;
             st = split(b, elements, cand[k]);
         }
-        free(cand);
+        lx__free(cand);
         cand = next;
         nc = nn;
     }
-    free(cand);
+    lx__free(cand);
     return st;
 }
 
@@ -536,7 +536,7 @@ lx_status lx__room_mesh_build(lx_ctx *ctx, const lx_scene *sc, const lx_scene_pl
                               lx__room_mesh **out)
 {
     *out = NULL;
-    lx__room_mesh *m = calloc(1, sizeof *m);
+    lx__room_mesh *m = lx__calloc(1, sizeof *m);
     builder b;
     memset(&b, 0, sizeof b);
     b.ctx = ctx;
@@ -553,11 +553,11 @@ lx_status lx__room_mesh_build(lx_ctx *ctx, const lx_scene *sc, const lx_scene_pl
     m->quad_tol = o->quad_tol > 0 ? o->quad_tol : 0.25 * o->tol;
     lx_status st = make_occluders(ctx, sc, m);
     if (st == LX_OK) st = make_faces(ctx, sc, m);
-    b.le = calloc(sc->n_lum ? sc->n_lum : 1, sizeof *b.le);
-    b.lum_cell = calloc(sc->n_lum ? sc->n_lum : 1, sizeof *b.lum_cell);
+    b.le = lx__calloc(sc->n_lum ? sc->n_lum : 1, sizeof *b.le);
+    b.lum_cell = lx__calloc(sc->n_lum ? sc->n_lum : 1, sizeof *b.lum_cell);
     if (st == LX_OK && (!b.le || !b.lum_cell)) st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     if (st == LX_OK && o->n_open) {
-        m->open = malloc(o->n_open * sizeof *m->open);
+        m->open = lx__alloc_n(o->n_open, sizeof *m->open);
         if (!m->open) st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
         else memcpy(m->open, o->open, o->n_open * sizeof *m->open), m->n_open = o->n_open;
     }
@@ -590,8 +590,8 @@ lx_status lx__room_mesh_build(lx_ctx *ctx, const lx_scene *sc, const lx_scene_pl
         orders(&b);
         for (size_t i = 0; i < m->n_patch; i++) m->face[m->patch[i].face].area_m2 += m->patch[i].area_m2;
     }
-    free(b.le);
-    free(b.lum_cell);
+    lx__free(b.le);
+    lx__free(b.lum_cell);
     m->probe = b.probe;
     if (st != LX_OK) {
         lx__room_mesh_free(m);
@@ -603,7 +603,7 @@ lx_status lx__room_mesh_build(lx_ctx *ctx, const lx_scene *sc, const lx_scene_pl
 
 lx_status lx__room_occluders(lx_ctx *ctx, const lx_scene *sc, lx__room_mesh **out)
 {
-    lx__room_mesh *m = calloc(1, sizeof *m);
+    lx__room_mesh *m = lx__calloc(1, sizeof *m);
     if (!m) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     m->sc = sc;
     lx_status st = make_occluders(ctx, sc, m);

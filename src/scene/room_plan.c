@@ -28,7 +28,7 @@ static void why(lx_scene_plan *p, lx_effect e, int on, const char *fmt, ...)
 
 void lx__room_plan_free(lx_scene_plan *p)
 {
-    free(p->occ);
+    lx__free(p->occ);
     p->occ = NULL;
     lx__room_mesh_free(p->room.mesh);
     p->room.mesh = NULL;
@@ -64,7 +64,7 @@ static lx_status plan_occlusion(lx_ctx *ctx, const lx_scene *sc, lx_scene_plan *
         why(p, LX_EFFECT_OCCLUSION, 0, "forced off in [effects]: surfaces and obstructions block no light");
         return LX_OK;
     }
-    p->occ = calloc(p->n_pairs ? p->n_pairs : 1, 1);
+    p->occ = lx__calloc(p->n_pairs ? p->n_pairs : 1, 1);
     if (!p->occ) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t l = 0; l < sc->n_lum; l++) {
         int lc = lx__room_cell(sc, sc->lum[l].pos_m), area = lx__scene_lum_size(&sc->lum[l]) > 0;
@@ -100,7 +100,7 @@ static lx_status plan_occlusion(lx_ctx *ctx, const lx_scene *sc, lx_scene_plan *
     else
         why(p, LX_EFFECT_OCCLUSION, 0, "no surface or obstruction can cut a luminaire-receiver segment (bounding volumes)");
     if (!p->on[LX_EFFECT_OCCLUSION]) {
-        free(p->occ);
+        lx__free(p->occ);
         p->occ = NULL;
     }
     return LX_OK;
@@ -258,12 +258,12 @@ static lx_status plan_interreflection(lx_ctx *ctx, const lx_scene *sc, lx_scene_
     /* the estimate: the matrix (shooting points x patches of other faces), the gathers at the
      * elements (from the patches) and at the receivers (from the elements), the sweeps, the
      * direct light at every node */
-    double nf = 0, *per_face = calloc(m->n_face ? m->n_face : 1, sizeof *per_face);
+    double nf = 0, *per_face = lx__calloc(m->n_face ? m->n_face : 1, sizeof *per_face);
     if (!per_face) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t i = 0; i < m->n_patch; i++) per_face[m->patch[i].face] += 1;
     for (size_t i = 0; i < m->n_patch; i++)
         nf += (double)(m->patch[i].shoot * m->patch[i].shoot) * ((double)m->n_patch - per_face[m->patch[i].face]);
-    free(per_face);
+    lx__free(per_face);
     nf += (double)m->n_elem * (double)m->n_patch + (double)p->n_points * (double)m->n_elem;
     p->estimate.form_factors += (unsigned long long)nf;
     p->estimate.radiosity_patches += m->n_patch;
@@ -289,7 +289,7 @@ lx_status lx__room_plan(lx_ctx *ctx, const lx_scene *sc, int backend, lx_scene_p
         if (st == LX_OK) st = plan_interreflection(ctx, sc, p, NULL, NULL);
         return st;
     }
-    lx__scene_lum *le = calloc(sc->n_lum ? sc->n_lum : 1, sizeof *le);
+    lx__scene_lum *le = lx__calloc(sc->n_lum ? sc->n_lum : 1, sizeof *le);
     lx__room_mesh *occ = NULL;
     if (!le) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t l = 0; l < sc->n_lum; l++) lx__scene_lum_init(&le[l], sc, l, p);
@@ -308,6 +308,6 @@ lx_status lx__room_plan(lx_ctx *ctx, const lx_scene *sc, int backend, lx_scene_p
         if (!outside) why(p, LX_EFFECT_ENVIRONMENT, 0, "every receiver is inside a closed room: the sky does not reach it");
     }
     lx__room_mesh_free(occ);
-    free(le);
+    lx__free(le);
     return st;
 }

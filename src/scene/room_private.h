@@ -8,6 +8,7 @@
 #ifndef LX_ROOM_PRIVATE_H
 #define LX_ROOM_PRIVATE_H
 
+#include "radiosity/radiosity_private.h"
 #include "scene/scene_private.h"
 
 /* ---- geometry (room_geom.c; the CPU twins of kernels/room.cl) ---- */
@@ -59,6 +60,15 @@ double lx__room_ff_area(const double o1[3], const double u1[3], const double v1[
 
 /* Gauss-Legendre nodes (on [0, 1]) and weights (sum 1) of order m = 1..8. */
 void lx__room_gauss(int m, const double **x, const double **w);
+
+/* ---- the scene as the radiosity layer's polygons (room_polys.c) ---- */
+
+/* Appends to g (zero-initialised) every room face (6 a room, lx_room_face order, facing in, the
+ * outside behind), surface (one polygon, both sides reflecting), obstruction face (6 each, facing
+ * out, solid behind) and opening (a hole in its face, facing into its room, the outside behind).
+ * Tags: room r face k 6 r + k; surface i 6 n_room + 2 i (its back + 1); obstruction i face k
+ * 6 n_room + 2 n_surf + 6 i + k (the mesh's face order); opening k -1 - k. Frees g on error. */
+lx_status lx__room_geom(lx_ctx *ctx, const lx_scene *sc, lx__rad_geom *g);
 
 /* ---- faces, patches and the mesh (room_mesh.c) ---- */
 

@@ -15,7 +15,7 @@ static const char *const refl_key[] = {"floor", "ceiling", "wall_xmin", "wall_xm
 
 void lx__room_raw_free(scene__room_raw *r)
 {
-    free(r->name);
+    lx__free(r->name);
     memset(r, 0, sizeof *r);
 }
 
@@ -26,7 +26,7 @@ lx_status lx__room_section(lx_ctx *ctx, scene__room_raw *r, int kind, const char
     r->file = file;
     r->line = line;
     size_t n = strlen(name) + 1;
-    r->name = malloc(n);
+    r->name = lx__alloc(n);
     if (!r->name) return lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
     memcpy(r->name, name, n);
     return LX_OK;
@@ -85,7 +85,7 @@ static double norm3(const double a[3]) { return sqrt(a[0] * a[0] + a[1] * a[1] +
 
 static lx_status append(lx_ctx *ctx, void **arr, size_t *n, size_t size, const void *item, const char *file, long line)
 {
-    char *p = realloc(*arr, (*n + 1) * size);
+    char *p = lx__realloc(*arr, (*n + 1) * size);
     if (!p) return lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
     memcpy(p + *n * size, item, size);
     *arr = p;
@@ -341,10 +341,10 @@ lx_status lx__room_scene_check(lx_ctx *ctx, const lx_scene *sc)
 
 void lx__room_scene_free(lx_scene *sc)
 {
-    for (size_t i = 0; i < sc->n_room; i++) free(sc->room[i].name);
-    for (size_t i = 0; i < sc->n_surf; i++) free(sc->surf[i].name);
-    for (size_t i = 0; i < sc->n_obst; i++) free(sc->obst[i].name);
-    free(sc->room);
-    free(sc->surf);
-    free(sc->obst);
+    for (size_t i = 0; i < sc->n_room; i++) lx__free(sc->room[i].name);
+    for (size_t i = 0; i < sc->n_surf; i++) lx__free(sc->surf[i].name);
+    for (size_t i = 0; i < sc->n_obst; i++) lx__free(sc->obst[i].name);
+    lx__free(sc->room);
+    lx__free(sc->surf);
+    lx__free(sc->obst);
 }

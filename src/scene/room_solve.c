@@ -140,12 +140,12 @@ static double ff_work(const lx__room_mesh *m)
 lx_status lx__room_ff_matrix(lx_ctx *ctx, const lx__room_mesh *m, lx_backend backend, double **Fout, int *used)
 {
     size_t n = m->n_patch;
-    double *F = malloc((n ? n * n : 1) * sizeof *F);
+    double *F = lx__alloc_n(n ? n * n : 1, sizeof *F);
     if (!F) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for the %zu x %zu form-factor matrix", n, n);
     lx_backend be = LX_BACKEND_CPU;
     lx_status st = lx__backend_choose(ctx, "room form factors", backend, ff_work(m), LX__ROOM_CL_COLD, LX__ROOM_CL_WARM, &be);
     if (st != LX_OK) {
-        free(F);
+        lx__free(F);
         return st;
     }
     *used = LX_BACKEND_CPU;
@@ -169,7 +169,7 @@ lx_status lx__room_ff_matrix(lx_ctx *ctx, const lx__room_mesh *m, lx_backend bac
             return LX_OK;
         }
         if (!lx__backend_fallback(ctx, "room form factors", backend, st)) {
-            free(F);
+            lx__free(F);
             return st;
         }
     }
@@ -191,8 +191,8 @@ lx_status lx__room_ff_matrix(lx_ctx *ctx, const lx__room_mesh *m, lx_backend bac
 void lx__room_solution_free(lx__room_solution *sol)
 {
     if (!sol) return;
-    free(sol->phi_ind_lm);
-    free(sol->B);
+    lx__free(sol->phi_ind_lm);
+    lx__free(sol->B);
     memset(sol, 0, sizeof *sol);
 }
 
@@ -202,12 +202,12 @@ lx_status lx__room_solve(lx_ctx *ctx, const lx__room_mesh *m, const double *F, c
     size_t n = m->n_patch;
     double t0 = now_s();
     memset(sol, 0, sizeof *sol);
-    double *X = calloc(n ? n : 1, sizeof *X), *rho = malloc((n ? n : 1) * sizeof *rho);
-    sol->phi_ind_lm = calloc(n ? n : 1, sizeof *sol->phi_ind_lm);
-    sol->B = malloc((n ? n : 1) * sizeof *sol->B);
+    double *X = lx__calloc(n ? n : 1, sizeof *X), *rho = lx__alloc_n(n ? n : 1, sizeof *rho);
+    sol->phi_ind_lm = lx__calloc(n ? n : 1, sizeof *sol->phi_ind_lm);
+    sol->B = lx__alloc_n(n ? n : 1, sizeof *sol->B);
     if (!X || !rho || !sol->phi_ind_lm || !sol->B) {
-        free(X);
-        free(rho);
+        lx__free(X);
+        lx__free(rho);
         lx__room_solution_free(sol);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
@@ -251,8 +251,8 @@ lx_status lx__room_solve(lx_ctx *ctx, const lx__room_mesh *m, const double *F, c
     ctx->counters.radiosity_patches += n;
     ctx->counters.radiosity_shots += sol->shots;
     sol->seconds_solve = now_s() - t0;
-    free(X);
-    free(rho);
+    lx__free(X);
+    lx__free(rho);
     return LX_OK;
 }
 
@@ -324,7 +324,7 @@ lx_status lx__room_gather(lx_ctx *ctx, const lx__room_gather_job *g, lx_backend 
         if (!lx__backend_fallback(ctx, "room gather", backend, st)) return st;
     }
 #endif
-    gather_arg *a = calloc(1, sizeof *a);
+    gather_arg *a = lx__calloc(1, sizeof *a);
     if (!a) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     a->g = g;
     a->E = E_lx;
@@ -333,6 +333,6 @@ lx_status lx__room_gather(lx_ctx *ctx, const lx__room_gather_job *g, lx_backend 
         ctx->counters.form_factors += a->ff[t];
         ctx->counters.visibility_tests += a->rays[t];
     }
-    free(a);
+    lx__free(a);
     return LX_OK;
 }

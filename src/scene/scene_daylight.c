@@ -241,12 +241,12 @@ lx_status lx__scene_obs_open(lx_ctx *ctx, lx_scene *sc, const char *name, const 
 {
     for (size_t i = 0; i < sc->n_obs; i++)
         if (!strcmp(sc->obs[i].name, name)) return lx__error(ctx, LX_EPARSE, file, line, "observer '%s' defined twice", name);
-    lx_scene_observer *no = realloc(sc->obs, (sc->n_obs + 1) * sizeof *no);
+    lx_scene_observer *no = lx__realloc_n(sc->obs, sc->n_obs + 1, sizeof *no);
     if (!no) return lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
     sc->obs = no;
     lx_scene_observer *o = &sc->obs[sc->n_obs];
     memset(o, 0, sizeof *o);
-    o->name = malloc(strlen(name) + 1);
+    o->name = lx__alloc(strlen(name) + 1);
     if (!o->name) return lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
     strcpy(o->name, name);
     o->file = file;

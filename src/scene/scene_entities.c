@@ -10,7 +10,7 @@
 static char *xstrdup(const char *s)
 {
     size_t n = strlen(s) + 1;
-    char *p = malloc(n);
+    char *p = lx__alloc(n);
     if (p) memcpy(p, s, n);
     return p;
 }
@@ -19,7 +19,7 @@ char *lx__scene_keep_name(lx_scene *sc, const char *name)
 {
     for (size_t i = 0; i < sc->n_names; i++)
         if (!strcmp(sc->names[i], name)) return sc->names[i];
-    char **nn = realloc(sc->names, (sc->n_names + 1) * sizeof *nn);
+    char **nn = lx__realloc_n(sc->names, sc->n_names + 1, sizeof *nn);
     if (!nn) return NULL;
     sc->names = nn;
     char *c = xstrdup(name);
@@ -30,7 +30,7 @@ char *lx__scene_keep_name(lx_scene *sc, const char *name)
 
 lx_scene *lx__scene_new(const char *file)
 {
-    lx_scene *sc = calloc(1, sizeof *sc);
+    lx_scene *sc = lx__calloc(1, sizeof *sc);
     if (!sc) return NULL;
     sc->file = xstrdup(file);
     sc->title = xstrdup("");
@@ -52,30 +52,30 @@ void lx_scene_free(lx_scene *sc)
     if (!sc) return;
     for (size_t i = 0; i < sc->n_lum; i++) {
         lx_scene_luminaire *l = &sc->lum[i];
-        free(l->name);
-        free(l->lum_path);
-        free(l->spd_path);
+        lx__free(l->name);
+        lx__free(l->lum_path);
+        lx__free(l->spd_path);
         lx_luminaire_free(l->lum);
         lx_spd_set_free(l->spd);
     }
     for (size_t i = 0; i < sc->n_rec; i++) {
-        free(sc->rec[i].name);
-        free(sc->rec[i].points);
+        lx__free(sc->rec[i].name);
+        lx__free(sc->rec[i].points);
     }
-    for (size_t i = 0; i < sc->n_names; i++) free(sc->names[i]);
-    free(sc->names);
-    free(sc->lum);
-    free(sc->rec);
-    free(sc->sky_path);
+    for (size_t i = 0; i < sc->n_names; i++) lx__free(sc->names[i]);
+    lx__free(sc->names);
+    lx__free(sc->lum);
+    lx__free(sc->rec);
+    lx__free(sc->sky_path);
     lx_envmap_free(sc->sky_map);
     lx__room_scene_free(sc);
     lx__daylight_scene_free(sc);
     lx__design_free(sc);
-    for (size_t i = 0; i < sc->n_obs; i++) free(sc->obs[i].name);
-    free(sc->obs);
-    free(sc->title);
-    free(sc->file);
-    free(sc);
+    for (size_t i = 0; i < sc->n_obs; i++) lx__free(sc->obs[i].name);
+    lx__free(sc->obs);
+    lx__free(sc->title);
+    lx__free(sc->file);
+    lx__free(sc);
 }
 
 static lx_status normalise(lx_ctx *ctx, const char *file, long line, const char *what, double v[3])
@@ -101,11 +101,11 @@ void lx__scene_lum_raw_init(scene__lum_raw *r, const char *name, const char *fil
 void lx__scene_lum_raw_free(scene__lum_raw *r)
 {
     if (!r->active) return;
-    free(r->name);
-    free(r->type);
-    free(r->lum_file);
-    free(r->spd);
-    free(r->spectrum);
+    lx__free(r->name);
+    lx__free(r->type);
+    lx__free(r->lum_file);
+    lx__free(r->spd);
+    lx__free(r->spectrum);
     lx__design_lum_raw_free(&r->design);
     memset(r, 0, sizeof *r);
 }
@@ -306,7 +306,7 @@ static lx_status lum_file(lx_ctx *ctx, const scene__lum_raw *r, lx_scene_luminai
         char inner[LX__ERRMSG_MAX];
         snprintf(inner, sizeof inner, "%s", lx_ctx_errmsg(ctx));
         st = lx__error(ctx, st, f, r->lum_file_line, "file: %s", inner);
-        free(l->lum_path);
+        lx__free(l->lum_path);
         return st;
     }
     /* the luminous opening: negative IES sizes mean round (diameter) */
@@ -325,7 +325,7 @@ static lx_status lum_file(lx_ctx *ctx, const scene__lum_raw *r, lx_scene_luminai
     if (st != LX_OK || !(sum.lumens > 0)) {
         if (st == LX_OK) st = lx__error(ctx, LX_EPARSE, f, r->lum_file_line, "file: the luminaire emits no light");
         lx_luminaire_free(l->lum);
-        free(l->lum_path);
+        lx__free(l->lum_path);
         return st;
     }
     l->scale = r->has_flux ? r->flux / sum.lumens : r->has_multiplier ? r->multiplier : 1;
@@ -407,7 +407,7 @@ lx_status lx__scene_lum_finish(lx_ctx *ctx, lx_scene *sc, scene__lum_raw *r)
     if (st == LX_OK) st = lum_photometry(ctx, r, &l);
     if (st != LX_OK) goto out;
     if ((st = lum_colour(ctx, r, &l)) != LX_OK) goto fail_l;
-    lx_scene_luminaire *nl = realloc(sc->lum, (sc->n_lum + 1) * sizeof *nl);
+    lx_scene_luminaire *nl = lx__realloc_n(sc->lum, sc->n_lum + 1, sizeof *nl);
     if (!nl) {
         st = lx__error(ctx, LX_ENOMEM, r->file, r->line, "out of memory");
         goto fail_l;
@@ -421,8 +421,8 @@ lx_status lx__scene_lum_finish(lx_ctx *ctx, lx_scene *sc, scene__lum_raw *r)
 fail_l:
     lx_luminaire_free(l.lum);
     lx_spd_set_free(l.spd);
-    free(l.lum_path);
-    free(l.spd_path);
+    lx__free(l.lum_path);
+    lx__free(l.spd_path);
 out:
     lx__scene_lum_raw_free(r);
     return st;
@@ -443,8 +443,8 @@ void lx__scene_rec_raw_init(scene__rec_raw *r, const char *name, const char *fil
 void lx__scene_rec_raw_free(scene__rec_raw *r)
 {
     if (!r->active) return;
-    free(r->name);
-    free(r->type);
+    lx__free(r->name);
+    lx__free(r->type);
     memset(r, 0, sizeof *r);
 }
 
@@ -493,7 +493,7 @@ static lx_status rec_point(lx_ctx *ctx, const scene__rec_raw *r, lx_scene_receiv
                          r->name);
     rc->normal[2] = 1;
     rc->n = 1;
-    rc->points = malloc(3 * sizeof *rc->points);
+    rc->points = lx__alloc_n(3, sizeof *rc->points);
     if (!rc->points) return lx__error(ctx, LX_ENOMEM, r->file, r->line, "out of memory");
     memcpy(rc->points, r->pos, 3 * sizeof *rc->points);
     return LX_OK;
@@ -550,7 +550,7 @@ static lx_status rec_grid(lx_ctx *ctx, const scene__rec_raw *r, lx_scene_receive
     rc->n = rc->na * rc->nb;
     if (rc->n > LX__SCENE_MAX_POINTS)
         return lx__error(ctx, LX_EPARSE, f, ln, "receiver '%s': more than %d points", r->name, LX__SCENE_MAX_POINTS);
-    rc->points = malloc(3 * rc->n * sizeof *rc->points);
+    rc->points = lx__alloc_n(3 * rc->n, sizeof *rc->points);
     if (!rc->points) return lx__error(ctx, LX_ENOMEM, f, ln, "out of memory");
     double da = 0, db = 0;
     if (r->has_spacing)
@@ -597,7 +597,7 @@ lx_status lx__scene_rec_finish(lx_ctx *ctx, lx_scene *sc, scene__rec_raw *r)
         memcpy(rc.normal, r->normal, sizeof rc.normal);
         if ((st = normalise(ctx, f, ln, "normal", rc.normal)) != LX_OK) goto out;
     }
-    lx_scene_receiver *nr = realloc(sc->rec, (sc->n_rec + 1) * sizeof *nr);
+    lx_scene_receiver *nr = lx__realloc_n(sc->rec, sc->n_rec + 1, sizeof *nr);
     if (!nr) {
         st = lx__error(ctx, LX_ENOMEM, f, ln, "out of memory"); /* the points are freed below */
         goto out;
@@ -610,7 +610,7 @@ lx_status lx__scene_rec_finish(lx_ctx *ctx, lx_scene *sc, scene__rec_raw *r)
     lx__scene_rec_raw_free(r);
     return lx__design_rec_finish(ctx, sc, &dz);
 out:
-    if (st != LX_OK) free(rc.points);
+    if (st != LX_OK) lx__free(rc.points);
     lx__scene_rec_raw_free(r);
     return st;
 }

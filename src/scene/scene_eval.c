@@ -24,27 +24,27 @@ void lx_ctx_counters_reset(lx_ctx *ctx)
 void lx_scene_result_free(lx_scene_result *res)
 {
     if (!res) return;
-    free(res->first);
-    free(res->E_lx);
-    free(res->contrib_lx);
-    free(res->L_cd_m2);
-    free(res->cct_K);
-    free(res->duv);
-    free(res->melanopic_edi_lx);
-    free(res->direct_lx);
-    free(res->indirect_lx);
-    free(res->daylight_lx);
-    free(res->daylight_factor);
-    free(res->sky_component);
-    free(res->externally_reflected);
-    free(res->internally_reflected);
-    free(res->observer_indirect_lx);
-    free(res->cylindrical_lx);
-    free(res->semicylindrical_lx);
-    free(res->modelling);
-    for (size_t i = 0; i < res->n_surfaces; i++) free(res->surfaces[i].name);
-    free(res->surfaces);
-    free(res);
+    lx__free(res->first);
+    lx__free(res->E_lx);
+    lx__free(res->contrib_lx);
+    lx__free(res->L_cd_m2);
+    lx__free(res->cct_K);
+    lx__free(res->duv);
+    lx__free(res->melanopic_edi_lx);
+    lx__free(res->direct_lx);
+    lx__free(res->indirect_lx);
+    lx__free(res->daylight_lx);
+    lx__free(res->daylight_factor);
+    lx__free(res->sky_component);
+    lx__free(res->externally_reflected);
+    lx__free(res->internally_reflected);
+    lx__free(res->observer_indirect_lx);
+    lx__free(res->cylindrical_lx);
+    lx__free(res->semicylindrical_lx);
+    lx__free(res->modelling);
+    for (size_t i = 0; i < res->n_surfaces; i++) lx__free(res->surfaces[i].name);
+    lx__free(res->surfaces);
+    lx__free(res);
 }
 
 typedef lx__scene_lum lum_eval;
@@ -308,7 +308,7 @@ static lx_status device_blocks(lx_ctx *ctx, const lx_scene *sc, const lx_scene_p
                                unsigned char **done)
 {
     size_t nl = sc->n_lum, np = plan->n_points, g0 = 0;
-    unsigned char *d = calloc(nl * sc->n_rec > 0 ? nl * sc->n_rec : 1, 1);
+    unsigned char *d = lx__calloc(nl * sc->n_rec > 0 ? nl * sc->n_rec : 1, 1);
     double *E = NULL;
     if (!d) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t r = 0; r < sc->n_rec; r++) {
@@ -327,19 +327,19 @@ static lx_status device_blocks(lx_ctx *ctx, const lx_scene *sc, const lx_scene_p
             o.model = LX_MODEL_POINT;
             o.interp = LX_INTERP_TABLE;
             o.backend = LX_BACKEND_OPENCL;
-            if (!E && !(E = malloc(np * sizeof *E))) {
-                free(d);
+            if (!E && !(E = lx__alloc_n(np, sizeof *E))) {
+                lx__free(d);
                 return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
             }
             lx_status st = lx_grid_illuminance(ctx, &pl, 1, rc->points, rc->n, rc->normal, 1, &o, E);
             if (st != LX_OK) {
                 if (plan->device_required) {
-                    free(E);
-                    free(d);
+                    lx__free(E);
+                    lx__free(d);
                     return st;
                 }
                 lx__log(ctx, LX_LOG_INFO, "scene: OpenCL failed (%s); computing on the CPU", lx_ctx_errmsg(ctx));
-                free(E);
+                lx__free(E);
                 *done = d; /* what was done stays done; the rest runs on the CPU */
                 return LX_OK;
             }
@@ -354,7 +354,7 @@ static lx_status device_blocks(lx_ctx *ctx, const lx_scene *sc, const lx_scene_p
         }
         g0 += rc->n;
     }
-    free(E);
+    lx__free(E);
     *done = d;
     return LX_OK;
 }
@@ -445,9 +445,9 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
     double t0 = now_s();
     lx_counters before = ctx->counters;
     size_t np = plan->n_points, nl = sc->n_lum, nc = nl + 1;
-    lx_scene_result *res = calloc(1, sizeof *res);
-    lum_eval *le = calloc(nl ? nl : 1, sizeof *le);
-    scene__spec *spec = calloc(nc, sizeof *spec);
+    lx_scene_result *res = lx__calloc(1, sizeof *res);
+    lum_eval *le = lx__calloc(nl ? nl : 1, sizeof *le);
+    scene__spec *spec = lx__calloc(nc, sizeof *spec);
     void *map = NULL, *occm = NULL;
     unsigned char *ondev = NULL;
     lx__daylight *day = NULL, *sun = NULL; /* daylight through openings; the sun's shade outside rooms */
@@ -455,13 +455,13 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
     if (!res || !le || !spec) goto nomem;
     res->n_points = np;
     res->n_lum = nl;
-    res->first = malloc((sc->n_rec + 1) * sizeof *res->first);
-    res->E_lx = calloc(np ? np : 1, sizeof *res->E_lx);
-    res->contrib_lx = calloc(np * nc > 0 ? np * nc : 1, sizeof *res->contrib_lx);
-    res->L_cd_m2 = malloc((np ? np : 1) * sizeof(double));
-    res->cct_K = malloc((np ? np : 1) * sizeof(double));
-    res->duv = malloc((np ? np : 1) * sizeof(double));
-    res->melanopic_edi_lx = malloc((np ? np : 1) * sizeof(double));
+    res->first = lx__alloc_n(sc->n_rec + 1, sizeof *res->first);
+    res->E_lx = lx__calloc(np ? np : 1, sizeof *res->E_lx);
+    res->contrib_lx = lx__calloc(np * nc > 0 ? np * nc : 1, sizeof *res->contrib_lx);
+    res->L_cd_m2 = lx__alloc_n(np ? np : 1, sizeof(double));
+    res->cct_K = lx__alloc_n(np ? np : 1, sizeof(double));
+    res->duv = lx__alloc_n(np ? np : 1, sizeof(double));
+    res->melanopic_edi_lx = lx__alloc_n(np ? np : 1, sizeof(double));
     if (!res->first || !res->E_lx || !res->contrib_lx || !res->L_cd_m2 || !res->cct_K || !res->duv ||
         !res->melanopic_edi_lx)
         goto nomem;
@@ -535,11 +535,11 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
     if ((st = check_finite(ctx, sc, res, nl, spectral)) != LX_OK) goto fail;
     lx__daylight_free(day);
     lx__daylight_free(sun);
-    free(ondev);
+    lx__free(ondev);
     lx__scene_sky_map_free(map);
     lx__room_mesh_free(occm);
-    free(le);
-    free(spec);
+    lx__free(le);
+    lx__free(spec);
     counters_diff(&ctx->counters, &before, &res->work);
     res->seconds = now_s() - t0;
     lx__backend_used(ctx, res->work.kernel_launches ? LX_BACKEND_OPENCL : LX_BACKEND_CPU);
@@ -550,11 +550,11 @@ nomem:
 fail:
     lx__daylight_free(day);
     lx__daylight_free(sun);
-    free(ondev);
+    lx__free(ondev);
     lx__scene_sky_map_free(map);
     lx__room_mesh_free(occm);
     lx_scene_result_free(res);
-    free(le);
-    free(spec);
+    lx__free(le);
+    lx__free(spec);
     return st;
 }

@@ -11,20 +11,20 @@
 void lx_scene_glare_free(lx_scene_glare *g)
 {
     if (!g) return;
-    free(g->ugr);
-    free(g->background_cd_m2);
-    free(g->terms);
-    free(g->indirect_lx);
-    free(g);
+    lx__free(g->ugr);
+    lx__free(g->background_cd_m2);
+    lx__free(g->terms);
+    lx__free(g->indirect_lx);
+    lx__free(g);
 }
 
 lx_status lx__glare_room_background(lx_ctx *ctx, const lx_scene *sc, const lx__room_mesh *m, const double *Be, int backend,
                                     lx_scene_result *res)
 {
     size_t no = sc->n_obs;
-    double *pts = malloc(3 * no * sizeof *pts), *nrm = malloc(3 * no * sizeof *nrm);
-    int *cell = malloc(no * sizeof *cell), used = 0;
-    res->observer_indirect_lx = calloc(no, sizeof *res->observer_indirect_lx);
+    double *pts = lx__alloc_n(3 * no, sizeof *pts), *nrm = lx__alloc_n(3 * no, sizeof *nrm);
+    int *cell = lx__alloc_n(no, sizeof *cell), used = 0;
+    res->observer_indirect_lx = lx__calloc(no, sizeof *res->observer_indirect_lx);
     lx_status st = LX_OK;
     if (!pts || !nrm || !cell || !res->observer_indirect_lx) st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t o = 0; st == LX_OK && o < no; o++) {
@@ -34,9 +34,9 @@ lx_status lx__glare_room_background(lx_ctx *ctx, const lx_scene *sc, const lx__r
     }
     lx__room_gather_job g = {m, m->elem, m->n_elem, Be, no, pts, nrm, cell, NULL, LX__ROOM_VIS_RECEIVERS};
     if (st == LX_OK) st = lx__room_gather(ctx, &g, (lx_backend)backend, res->observer_indirect_lx, &used);
-    free(pts);
-    free(nrm);
-    free(cell);
+    lx__free(pts);
+    lx__free(nrm);
+    lx__free(cell);
     return st;
 }
 
@@ -104,12 +104,12 @@ lx_status lx_scene_glare_eval(lx_ctx *ctx, const lx_scene *sc, lx_scene_glare **
     LX__NEED_CTX(ctx);
     if (!sc || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_glare_eval: NULL argument");
     *out = NULL;
-    lx_scene_glare *g = calloc(1, sizeof *g);
+    lx_scene_glare *g = lx__calloc(1, sizeof *g);
     size_t no = sc->n_obs, nl = sc->n_lum;
-    if (!g || !(g->ugr = malloc((no ? no : 1) * sizeof *g->ugr)) ||
-        !(g->background_cd_m2 = malloc((no ? no : 1) * sizeof(double))) ||
-        !(g->indirect_lx = malloc((no ? no : 1) * sizeof(double))) ||
-        !(g->terms = calloc(no * nl > 0 ? no * nl : 1, sizeof *g->terms))) {
+    if (!g || !(g->ugr = lx__alloc_n(no ? no : 1, sizeof *g->ugr)) ||
+        !(g->background_cd_m2 = lx__alloc_n(no ? no : 1, sizeof(double))) ||
+        !(g->indirect_lx = lx__alloc_n(no ? no : 1, sizeof(double))) ||
+        !(g->terms = lx__calloc(no * nl > 0 ? no * nl : 1, sizeof *g->terms))) {
         lx_scene_glare_free(g);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }

@@ -75,14 +75,14 @@ static void why(lx_scene_plan *p, lx_effect e, int on, const char *fmt, ...)
 void lx_scene_plan_free(lx_scene_plan *plan)
 {
     if (!plan) return;
-    free(plan->near);
-    free(plan->near_err);
-    free(plan->near_why);
-    free(plan->device);
+    lx__free(plan->near);
+    lx__free(plan->near_err);
+    lx__free(plan->near_why);
+    lx__free(plan->device);
     lx__room_plan_free(plan);
-    free(plan->lum_scale);
-    free(plan->internal); /* an emergency plan's copy of the scene (its arrays are the scene's) */
-    free(plan);
+    lx__free(plan->lum_scale);
+    lx__free(plan->internal); /* an emergency plan's copy of the scene (its arrays are the scene's) */
+    lx__free(plan);
 }
 
 /* Patches the near-field integration is expected to evaluate for one pair (levels 4, 8, 16 ...
@@ -136,12 +136,12 @@ static lx_status plan_near(lx_ctx *ctx, const lx_scene *sc, lx_scene_plan *p, si
 {
     size_t nl = sc->n_lum, np = p->n_points;
     lx_effect_force F = sc->force[LX_EFFECT_NEAR_FIELD];
-    lx__scene_lum *le = calloc(nl, sizeof *le);
-    lx__nf_probe *pr = malloc(nl * sizeof *pr);
-    unsigned char *nf = malloc(nl);
-    size_t *ord = malloc(nl * sizeof *ord), *idx = malloc(nl * sizeof *idx);
+    lx__scene_lum *le = lx__calloc(nl, sizeof *le);
+    lx__nf_probe *pr = lx__alloc_n(nl, sizeof *pr);
+    unsigned char *nf = lx__alloc(nl);
+    size_t *ord = lx__alloc_n(nl, sizeof *ord), *idx = lx__alloc_n(nl, sizeof *idx);
     if (!le || !pr || !nf || !ord || !idx) {
-        free(le), free(pr), free(nf), free(ord), free(idx);
+        lx__free(le), lx__free(pr), lx__free(nf), lx__free(ord), lx__free(idx);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
     int any_file = 0;
@@ -205,7 +205,7 @@ static lx_status plan_near(lx_ctx *ctx, const lx_scene *sc, lx_scene_plan *p, si
     for (size_t c = 0; c < sizeof p->planning / sizeof *o; c++) o[c] = a[c] - b[c];
     p->planning.nearfield_probes = *n_probed;
     ctx->counters.nearfield_probes += *n_probed;
-    free(le), free(pr), free(nf), free(ord), free(idx);
+    lx__free(le), lx__free(pr), lx__free(nf), lx__free(ord), lx__free(idx);
     return LX_OK;
 }
 
@@ -288,16 +288,16 @@ static lx_status plan_environment(lx_ctx *ctx, const lx_scene *sc, lx_scene_plan
 /* A plan with its per-pair and per-block arrays, sized for the scene; NULL on no memory. */
 static lx_scene_plan *plan_alloc(const lx_scene *sc)
 {
-    lx_scene_plan *p = calloc(1, sizeof *p);
+    lx_scene_plan *p = lx__calloc(1, sizeof *p);
     if (!p) return NULL;
     for (size_t r = 0; r < sc->n_rec; r++)
         p->n_points += sc->rec[r].n;
     p->n_pairs = p->n_points * sc->n_lum;
     p->n_normals = sc->n_rec;
-    p->near = calloc(p->n_pairs ? p->n_pairs : 1, 1);
-    p->near_why = calloc(p->n_pairs ? p->n_pairs : 1, 1);
-    p->near_err = malloc((p->n_pairs ? p->n_pairs : 1) * sizeof *p->near_err);
-    p->device = calloc(sc->n_lum * sc->n_rec > 0 ? sc->n_lum * sc->n_rec : 1, 1);
+    p->near = lx__calloc(p->n_pairs ? p->n_pairs : 1, 1);
+    p->near_why = lx__calloc(p->n_pairs ? p->n_pairs : 1, 1);
+    p->near_err = lx__alloc_n(p->n_pairs ? p->n_pairs : 1, sizeof *p->near_err);
+    p->device = lx__calloc(sc->n_lum * sc->n_rec > 0 ? sc->n_lum * sc->n_rec : 1, 1);
     if (!p->near || !p->near_why || !p->near_err || !p->device) {
         lx_scene_plan_free(p);
         return NULL;
@@ -524,7 +524,7 @@ static lx_status plan_scale(lx_ctx *ctx, const lx_scene *sc, lx_scene_mode mode,
 {
     const lx_scene_design *d = sc->design;
     p->mode = (int)mode;
-    p->lum_scale = malloc((sc->n_lum ? sc->n_lum : 1) * sizeof *p->lum_scale);
+    p->lum_scale = lx__alloc_n((sc->n_lum ? sc->n_lum : 1), sizeof *p->lum_scale);
     if (!p->lum_scale) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     size_t n_em = 0;
     for (size_t l = 0; l < sc->n_lum; l++) {
@@ -567,7 +567,7 @@ lx_status lx_scene_plan_make_mode(lx_ctx *ctx, const lx_scene *sc, lx_backend ba
     lx_status st;
     if ((st = plan_scale(ctx, sc, mode, p)) != LX_OK) goto fail;
     if (mode == LX_SCENE_EMERGENCY) {
-        lx_scene *em = malloc(sizeof *em);
+        lx_scene *em = lx__alloc(sizeof *em);
         if (!em) {
             st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
             goto fail;

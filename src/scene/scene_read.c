@@ -41,7 +41,7 @@ typedef struct reader {
 static char *xstrdup(const char *s)
 {
     size_t n = strlen(s) + 1;
-    char *p = malloc(n);
+    char *p = lx__alloc(n);
     if (p) memcpy(p, s, n);
     return p;
 }
@@ -51,7 +51,7 @@ char *lx__scene_resolve(const char *base_file, const char *rel)
     if (rel[0] == '/' || !base_file || !strchr(base_file, '/')) return xstrdup(rel);
     const char *slash = strrchr(base_file, '/');
     size_t nd = (size_t)(slash - base_file) + 1, nr = strlen(rel);
-    char *p = malloc(nd + nr + 1);
+    char *p = lx__alloc(nd + nr + 1);
     if (!p) return NULL;
     memcpy(p, base_file, nd);
     memcpy(p + nd, rel, nr + 1);
@@ -266,13 +266,13 @@ static lx_status do_include(reader *r, const char *file, long line, const char *
         if (at > 0) snprintf(why, sizeof why, "%s (its line %ld)", m, at);
         else snprintf(why, sizeof why, "%s", m);
         lx__error(r->ctx, st, file, line, "include: cannot read '%s': %s", path, why);
-        free(path);
+        lx__free(path);
         return st;
     }
     if (r->depth >= MAX_DEPTH) st = lx__error(r->ctx, LX_EPARSE, file, line, "include: nested too deep");
     else r->include_line = line, st = read_file(r, path, text, len);
-    free(text);
-    free(path);
+    lx__free(text);
+    lx__free(path);
     return st;
 }
 
@@ -289,7 +289,7 @@ static lx_status key_value(reader *r, const char *file, long line, const char *k
     switch (r->sec) {
     case SEC_SCENE:
         if (!strcmp(key, "title")) {
-            free(sc->title);
+            lx__free(sc->title);
             sc->title = xstrdup(value);
             return sc->title ? LX_OK : lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
         }
@@ -459,6 +459,6 @@ lx_status lx_scene_read_file(lx_ctx *ctx, const char *path, lx_scene **out)
     lx_status st = lx__read_all(ctx, path, LX_INPUT_SCENE, &text, &len); /* its errors name the file */
     if (st != LX_OK) return st;
     st = lx_scene_read_mem(ctx, path, text, len, out);
-    free(text);
+    lx__free(text);
     return st;
 }

@@ -23,7 +23,7 @@ static double azimuth_integral(double a, double b)
  * split at the zenith angle where the receiver's horizon meets the sky's (|pi/2 - beta|). */
 static double overcast_tilted(lx_ctx *ctx, double Lz, double beta, int nodes)
 {
-    double *x = malloc(2 * (size_t)nodes * sizeof *x);
+    double *x = lx__alloc_n(2 * (size_t)nodes, sizeof *x);
     if (!x) return NAN;
     double *w = x + nodes;
     lx__gauss_legendre(nodes, x, w);
@@ -38,7 +38,7 @@ static double overcast_tilted(lx_ctx *ctx, double Lz, double beta, int nodes)
         }
         ctx->counters.environment_samples += (unsigned long long)nodes;
     }
-    free(x);
+    lx__free(x);
     return sum;
 }
 
@@ -52,8 +52,8 @@ void lx__scene_sky_map_free(void *p)
 {
     sky_map *m = p;
     if (!m) return;
-    free(m->L);
-    free(m);
+    lx__free(m->L);
+    lx__free(m);
 }
 
 /* Sum over the upper-hemisphere pixels of L times the integral of max(0, n . w) over the pixel
@@ -71,12 +71,12 @@ static double map_sum(lx_ctx *ctx, const sky_map *m, const double n[3])
 
 lx_status lx__scene_sky_map_load(lx_ctx *ctx, const lx_scene *sc, void **out)
 {
-    sky_map *m = calloc(1, sizeof *m);
+    sky_map *m = lx__calloc(1, sizeof *m);
     if (!m) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     m->map = sc->sky_map;
-    m->L = malloc((size_t)m->map->width * m->map->height * sizeof *m->L);
+    m->L = lx__alloc_n((size_t)m->map->width * m->map->height, sizeof *m->L);
     if (!m->L) {
-        free(m);
+        lx__free(m);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
     lx_status st = lx_envmap_luminance(ctx, m->map, m->L);

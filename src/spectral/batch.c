@@ -291,10 +291,10 @@ static void wcache_free(void *p)
 {
     struct lx__wcache *c = p;
     if (!c) return;
-    free(c->w);
-    free(c->w4);
-    free(c->w8);
-    free(c);
+    lx__free(c->w);
+    lx__free(c->w4);
+    lx__free(c->w8);
+    lx__free(c);
 }
 
 static lx_status batch_weights_cached(lx_ctx *ctx, const lx_batch *b, const lx_function *fns, size_t k,
@@ -307,11 +307,11 @@ static lx_status batch_weights_cached(lx_ctx *ctx, const lx_batch *b, const lx_f
         *out = c;
         return LX_OK;
     }
-    c = calloc(1, sizeof *c);
+    c = lx__calloc(1, sizeof *c);
     if (c) {
-        c->w = malloc(k * n * sizeof *c->w);
-        c->w4 = aligned_alloc(64, (k4 / 4 * nb * 16 * sizeof *c->w4 + 63) / 64 * 64); /* no load crosses a line */
-        c->w8 = aligned_alloc(64, (k4 / 4 * nb8 * 32 * sizeof *c->w8 + 63) / 64 * 64);
+        c->w = lx__alloc_n(k * n, sizeof *c->w);
+        c->w4 = lx__alloc_aligned(64, (k4 / 4 * nb * 16 * sizeof *c->w4 + 63) / 64 * 64); /* no load crosses a line */
+        c->w8 = lx__alloc_aligned(64, (k4 / 4 * nb8 * 32 * sizeof *c->w8 + 63) / 64 * 64);
     }
     lx_status st = !c || !c->w || !c->w4 || !c->w8 ? lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for the batch weights")
                                                  : lx__batch_weights(ctx, fns, k, b->start_nm, b->step_nm, n, c->w);
@@ -377,8 +377,8 @@ static lx_status batch_opencl(lx_ctx *ctx, const lx_batch *b, const lx_function 
     if (st) return st;
     size_t n = b->n_lambda, stride = b->row_stride ? b->row_stride : n;
     size_t es = b->dtype == LX_F32 ? sizeof(float) : sizeof(double);
-    double *w = malloc(k * n * sizeof *w);
-    float *wf = kahan ? malloc(k * n * sizeof *wf) : NULL;
+    double *w = lx__alloc_n(k * n, sizeof *w);
+    float *wf = kahan ? lx__alloc_n(k * n, sizeof *wf) : NULL;
     float *pairs = NULL;
     cl_mem wbuf = NULL;
     cl_int err = CL_SUCCESS;
@@ -407,7 +407,7 @@ static lx_status batch_opencl(lx_ctx *ctx, const lx_batch *b, const lx_function 
         goto done;
     }
     if (kahan) {
-        pairs = malloc(rows_max * out_row);
+        pairs = lx__alloc(rows_max * out_row);
         if (!pairs) {
             st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
             goto done;
@@ -464,9 +464,9 @@ static lx_status batch_opencl(lx_ctx *ctx, const lx_batch *b, const lx_function 
 done:
     if (wbuf) clReleaseMemObject(wbuf);
     clReleaseKernel(kern);
-    free(w);
-    free(wf);
-    free(pairs);
+    lx__free(w);
+    lx__free(wf);
+    lx__free(pairs);
     return st;
 }
 #endif
@@ -564,8 +564,8 @@ static lx_status resample_opencl(lx_ctx *ctx, size_t ns, const double *lam, cons
     for (size_t i = 0; i < ns; i++)
         if (offset[i] + n_in[i] > total) total = offset[i] + n_in[i];
     if (total == 0) total = 1;
-    cl_ulong *off = malloc(ns * sizeof *off);
-    cl_uint *cnt = malloc(ns * sizeof *cnt);
+    cl_ulong *off = lx__alloc_n(ns, sizeof *off);
+    cl_uint *cnt = lx__alloc_n(ns, sizeof *cnt);
     size_t stride = dst->row_stride ? dst->row_stride : dst->n_lambda;
     size_t es = dst->dtype == LX_F32 ? sizeof(float) : sizeof(double);
     size_t out_bytes = ((ns - 1) * stride + dst->n_lambda) * es;
@@ -609,8 +609,8 @@ done:
     for (int a = 0; a < 5; a++)
         if (m[a]) clReleaseMemObject(m[a]);
     clReleaseKernel(kern);
-    free(off);
-    free(cnt);
+    lx__free(off);
+    lx__free(cnt);
     return st;
 }
 #endif

@@ -106,11 +106,11 @@ lx_status lx_batch_colorimetry(lx_ctx *ctx, const lx_batch *b, lx_observer obs, 
     if (b->n_lambda < 2) return lx__error(ctx, LX_EINVAL, NULL, 0, "a spectrum needs at least 2 samples");
     lx_function f0 = obs == LX_OBSERVER_2 ? LX_FN_XBAR_2 : LX_FN_XBAR_10;
     lx_function fns[4] = {f0, f0 + 1, f0 + 2, LX_FN_VPRIME};
-    double *ints = malloc(sizeof(double) * 4 * b->n_spectra);
+    double *ints = lx__alloc_n(4 * b->n_spectra, sizeof(double));
     if (!ints) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for %zu spectra", b->n_spectra);
     lx_status st = lx_batch_integrate(ctx, b, fns, 4, opts, ints);
     if (st != LX_OK) {
-        free(ints);
+        lx__free(ints);
         return st;
     }
     /* below 256 spectra a thread costs more than the CCT solves it takes over */
@@ -119,17 +119,17 @@ lx_status lx_batch_colorimetry(lx_ctx *ctx, const lx_batch *b, lx_observer obs, 
     /* the range ends through the grid's own sampling (the batch sums at the grid's step, the CIE 015
      * rule), as lx_spd_colorimetry takes them: a blackbody at an end is in the range */
     if (!range_cached(obs, b, &J.lo_K, &J.hi_K)) {
-        double *grid = malloc(b->n_lambda * sizeof *grid);
+        double *grid = lx__alloc_n(b->n_lambda, sizeof *grid);
         if (grid) {
             for (size_t k = 0; k < b->n_lambda; k++) grid[k] = b->start_nm + (double)k * b->step_nm;
             lx_spd g = {.n = b->n_lambda, .lambda_nm = grid, .value = grid, .name = "grid"};
             lx__cct_range_ends(ctx, &g, obs, LX_METHOD_CIE15, &J.lo_K, &J.hi_K);
-            free(grid);
+            lx__free(grid);
             range_keep(obs, b, J.lo_K, J.hi_K);
         }
     }
     lx__parallel_for(ctx, nt, (long)b->n_spectra, work, &J);
-    free(ints);
+    lx__free(ints);
     for (int t = 0; t < nt; t++)
         if (J.st[t] != LX_OK) return lx__error(ctx, J.st[t], NULL, 0, "batch colorimetry failed: %s", lx_strerror(J.st[t]));
     return LX_OK;

@@ -165,7 +165,7 @@ static int keep_name(part *p, const char *s, size_t len, size_t *r, long line)
 {
     if (p->names_len + len + 1 > p->names_cap) {
         size_t cap = 2 * (p->names_cap + len + 1);
-        char *nb = realloc(p->names, cap);
+        char *nb = lx__realloc(p->names, cap);
         if (!nb) {
             p->err_line = line;
             snprintf(p->err, sizeof p->err, "out of memory");
@@ -196,13 +196,13 @@ void lx__csv_parse_part(part *p)
     unsigned long long fast_rows = 0;
     size_t names_cap = (size_t)(p->e - p->s) / 8 + p->rows_cap + 16, r = 0;
     if (p->names_cap < names_cap) { /* buffers are kept from one chunk to the next when streaming */
-        free(p->names);
-        p->names = malloc(names_cap);
+        lx__free(p->names);
+        p->names = lx__alloc(names_cap);
         p->names_cap = names_cap;
     }
     if (p->name_at_cap < p->rows_cap + 1) {
-        free(p->name_at);
-        p->name_at = malloc((p->rows_cap + 1) * sizeof *p->name_at);
+        lx__free(p->name_at);
+        p->name_at = lx__alloc_n(p->rows_cap + 1, sizeof *p->name_at);
         p->name_at_cap = p->rows_cap + 1;
     }
     p->names_len = 0;
@@ -282,10 +282,10 @@ void lx__csv_parse_part(part *p)
 void lx_batch_table_free(lx_batch_table *t)
 {
     if (!t) return;
-    free((void *)t->batch.values);
-    free(t->names);
-    free(t->name_at);
-    free(t);
+    lx__free((void *)t->batch.values);
+    lx__free(t->names);
+    lx__free(t->name_at);
+    lx__free(t);
 }
 
 typedef lx__csv_header csv_header;
@@ -321,7 +321,7 @@ lx_status lx__csv_read_header(lx_ctx *ctx, const char *file, const char *text, s
     if (!sep) return lx__error(ctx, LX_EPARSE, file, line, "batch header needs separators (, ; or tab)");
     /* header: name, then wavelengths on a uniform grid */
     size_t n = 0, cap = 512;
-    double *lam = malloc(cap * sizeof *lam);
+    double *lam = lx__alloc_n(cap, sizeof *lam);
     if (!lam) return lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
     /* a first cell that is a number means there is no name column (numpy-style files) */
     const char *q = (const char *)memchr(hs, sep, (size_t)(he - hs)) + 1;
@@ -342,14 +342,14 @@ lx_status lx__csv_read_header(lx_ctx *ctx, const char *file, const char *text, s
         double v;
         const char *z = lx__parse_double(a, b, &v);
         if (!z || z != b || !(v > 0) || !isfinite(v)) { /* 1e999 parses as inf */
-            free(lam);
+            lx__free(lam);
             return lx__error(ctx, LX_EPARSE, file, line, "header cell %zu ('%.*s') is not a wavelength in nm", n + 2,
                              (int)(b - a < 40 ? b - a : 40), a);
         }
         if (n == cap) {
-            double *l2 = realloc(lam, (cap *= 2) * sizeof *lam);
+            double *l2 = lx__realloc_n(lam, cap *= 2, sizeof *lam);
             if (!l2) {
-                free(lam);
+                lx__free(lam);
                 return lx__error(ctx, LX_ENOMEM, file, line, "out of memory");
             }
             lam = l2;
@@ -361,11 +361,11 @@ lx_status lx__csv_read_header(lx_ctx *ctx, const char *file, const char *text, s
     for (size_t j = 1; j < n; j++)
         if (!(fabs(lam[j] - (start + (double)j * step)) <= 1e-9 * fabs(lam[j])) || !(step > 0)) {
             double bad = lam[j];
-            free(lam);
+            lx__free(lam);
             return lx__error(ctx, LX_EUNSUPPORTED, file, line,
                              "the header's wavelengths are not a uniform increasing grid (at %.17g nm)", bad);
         }
-    free(lam);
+    lx__free(lam);
     *H = (csv_header){s, line, sep, named, n, start, step};
     return LX_OK;
 }
@@ -412,11 +412,11 @@ lx_status lx_batch_table_read_mem(lx_ctx *ctx, const char *file, const char *tex
         rows += parts[i].rows;
         ln += (long)parts[i].lines;
     }
-    lx_batch_table *t = calloc(1, sizeof *t);
+    lx_batch_table *t = lx__calloc(1, sizeof *t);
     size_t es = dtype == LX_F32 ? sizeof(float) : sizeof(double);
-    void *vals = t ? malloc(rows * n * es + 1) : NULL;
+    void *vals = t ? lx__alloc(rows * n * es + 1) : NULL;
     if (!t || !vals) {
-        free(t);
+        lx__free(t);
         return lx__error(ctx, LX_ENOMEM, file, 0, "out of memory for %zu spectra x %zu samples", rows, n);
     }
     t->batch = (lx_batch){.n_spectra = rows, .n_lambda = n, .start_nm = start, .step_nm = step, .dtype = dtype,
@@ -437,8 +437,8 @@ lx_status lx_batch_table_read_mem(lx_ctx *ctx, const char *file, const char *tex
         names_len += parts[i].names_len;
     }
     if (!st) {
-        t->names = malloc(names_len + 1);
-        t->name_at = malloc((rows + 1) * sizeof *t->name_at);
+        t->names = lx__alloc(names_len + 1);
+        t->name_at = lx__alloc_n(rows + 1, sizeof *t->name_at);
         if (!t->names || !t->name_at) st = lx__error(ctx, LX_ENOMEM, file, 0, "out of memory");
     }
     if (!st) {
@@ -450,8 +450,8 @@ lx_status lx_batch_table_read_mem(lx_ctx *ctx, const char *file, const char *tex
         }
     }
     for (int i = 0; i < T; i++) {
-        free(parts[i].names);
-        free(parts[i].name_at);
+        lx__free(parts[i].names);
+        lx__free(parts[i].name_at);
     }
     if (st) {
         lx_batch_table_free(t);
@@ -510,7 +510,7 @@ static lx_status text_open(lx_ctx *ctx, const char *path, int whole, text_file *
 static void text_close(text_file *tf)
 {
     if (tf->map) munmap(tf->map, tf->len);
-    free(tf->buf);
+    lx__free(tf->buf);
 }
 
 lx_status lx_batch_table_read(lx_ctx *ctx, const char *path, lx_dtype dtype, int threads, lx_batch_table **out)

@@ -108,7 +108,7 @@ static void source_close(source *src)
     if (src->map && src->map_len > src->released)
         munmap((void *)(src->map + src->released), src->map_len - src->released);
     if (src->own_f) fclose(src->f);
-    free(src->carry);
+    lx__free(src->carry);
 }
 
 /* Map mode: unmaps the whole pages before offset `to` (the text of emitted rounds). */
@@ -133,7 +133,7 @@ static lx_status source_fill(lx_ctx *ctx, const char *path, source *src, sset *S
         size_t room = want > n ? want - n : 0;
         if (S->cap < n + room + PAD + 1 || S->cap < src->carry_len + PAD + 1) {
             size_t cap = 2 * (n + room + src->carry_len) + PAD + 1;
-            char *b = realloc(S->buf, cap);
+            char *b = lx__realloc(S->buf, cap);
             if (!b) return lx__error(ctx, LX_ENOMEM, path, 0, "out of memory for %zu bytes of input", cap);
             S->buf = b, S->cap = cap;
         }
@@ -181,7 +181,7 @@ static lx_status source_fill(lx_ctx *ctx, const char *path, source *src, sset *S
             size_t rest = n - whole;
             if (rest) {
                 if (src->carry_cap < rest) {
-                    char *c = realloc(src->carry, rest);
+                    char *c = lx__realloc(src->carry, rest);
                     if (!c) return lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
                     src->carry = c, src->carry_cap = rest;
                 }
@@ -212,7 +212,7 @@ static lx_status source_fill(lx_ctx *ctx, const char *path, source *src, sset *S
         size_t keep = n;
         n = 0;
         if (src->carry_cap < keep) {
-            char *c = realloc(src->carry, keep);
+            char *c = lx__realloc(src->carry, keep);
             if (!c) return lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
             src->carry = c, src->carry_cap = keep;
         }
@@ -250,8 +250,8 @@ static const char *cut_parts(lx_ctx *ctx, const char *path, sset *S, const char 
         /* a row takes at least 2 n - 1 bytes (n one-character values and their separators) */
         size_t cap = (size_t)(pe - pos) / (2 * n - 1 + (n == 1)) + 1;
         if (cap > q->cap) {
-            free(q->p.values);
-            q->p.values = malloc(cap * n * es);
+            lx__free(q->p.values);
+            q->p.values = lx__alloc(cap * n * es);
             q->cap = q->p.values ? cap : 0;
             if (!q->p.values) {
                 *st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory for a chunk of %zu spectra", cap);
@@ -298,7 +298,7 @@ static int source_unread(source *src, const char *p, size_t n)
 {
     if (!n) return 0;
     if (src->carry_cap < n + src->carry_len) {
-        char *c = realloc(src->carry, n + src->carry_len);
+        char *c = lx__realloc(src->carry, n + src->carry_len);
         if (!c) return -1;
         src->carry = c, src->carry_cap = n + src->carry_len;
     }
@@ -324,7 +324,7 @@ lx_status lx_batch_table_stream_ex(lx_ctx *ctx, const char *path, lx_dtype dtype
         source_close(&src);
         return st;
     }
-    sset *sets = calloc(2, sizeof *sets);
+    sset *sets = lx__calloc(2, sizeof *sets);
     if (!sets) {
         source_close(&src);
         return lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
@@ -404,13 +404,13 @@ lx_status lx_batch_table_stream_ex(lx_ctx *ctx, const char *path, lx_dtype dtype
         for (int i = 0; i < MAX_PARTS; i++) {
             spart *q = &sets[k].q[i];
             if (q->state && cb->release) cb->release(cb->user, q->state);
-            free(q->p.values);
-            free(q->p.names);
-            free(q->p.name_at);
+            lx__free(q->p.values);
+            lx__free(q->p.names);
+            lx__free(q->p.name_at);
         }
-        free(sets[k].buf);
+        lx__free(sets[k].buf);
     }
-    free(sets);
+    lx__free(sets);
     source_close(&src);
     return st;
 }
@@ -452,7 +452,7 @@ static lx_status integ_chunk(void *user, const lx_batch_table *chunk, size_t row
     size_t need = (row0 + chunk->batch.n_spectra) * I->k;
     if (need > I->cap) {
         size_t cap = need > 2 * I->cap ? need : 2 * I->cap;
-        double *o = realloc(I->out, cap * sizeof *o);
+        double *o = lx__realloc_n(I->out, cap, sizeof *o);
         if (!o) return lx__error(I->ctx, LX_ENOMEM, NULL, 0, "out of memory for the results");
         I->out = o;
         I->cap = cap;
@@ -463,7 +463,7 @@ static lx_status integ_chunk(void *user, const lx_batch_table *chunk, size_t row
     return lx_batch_integrate(I->ctx, &chunk->batch, I->fns, I->k, &o, I->out + row0 * I->k);
 }
 
-void lx_batch_results_free(double *results) { free(results); }
+void lx_batch_results_free(double *results) { lx__free(results); }
 
 lx_status lx_batch_table_integrate_file(lx_ctx *ctx, const char *path, const lx_function *fns, size_t k, int threads,
                                         double **out, size_t *n_spectra)
@@ -474,9 +474,9 @@ lx_status lx_batch_table_integrate_file(lx_ctx *ctx, const char *path, const lx_
     integ I = {ctx, fns, k, 0, 0, NULL};
     /* double values: the same numbers strtod gives, summed in double */
     lx_status st = lx_batch_table_stream(ctx, path, LX_F64, threads, integ_chunk, &I);
-    if (!st && !I.out && !(I.out = malloc(sizeof(double)))) st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
+    if (!st && !I.out && !(I.out = lx__alloc(sizeof(double)))) st = lx__error(ctx, LX_ENOMEM, path, 0, "out of memory");
     if (st) {
-        free(I.out);
+        lx__free(I.out);
         return st;
     }
     *out = I.out;

@@ -106,7 +106,7 @@ lx_status lx__planck_uv_ds3(lx_observer obs, size_t n, const double *T, double (
     if (st == LX_OK) st = get_cmf(tmp, obs, &c);
     lx_ctx_destroy(tmp);
     if (st != LX_OK) return st;
-    double *c2_l = malloc(2 * c.y.n * sizeof *c2_l), *inv_l5 = c2_l ? c2_l + c.y.n : NULL;
+    double *c2_l = lx__alloc_n(2 * c.y.n, sizeof *c2_l), *inv_l5 = c2_l ? c2_l + c.y.n : NULL;
     if (!c2_l) return LX_ENOMEM;
     for (size_t i = 0; i < c.y.n; i++) {
         double l = c.y.lambda_nm[i];
@@ -114,7 +114,7 @@ lx_status lx__planck_uv_ds3(lx_observer obs, size_t n, const double *T, double (
         inv_l5[i] = 1 / (l * l * l * l * l);
     }
     for (size_t k = 0; k < n; k++) planck_uv_ds3(&c, c2_l, inv_l5, T[k], out[k]);
-    free(c2_l);
+    lx__free(c2_l);
     return LX_OK;
 }
 
@@ -130,8 +130,8 @@ typedef struct lx__locus {
 static void locus_free(void *p)
 {
     lx__locus *pair = p;
-    for (int i = 0; i < 2; i++) free(pair[i].u); /* one block holds u, v and their derivatives */
-    free(pair);
+    for (int i = 0; i < 2; i++) lx__free(pair[i].u); /* one block holds u, v and their derivatives */
+    lx__free(pair);
 }
 
 static lx_status locus(lx_ctx *ctx, lx_observer obs, lx__locus **out, cmf3 *c)
@@ -140,7 +140,7 @@ static lx_status locus(lx_ctx *ctx, lx_observer obs, lx__locus **out, cmf3 *c)
     if (st != LX_OK) return st;
     lx__locus *pair = lx__slot_get(ctx, LX__SLOT_LOCUS);
     if (!pair) {
-        pair = calloc(2, sizeof *pair);
+        pair = lx__calloc(2, sizeof *pair);
         if (!pair) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for the locus table");
         lx__slot_set(ctx, LX__SLOT_LOCUS, pair, locus_free);
     }
@@ -150,7 +150,7 @@ static lx_status locus(lx_ctx *ctx, lx_observer obs, lx__locus **out, cmf3 *c)
         L->logt0 = log(TABLE_T_MIN);
         L->dlogt = (log(TABLE_T_MAX) - L->logt0) / (L->n - 1);
         /* one block: u, v and their derivatives in s = ln T, for the Hermite first guess */
-        L->u = malloc(sizeof(double) * 4 * (size_t)L->n);
+        L->u = lx__alloc_n(4 * (size_t)L->n, sizeof(double));
         if (!L->u) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for the locus table");
         L->v = L->u + L->n;
         double *du = L->u + 2 * L->n, *dv = L->u + 3 * L->n;

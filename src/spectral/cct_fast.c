@@ -49,10 +49,10 @@ static void build(fast_locus *L, lx_observer obs)
 {
     L->s0 = log(LX__CCT_FAST_T_MIN);
     L->h = (log(LX__CCT_FAST_T_MAX) - L->s0) / FAST_INTERVALS;
-    double(*o)[8] = malloc(FAST_NODES * sizeof *o), h = L->h, h2 = h * h;
+    double(*o)[8] = lx__alloc_n(FAST_NODES, sizeof *o), h = L->h, h2 = h * h;
     for (int k = 0; k < FAST_NODES; k++) L->T[k] = exp(L->s0 + k * h);
     if (!o || lx__planck_uv_ds3(obs, FAST_NODES, L->T, o) != LX_OK) {
-        free(o);
+        lx__free(o);
         return;
     }
     for (int k = 0; k < FAST_NODES; k++) {
@@ -62,7 +62,7 @@ static void build(fast_locus *L, lx_observer obs)
                 hermite5(o[k - 1][m], o[k - 1][2 + m] * h, o[k - 1][4 + m] * h2, o[k][m], o[k][2 + m] * h,
                          o[k][4 + m] * h2, L->poly[k - 1] + 6 * m);
     }
-    free(o);
+    lx__free(o);
     L->ok = 1;
 }
 

@@ -78,7 +78,7 @@ static int tokenize(const char *s, const char *e, toks *ts)
         }
         if (ts->n == ts->cap) {
             size_t cap = ts->cap ? 2 * ts->cap : 32;
-            tok *nt = realloc(ts->t, cap * sizeof *nt);
+            tok *nt = lx__realloc_n(ts->t, cap, sizeof *nt);
             if (!nt) return -1;
             ts->t = nt;
             ts->cap = cap;
@@ -225,8 +225,8 @@ static lx_status classify_fields(cgats *p)
 {
     if (p->nfields == 0)
         return lx__error(p->ctx, LX_EPARSE, p->file, p->fmt_line, "empty BEGIN_DATA_FORMAT field list");
-    p->role = malloc(p->nfields * sizeof *p->role);
-    p->field_nm = malloc(p->nfields * sizeof *p->field_nm);
+    p->role = lx__alloc_n(p->nfields, sizeof *p->role);
+    p->field_nm = lx__alloc_n(p->nfields, sizeof *p->field_nm);
     if (!p->role || !p->field_nm) return lx__rd_nomem(p->rd);
     for (size_t f = 0; f < p->nfields; f++) {
         char nb[32];
@@ -263,7 +263,7 @@ static lx_status format_line(cgats *p, long line, size_t skip)
         }
         if (p->nfields == p->fcap) {
             p->fcap = p->fcap ? 2 * p->fcap : 64;
-            tok *nf = realloc(p->fields, p->fcap * sizeof *nf);
+            tok *nf = lx__realloc_n(p->fields, p->fcap, sizeof *nf);
             if (!nf) return lx__rd_nomem(p->rd);
             p->fields = nf;
         }
@@ -278,17 +278,17 @@ static int start_set(cgats *p, long line)
 {
     if (p->nsets == p->vcap) {
         size_t cap = p->vcap ? 2 * p->vcap : 16;
-        double *nv = realloc(p->vals, cap * p->nspec * sizeof *nv);
+        double *nv = lx__realloc_n(p->vals, cap * p->nspec, sizeof *nv);
         if (!nv) return -1;
         p->vals = nv;
-        char **nn = realloc(p->names, cap * sizeof *nn);
+        char **nn = lx__realloc_n(p->names, cap, sizeof *nn);
         if (!nn) return -1;
         p->names = nn;
         p->vcap = cap;
     }
     if (p->nsets == p->lcap) {
         size_t cap = p->lcap ? 2 * p->lcap : 16;
-        long *nl = realloc(p->set_line, cap * sizeof *nl);
+        long *nl = lx__realloc_n(p->set_line, cap, sizeof *nl);
         if (!nl) return -1;
         p->set_line = nl;
         p->lcap = cap;
@@ -312,7 +312,7 @@ static lx_status data_value(cgats *p, long line, const tok *t, int *bad)
         if (!st && p->rd->nskipped && p->rd->skipped[p->rd->nskipped - 1].line == line) *bad = 1;
     } else if ((int)f == p->name_field) {
         size_t n = (size_t)(t->e - t->s);
-        char *nm = malloc(n + 1);
+        char *nm = lx__alloc(n + 1);
         if (!nm) return lx__rd_nomem(p->rd);
         memcpy(nm, t->s, n);
         nm[n] = '\0';
@@ -348,7 +348,7 @@ static lx_status data_line(cgats *p, long line)
     }
     if (bad) { /* aligned: this line was one set; leave it out */
         p->nsets--;
-        free(p->names[p->nsets]);
+        lx__free(p->names[p->nsets]);
         p->names[p->nsets] = NULL;
         p->dropped++;
     }
@@ -412,7 +412,7 @@ static lx_status band_wavelengths(cgats *p)
 {
     const kw *bands = &p->bands, *start = &p->start, *end = &p->end;
     size_t nspec = p->nspec;
-    p->lambda = malloc(nspec * sizeof *p->lambda);
+    p->lambda = lx__alloc_n(nspec, sizeof *p->lambda);
     if (!p->lambda) return lx__rd_nomem(p->rd);
     if (!(bands->have || start->have || end->have)) {
         for (size_t f = 0; f < p->nfields; f++)
@@ -452,15 +452,15 @@ static lx_status apply_norm(cgats *p)
 static void cgats_free(cgats *p)
 {
     if (p->names)
-        for (size_t i = 0; i < p->nsets; i++) free(p->names[i]);
-    free(p->names);
-    free(p->ts.t);
-    free(p->fields);
-    free(p->role);
-    free(p->field_nm);
-    free(p->vals);
-    free(p->set_line);
-    free(p->lambda);
+        for (size_t i = 0; i < p->nsets; i++) lx__free(p->names[i]);
+    lx__free(p->names);
+    lx__free(p->ts.t);
+    lx__free(p->fields);
+    lx__free(p->role);
+    lx__free(p->field_nm);
+    lx__free(p->vals);
+    lx__free(p->set_line);
+    lx__free(p->lambda);
 }
 
 lx_status lx__cgats_read(lx__rd *rd, const char *text, size_t len, lx_spd_set **out)

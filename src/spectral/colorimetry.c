@@ -116,7 +116,7 @@ lx_status lx_colorimetry_from_integrals(lx_ctx *ctx, lx_observer obs, const doub
  * 999.99935 K, a 100000 K one to 100066 K). NaN when that cannot be computed. */
 static double apparent_cct(lx_ctx *ctx, const lx_spd *spd, lx_observer obs, lx_method method, double T_K)
 {
-    double *v = malloc(spd->n * sizeof *v);
+    double *v = lx__alloc_n(spd->n, sizeof *v);
     if (!v) return NAN;
     for (size_t i = 0; i < spd->n; i++) v[i] = lx_planck(spd->lambda_nm[i], T_K);
     lx_spd p = *spd;
@@ -130,7 +130,7 @@ static double apparent_cct(lx_ctx *ctx, const lx_spd *spd, lx_observer obs, lx_m
     }
     double d = xyz[0] + 15 * xyz[1] + 3 * xyz[2];
     if (ok && d > 0) T = solve_cct(ctx, obs, 4 * xyz[0] / d, 6 * xyz[1] / d, &duv);
-    free(v);
+    lx__free(v);
     return T;
 }
 

@@ -120,13 +120,13 @@ static lx_status integrate_scaled(lx_ctx *ctx, const lx_spd *spd, const void *ar
     double m = lx__spd_max_abs(spd), r = NAN;
     int e = 0;
     frexp(m, &e);
-    double *v = malloc(spd->n * sizeof *v);
+    double *v = lx__alloc_n(spd->n, sizeof *v);
     if (!v) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t i = 0; i < spd->n; i++) v[i] = ldexp(spd->value[i], -e);
     lx_spd scaled = *spd;
     scaled.value = v;
     st = integral(ctx, &scaled, arg, &r);
-    free(v);
+    lx__free(v);
     if (st != LX_OK) return st;
     r = ldexp(r, e);
     if (!isfinite(r)) {

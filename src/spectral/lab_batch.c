@@ -116,7 +116,7 @@ lx_status lx_lab_batch(lx_ctx *ctx, const lx_batch *b, const lx_batch_opts *opts
         if (st != LX_OK) return st;
         J.cov[f] = lx__coverage(&w, a, e);
     }
-    double *ints = malloc(sizeof(double) * k * b->n_spectra);
+    double *ints = lx__alloc_n(k * b->n_spectra, sizeof(double));
     if (!ints) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory for %zu spectra", b->n_spectra);
     lx_status st = lx_batch_integrate(ctx, b, fns, k, opts, ints);
     if (st == LX_OK) {
@@ -126,7 +126,7 @@ lx_status lx_lab_batch(lx_ctx *ctx, const lx_batch *b, const lx_batch_opts *opts
         for (int t = 0; t < nt && st == LX_OK; t++)
             if (J.st[t] != LX_OK) st = lx__error(ctx, J.st[t], NULL, 0, "batch lab quantities failed: %s", lx_strerror(J.st[t]));
     }
-    free(ints);
+    lx__free(ints);
     return st;
 }
 

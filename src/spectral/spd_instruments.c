@@ -31,11 +31,11 @@ static int samples_push(samples *S, double l, double v, long line)
 {
     if (S->n == S->cap) {
         size_t cap = S->cap ? 2 * S->cap : 512;
-        double *nl = realloc(S->l, cap * sizeof *nl);
+        double *nl = lx__realloc_n(S->l, cap, sizeof *nl);
         if (nl) S->l = nl;
-        double *nv = realloc(S->v, cap * sizeof *nv);
+        double *nv = lx__realloc_n(S->v, cap, sizeof *nv);
         if (nv) S->v = nv;
-        long *ln = realloc(S->line, cap * sizeof *ln);
+        long *ln = lx__realloc_n(S->line, cap, sizeof *ln);
         if (ln) S->line = ln;
         if (!nl || !nv || !ln) return -1;
         S->cap = cap;
@@ -46,7 +46,7 @@ static int samples_push(samples *S, double l, double v, long line)
     return 0;
 }
 
-static void samples_free(samples *S) { free(S->l), free(S->v), free(S->line); }
+static void samples_free(samples *S) { lx__free(S->l), lx__free(S->v), lx__free(S->line); }
 
 /* One spectrum from samples (at least 2) into *out, or merged into it when *out holds one; `last`
  * is the line an empty spectrum's error names. */
@@ -141,7 +141,7 @@ lx_status lx__oceanview_read(lx__rd *rd, const char *text, size_t len, lx_spd_se
                 const char *v = t + 10, *ve = e;
                 while (ve > v && is_blank(ve[-1])) ve--;
                 if (ve - v > 5 && !memcmp(ve - 5, " Node", 5)) ve -= 5;
-                free(name);
+                lx__free(name);
                 static const char key[] = "Data from";
                 if (!(name = lx__strndup(v, ve)) || lx__rd_field(rd, it.line, key, key + 9, v, ve))
                     st = lx__rd_nomem(rd);
@@ -184,7 +184,7 @@ lx_status lx__oceanview_read(lx__rd *rd, const char *text, size_t len, lx_spd_se
         S.first_line = begin;
         st = samples_set(rd, &S, name, it.line, out);
     }
-    free(name);
+    lx__free(name);
     samples_free(&S);
     return st;
 }

@@ -23,22 +23,22 @@ void lx_spd_set_free(lx_spd_set *set)
     if (!set) return;
     if (set->spd) {
         for (size_t i = 0; i < set->count; i++) {
-            free((void *)set->spd[i].name);
-            free((void *)set->spd[i].lambda_nm);
-            free((void *)set->spd[i].value);
+            lx__free((void *)set->spd[i].name);
+            lx__free((void *)set->spd[i].lambda_nm);
+            lx__free((void *)set->spd[i].value);
         }
     }
     for (size_t i = 0; i < set->nfields; i++) {
-        free(set->fields[i].key);
-        free(set->fields[i].value);
+        lx__free(set->fields[i].key);
+        lx__free(set->fields[i].value);
     }
-    for (size_t i = 0; i < set->nskipped; i++) free(set->skipped[i].why);
-    free(set->fields);
-    free(set->skipped);
-    free(set->spd);
-    free(set->line);
-    free(set->file);
-    free(set);
+    for (size_t i = 0; i < set->nskipped; i++) lx__free(set->skipped[i].why);
+    lx__free(set->fields);
+    lx__free(set->skipped);
+    lx__free(set->spd);
+    lx__free(set->line);
+    lx__free(set->file);
+    lx__free(set);
 }
 
 /* lx_spd_check lives in integrate.c (written there first, same contract). */
@@ -71,7 +71,7 @@ lx_status lx__spd_set_build(lx_ctx *ctx, const char *file, size_t nlam, const do
         if (!isfinite(l) || !(l > 0))
             return lx__error(ctx, LX_EPARSE, file, LAMLINE(k), "wavelength must be positive: %.17g nm", l);
     }
-    sort_key *key = malloc(nlam * sizeof *key);
+    sort_key *key = lx__alloc_n(nlam, sizeof *key);
     if (!key) return lx__error(ctx, LX_ENOMEM, file, 0, "out of memory (%zu samples)", nlam);
     int sorted = 1;
     for (size_t k = 0; k < nlam; k++) {
@@ -87,18 +87,18 @@ lx_status lx__spd_set_build(lx_ctx *ctx, const char *file, size_t nlam, const do
                 lx_status st = lx__error(ctx, LX_EPARSE, file, LAMLINE(b),
                                          "duplicate wavelength %.17g nm (first on line %ld)",
                                          key[k].lambda, LAMLINE(a));
-                free(key);
+                lx__free(key);
                 return st;
             }
         }
     }
-    lx_spd_set *set = calloc(1, sizeof *set);
+    lx_spd_set *set = lx__calloc(1, sizeof *set);
     if (!set) goto nomem;
     set->file = lx__strndup(file, file + strlen(file));
     set->unit_scale = 1.0;
     set->wavelength_scale = 1.0;
-    set->spd = calloc(nspec ? nspec : 1, sizeof *set->spd);
-    set->line = calloc(nspec ? nspec : 1, sizeof *set->line);
+    set->spd = lx__calloc(nspec ? nspec : 1, sizeof *set->spd);
+    set->line = lx__calloc(nspec ? nspec : 1, sizeof *set->line);
     if (!set->file || !set->spd || !set->line) goto nomem;
     for (size_t s = 0; s < nspec; s++) {
         char num[32];
@@ -107,8 +107,8 @@ lx_status lx__spd_set_build(lx_ctx *ctx, const char *file, size_t nlam, const do
             snprintf(num, sizeof num, "%zu", s + 1);
             nm = num;
         }
-        double *l = malloc(nlam * sizeof *l);
-        double *v = malloc(nlam * sizeof *v);
+        double *l = lx__alloc_n(nlam, sizeof *l);
+        double *v = lx__alloc_n(nlam, sizeof *v);
         char *name = lx__strndup(nm, nm + strlen(nm));
         set->spd[s].lambda_nm = l;
         set->spd[s].value = v;
@@ -123,11 +123,11 @@ lx_status lx__spd_set_build(lx_ctx *ctx, const char *file, size_t nlam, const do
         }
         set->line[s] = lines ? lines[s] : lam_line_all;
     }
-    free(key);
+    lx__free(key);
     *out = set;
     return LX_OK;
 nomem:
-    free(key);
+    lx__free(key);
     lx_spd_set_free(set);
     return lx__error(ctx, LX_ENOMEM, file, 0, "out of memory");
 #undef LAMLINE
@@ -136,9 +136,9 @@ nomem:
 lx_status lx__spd_set_merge(lx_ctx *ctx, lx_spd_set *a, lx_spd_set *b)
 {
     size_t n = a->count + b->count;
-    lx_spd *spd = realloc(a->spd, (n ? n : 1) * sizeof *spd);
+    lx_spd *spd = lx__realloc_n(a->spd, n ? n : 1, sizeof *spd);
     if (spd) a->spd = spd;
-    long *line = realloc(a->line, (n ? n : 1) * sizeof *line);
+    long *line = lx__realloc_n(a->line, n ? n : 1, sizeof *line);
     if (line) a->line = line;
     if (!spd || !line) {
         lx_spd_set_free(b);
@@ -165,7 +165,7 @@ int lx__rd_field(lx__rd *rd, long line, const char *ks, const char *ke, const ch
 {
     if (rd->nfields == rd->fcap) {
         size_t cap = rd->fcap ? 2 * rd->fcap : 32;
-        lx_spd_field *f = realloc(rd->fields, cap * sizeof *f);
+        lx_spd_field *f = lx__realloc_n(rd->fields, cap, sizeof *f);
         if (!f) return -1;
         rd->fields = f;
         rd->fcap = cap;
@@ -178,8 +178,8 @@ int lx__rd_field(lx__rd *rd, long line, const char *ks, const char *ke, const ch
     f->value = vs ? lx__strndup(vs, ve) : lx__strndup("", "");
     f->line = line;
     if (!f->key || !f->value) {
-        free(f->key);
-        free(f->value);
+        lx__free(f->key);
+        lx__free(f->value);
         return -1;
     }
     rd->nfields++;
@@ -190,7 +190,7 @@ static lx_status skip_row(lx__rd *rd, long line, const char *what)
 {
     if (rd->nskipped == rd->scap) {
         size_t cap = rd->scap ? 2 * rd->scap : 16;
-        lx_spd_skipped *k = realloc(rd->skipped, cap * sizeof *k);
+        lx_spd_skipped *k = lx__realloc_n(rd->skipped, cap, sizeof *k);
         if (!k) return lx__rd_nomem(rd);
         rd->skipped = k;
         rd->scap = cap;
@@ -401,12 +401,12 @@ static void finish(lx__rd *rd, lx_spd_set *set)
 static void rd_free(lx__rd *rd)
 {
     for (size_t i = 0; i < rd->nfields; i++) {
-        free(rd->fields[i].key);
-        free(rd->fields[i].value);
+        lx__free(rd->fields[i].key);
+        lx__free(rd->fields[i].value);
     }
-    for (size_t i = 0; i < rd->nskipped; i++) free(rd->skipped[i].why);
-    free(rd->fields);
-    free(rd->skipped);
+    for (size_t i = 0; i < rd->nskipped; i++) lx__free(rd->skipped[i].why);
+    lx__free(rd->fields);
+    lx__free(rd->skipped);
 }
 
 /* ---- entry points ---- */
@@ -478,7 +478,7 @@ lx_status lx_spd_read_file_opts(lx_ctx *ctx, const char *path, const lx_spd_read
     lx_status st = lx__read_all(ctx, path, LX_INPUT_SPECTRUM, &buf, &len);
     if (st != LX_OK) return st;
     st = lx_spd_read_mem_opts(ctx, path, buf, len, opts, out);
-    free(buf);
+    lx__free(buf);
     return st;
 }
 
@@ -499,6 +499,6 @@ lx_status lx_spd_read_stream(lx_ctx *ctx, const char *name, FILE *in, const char
     lx_status st = lx__read_stream(ctx, file, LX_INPUT_SPECTRUM, in, prefix, prefix_len, &buf, &len);
     if (st != LX_OK) return st;
     st = lx_spd_read_mem_opts(ctx, file, buf, len, opts, out);
-    free(buf);
+    lx__free(buf);
     return st;
 }

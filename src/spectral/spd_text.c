@@ -24,7 +24,7 @@ static int cells_push(cells *cs, const char *s, const char *e, int quoted)
 {
     if (cs->n == cs->cap) {
         size_t cap = cs->cap ? 2 * cs->cap : 16;
-        cell *c = realloc(cs->c, cap * sizeof *c);
+        cell *c = lx__realloc_n(cs->c, cap, sizeof *c);
         if (!c) return -1;
         cs->c = c;
         cs->cap = cap;
@@ -203,7 +203,7 @@ static lx_status select_columns(lx__rd *rd, const cells *hdr, size_t hn, size_t 
 {
     const char *p = rd->opts.columns;
     size_t cap = 8, n = 0;
-    size_t *c = malloc(cap * sizeof *c);
+    size_t *c = lx__alloc_n(cap, sizeof *c);
     if (!c) return lx__rd_nomem(rd);
     while (*p) {
         const char *q = strchr(p, ',');
@@ -222,7 +222,7 @@ static lx_status select_columns(lx__rd *rd, const cells *hdr, size_t hn, size_t 
                     idx = i + 1;
         }
         if (!idx || idx > ncols) {
-            free(c);
+            lx__free(c);
             if (!idx && !hdr)
                 return lx__error(rd->ctx, LX_EINVAL, rd->file, 0, "--columns: '%.*s': the file has no header to name "
                                  "columns; give their numbers", (int)(e - s), s);
@@ -230,15 +230,15 @@ static lx_status select_columns(lx__rd *rd, const cells *hdr, size_t hn, size_t 
                              (int)(e - s), s, ncols);
         }
         if (n == cap) {
-            size_t *c2 = realloc(c, (cap *= 2) * sizeof *c);
-            if (!c2) return free(c), lx__rd_nomem(rd);
+            size_t *c2 = lx__realloc_n(c, cap *= 2, sizeof *c);
+            if (!c2) return lx__free(c), lx__rd_nomem(rd);
             c = c2;
         }
         c[n++] = idx - 1;
         p = q ? q + 1 : e + strlen(e);
     }
     if (n < 2) {
-        free(c);
+        lx__free(c);
         return lx__error(rd->ctx, LX_EINVAL, rd->file, 0, "--columns needs a wavelength column and at least one "
                          "value column (WL,VALUE[,...]), not '%s'", rd->opts.columns);
     }
@@ -264,11 +264,11 @@ static int table_row(table *t, long line, double **row)
 {
     if (t->n == t->cap) {
         size_t cap = t->cap ? 2 * t->cap : 256;
-        double *v = realloc(t->v, cap * t->nv * sizeof *v);
+        double *v = lx__realloc_n(t->v, cap * t->nv, sizeof *v);
         if (v) t->v = v;
-        long *l = realloc(t->line, cap * sizeof *l);
+        long *l = lx__realloc_n(t->line, cap, sizeof *l);
         if (l) t->line = l;
-        char **nm = realloc(t->name, cap * sizeof *nm);
+        char **nm = lx__realloc_n(t->name, cap, sizeof *nm);
         if (nm) t->name = nm;
         if (!v || !l || !nm) return -1;
         t->cap = cap;
@@ -293,9 +293,9 @@ static int cmp_ix(const void *a, const void *b)
 /* With skip_bad_rows: the later of two rows with one wavelength is a bad row. */
 static lx_status drop_duplicates(lx__rd *rd, table *t)
 {
-    sort_ix *ix = malloc((t->n ? t->n : 1) * sizeof *ix);
-    unsigned char *drop = calloc(t->n ? t->n : 1, 1);
-    if (!ix || !drop) return free(ix), free(drop), lx__rd_nomem(rd);
+    sort_ix *ix = lx__alloc_n(t->n ? t->n : 1, sizeof *ix);
+    unsigned char *drop = lx__calloc(t->n ? t->n : 1, 1);
+    if (!ix || !drop) return lx__free(ix), lx__free(drop), lx__rd_nomem(rd);
     for (size_t r = 0; r < t->n; r++) ix[r].l = t->v[r * t->nv], ix[r].r = r;
     qsort(ix, t->n, sizeof *ix, cmp_ix);
     lx_status st = LX_OK;
@@ -315,8 +315,8 @@ static lx_status drop_duplicates(lx__rd *rd, table *t)
         w++;
     }
     t->n = w;
-    free(ix);
-    free(drop);
+    lx__free(ix);
+    lx__free(drop);
     return st;
 }
 
@@ -417,8 +417,8 @@ static lx_status read_lines(lx__rd *rd, const char *text, size_t len, tline **ou
         if (is_empty_line(s, e)) continue;
         if (n == cap) {
             cap = cap ? 2 * cap : 256;
-            tline *L2 = realloc(L, cap * sizeof *L);
-            if (!L2) return free(L), lx__rd_nomem(rd);
+            tline *L2 = lx__realloc_n(L, cap, sizeof *L);
+            if (!L2) return lx__free(L), lx__rd_nomem(rd);
             L = L2;
         }
         L[n++] = (tline){s, e, it.line};
@@ -477,8 +477,8 @@ static lx_status columns_set(lx__rd *rd, table *t, const cells *hdr, size_t hn, 
         return lx__error(rd->ctx, LX_EPARSE, rd->file, t->n ? t->line[0] : hline,
                          "only %zu data row%s; a spectrum needs at least 2", t->n, t->n == 1 ? "" : "s");
     size_t nspec = keep - 1;
-    char **names = calloc(nspec, sizeof *names);
-    long *lines = malloc(nspec * sizeof *lines);
+    char **names = lx__calloc(nspec, sizeof *names);
+    long *lines = lx__alloc_n(nspec, sizeof *lines);
     lx_status st = LX_OK;
     if (!names || !lines) st = lx__rd_nomem(rd);
     for (size_t k = 0; st == LX_OK && k < nspec; k++) {
@@ -489,9 +489,9 @@ static lx_status columns_set(lx__rd *rd, table *t, const cells *hdr, size_t hn, 
     if (st == LX_OK)
         st = lx__spd_set_build(rd->ctx, rd->file, t->n, t->v, t->nv, t->line, 0, nspec, t->v + 1, 1, t->nv, names,
                                lines, out);
-    for (size_t k = 0; names && k < nspec; k++) free(names[k]);
-    free(names);
-    free(lines);
+    for (size_t k = 0; names && k < nspec; k++) lx__free(names[k]);
+    lx__free(names);
+    lx__free(lines);
     return st;
 }
 
@@ -518,7 +518,7 @@ static lx_status rows_layout(parse *P, lx_spd_set **out)
         return lx__error(rd->ctx, LX_EINVAL, rd->file, P->hline, "--columns applies to the columns layout (one "
                          "wavelength column), not to this rows layout");
     size_t ncols = trimmed_count(&P->hdr);
-    if (!(P->wl = malloc((ncols > 1 ? ncols - 1 : 1) * sizeof *P->wl))) return lx__rd_nomem(rd);
+    if (!(P->wl = lx__alloc_n(ncols > 1 ? ncols - 1 : 1, sizeof *P->wl))) return lx__rd_nomem(rd);
     for (size_t i = 1; i < ncols; i++) {
         const cell *h = &P->hdr.c[i];
         double *w = &P->wl[i - 1];
@@ -565,7 +565,7 @@ static lx_status columns_layout(parse *P, lx_spd_set **out)
         lx_status st = select_columns(rd, has_hdr ? &P->hdr : NULL, P->hn, ncols, P->hline, &P->col, &P->ncol);
         if (st) return st;
     } else {
-        if (!(P->col = malloc(ncols * sizeof *P->col))) return lx__rd_nomem(rd);
+        if (!(P->col = lx__alloc_n(ncols, sizeof *P->col))) return lx__rd_nomem(rd);
         for (size_t k = 0; k < ncols; k++) P->col[k] = k;
         P->ncol = ncols;
     }
@@ -640,14 +640,14 @@ lx_status lx__text_read(lx__rd *rd, const char *text, size_t len, int want, lx_s
                        "(a name cell, then the wavelengths)" : "header but no data rows");
     if (st == LX_OK) st = preamble(&P);
     if (st == LX_OK) st = P.ly.rows ? rows_layout(&P, out) : columns_layout(&P, out);
-    for (size_t r = 0; P.t.name && r < P.t.n; r++) free(P.t.name[r]);
-    free(P.t.name);
-    free(P.t.v);
-    free(P.t.line);
-    free(P.cs.c);
-    free(P.hdr.c);
-    free(P.col);
-    free(P.wl);
-    free(L);
+    for (size_t r = 0; P.t.name && r < P.t.n; r++) lx__free(P.t.name[r]);
+    lx__free(P.t.name);
+    lx__free(P.t.v);
+    lx__free(P.t.line);
+    lx__free(P.cs.c);
+    lx__free(P.hdr.c);
+    lx__free(P.col);
+    lx__free(P.wl);
+    lx__free(L);
     return st;
 }

@@ -51,7 +51,7 @@ static int name_is(const char *s, const char *e, const char *w)
  * *bad is set to an unknown entity. */
 static char *decode(const char *s, const char *e, int *bad)
 {
-    char *out = malloc((size_t)(e - s) + 1), *o = out;
+    char *out = lx__alloc((size_t)(e - s) + 1), *o = out;
     if (!out) return NULL;
     while (s < e) {
         if (e - s >= 9 && !memcmp(s, "<![CDATA[", 9)) {
@@ -182,16 +182,16 @@ static lx_status end_data(tm27 *S, const char *as, const char *ae, const char *c
     while (we > ws && is_space(we[-1])) we--;
     lx_status fs = lx__parse_field(rd->ctx, rd->file, dl, ws, we, 0, "wavelength", &wl);
     if (!fs) fs = lx__parse_field(rd->ctx, rd->file, dl, txt, txt + strlen(txt), 0, "value", &val);
-    free(txt);
+    lx__free(txt);
     if (fs) return lx__rd_bad_field(rd, dl, fs);
     if (!(wl > 0)) return lx__rd_bad_row(rd, dl, "wavelength must be positive: %.17g nm", wl);
     if (S->n == S->cap) {
         size_t cap = S->cap ? 2 * S->cap : 256;
-        double *l2 = realloc(S->l, cap * sizeof *l2);
+        double *l2 = lx__realloc_n(S->l, cap, sizeof *l2);
         if (l2) S->l = l2;
-        double *v2 = realloc(S->v, cap * sizeof *v2);
+        double *v2 = lx__realloc_n(S->v, cap, sizeof *v2);
         if (v2) S->v = v2;
-        long *n2 = realloc(S->ln, cap * sizeof *n2);
+        long *n2 = lx__realloc_n(S->ln, cap, sizeof *n2);
         if (n2) S->ln = n2;
         if (!l2 || !v2 || !n2) return lx__rd_nomem(rd);
         S->cap = cap;
@@ -228,7 +228,7 @@ static lx_status end_tag(tm27 *S, const char *ns, const char *ne, const char *lt
     lx_status st = lx__rd_field(rd, S->stack[d].line, k, ne, txt, txt + strlen(txt)) ? lx__rd_nomem(rd) : LX_OK;
     if (S->in_header && name_is(ns, ne, "Description") && !S->desc) S->desc = txt, txt = NULL;
     else if (S->in_dist && name_is(ns, ne, "SpectralQuantity") && !S->quantity) S->quantity = txt, txt = NULL;
-    free(txt);
+    lx__free(txt);
     return st;
 }
 
@@ -255,7 +255,7 @@ lx_status lx__tm27_read(lx__rd *rd, const char *text, size_t len, lx_spd_set **o
 {
     rd->format = "tm27";
     xml x = {rd, text, text + len, text, rd->line0 + 1};
-    tm27 *S = calloc(1, sizeof *S);
+    tm27 *S = lx__calloc(1, sizeof *S);
     if (!S) return lx__rd_nomem(rd);
     S->rd = rd, S->out = out;
     lx_status st = LX_OK;
@@ -307,6 +307,6 @@ lx_status lx__tm27_read(lx__rd *rd, const char *text, size_t len, lx_spd_set **o
         lx_spd_set_free(*out);
         *out = NULL;
     }
-    free(S->l), free(S->v), free(S->ln), free(S->desc), free(S->quantity), free(S);
+    lx__free(S->l), lx__free(S->v), lx__free(S->ln), lx__free(S->desc), lx__free(S->quantity), lx__free(S);
     return st;
 }

@@ -1,12 +1,12 @@
 # layers.sh - the library's layers depend downwards only (README "Development"): core < tables <
-# spectral < {colour, lighting, radiance} < scene < plot < cli. Two checks: every #include of a
+# spectral < {colour, lighting, radiance, radiosity} < scene < plot < cli. Two checks: every #include of a
 # layer's private header comes from that layer or a higher one (siblings never include each other),
 # and every lx_ / lx__ symbol an object file uses is defined in its own layer or a lower one (nm on
 # the objects of the build under test). The CLI includes only the public header and its own.
 . tests/cli/lib.sh
 rank() {
   case $1 in
-    core) echo 0 ;; tables) echo 1 ;; spectral) echo 2 ;; colour|lighting|radiance) echo 3 ;;
+    core) echo 0 ;; tables) echo 1 ;; spectral) echo 2 ;; colour|lighting|radiance|radiosity) echo 3 ;;
     scene) echo 4 ;; plot) echo 5 ;; cli) echo 6 ;; *) echo -1 ;;
   esac
 }
@@ -16,7 +16,7 @@ allowed() {
   rf=$(rank "$1"); rt=$(rank "$2")
   [ "$rt" -ge 0 ] && [ "$rt" -lt "$rf" ]
 }
-layers="core tables spectral colour lighting radiance scene plot"
+layers="core tables spectral colour lighting radiance radiosity scene plot"
 
 # 1. includes
 bad=""
