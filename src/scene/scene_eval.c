@@ -431,6 +431,22 @@ static void point_colour(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *p
     }
 }
 
+/* What follows the luminaires' direct light at the points: the cylindrical receivers' direct light,
+ * the daylight through the openings, the interreflected part (E_lx gains indirect_lx, the
+ * daylight's too) and the modelling ratio. */
+static lx_status after_direct(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *plan, const lum_eval *le,
+                              const lx__scene_vis *vis, long only, lx__daylight *day, lx_scene_result *res)
+{
+    lx_status st = lx__design_cyl_alloc(ctx, sc, res);
+    if (st != LX_OK) return st;
+    lx__design_cyl_direct(&ctx->counters, sc, plan, le, vis, only, res); /* small vertical cylinders */
+    if (day && (st = lx__daylight_points(ctx, day, res)) != LX_OK) return st; /* the sky's column */
+    if (plan->on[LX_EFFECT_INTERREFLECTION] && (st = lx__room_eval(ctx, sc, plan, only, day, res)) != LX_OK) return st;
+    if (day && (st = lx__daylight_finish(ctx, day, res)) != LX_OK) return st;
+    lx__design_cyl_modelling(sc, res);
+    return LX_OK;
+}
+
 lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *plan, const lx_scene_eval_opts *opts,
                         lx_scene_result **out)
 {
@@ -522,15 +538,7 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
         }
     }
     res->first[sc->n_rec] = g;
-    /* cylindrical receivers: the luminaires' direct light on small vertical cylinders */
-    if ((st = lx__design_cyl_alloc(ctx, sc, res)) != LX_OK) goto fail;
-    lx__design_cyl_direct(&ctx->counters, sc, plan, le, &vis, only, res);
-    /* daylight through the openings at the points (the sky's column) */
-    if (day && (st = lx__daylight_points(ctx, day, res)) != LX_OK) goto fail;
-    /* the interreflected part: E_lx gains indirect_lx (the daylight's too) */
-    if (plan->on[LX_EFFECT_INTERREFLECTION] && (st = lx__room_eval(ctx, sc, plan, only, day, res)) != LX_OK) goto fail;
-    if (day && (st = lx__daylight_finish(ctx, day, res)) != LX_OK) goto fail;
-    lx__design_cyl_modelling(sc, res);
+    if ((st = after_direct(ctx, sc, plan, le, &vis, only, day, res)) != LX_OK) goto fail;
     point_colour(ctx, sc, plan, res, spec, only, day, spectral);
     if ((st = check_finite(ctx, sc, res, nl, spectral)) != LX_OK) goto fail;
     lx__daylight_free(day);
