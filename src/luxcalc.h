@@ -2450,6 +2450,10 @@ typedef enum lx_area_kind {
     LX_AREA_ROOM,            /* a room's plane at a height, less a margin from the walls (0.5 m) */
     LX_AREA_WALL,            /* a wall of a room (one area each), less a margin */
     LX_AREA_CEILING,         /* a room's ceiling, less a margin */
+    LX_AREA_ESCAPE_ROUTE,    /* EN 1838: the centre line of an escape route on the floor */
+    LX_AREA_ROUTE_BAND,      /* its central band (half the route's width) */
+    LX_AREA_OPEN,            /* EN 1838 open (anti-panic) area on the floor, less a 0.5 m border */
+    LX_AREA_HIGH_RISK,       /* EN 1838 high-risk task area */
     LX_AREA_KIND_COUNT
 } lx_area_kind;
 

@@ -473,7 +473,7 @@ static void test_area_errors(void **state)
     snprintf(t, sizeof t, "%s[area p]\ntype = room\nz = 0.8 m\nmargin = 2 m\n", room);
     expect_error(ctx, t, 10, "the margin of 2 m leaves nothing");
     snprintf(t, sizeof t, "%s[area p]\ntype = hall\n", room);
-    expect_error(ctx, t, 8, "type: expected task, room, walls or ceiling");
+    expect_error(ctx, t, 8, "type: expected task, room, walls, ceiling, escape_route, open_area or high_risk");
     snprintf(t, sizeof t, "%s[area p]\nz = 0.8 m\n", room);
     expect_error(ctx, t, 7, "missing 'type'");
     snprintf(t, sizeof t, "%s[area p]\ntype = room\nz = 0.8 m\nsurrounding = 0.5 m\n", room);
@@ -571,6 +571,153 @@ static void test_requirement_errors(void **state)
                  9, "area: no area or receiver named 'nowhere'");
 }
 
+/* ---- EN 1838 emergency lighting ----
+ * A corridor 10 m x 2 m x 3 m with reflecting walls and two non-maintained emergency luminaires,
+ * isotropic points of 120 lm emergency flux (I = 120 / 4 pi cd) 2.8 m above the floor at x = 2.5 and
+ * 7.5 m on the centre line. EN 1838 counts direct light only: on the centre line E(x) =
+ * sum I h / d^3, h = 2.8 m, d^2 = (x - x_l)^2 + h^2. The route's cells: its width 2 m gives p = 0.325 m,
+ * 6 cells of 1/3 m across, so 27 points along its 9 m at x = 0.5 + (k + 0.5) / 3 m; its central band
+ * (1 m: p = 0.2 m, 5 cells of 0.2 m) 45 x 5 points. */
+static void test_emergency_corridor(void **state)
+{
+    lx_ctx *ctx = *state;
+    const char *t = "[room corridor]\nsize = 10 m, 2 m, 3 m\nwalls = 0.7\nfloor = 0.5\n"
+                    "[luminaire main]\ntype = point\nposition = 5 m, 1 m, 2.8 m\nflux = 2000 lm\n"
+                    "[luminaire e1]\ntype = point\nposition = 2.5 m, 1 m, 2.8 m\nflux = 800 lm\n"
+                    "emergency = non-maintained\nemergency_flux = 120 lm\n"
+                    "[luminaire e2]\ntype = point\nposition = 7.5 m, 1 m, 2.8 m\nflux = 800 lm\n"
+                    "emergency = non-maintained\nemergency_flux = 120 lm\n"
+                    "[area route]\ntype = escape_route\nfrom = 0.5 m, 1 m, 0 m\nto = 9.5 m, 1 m, 0 m\nwidth = 2 m\n"
+                    "[requirement en1838]\narea = route\nemergency_minimum = 1 lx\nemergency_ratio = 40\n"
+                    "emergency_band_minimum = 0.5 lx\n"
+                    "[scene]\ninterreflection_tolerance = 1e-2\npatch_size = 1 m\n";
+    run n = must_run(ctx, "corridor.scene", t, LX_SCENE_NORMAL);
+    run e = must_run(ctx, "corridor.scene", t, LX_SCENE_EMERGENCY);
+    assert_true(n.plan->on[LX_EFFECT_INTERREFLECTION]);   /* normal operation reflects */
+    assert_false(e.plan->on[LX_EFFECT_INTERREFLECTION]);  /* emergency: direct light only, and says why */
+    assert_non_null(strstr(e.plan->reason[LX_EFFECT_INTERREFLECTION], "EN 1838"));
+    const lx_scene_design *d = e.sc->design;
+    assert_int_equal(d->n_area, 2);
+    assert_int_equal(d->area[0].kind, LX_AREA_ESCAPE_ROUTE);
+    assert_int_equal(d->area[1].kind, LX_AREA_ROUTE_BAND);
+    const lx_scene_receiver *line = &e.sc->rec[d->area[0].rec], *band = &e.sc->rec[d->area[1].rec];
+    assert_int_equal(line->n, 27);
+    assert_int_equal(band->n, 225);
+    double I = 120 / (4 * M_PI), h = 2.8, mn = INFINITY, mx = 0;
+    for (size_t k = 0; k < 27; k++) {
+        double x = 0.5 + (k + 0.5) / 3, E = 0;
+        lx_assert_near(line->points[3 * k], x, 0, 1e-14);
+        lx_assert_near(line->points[3 * k + 1], 1, 0, 0);
+        for (int l = 0; l < 2; l++) {
+            double dx = x - (l ? 7.5 : 2.5), d2 = dx * dx + h * h;
+            E += I * h / (d2 * sqrt(d2));
+        }
+        lx_assert_near(e.res->E_lx[e.res->first[d->area[0].rec] + k], E, 0, 1e-12);
+        mn = fmin(mn, E), mx = fmax(mx, E);
+    }
+    lx_scene_checks *c = NULL;
+    lx_assert_ok(ctx, lx_scene_check(ctx, e.sc, n.res, e.res, NULL, &c));
+    assert_int_equal(c->n, 3);
+    assert_true(c->check[0].emergency);
+    lx_assert_near(c->check[0].value, mn, 0, 1e-12);
+    assert_int_equal(c->check[0].pass, mn >= 1);
+    lx_assert_near(c->check[1].value, mx / mn, 0, 1e-12);
+    assert_true(c->check[1].pass);
+    assert_string_equal(c->check[2].target, "route.central_band");
+    print_message("EN 1838 corridor: centre line E_min %.4g lx, E_max %.4g lx, ratio %.3g (closed form); band min %.4g lx\n",
+                  mn, mx, mx / mn, c->check[2].value);
+    lx_scene_checks_free(c);
+    /* without the emergency results the check refuses */
+    assert_int_equal(lx_scene_check(ctx, e.sc, n.res, NULL, NULL, &c), LX_EINVAL);
+    run_free(&n);
+    run_free(&e);
+}
+
+/* ---- UGR per observer position and direction (CIE 117) ----
+ * An [observer] with a grid of eye positions and a list of directions becomes one observer per pair;
+ * each rates as the single observer at its position looking that way (the same CIE 117 terms), and a
+ * requirement's ugr_limit rates the section by its highest UGR. */
+static void test_observer_positions_directions(void **state)
+{
+    lx_ctx *ctx = *state;
+    const char *lums = "[luminaire p1]\ntype = rect\nposition = 2 m, 2 m, 2.8 m\nwidth = 0.6 m\nlength = 0.6 m\nflux = 3000 lm\n"
+                       "[luminaire p2]\ntype = rect\nposition = 4 m, 2.5 m, 2.8 m\nwidth = 0.6 m\nlength = 0.6 m\nflux = 3000 lm\n"
+                       "[area desk]\ntype = task\nx = 0.5 m, 1.5 m\ny = 1 m, 2 m\nz = 0.75 m\nsurrounding = no\nbackground = no\n";
+    char t[4096];
+    snprintf(t, sizeof t,
+             "%s[observer seat]\nx = 0.5 m, 1.5 m\ny = 1 m, 2 m\nz = 1.2 m\nspacing = 1 m\ndirections = 0 deg, 90 deg\n"
+             "background_luminance = 40 cd/m2\n[requirement glare]\narea = desk\nugr_limit = 16\nobservers = seat\n",
+             lums);
+    run r = must_run(ctx, "t.scene", t, LX_SCENE_NORMAL);
+    assert_int_equal(r.sc->n_obs, 8);
+    const lx_scene_design *d = r.sc->design;
+    assert_int_equal(d->n_obs_group, 1);
+    assert_string_equal(d->obs_group_name[0], "seat");
+    assert_string_equal(r.sc->obs[3].name, "seat.4"); /* position 2 (1.5, 1), direction 2 (90 deg) */
+    lx_assert_near(r.sc->obs[3].pos_m[0], 1.5, 0, 0);
+    lx_assert_near(r.sc->obs[3].view[1], 1, 0, 1e-15);
+    lx_scene_glare *g = NULL;
+    lx_assert_ok(ctx, lx_scene_glare_eval(ctx, r.sc, &g));
+    double worst = -INFINITY;
+    for (size_t o = 0; o < 8; o++) worst = fmax(worst, g->ugr[o]);
+    /* each equals the single observer at its position and direction */
+    for (size_t o = 0; o < 8; o++) {
+        const lx_scene_observer *ob = &r.sc->obs[o];
+        snprintf(t, sizeof t, "%s[observer one]\nposition = %.17g m, %.17g m, %.17g m\nview = %.17g, %.17g, %.17g\n"
+                              "background_luminance = 40 cd/m2\n",
+                 lums, ob->pos_m[0], ob->pos_m[1], ob->pos_m[2], ob->view[0], ob->view[1], ob->view[2]);
+        lx_scene *one = NULL;
+        lx_scene_glare *g1 = NULL;
+        lx_assert_ok(ctx, lx_scene_read_mem(ctx, "one.scene", t, strlen(t), &one));
+        lx_assert_ok(ctx, lx_scene_glare_eval(ctx, one, &g1));
+        lx_assert_near(g->ugr[o], g1->ugr[0], 0, 1e-14);
+        lx_scene_glare_free(g1);
+        lx_scene_free(one);
+    }
+    lx_scene_checks *c = NULL;
+    lx_assert_ok(ctx, lx_scene_check(ctx, r.sc, r.res, NULL, g, &c));
+    assert_int_equal(c->n, 1);
+    assert_string_equal(c->check[0].target, "seat");
+    lx_assert_near(c->check[0].value, worst, 0, 0);
+    assert_int_equal(c->check[0].pass, worst <= 16);
+    print_message("UGR over 4 positions x 2 directions: highest %.2f\n", worst);
+    lx_scene_checks_free(c);
+    lx_scene_glare_free(g);
+    run_free(&r);
+    snprintf(t, sizeof t, "%s[observer s]\nposition = 1 m, 1 m, 1.2 m\nx = 0 m, 1 m\ny = 0 m, 1 m\nz = 1.2 m\nspacing = 1 m\n"
+                          "view = 1, 0, 0\n", lums);
+    expect_error(ctx, t, 20, "give 'position' or a grid of positions");
+    snprintf(t, sizeof t, "%s[observer s]\nposition = 1 m, 1 m, 1.2 m\nview = 1, 0, 0\ndirections = 0 deg\n", lums);
+    expect_error(ctx, t, 20, "give 'view' or directions of view");
+    snprintf(t, sizeof t, "%s[observer s]\nx = 0 m, 1 m\nz = 1.2 m\nspacing = 1 m\nview = 1, 0, 0\n", lums);
+    expect_error(ctx, t, 20, "a grid of eye positions takes x and y ranges");
+}
+
+/* EN 1838 open areas (the floor less a 0.5 m border: a 6 x 4 m room leaves 5 x 3 m, 8 x 5 points at
+ * z = 0) and high-risk task areas (a task area without bands). */
+static void test_emergency_areas(void **state)
+{
+    lx_ctx *ctx = *state;
+    const char *t = "[room r]\nsize = 6 m, 4 m, 3 m\n[luminaire a]\ntype = point\nposition = 3 m, 2 m, 2.8 m\nflux = 1 lm\n"
+                    "emergency = maintained\n"
+                    "[area hall]\ntype = open_area\n"
+                    "[area saw]\ntype = high_risk\nx = 1 m, 2 m\ny = 1 m, 2 m\nz = 0.9 m\n";
+    lx_scene *sc = NULL;
+    lx_assert_ok(ctx, lx_scene_read_mem(ctx, "t.scene", t, strlen(t), &sc));
+    const lx_scene_design *d = sc->design;
+    assert_int_equal(d->n_area, 2);
+    assert_int_equal(d->area[0].kind, LX_AREA_OPEN);
+    const lx_scene_receiver *hall = &sc->rec[d->area[0].rec];
+    assert_int_equal(hall->na, 8);
+    assert_int_equal(hall->nb, 5);
+    assert_int_equal(hall->n, 40);
+    lx_assert_near(hall->points[0], 0.5 + 5.0 / 16, 0, 1e-15);
+    lx_assert_near(hall->points[2], 0, 0, 0);
+    assert_int_equal(d->area[1].kind, LX_AREA_HIGH_RISK);
+    assert_string_equal(sc->rec[d->area[1].rec].name, "saw");
+    lx_scene_free(sc);
+}
+
 /* ---- CIE 97:2005: MF = LLMF x LSF x LMF x RSMF from typed tables ----
  * The publication's tables are the user's to type (luxcalc ships no copy); what is checked here is
  * the method: each factor read off its table at the scheme's time by linear interpolation (at a
@@ -658,6 +805,9 @@ int main(void)
         cmocka_unit_test(test_area_errors),
         cmocka_unit_test(test_check),
         cmocka_unit_test(test_requirement_errors),
+        cmocka_unit_test(test_emergency_corridor),
+        cmocka_unit_test(test_observer_positions_directions),
+        cmocka_unit_test(test_emergency_areas),
         cmocka_unit_test(test_errors),
     };
     return cmocka_run_group_tests(tests, lx_test_ctx_setup, lx_test_ctx_teardown);

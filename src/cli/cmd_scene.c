@@ -624,9 +624,10 @@ static int glare_out(const char *cmd, lx_ctx *ctx, const lx_scene *sc, cli_forma
     lx_status st = lx_scene_glare_eval(ctx, sc, &g);
     if (st != LX_OK) return cli_fail(cmd, ctx, st);
     static const char *const names[] = {"observer", "luminaire", "luminance_cd_m2", "solid_angle_sr", "sigma_deg",
-                                        "tau_deg", "position_index", "term", "background_cd_m2", "ugr"};
-    static const char *const units[] = {"", "", "cd/m2", "sr", "deg", "deg", "", "", "cd/m2", ""};
-    cli_table *t = cli_table_new(10, names, units);
+                                        "tau_deg", "position_index", "term", "background_cd_m2", "ugr",
+                                        "eye_x", "eye_y", "eye_z", "view_azimuth_deg"};
+    static const char *const units[] = {"", "", "cd/m2", "sr", "deg", "deg", "", "", "cd/m2", "", "m", "m", "m", "deg"};
+    cli_table *t = cli_table_new(14, names, units);
     for (size_t o = 0; o < g->n_obs; o++) {
         int any = 0;
         for (size_t l = 0; l < g->n_lum; l++) {
@@ -643,6 +644,7 @@ static int glare_out(const char *cmd, lx_ctx *ctx, const lx_scene *sc, cli_forma
             cli_table_num(t, x->term);
             cli_table_num(t, g->background_cd_m2[o]);
             cli_table_num(t, g->ugr[o]);
+            cli_observer_cells(t, &sc->obs[o]);
         }
         if (!any) { /* no glare source in view: one row, UGR empty */
             cli_table_str(t, sc->obs[o].name);
@@ -650,6 +652,7 @@ static int glare_out(const char *cmd, lx_ctx *ctx, const lx_scene *sc, cli_forma
             for (int k = 0; k < 6; k++) cli_table_num(t, NAN);
             cli_table_num(t, g->background_cd_m2[o]);
             cli_table_num(t, NAN);
+            cli_observer_cells(t, &sc->obs[o]);
         }
     }
     int rc = CLI_OK;

@@ -15,6 +15,8 @@ void cli_scene_maintenance_text(FILE *f, const lx_scene *sc);
  * modelling_max (empty where the receiver asks none). */
 void cli_scene_cylinder_summary(cli_table *t, const lx_scene_result *res, size_t a, size_t b);
 
+/* The eye's position and the azimuth of the line of sight (deg from +x towards +y): 4 cells. */
+void cli_observer_cells(cli_table *t, const lx_scene_observer *o);
 /* The scene's results, and those its requirements rate besides: the glare at its observers and the
  * emergency operation's results (each NULL when no requirement needs it). Prints and returns the
  * exit code on failure (0 on success; free what it made with cli_design_results_free). */

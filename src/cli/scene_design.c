@@ -158,3 +158,10 @@ int cli_check_write(FILE *f, const lx_scene *sc, const lx_scene_checks *c, cli_f
     cli_table_free(t);
     return rc || ferror(f) ? -1 : 0;
 }
+
+void cli_observer_cells(cli_table *t, const lx_scene_observer *o)
+{
+    for (int k = 0; k < 3; k++) cli_table_num(t, o->pos_m[k]);
+    double az = atan2(o->view[1], o->view[0]) * 180 / CLI_PI;
+    cli_table_num(t, az < 0 ? az + 360 : az);
+}

@@ -127,7 +127,8 @@ static size_t room_outline(const lx_scene *sc, long r, double (*v)[2])
 
 /* ---- the [area] section ---- */
 
-static const char *const kind_names[] = {"task", "surrounding", "background", "room", "walls", "ceiling"};
+static const char *const kind_names[] = {"task", "surrounding", "background", "room",      "walls",
+                                         "ceiling", "escape_route", "route_band", "open_area", "high_risk"};
 
 lx_status lx__area_open(lx_ctx *ctx, lx_scene *sc, const char *name, const char *file, long line)
 {
@@ -169,8 +170,9 @@ lx_status lx__area_key(lx_ctx *ctx, lx_scene *sc, const char *file, long line, c
         a->type_line = line;
         int k = 0;
         while (k < LX_AREA_KIND_COUNT && strcmp(value, kind_names[k])) k++;
-        if (k == LX_AREA_KIND_COUNT || k == LX_AREA_SURROUNDING || k == LX_AREA_BACKGROUND)
-            return lx__error(ctx, LX_EPARSE, file, line, "type: expected task, room, walls or ceiling, got '%s'", value);
+        if (k == LX_AREA_KIND_COUNT || k == LX_AREA_SURROUNDING || k == LX_AREA_BACKGROUND || k == LX_AREA_ROUTE_BAND)
+            return lx__error(ctx, LX_EPARSE, file, line,
+                             "type: expected task, room, walls, ceiling, escape_route, open_area or high_risk, got '%s'", value);
         a->type = k;
         return LX_OK;
     }
@@ -184,6 +186,17 @@ lx_status lx__area_key(lx_ctx *ctx, lx_scene *sc, const char *file, long line, c
         int *n = key[0] == 'x' ? &a->nx : key[0] == 'y' ? &a->ny : &a->nz;
         double *d = key[0] == 'x' ? a->x : key[0] == 'y' ? a->y : a->z;
         return lx__scene_parse_vec(ctx, file, line, key, value, 1, 2, LX_Q_LENGTH, NULL, d, n);
+    }
+    if (!strcmp(key, "from") || !strcmp(key, "to")) {
+        int from = key[0] == 'f';
+        *(from ? &a->has_from : &a->has_to) = 1;
+        return lx__scene_parse_vec(ctx, file, line, key, value, 3, 3, LX_Q_LENGTH, NULL, from ? a->from : a->to, NULL);
+    }
+    if (!strcmp(key, "width")) {
+        a->has_width = 1;
+        lx_status st = lx__scene_parse_vec(ctx, file, line, key, value, 1, 1, LX_Q_LENGTH, NULL, &a->width, NULL);
+        if (st == LX_OK && !(a->width > 0)) return lx__error(ctx, LX_EPARSE, file, line, "width: must be greater than zero");
+        return st;
     }
     if (!strcmp(key, "surrounding"))
         return width_key(ctx, file, line, key, value, &a->surround, &a->has_surround, &a->surround_line);
@@ -210,7 +223,7 @@ lx_status lx__area_key(lx_ctx *ctx, lx_scene *sc, const char *file, long line, c
     if (lx__design_rec_key(ctx, &a->cyl, file, line, key, value, &st)) return st;
     return lx__error(ctx, LX_EPARSE, file, line,
                      "unknown key '%s' in [area] (keys: type, room, x, y, z, surrounding, background, margin, spacing, "
-                     "grid, cylindrical, semicylindrical)",
+                     "grid, cylindrical, semicylindrical, from, to, width)",
                      key);
 }
 
@@ -460,9 +473,10 @@ static lx_status grid_rect(lx_ctx *ctx, const lx_scene *sc, const lx__area_raw *
     return LX_OK;
 }
 
-/* A task area and its bands. */
+/* A task area and its bands (an EN 1838 high-risk task area: none). */
 static lx_status make_task(lx_ctx *ctx, lx_scene *sc, const lx__area_raw *r)
 {
+    int high_risk = r->type == LX_AREA_HIGH_RISK;
     if (r->nx != 2 || r->ny != 2 || r->nz != 1)
         return lx__error(ctx, LX_EPARSE, r->file, r->line,
                          "area '%s': a task area takes x and y ranges and its height z (e.g. x = 1 m, 2.6 m; y = 1 m, 1.8 m; "
@@ -491,7 +505,7 @@ static lx_status make_task(lx_ctx *ctx, lx_scene *sc, const lx__area_raw *r)
     }
     lx_scene_area A;
     memset(&A, 0, sizeof A);
-    A.file = r->file, A.line = r->line, A.kind = LX_AREA_TASK, A.task = -1, A.room = room;
+    A.file = r->file, A.line = r->line, A.kind = (lx_area_kind)r->type, A.task = -1, A.room = room;
     A.u[0] = 1, A.v[1] = 1, A.origin_m[2] = z;
     memcpy(A.box_m, rect, sizeof rect);
     double ov[4][2] = {{rect[0], rect[2]}, {rect[1], rect[2]}, {rect[1], rect[3]}, {rect[0], rect[3]}};
@@ -501,7 +515,7 @@ static lx_status make_task(lx_ctx *ctx, lx_scene *sc, const lx__area_raw *r)
     static const double up[3] = {0, 0, 1};
     size_t task = sc->design->n_area;
     if ((st = add_area(ctx, sc, r, &A, r->name, &P, 'z', A.grid.n[0], A.grid.n[1], up, 1)) != LX_OK) goto fail;
-    double w1 = r->has_surround ? r->surround : 0.5, w2 = r->has_background ? r->background : 3;
+    double w1 = high_risk ? 0 : r->has_surround ? r->surround : 0.5, w2 = high_risk ? 0 : r->has_background ? r->background : 3;
     if (w1 > 0 && (st = make_band(ctx, sc, r, LX_AREA_SURROUNDING, task, room, rect, w1, z)) != LX_OK) return st;
     double grown[4] = {rect[0] - w1, rect[1] + w1, rect[2] - w1, rect[3] + w1};
     if (w2 > 0 && (st = make_band(ctx, sc, r, LX_AREA_BACKGROUND, task, room, w1 > 0 ? grown : rect, w2, z)) != LX_OK)
@@ -510,6 +524,119 @@ static lx_status make_task(lx_ctx *ctx, lx_scene *sc, const lx__area_raw *r)
 fail:
     lx__free(P.p);
     free_outline(&A);
+    return st;
+}
+
+/* The floor's height under q: its room's floor, or z when given (a scene without rooms needs it). */
+static lx_status floor_z(lx_ctx *ctx, const lx_scene *sc, const lx__area_raw *r, long room, double *z)
+{
+    if (r->nz == 1) *z = r->z[0];
+    else if (room >= 0) *z = sc->room[room].min_m[2];
+    else return lx__error(ctx, LX_EPARSE, r->file, r->line, "area '%s': give the floor's height z (no room around it)", r->name);
+    return LX_OK;
+}
+
+/* An EN 1838 escape route: its centre line on the floor from `from` to `to` and its central band of
+ * half its width, each on cells of the size the rule gives the width (a route is a band: d is its
+ * width); points outside the room or in an obstruction are dropped. */
+static lx_status make_route(lx_ctx *ctx, lx_scene *sc, const lx__area_raw *r)
+{
+    if (!r->has_from || !r->has_to || !r->has_width || r->nx || r->ny)
+        return lx__error(ctx, LX_EPARSE, r->file, r->line,
+                         "area '%s': an escape route takes from, to (its centre line's ends) and width", r->name);
+    double dx = r->to[0] - r->from[0], dy = r->to[1] - r->from[1], L = hypot(dx, dy);
+    if (!(L > 0) || fabs(r->to[2] - r->from[2]) > 1e-9)
+        return lx__error(ctx, LX_EPARSE, r->file, r->line, "area '%s': from and to must differ, at one height", r->name);
+    long room;
+    lx_status st = find_room(ctx, sc, r, r->from, &room);
+    if (st != LX_OK) return st;
+    double rv[MAXV][2];
+    size_t nv = room >= 0 ? room_outline(sc, room, rv) : 0;
+    if (nv && !in_poly(r->to[0], r->to[1], (const double(*)[2])rv, nv))
+        return lx__error(ctx, LX_EPARSE, r->file, r->line, "area '%s': the route's end 'to' lies outside room '%s'", r->name,
+                         sc->room[room].name);
+    double z = r->nz ? r->z[0] : r->from[2];
+    double u[3] = {dx / L, dy / L, 0}, v[3] = {-dy / L, dx / L, 0};
+    for (int band = 0; band < 2; band++) {
+        double w = band ? 0.5 * r->width : r->width;
+        lx_scene_area A;
+        memset(&A, 0, sizeof A);
+        A.file = r->file, A.line = r->line, A.kind = band ? LX_AREA_ROUTE_BAND : LX_AREA_ESCAPE_ROUTE, A.room = room;
+        A.task = band ? (long)sc->design->n_area - 1 : -1;
+        memcpy(A.u, u, sizeof u), memcpy(A.v, v, sizeof v);
+        A.origin_m[0] = r->from[0], A.origin_m[1] = r->from[1], A.origin_m[2] = z;
+        A.box_m[0] = 0, A.box_m[1] = L, A.box_m[2] = -0.5 * w, A.box_m[3] = 0.5 * w;
+        A.grid.d_m = w, A.grid.p_m = rule_p(w);
+        size_t across = count_cells(w / A.grid.p_m, (lx_grid_rounding)r->rounding);
+        double c = r->has_spacing ? r->spacing : w / (double)across;
+        if (r->has_spacing) across = count_cells(w / c, LX_GRID_ROUND_NEAREST);
+        size_t along = count_cells(L / c, LX_GRID_ROUND_NEAREST), rows = band ? across : 1;
+        A.grid.n[0] = along, A.grid.n[1] = rows, A.grid.cell_m[0] = L / (double)along, A.grid.cell_m[1] = w / (double)rows;
+        double ov[4][2] = {{0, -0.5 * w}, {L, -0.5 * w}, {L, 0.5 * w}, {0, 0.5 * w}};
+        if ((st = set_outline(ctx, r, &A, (const double(*)[2])ov, 4, NULL, 0)) != LX_OK) return st;
+        pts P = {0};
+        for (size_t j = 0; j < rows && st == LX_OK; j++)
+            for (size_t i = 0; i < along && st == LX_OK; i++) {
+                double a = (i + 0.5) * A.grid.cell_m[0], b = band ? -0.5 * w + (j + 0.5) * A.grid.cell_m[1] : 0, q[3];
+                for (int k = 0; k < 3; k++) q[k] = A.origin_m[k] + a * u[k] + b * v[k];
+                if ((nv && !in_poly(q[0], q[1], (const double(*)[2])rv, nv)) || in_obstruction(sc, q)) continue;
+                if (pts_add(&P, q)) st = lx__error(ctx, LX_ENOMEM, r->file, r->line, "out of memory");
+            }
+        char name[300];
+        snprintf(name, sizeof name, band ? "%s.central_band" : "%s", r->name);
+        static const double up[3] = {0, 0, 1};
+        if (st == LX_OK) st = add_area(ctx, sc, r, &A, name, &P, 'z', along, rows, up, 0);
+        if (st != LX_OK) {
+            lx__free(P.p), free_outline(&A);
+            return st;
+        }
+        sc->rec[sc->n_rec - 1].kind = LX_SREC_SET; /* along a line of any direction */
+    }
+    return LX_OK;
+}
+
+/* An EN 1838 open (anti-panic) area: the floor of the x, y rectangle (or of the whole room) less a
+ * border (margin, default 0.5 m), on the rule's grid. */
+static lx_status make_open(lx_ctx *ctx, lx_scene *sc, const lx__area_raw *r)
+{
+    if ((r->nx || r->ny) && (r->nx != 2 || r->ny != 2))
+        return lx__error(ctx, LX_EPARSE, r->file, r->line, "area '%s': an open area takes x and y ranges (or none: its room)",
+                         r->name);
+    double q[3] = {r->nx ? 0.5 * (r->x[0] + r->x[1]) : 0, r->ny ? 0.5 * (r->y[0] + r->y[1]) : 0, r->nz ? r->z[0] : 0};
+    long room = -1;
+    lx_status st;
+    if (r->nx) {
+        if ((st = find_room(ctx, sc, r, q, &room)) != LX_OK) return st;
+    } else {
+        if (!sc->n_room) return lx__error(ctx, LX_EPARSE, r->file, r->line, "area '%s': give x and y (no room)", r->name);
+        if (!r->room && sc->n_room > 1) return lx__error(ctx, LX_EPARSE, r->file, r->line, "area '%s': name its room (room = NAME)", r->name);
+        room = 0;
+        if (r->room && (st = find_room(ctx, sc, r, q, &room)) != LX_OK) return st;
+    }
+    double z = 0, border = r->has_margin ? r->margin : 0.5, rv[MAXV][2];
+    if ((st = floor_z(ctx, sc, r, room, &z)) != LX_OK) return st;
+    size_t nv = room >= 0 ? room_outline(sc, room, rv) : 0;
+    double box[4] = {INFINITY, -INFINITY, INFINITY, -INFINITY};
+    if (r->nx) box[0] = r->x[0], box[1] = r->x[1], box[2] = r->y[0], box[3] = r->y[1];
+    else
+        for (size_t k = 0; k < nv; k++)
+            box[0] = fmin(box[0], rv[k][0]), box[1] = fmax(box[1], rv[k][0]), box[2] = fmin(box[2], rv[k][1]),
+            box[3] = fmax(box[3], rv[k][1]);
+    lx_scene_area A;
+    memset(&A, 0, sizeof A);
+    A.file = r->file, A.line = r->line, A.kind = LX_AREA_OPEN, A.task = -1, A.room = room;
+    A.u[0] = 1, A.v[1] = 1, A.origin_m[2] = z;
+    A.box_m[0] = box[0] + border, A.box_m[1] = box[1] - border, A.box_m[2] = box[2] + border, A.box_m[3] = box[3] - border;
+    if (!(A.box_m[1] > A.box_m[0] && A.box_m[3] > A.box_m[2]))
+        return lx__error(ctx, LX_EPARSE, r->file, r->line, "area '%s': the border of %g m leaves no core area", r->name, border);
+    double ov[4][2] = {{A.box_m[0], A.box_m[2]}, {A.box_m[1], A.box_m[2]}, {A.box_m[1], A.box_m[3]}, {A.box_m[0], A.box_m[3]}};
+    if ((st = set_outline(ctx, r, &A, (const double(*)[2])ov, 4, NULL, 0)) != LX_OK) return st;
+    pts P = {0};
+    static const double up[3] = {0, 0, 1};
+    /* the core of the area: the room's outline (its walls) less the border too */
+    if ((st = grid_rect(ctx, sc, r, &A, (const double(*)[2])rv, nv, r->nx ? 0 : border, &P)) == LX_OK)
+        st = add_area(ctx, sc, r, &A, r->name, &P, 'z', A.grid.n[0], A.grid.n[1], up, 0);
+    if (st != LX_OK) lx__free(P.p), free_outline(&A);
     return st;
 }
 
@@ -606,9 +733,14 @@ lx_status lx__area_finish(lx_ctx *ctx, lx_scene *sc)
         const lx__area_raw *r = &in->area[i];
         lx_status st;
         if (r->type < 0)
-            return lx__error(ctx, LX_EPARSE, r->file, r->line, "area '%s': missing 'type' (task, room, walls or ceiling)",
+            return lx__error(ctx, LX_EPARSE, r->file, r->line,
+                             "area '%s': missing 'type' (task, room, walls, ceiling, escape_route, open_area or high_risk)",
                              r->name);
-        if (r->type == LX_AREA_TASK) {
+        if ((r->has_from || r->has_to || r->has_width) && r->type != LX_AREA_ESCAPE_ROUTE)
+            return lx__error(ctx, LX_EPARSE, r->file, r->line, "area '%s': from, to and width belong to escape routes", r->name);
+        if (r->type == LX_AREA_ESCAPE_ROUTE) st = make_route(ctx, sc, r);
+        else if (r->type == LX_AREA_OPEN) st = make_open(ctx, sc, r);
+        else if (r->type == LX_AREA_TASK || r->type == LX_AREA_HIGH_RISK) {
             if (r->has_margin)
                 return lx__error(ctx, LX_EPARSE, r->file, r->margin_line, "area '%s': a task area takes no margin", r->name);
             st = make_task(ctx, sc, r);

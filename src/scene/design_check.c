@@ -12,7 +12,7 @@
 
 /* The quantities a requirement may give: key, the check's quantity name, unit, <= (1) or >= (0),
  * and where it is rated. */
-enum { ON_AREA, ON_SURROUNDING, ON_BACKGROUND, ON_WALLS, ON_CEILING, ON_CYL, ON_MODELLING, ON_UGR, ON_RA, ON_EMERGENCY };
+enum { ON_AREA, ON_SURROUNDING, ON_BACKGROUND, ON_WALLS, ON_CEILING, ON_CYL, ON_MODELLING, ON_UGR, ON_RA, ON_EMERGENCY, ON_EM_BAND };
 typedef struct req_kind {
     const char *key, *quantity, *unit;
     int at_most, on, stat; /* stat: 0 mean, 1 U0, 2 min, 3 max/min, 4 modelling min, 5 modelling max, 6 value */
@@ -37,6 +37,8 @@ static const req_kind kinds[] = {
     {"ra", "R_a", "", 0, ON_RA, 6},
     {"emergency_minimum", "E_min", "lx", 0, ON_EMERGENCY, 2},
     {"emergency_ratio", "E_max/E_min", "", 1, ON_EMERGENCY, 3},
+    {"emergency_uniformity", "U_0", "", 0, ON_EMERGENCY, 1},
+    {"emergency_band_minimum", "E_min", "lx", 0, ON_EM_BAND, 2},
 };
 #define N_KINDS (sizeof kinds / sizeof kinds[0])
 #define K_UGR 14 /* kinds[K_UGR] is ugr_limit */
@@ -110,7 +112,7 @@ lx_status lx__req_key(lx_ctx *ctx, lx_scene *sc, const char *file, long line, co
                      "uniformity, minimum_illuminance, surrounding_illuminance, surrounding_uniformity, "
                      "background_illuminance, background_uniformity, wall_illuminance, wall_uniformity, ceiling_illuminance, "
                      "ceiling_uniformity, cylindrical_illuminance, cylindrical_uniformity, modelling, ugr_limit, ra, "
-                     "emergency_minimum, emergency_ratio)",
+                     "emergency_minimum, emergency_ratio, emergency_uniformity, emergency_band_minimum)",
                      key);
 }
 
@@ -244,10 +246,13 @@ lx_status lx__req_finish(lx_ctx *ctx, lx_scene *sc)
                 if (!n) why = "no luminaire lights its room";
                 break;
             }
-            case ON_EMERGENCY: {
+            case ON_EMERGENCY:
+            case ON_EM_BAND: {
                 size_t n = 0;
                 for (size_t l = 0; l < sc->n_lum; l++) n += d->lum_mode[l] != LX_LUM_NORMAL;
                 if (!n) why = "no luminaire has 'emergency = maintained' or 'non-maintained'";
+                else if (K->on == ON_EM_BAND && (r->area_index < 0 || d->area[r->area_index].kind != LX_AREA_ESCAPE_ROUTE))
+                    why = "its area is not an escape route";
                 break;
             }
             default: break;
@@ -255,7 +260,7 @@ lx_status lx__req_finish(lx_ctx *ctx, lx_scene *sc)
             if (why)
                 return lx__error(ctx, LX_EPARSE, r->file, line, "requirement '%s': %s is not computed: %s", r->name, K->key, why);
             d->check_glare |= K->on == ON_UGR;
-            d->check_emergency |= K->on == ON_EMERGENCY;
+            d->check_emergency |= K->on == ON_EMERGENCY || K->on == ON_EM_BAND;
         }
         if (r->observers && !r->has[K_UGR])
             return lx__error(ctx, LX_EPARSE, r->file, r->observers_line, "observers: only with ugr_limit");
@@ -373,11 +378,13 @@ static lx_status check_req(lx_ctx *ctx, const lx_scene *sc, const lx__req *r, co
             }
             break;
         }
+        case ON_EM_BAND:
         case ON_EMERGENCY:
             if (!em) return lx__error(ctx, LX_EINVAL, r->file, k.line, "requirement '%s': %s needs the emergency operation's results",
                                       r->name, K->key);
             k.emergency = 1;
-            st = area_line(ctx, sc, em, r->rec, K, r->value[q][0], K->at_most, K->quantity, &k, c);
+            st = area_line(ctx, sc, em, K->on == ON_EM_BAND ? d->area[r->area_index + 1].rec : r->rec, K, r->value[q][0],
+                           K->at_most, K->quantity, &k, c);
             break;
         case ON_UGR: {
             if (!glare) return lx__error(ctx, LX_EINVAL, r->file, k.line, "requirement '%s': ugr_limit needs the glare results", r->name);

@@ -32,11 +32,18 @@ typedef struct lx__area_raw {
     long type_line;
     int nx, ny, nz;            /* values given for x, y, z */
     double x[2], y[2], z[2];
-    int has_surround, has_background, has_margin, has_spacing, rounding;
-    double surround, background, margin, spacing;
+    int has_surround, has_background, has_margin, has_spacing, rounding, has_from, has_to, has_width;
+    double surround, background, margin, spacing, from[3], to[3], width;
     long surround_line, background_line, margin_line;
     scene__rec_design cyl;
 } lx__area_raw;
+
+/* An [observer] section's keys for several eye positions and directions of view. */
+typedef struct lx__obs_raw {
+    long line;                 /* 0: none given */
+    int nx, ny, nz, n_dir;
+    double x[2], y[2], z, spacing, step, dir[8];
+} lx__obs_raw;
 
 /* lx_scene_design.internal */
 typedef struct lx__design {
@@ -56,9 +63,18 @@ typedef struct lx__design {
     size_t n_area;
     void *req;                 /* [requirement NAME] sections (design_check.c) */
     size_t n_req;
+    lx__obs_raw *obs_raw;      /* per [observer] section, as read */
+    size_t n_obs_raw;
 } lx__design;
 
 enum { LX__DSEC_NONE = 0, LX__DSEC_MAINT = 1, LX__DSEC_AREA = 2, LX__DSEC_REQ = 3 };
+
+/* ---- observers at several positions and directions (design_observers.c) ---- */
+/* [observer] keys x, y, z, spacing, directions, direction_step: 1 when key is one. */
+int lx__design_obs_key(lx_ctx *ctx, lx_scene *sc, const char *file, long line, const char *key, const char *value,
+                       lx_status *st);
+/* Each [observer] section becomes one observer per position and direction (lx_scene_design.obs_group). */
+lx_status lx__design_obs_expand(lx_ctx *ctx, lx_scene *sc);
 
 /* ---- requirements (design_check.c) ---- */
 lx_status lx__req_open(lx_ctx *ctx, lx_scene *sc, const char *name, const char *file, long line);

@@ -58,6 +58,7 @@ void lx__design_free(lx_scene *sc)
         lx__free(in->lum_maint_name);
         lx__free(in->lum_maint_line);
         lx__free(in->lum_mf_line);
+        lx__free(in->obs_raw);
         lx__free(in);
     }
     lx__free(d->lum_mf);
