@@ -43,19 +43,21 @@
  *   exported is removed, renamed, or given another signature or meaning;
  * - structs the caller allocates are of three kinds.
  *   Options (lx_batch_opts, lx_grid_opts, lx_irr_opts, lx_exr_write_opts, lx_scene_eval_opts,
- *   lx_lum_model, lx_sky_map_opts, lx_perez_input, lx_sun_input) are only read: zero-initialise them (zero is every field's default) and leave
+ *   lx_lum_model, lx_sky_map_opts, lx_perez_input, lx_sun_input, lx_leni_input) are only read: zero-initialise them (zero is every field's default) and leave
  *   `reserved` zero, which the library checks (LX_EINVAL otherwise); a later option takes reserved
  *   space, its zero meaning the earlier behaviour.
  *   Results (lx_colorimetry, lx_cri, lx_tm30, lx_alphaopic, lx_source_result, lx_lum_summary,
- *   lx_grid_stats, lx_cl_device_info, lx_counters, lx_sky, lx_sun_position, lx_ugr_table) are
+ *   lx_grid_stats, lx_cl_device_info, lx_counters, lx_sky, lx_sun_position, lx_ugr_table, lx_en12464_grid,
+ *   lx_area_stats, lx_leni) are
  *   written whole by the library, `reserved` set to zero; a later result takes reserved space.
  *   Views and values (lx_spd, lx_batch, lx_placement, lx_plane, lx_plot_point, lx_unit, lx_sh9)
  *   never change within a soname: a new need gets a new type.
  * - structs only the library allocates (lx_spd_set, lx_batch_table, lx_luminaire, lx_envmap,
- *   lx_xyz_image, lx_scene, lx_scene_plan, lx_scene_result, lx_scene_glare) grow by fields appended
- *   at their end: read their fields, but never allocate, copy or take the size of one. The structs
- *   of their arrays (lx_scene_luminaire, lx_scene_receiver, lx_scene_observer, lx_glare_term) carry
- *   reserved space, as results do.
+ *   lx_xyz_image, lx_scene, lx_scene_plan, lx_scene_result, lx_scene_glare, lx_scene_design,
+ *   lx_scene_checks) grow by fields appended at their end: read their fields, but never allocate,
+ *   copy or take the size of one. The structs of their arrays (lx_scene_luminaire, lx_scene_receiver,
+ *   lx_scene_observer, lx_glare_term, lx_maintenance, lx_scene_area, lx_check) carry reserved space,
+ *   as results do.
  * - LX_EFFECT_COUNT sizes arrays inside lx_scene and lx_scene_plan: a new effect changes their
  *   layout and so needs a new soname; LX_FN_COUNT and LX_Q_COUNT size nothing public and may grow.
  * An incompatible change needs a new MAJOR version, whose soname follows it (1.0: libluxcalc.so.1).
@@ -2590,6 +2592,43 @@ typedef struct lx_scene_checks {
 LX_API lx_status lx_scene_check(lx_ctx *ctx, const lx_scene *scene, const lx_scene_result *res,
                                 const lx_scene_result *emergency, const lx_scene_glare *glare, lx_scene_checks **out);
 LX_API void lx_scene_checks_free(lx_scene_checks *checks);
+
+/** The inputs of EN 15193-1's lighting energy numeric indicator (LENI), per year. */
+typedef struct lx_leni_input {
+    double area_m2;             /* A: the floor area the energy is spread over */
+    double power_W;             /* P_n: the installed power of the luminaires in normal operation */
+    double daylight_h;          /* t_D: operating hours with daylight */
+    double night_h;             /* t_N: operating hours without */
+    double constant_factor;     /* F_C: 1, or (1 + MF) / 2 under constant illuminance control */
+    double occupancy_factor;    /* F_O (0..1) */
+    double daylight_factor;     /* F_D (0..1): 1 - F_DS x F_DC by the simplified method */
+    double parasitic_W;         /* P_pc: controls' standby power, drawn in the hours the lighting is off */
+    double emergency_W;         /* P_em: emergency batteries' charging power */
+    double emergency_h;         /* t_em: its hours */
+    long long reserved[4];      /* zero: room for later inputs */
+} lx_leni_input;
+
+/** LENI and its parts. */
+typedef struct lx_leni {
+    double lighting_kWh;        /* W_L = P_n F_C F_O (t_D F_D + t_N) / 1000 */
+    double parasitic_kWh;       /* W_P = (P_pc (t_y - (t_D + t_N)) + P_em t_em) / 1000, t_y = 8760 h */
+    double total_kWh;           /* W = W_L + W_P */
+    double leni_kWh_m2;         /* LENI = W / A, kWh / (m2 a) */
+    double power_density_W_m2;  /* P_n / A */
+    long long reserved[4];      /* zero: room for later results */
+} lx_leni;
+
+/** EN 15193-1 LENI from its inputs (t_y = 8760 h). Errors: LX_EINVAL (an area or power that is not
+ * positive and finite, hours negative or more than a year together, factors outside 0..1, non-zero
+ * reserved). Pure, thread-safe. */
+LX_API lx_status lx_leni_compute(lx_ctx *ctx, const lx_leni_input *in, lx_leni *out);
+
+/** The scene's [energy] section as LENI inputs: P_n the sum of its luminaires' power in normal
+ * operation ([luminaire] power, or an IES file's input watts), F_C from their power-weighted
+ * maintenance factor when constant illuminance control is on, F_D = 1 - F_DS x F_DC from the typed
+ * daylight supply and control factors, A given or the rooms' floor area. Errors: LX_EPARSE naming the
+ * scene file when it has no [energy] section, or a luminaire that has no power (its section's line). */
+LX_API lx_status lx_scene_energy(lx_ctx *ctx, const lx_scene *scene, lx_leni_input *in, lx_leni *out);
 
 /** What a receiver asks besides its plane's illuminance (lx_scene_design.rec_cylinder). */
 enum {

@@ -628,6 +628,23 @@ static void t_lx_scene_area_stats(void)
     assert_memory_equal(&s, before, sizeof s);
     lx_scene_result_free(r);
 }
+static void t_lx_leni_compute(void)
+{
+    lx_leni_input in = {.area_m2 = 10, .power_W = 100, .night_h = 100, .constant_factor = 1, .occupancy_factor = 1,
+                        .daylight_factor = 1};
+    lx_leni e;
+    memset(&e, 0xcd, sizeof e);
+    unsigned char before[sizeof e];
+    memcpy(before, &e, sizeof e);
+    EXPECT_EINVAL(lx_leni_compute(NULL, &in, &e));
+    assert_memory_equal(&e, before, sizeof e);
+}
+static void t_lx_scene_energy(void)
+{
+    lx_leni_input in;
+    lx_leni e;
+    EXPECT_EINVAL(lx_scene_energy(NULL, SCENE, &in, &e));
+}
 static void t_lx_scene_check(void)
 {
     lx_scene_checks *k = PSENT;
@@ -916,6 +933,7 @@ static const struct api_case {
     CASE(lx_irradiance_dirs), CASE(lx_irradiance_map), CASE(lx_spectral_exr_read_xyz), CASE(lx_xyz_image_write_exr),
     CASE(lx_scene_read_file), CASE(lx_scene_read_mem), CASE(lx_scene_plan_make), CASE(lx_scene_eval),
     CASE(lx_scene_plan_make_mode), CASE(lx_en12464_grid_size), CASE(lx_scene_area_stats), CASE(lx_scene_check),
+    CASE(lx_leni_compute), CASE(lx_scene_energy),
     CASE(lx_falsecolor_write_png), CASE(lx_envmap_preview_write_png), CASE(lx_irradiance_write_png),
     CASE(lx_spd_report_write_png), CASE(lx_xyz_image_write_png), CASE(lx_grid_write_png), CASE(lx_error_time_write_png),
     CASE(lx_plane_cells),
@@ -999,6 +1017,11 @@ static void nonzero_reserved_options_refused(void **state)
     lx_colorimetry cc[2];
     EXPECT_EINVAL(lx_batch_colorimetry(ctx, &BATCH, LX_OBSERVER_2, &bo, cc));
     EXPECT_EINVAL(lx_alphaopic_batch(ctx, &BATCH, &bo, out));
+    lx_leni_input li = {.area_m2 = 10, .power_W = 100, .night_h = 100, .constant_factor = 1, .occupancy_factor = 1,
+                        .daylight_factor = 1};
+    li.reserved[0] = 1;
+    lx_leni le;
+    EXPECT_EINVAL(lx_leni_compute(ctx, &li, &le));
     lx_par pb[2];
     lx_hazard hb[2];
     lx_binning bb[2];
@@ -1241,6 +1264,12 @@ static void results_write_reserved_as_zero(void **state)
     DIRTY(as);
     lx_assert_ok(ctx, lx_scene_area_stats(ctx, SCENE, ar, 0, &as));
     ZERO_RESERVED(as);
+    lx_leni_input li = {.area_m2 = 10, .power_W = 100, .night_h = 100, .constant_factor = 1, .occupancy_factor = 1,
+                        .daylight_factor = 1};
+    lx_leni le;
+    DIRTY(le);
+    lx_assert_ok(ctx, lx_leni_compute(ctx, &li, &le));
+    ZERO_RESERVED(le);
     lx_scene_result_free(ar);
 }
 

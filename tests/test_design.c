@@ -718,6 +718,50 @@ static void test_emergency_areas(void **state)
     lx_scene_free(sc);
 }
 
+/* ---- EN 15193-1 LENI ----
+ * By hand (the standard's method, simplified daylight dependency): a 6 m x 4 m office (A = 24 m2), four
+ * 35 W luminaires (P_n = 140 W) at MF 0.8 under constant illuminance control: F_C = (1 + 0.8) / 2 = 0.9;
+ * t_D = 2250 h, t_N = 250 h, F_O = 0.9; F_D = 1 - F_DS F_DC = 1 - 0.6 x 0.75 = 0.55;
+ * W_L = 140 x 0.9 x 0.9 x (2250 x 0.55 + 250) / 1000 = 113.4 x 1487.5 / 1000 = 168.6825 kWh;
+ * W_P = (5 W x (8760 - 2500) h + 2 W x 8760 h) / 1000 = (31300 + 17520) / 1000 = 48.82 kWh;
+ * LENI = (168.6825 + 48.82) / 24 = 217.5025 / 24 = 9.06260416667 kWh/(m2 a). */
+static void test_leni(void **state)
+{
+    lx_ctx *ctx = *state;
+    lx_leni_input in = {.area_m2 = 24, .power_W = 140, .daylight_h = 2250, .night_h = 250, .constant_factor = 0.9,
+                        .occupancy_factor = 0.9, .daylight_factor = 0.55, .parasitic_W = 5, .emergency_W = 2,
+                        .emergency_h = 8760};
+    lx_leni e;
+    lx_assert_ok(ctx, lx_leni_compute(ctx, &in, &e));
+    lx_assert_near(e.lighting_kWh, 168.6825, 0, 1e-14);
+    lx_assert_near(e.parasitic_kWh, 48.82, 0, 1e-14);
+    lx_assert_near(e.leni_kWh_m2, 217.5025 / 24, 0, 1e-14);
+    lx_assert_near(e.power_density_W_m2, 140.0 / 24, 0, 1e-15);
+    /* the same from a scene file's [energy] section */
+    lx_scene *sc = NULL;
+    lx_assert_ok(ctx, lx_scene_read_file(ctx, "tests/data/design/energy.scene", &sc));
+    lx_leni_input si;
+    lx_leni se;
+    lx_assert_ok(ctx, lx_scene_energy(ctx, sc, &si, &se));
+    lx_assert_near(si.power_W, 140, 0, 0);
+    lx_assert_near(si.area_m2, 24, 0, 1e-15);
+    lx_assert_near(si.constant_factor, 0.9, 0, 1e-15);
+    lx_assert_near(si.daylight_factor, 0.55, 0, 1e-15);
+    lx_assert_near(se.leni_kWh_m2, 217.5025 / 24, 0, 1e-14);
+    lx_scene_free(sc);
+    in.daylight_h = 9000;
+    assert_int_equal(lx_leni_compute(ctx, &in, &e), LX_EINVAL);
+    expect_error(ctx, "[luminaire a]\ntype = point\nposition = 0 m, 0 m, 2 m\nflux = 1 lm\n[receiver r]\ntype = point\n"
+                      "position = 0 m, 0 m, 0 m\n[energy]\noccupancy_factor = 1.5\n",
+                 9, "occupancy_factor: a factor from 0 to 1");
+    const char *nopower = "[luminaire a]\ntype = point\nposition = 0 m, 0 m, 2 m\nflux = 1 lm\n[receiver r]\ntype = point\n"
+                          "position = 0 m, 0 m, 0 m\n[energy]\narea = 10 m2\nnight_hours = 100 h\n";
+    lx_assert_ok(ctx, lx_scene_read_mem(ctx, "bad.scene", nopower, strlen(nopower), &sc));
+    assert_int_equal(lx_scene_energy(ctx, sc, &si, &se), LX_EPARSE);
+    assert_non_null(strstr(lx_ctx_errmsg(ctx), "bad.scene:1: luminaire 'a': no power"));
+    lx_scene_free(sc);
+}
+
 /* ---- CIE 97:2005: MF = LLMF x LSF x LMF x RSMF from typed tables ----
  * The publication's tables are the user's to type (luxcalc ships no copy); what is checked here is
  * the method: each factor read off its table at the scheme's time by linear interpolation (at a
@@ -808,6 +852,7 @@ int main(void)
         cmocka_unit_test(test_emergency_corridor),
         cmocka_unit_test(test_observer_positions_directions),
         cmocka_unit_test(test_emergency_areas),
+        cmocka_unit_test(test_leni),
         cmocka_unit_test(test_errors),
     };
     return cmocka_run_group_tests(tests, lx_test_ctx_setup, lx_test_ctx_teardown);

@@ -11,7 +11,8 @@
 #include <string.h>
 
 static const char help[] =
-    "usage: luxcalc scene FILE [--explain] [--contributions] [--surfaces] [--check] [--format table|csv|json]\n"
+    "usage: luxcalc scene FILE [--explain] [--contributions] [--surfaces] [--check] [--energy]\n"
+    "                     [--format table|csv|json]\n"
     "                     [-o FILE] [--png DIR] [--backend auto|cpu|opencl]\n"
     "\n"
     "Computes a lighting scene (see README \"Scenes\" for the file format): luminaires (point, spot,\n"
@@ -26,6 +27,8 @@ static const char help[] =
     "                    interreflection the reflected part is indirect_lx)\n"
     "  --glare           UGR (CIE 117) at each [observer]: one row per luminaire that counts with its\n"
     "                    luminance, solid angle, position index and term L^2 w / p^2, and the UGR\n"
+    "  --energy          EN 15193-1 LENI from the [energy] section: installed power, hours, factors,\n"
+    "                    the lighting and parasitic energy (kWh a year) and LENI (kWh/(m2 a))\n"
     "  --check           the checks against the scene's [requirement] sections: one row per line\n"
     "                    (requirement, target, quantity, required, computed, pass or FAIL)\n"
     "  --surfaces        rooms: one row per room face, surface side and obstruction face instead:\n"
@@ -673,9 +676,10 @@ int cmd_scene(int argc, char **argv)
                                          {"format", required_argument, 0, 'f'}, {"backend", required_argument, 0, 'b'},
                                          {"png", required_argument, 0, 'p'},     {"glare", no_argument, 0, 'g'},
                                          {"surfaces", no_argument, 0, 's'},      {"check", no_argument, 0, 'k'},
+                                         {"energy", no_argument, 0, 'E'},
                                          {"help", no_argument, 0, 'h'},         {0, 0, 0, 0}};
     const char *cmd = "scene", *out = NULL, *backend_text = NULL, *png_dir = NULL;
-    int do_explain = 0, contrib = 0, glare = 0, do_surfaces = 0, do_check = 0, c;
+    int do_explain = 0, contrib = 0, glare = 0, do_surfaces = 0, do_check = 0, do_energy = 0, c;
     cli_format fmt = CLI_FMT_TABLE;
     optind = 1;
     opterr = 0;
@@ -686,6 +690,7 @@ int cmd_scene(int argc, char **argv)
         case 'g': glare = 1; break;
         case 's': do_surfaces = 1; break;
         case 'k': do_check = 1; break;
+        case 'E': do_energy = 1; break;
         case 'o': out = optarg; break;
         case 'b': backend_text = optarg; break;
         case 'p': png_dir = optarg; break;
@@ -718,6 +723,12 @@ int cmd_scene(int argc, char **argv)
     lx_scene_plan *plan = NULL;
     lx_scene_result *res = NULL;
     lx_status st = lx_scene_read_file(ctx, argv[optind], &sc);
+    if (st == LX_OK && do_energy) {
+        int erc = cli_energy_out(cmd, ctx, sc, fmt, out);
+        lx_scene_free(sc);
+        lx_ctx_destroy(ctx);
+        return erc;
+    }
     if (st == LX_OK && glare) {
         int grc = glare_out(cmd, ctx, sc, fmt, out);
         lx_scene_free(sc);

@@ -15,6 +15,8 @@ void cli_scene_maintenance_text(FILE *f, const lx_scene *sc);
  * modelling_max (empty where the receiver asks none). */
 void cli_scene_cylinder_summary(cli_table *t, const lx_scene_result *res, size_t a, size_t b);
 
+/* --energy: LENI and its parts, one row; returns the exit code. */
+int cli_energy_out(const char *cmd, lx_ctx *ctx, const lx_scene *sc, cli_format fmt, const char *out);
 /* The eye's position and the azimuth of the line of sight (deg from +x towards +y): 4 cells. */
 void cli_observer_cells(cli_table *t, const lx_scene_observer *o);
 /* The scene's results, and those its requirements rate besides: the glare at its observers and the

@@ -173,7 +173,8 @@ static void style(const char *name, const char *unit, int *dec, int *sig, int *t
         *sig = cli_precision;
         return;
     }
-    static const char *const photometric[] = {"lx", "cd", "lm", "klm", "cd/m2", "fc", "fL", "cd/ft2", "nit", "W", "lm/W"};
+    static const char *const photometric[] = {"lx", "cd", "lm", "klm", "cd/m2", "fc", "fL", "cd/ft2", "nit", "W", "lm/W",
+                                              "m2", "h", "kWh", "W/m2", "kWh/(m2 a)"};
     if (!strcmp(name, "duv") || !strcmp(name, "cri_dc") || (!*unit && (!strcmp(name, "x") || !strcmp(name, "y") ||
                                                                          !strcmp(name, "u_prime") || !strcmp(name, "v_prime"))))
         *dec = 5;
@@ -181,7 +182,7 @@ static void style(const char *name, const char *unit, int *dec, int *sig, int *t
     else if (!strncmp(name, "tm30_rhs", 8)) *dec = 3;
     else if (!strncmp(name, "cri_", 4) || !strncmp(name, "tm30_", 5)) *dec = 1;
     else if (!strcmp(name, "U0") || strstr(name, "uniformity") || !strcmp(name, "lor") || !strcmp(name, "downward_fraction") ||
-             !strncmp(name, "modelling", 9))
+             !strncmp(name, "modelling", 9) || (strlen(name) > 7 && !strcmp(name + strlen(name) - 7, "_factor")))
         *dec = 3;
     else if (!strcmp(unit, "m") || !strcmp(unit, "ft") || !strcmp(unit, "deg")) *dec = 3, *trim = 1;
     else

@@ -165,3 +165,31 @@ void cli_observer_cells(cli_table *t, const lx_scene_observer *o)
     double az = atan2(o->view[1], o->view[0]) * 180 / CLI_PI;
     cli_table_num(t, az < 0 ? az + 360 : az);
 }
+
+int cli_energy_out(const char *cmd, lx_ctx *ctx, const lx_scene *sc, cli_format fmt, const char *out)
+{
+    lx_leni_input in;
+    lx_leni e;
+    lx_status st = lx_scene_energy(ctx, sc, &in, &e);
+    if (st != LX_OK) return cli_fail(cmd, ctx, st);
+    static const char *const names[] = {"area_m2", "power_W", "power_density_W_m2", "daylight_hours_h", "night_hours_h",
+                                        "constant_factor", "occupancy_factor", "daylight_factor", "parasitic_power_W",
+                                        "emergency_charging_W", "lighting_kWh", "parasitic_kWh", "total_kWh",
+                                        "leni_kWh_m2_a"};
+    static const char *const units[] = {"m2", "W", "W/m2", "h", "h", "", "", "", "W", "W", "kWh", "kWh", "kWh", "kWh/(m2 a)"};
+    double v[] = {in.area_m2,          in.power_W,         e.power_density_W_m2, in.daylight_h,  in.night_h,
+                  in.constant_factor,  in.occupancy_factor, in.daylight_factor,  in.parasitic_W, in.emergency_W,
+                  e.lighting_kWh,      e.parasitic_kWh,    e.total_kWh,          e.leni_kWh_m2};
+    cli_table *t = cli_table_new(14, names, units);
+    if (!t) return CLI_RUNTIME;
+    for (int k = 0; k < 14; k++) cli_table_num(t, v[k]);
+    int rc = CLI_OK;
+    cli_output o;
+    if (cli_output_open(&o, out, cmd) != 0) rc = CLI_INPUT;
+    else {
+        int ok = cli_table_write(t, fmt, o.fp, 0) == 0;
+        if (cli_output_close(&o, ok, cmd) != 0 || !ok) rc = CLI_RUNTIME;
+    }
+    cli_table_free(t);
+    return rc;
+}

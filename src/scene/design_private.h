@@ -65,9 +65,18 @@ typedef struct lx__design {
     size_t n_req;
     lx__obs_raw *obs_raw;      /* per [observer] section, as read */
     size_t n_obs_raw;
+    /* [energy] (design_energy.c) */
+    int energy, has_area, constant, has[9];
+    long energy_line;
+    const char *energy_file;
+    double e[9];               /* area, t_D, t_N, F_O, F_DS, F_DC, P_pc, P_em, t_em */
 } lx__design;
 
-enum { LX__DSEC_NONE = 0, LX__DSEC_MAINT = 1, LX__DSEC_AREA = 2, LX__DSEC_REQ = 3 };
+enum { LX__DSEC_NONE = 0, LX__DSEC_MAINT = 1, LX__DSEC_AREA = 2, LX__DSEC_REQ = 3, LX__DSEC_ENERGY = 4 };
+
+/* ---- energy (design_energy.c) ---- */
+lx_status lx__energy_open(lx_ctx *ctx, lx_scene *sc, const char *file, long line);
+lx_status lx__energy_key(lx_ctx *ctx, lx_scene *sc, const char *file, long line, const char *key, const char *value);
 
 /* ---- observers at several positions and directions (design_observers.c) ---- */
 /* [observer] keys x, y, z, spacing, directions, direction_step: 1 when key is one. */

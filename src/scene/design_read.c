@@ -255,6 +255,7 @@ int lx__design_section_kind(const char *kind)
     if (!strcmp(kind, "maintenance")) return LX__DSEC_MAINT;
     if (!strcmp(kind, "area")) return LX__DSEC_AREA;
     if (!strcmp(kind, "requirement")) return LX__DSEC_REQ;
+    if (!strcmp(kind, "energy")) return LX__DSEC_ENERGY;
     return LX__DSEC_NONE;
 }
 
@@ -265,6 +266,7 @@ lx_status lx__design_open(lx_ctx *ctx, lx_scene *sc, int sec, const char *name, 
     in->section = sec;
     if (sec == LX__DSEC_AREA) return lx__area_open(ctx, sc, name, file, line);
     if (sec == LX__DSEC_REQ) return lx__req_open(ctx, sc, name, file, line);
+    if (sec == LX__DSEC_ENERGY) return lx__energy_open(ctx, sc, file, line);
     if (sec != LX__DSEC_MAINT) return LX_OK;
     for (size_t i = 0; i < d->n_maint; i++)
         if (!strcmp(d->maint[i].name, name))
@@ -361,6 +363,7 @@ lx_status lx__design_key(lx_ctx *ctx, lx_scene *sc, const char *file, long line,
     lx__design *in = d->internal;
     if (in->section == LX__DSEC_AREA) return lx__area_key(ctx, sc, file, line, key, value);
     if (in->section == LX__DSEC_REQ) return lx__req_key(ctx, sc, file, line, key, value);
+    if (in->section == LX__DSEC_ENERGY) return lx__energy_key(ctx, sc, file, line, key, value);
     lx_maintenance *m = &d->maint[d->n_maint - 1];
     lx__maint_raw *r = &in->maint[d->n_maint - 1];
     for (int k = 0; k < 4; k++)

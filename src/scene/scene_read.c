@@ -176,7 +176,10 @@ static lx_status open_section(reader *r, const char *file, long line, char *s, c
     while (k < 12 && strcmp(kind, known[k])) k++;
     int design = lx__design_section_kind(kind);
     if (design) {
-        if (!*name) return lx__error(r->ctx, LX_EPARSE, file, line, "[%s] needs a name: [%s NAME]", kind, kind);
+        if (design == LX__DSEC_ENERGY && *name)
+            return lx__error(r->ctx, LX_EPARSE, file, line, "[energy] takes no name (got '%s')", name);
+        if (design != LX__DSEC_ENERGY && !*name)
+            return lx__error(r->ctx, LX_EPARSE, file, line, "[%s] needs a name: [%s NAME]", kind, kind);
         r->sec = SEC_DESIGN;
         return lx__design_open(r->ctx, r->sc, design, name, file, line);
     }
@@ -184,7 +187,7 @@ static lx_status open_section(reader *r, const char *file, long line, char *s, c
         return lx__error(r->ctx, LX_EPARSE, file, line,
                          "unknown section [%s] (sections: scene, luminaire NAME, receiver NAME, sky, sun, observer NAME, "
                          "output, effects, room NAME, surface NAME, obstruction NAME, opening NAME, maintenance NAME, "
-                         "area NAME, requirement NAME)",
+                         "area NAME, requirement NAME, energy)",
                          kind);
     int room_kind = k == 8 ? SCENE__ROOM : k == 9 ? SCENE__SURFACE : k == 10 ? SCENE__OBSTRUCTION : 0;
     int named = !strcmp(kind, "luminaire") || !strcmp(kind, "receiver") || !strcmp(kind, "observer") || !strcmp(kind, "opening") ||

@@ -41,3 +41,12 @@ expect_out_match '^office,desk,U_0,normal,at_least,0\.99,0\.[0-9]+,,fail,typed f
 run scene tests/data/design/bad_req.scene --check
 expect_rc 2 "a requirement for a quantity not computed: input error"
 expect_err_match '^luxcalc: scene: tests/data/design/bad_req.scene:15: requirement .office.: cylindrical_illuminance is not computed' "names file and line"
+# EN 15193-1 LENI against the hand computation in energy.scene's header
+run scene tests/data/design/energy.scene --energy --format csv
+expect_rc 0 "--energy runs"
+expect_field 1 lighting_kWh 168.6825 1e-10 "W_L = P_n F_C F_O (t_D F_D + t_N) / 1000"
+expect_field 1 parasitic_kWh 48.82 1e-10 "W_P = (P_pc (t_y - t_D - t_N) + P_em t_em) / 1000"
+expect_field 1 leni_kWh_m2_a 9.0626041667 1e-9 "LENI = W / A"
+run scene tests/data/scenes/point.scene --energy
+expect_rc 2 "--energy without [energy]: input error"
+expect_err_match 'no \[energy\] section' "says what is missing"
