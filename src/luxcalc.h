@@ -183,7 +183,8 @@ LX_API lx_status lx_ctx_set_input_limit(lx_ctx *ctx, lx_input_kind kind, size_t 
 /** The size limit in bytes in effect for `kind` on ctx (ctx may be NULL: the default). */
 LX_API size_t lx_ctx_input_limit(const lx_ctx *ctx, lx_input_kind kind);
 
-/** Frees text the library wrote to memory for the caller (lx_luminaire_write_ies). Accepts NULL. */
+/** Frees text the library wrote to memory for the caller (lx_luminaire_write_ies, lx_ugr_table_text).
+ * Accepts NULL. */
 LX_API void lx_text_free(char *text);
 
 /** Room lx_double_format needs, the terminating NUL included. */
@@ -1464,6 +1465,13 @@ typedef struct lx_ugr_table {
     long long reserved[4];         /* zero: room for later results (ABI policy) */
 } lx_ugr_table;
 LX_API lx_status lx_ugr_table_compute(lx_ctx *ctx, const lx_luminaire *lum, lx_ugr_table *out);
+/** The table as luminaire data sheets print it (CIE 190:2010 Table 2 layout): three lines of
+ * reflectances (ceiling, walls, floor cavity) over the ten columns, then one line per room size
+ * (X, shown on the first line of its group, then Y, in multiples of H) with the five crosswise and
+ * the five endwise values to one decimal ("-" where undefined); ASCII text, lines ending in '\n',
+ * at most 79 columns. The caller owns *text and frees it with lx_text_free. Errors: LX_EINVAL
+ * (NULL), LX_ENOMEM. Thread-safe. */
+LX_API lx_status lx_ugr_table_text(lx_ctx *ctx, const lx_ugr_table *tab, char **text);
 
 /* ============================================================================================ */
 /* 12. Environment maps, OpenEXR and irradiance; daylight skies and the sun (src/radiance) */

@@ -734,6 +734,14 @@ static void t_lx_ugr_table_compute(void)
     assert_memory_equal(t, &ref, sizeof ref);
     free(t);
 }
+static void t_lx_ugr_table_text(void)
+{
+    lx_ugr_table t;
+    memset(&t, 0, sizeof t);
+    char *text = PSENT;
+    EXPECT_EINVAL(lx_ugr_table_text(NULL, &t, &text));
+    assert_true(text == PSENT);
+}
 static void t_lx_sky_cie(void)
 {
     const double sun[3] = {0, 0.5, 0.8};
@@ -902,7 +910,7 @@ static const struct api_case {
     void (*run)(void);
 } CASES[] = {
     CASE(lx_ctx_set_input_limit), CASE(lx_ctx_input_limit), CASE(lx_colorimetry_check), CASE(lx_ugr),
-    CASE(lx_ugr_table_compute), CASE(lx_sky_cie), CASE(lx_sky_cie_params), CASE(lx_sky_perez), CASE(lx_sky_illuminance),
+    CASE(lx_ugr_table_compute), CASE(lx_ugr_table_text), CASE(lx_sky_cie), CASE(lx_sky_cie_params), CASE(lx_sky_perez), CASE(lx_sky_illuminance),
     CASE(lx_sun_spa), CASE(lx_sky_map), CASE(lx_scene_glare_eval), CASE(lx_warn_cone_flux), CASE(lx_envmap_concentration),
     CASE(lx_ctx_irradiance_method),
     CASE(lx_spd_read_file_opts), CASE(lx_spd_read_mem_opts), CASE(lx_spd_set_vendor), CASE(lx_binning_compute),

@@ -170,6 +170,38 @@ static void test_no_area(void **state)
     lx_luminaire_free(lum);
 }
 
+/* The matrix text: a made-up table whose cell (r, c) is r + c / 10 + 0.04, so each printed cell
+ * names its own place; NaN prints "-". */
+static void test_table_text(void **state)
+{
+    lx_ctx *ctx = *state;
+    lx_ugr_table tab;
+    memset(&tab, 0, sizeof tab);
+    static const double X[19] = {2, 2, 2, 2, 2, 2, 4, 4, 4, 4, 4, 4, 8, 8, 8, 8, 12, 12, 12};
+    static const double Y[19] = {2, 3, 4, 6, 8, 12, 2, 3, 4, 6, 8, 12, 4, 6, 8, 12, 4, 6, 8};
+    for (int r = 0; r < 19; r++) {
+        tab.x_h[r] = X[r], tab.y_h[r] = Y[r];
+        for (int c = 0; c < 10; c++) tab.ugr[r][c] = 10 + r + c / 10.0 + 0.04;
+    }
+    tab.ugr[18][9] = NAN;
+    char *text = NULL;
+    lx_assert_ok(ctx, lx_ugr_table_text(ctx, &tab, &text));
+    assert_non_null(strstr(text, "reflectances\n  ceiling         0.70  0.70  0.50  0.50  0.30     0.70  0.70  0.50  0.50  0.30\n"));
+    assert_non_null(strstr(text, "\n          2H  2H  10.0  10.1  10.2  10.3  10.4     10.5  10.6  10.7  10.8  10.9\n"));
+    assert_non_null(strstr(text, "\n              3H  11.0  11.1"));      /* X only on the first line of its group */
+    assert_non_null(strstr(text, "\n         12H  4H  26.0"));
+    assert_non_null(strstr(text, "28.8     -\n"));                      /* the NaN */
+    size_t lines = 0, widest = 0, w = 0;
+    for (const char *s = text; *s; s++) {
+        if (*s == '\n') lines++, widest = w > widest ? w : widest, w = 0;
+        else w++;
+    }
+    assert_int_equal(lines, 4 + 2 + 19); /* reflectances (4), blank and heads (2), 19 rooms */
+    assert_true(widest <= 79);
+    lx_text_free(text);
+    assert_int_equal(lx_ugr_table_text(ctx, NULL, &text), LX_EINVAL);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -178,6 +210,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_scene_observer, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(test_cie190_table, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(test_no_area, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(test_table_text, lx_test_ctx_setup, lx_test_ctx_teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -117,7 +117,7 @@ int cmd_solve(int argc, char **argv)
             }
             if (warn) {
                 names[n] = "exponent", units[n] = "", vals[n++] = S;
-                names[n] = "beam_angle_deg", units[n] = "deg", vals[n++] = B / LT_DEG;
+                names[n] = "beam_angle_deg", units[n] = "deg", vals[n++] = B_s ? lt_echo(B / LT_DEG) : B / LT_DEG; /* an input echoed as given */
             }
         }
         if (!rc && st != LX_OK) rc = cli_fail(cmd, ctx, st);

@@ -9,7 +9,7 @@
 #include <string.h>
 
 static const char help[] =
-    "usage: luxcalc ugr FILE.ies|FILE.ldt [--format table|csv|json] [-o FILE]\n"
+    "usage: luxcalc ugr FILE.ies|FILE.ldt [--format table|csv|tsv|json] [-o FILE]\n"
     "\n"
     "The CIE 190:2010 UGR table of the luminaire at its own lamp flux (uncorrected): rooms X x Y\n"
     "from 2H x 2H to 12H x 8H (X across the line of sight, H the luminaire plane above the eye),\n"
@@ -20,7 +20,10 @@ static const char help[] =
     "area (the file's luminous opening: width, length and height); the background luminance follows\n"
     "CIE 190 eqs. 7-12; the position index is the Luckiesh-Guth formula of CIE 117.\n"
     "\n"
-    "csv columns: x_H,y_H,then cross_70_50_20 ... cross_30_30_20, end_70_50_20 ... end_30_30_20\n"
+    "The table format prints the matrix of data sheets: the reflectances over ten columns, then a\n"
+    "line per room size (X, Y) with the crosswise and endwise values to one decimal. csv, tsv and\n"
+    "json print one row per room, every digit: x_H,y_H, then cross_70_50_20 ... cross_30_30_20,\n"
+    "end_70_50_20 ... end_30_30_20.\n"
     "\n"
     "example:\n"
     "  luxcalc ugr luminaire.ldt\n";
@@ -37,7 +40,7 @@ int cmd_ugr(int argc, char **argv)
         if (c == 'f') {
             int f = cli_format_parse(optarg);
             if (f < 0) {
-                cli_error("ugr", "--format: expected table, csv or json, got '%s'", optarg);
+                cli_error("ugr", "--format: expected table, csv, tsv or json, got '%s'", optarg);
                 return CLI_USAGE;
             }
             fmt = (cli_format)f;
@@ -72,21 +75,24 @@ int cmd_ugr(int argc, char **argv)
         for (int r = 0; r < 19; r++) {
             cli_table_num(t, tab.x_h[r]);
             cli_table_num(t, tab.y_h[r]);
-            for (int k = 0; k < 10; k++) {
-                /* data sheets print one decimal; csv and json keep every digit */
-                double v = tab.ugr[r][k];
-                cli_table_num(t, fmt == CLI_FMT_TABLE && isfinite(v) ? round(v * 10) / 10 : v);
-            }
+            for (int k = 0; k < 10; k++) cli_table_num(t, tab.ugr[r][k]);
         }
+        char *matrix = NULL;
+        if (fmt == CLI_FMT_TABLE && (st = lx_ugr_table_text(ctx, &tab, &matrix)) != LX_OK) rc = cli_fail("ugr", ctx, st);
         cli_output o;
-        if (cli_output_open(&o, out, "ugr") != 0) rc = CLI_INPUT;
+        if (rc != CLI_OK) {
+        } else if (cli_output_open(&o, out, "ugr") != 0) rc = CLI_INPUT;
         else {
-            if (fmt == CLI_FMT_TABLE)
+            int ok;
+            if (fmt == CLI_FMT_TABLE) { /* the matrix of data sheets; csv, tsv and json one row per room */
                 fprintf(o.fp, "UGR table (CIE 190:2010), %s, lamp flux %.0f lm, spacing %.2fH, uncorrected\n\n",
                         argv[optind], tab.lamp_flux_lm, tab.spacing_h);
-            int ok = cli_table_write(t, fmt, o.fp, 1) == 0;
+                ok = fputs(matrix, o.fp) >= 0;
+            } else
+                ok = cli_table_write(t, fmt, o.fp, 1) == 0;
             if (cli_output_close(&o, ok, "ugr") != 0 || !ok) rc = CLI_INPUT;
         }
+        lx_text_free(matrix);
         cli_table_free(t);
     }
     lx_luminaire_free(lum);

@@ -165,26 +165,41 @@ void cli_column_out(const char *name, const char *unit, cli_column *out)
         snprintf(out->name, sizeof out->name, "%.*s%s", (int)(nl - fl), name, into);
 }
 
-/* the digits a quantity keeps in the table format: decimals (dec >= 0) or significant digits */
-static void style(const char *name, const char *unit, int *dec, int *sig, int *trim)
+/* 1 when a column name ends with suffix */
+static int ends_with(const char *name, const char *suffix)
 {
-    *dec = -1, *sig = 6, *trim = 0;
+    size_t n = strlen(name), k = strlen(suffix);
+    return n >= k && !strcmp(name + n - k, suffix);
+}
+
+/* the digits a quantity keeps in the table format: decimals (dec >= 0) or significant digits;
+ * ratio: a dimensionless ratio (3 decimals), which keeps 2 significant digits where 3 decimals
+ * would print a value that is not zero as 0.000 */
+static void style(const char *name, const char *unit, int *dec, int *sig, int *trim, int *ratio)
+{
+    *dec = -1, *sig = 6, *trim = 0, *ratio = 0;
     if (cli_precision > 0) {
         *sig = cli_precision;
         return;
     }
-    static const char *const photometric[] = {"lx", "cd", "lm", "klm", "cd/m2", "fc", "fL", "cd/ft2", "nit", "W", "lm/W",
-                                              "m2", "h", "kWh", "W/m2", "kWh/(m2 a)"};
-    if (!strcmp(name, "duv") || !strcmp(name, "cri_dc") || (!*unit && (!strcmp(name, "x") || !strcmp(name, "y") ||
-                                                                         !strcmp(name, "u_prime") || !strcmp(name, "v_prime"))))
+    static const char *const photometric[] = {"lx", "cd", "lm", "klm", "cd/m2", "fc", "fL", "cd/ft2", "nit", "W", "lm/W", "sr",
+                                              "h", "kWh", "W/m2", "kWh/(m2 a)"};
+    if (!strcmp(name, "duv") || !strcmp(name, "cri_dc") || ends_with(name, "duv_offset") ||
+        (!*unit && (!strcmp(name, "x") || !strcmp(name, "y") || !strcmp(name, "u_prime") || !strcmp(name, "v_prime"))))
         *dec = 5;
     else if (!strcmp(unit, "K")) *dec = 1;
     else if (!strncmp(name, "tm30_rhs", 8)) *dec = 3;
     else if (!strncmp(name, "cri_", 4) || !strncmp(name, "tm30_", 5)) *dec = 1;
+    else if (!strcmp(name, "ugr") || !strncmp(name, "cross_", 6) || !strncmp(name, "end_", 4)) *dec = 1; /* CIE 117, 190 */
+    else if (!strcmp(unit, "%")) *dec = 2;
     else if (!strcmp(name, "U0") || strstr(name, "uniformity") || !strcmp(name, "lor") || !strcmp(name, "downward_fraction") ||
-             !strncmp(name, "modelling", 9) || (strlen(name) > 7 && !strcmp(name + strlen(name) - 7, "_factor")))
-        *dec = 3;
-    else if (!strcmp(unit, "m") || !strcmp(unit, "ft") || !strcmp(unit, "deg")) *dec = 3, *trim = 1;
+             strstr(name, "reflectance") || strstr(name, "transmittance") || ends_with(name, "_coverage") ||
+             !strcmp(name, "position_index") || ends_with(name, "_der") || !strcmp(name, "sp_ratio") ||
+             !strncmp(name, "modelling", 9) || ends_with(name, "_factor"))
+        *dec = 3, *ratio = 1;
+    else if (!strcmp(unit, "m") || !strcmp(unit, "ft") || !strcmp(unit, "deg") || !strcmp(unit, "m2") || !strcmp(unit, "ft2") ||
+             ends_with(name, "_H"))
+        *dec = 3, *trim = 1;
     else
         for (size_t k = 0; k < sizeof photometric / sizeof *photometric; k++)
             if (!strcmp(unit, photometric[k])) *sig = 4;
@@ -192,12 +207,13 @@ static void style(const char *name, const char *unit, int *dec, int *sig, int *t
 
 void cli_number_text(char *buf, size_t cap, const cli_column *col, double v)
 {
-    int dec, sig, trim;
-    style(col->name, col->unit, &dec, &sig, &trim);
+    int dec, sig, trim, ratio;
+    style(col->name, col->unit, &dec, &sig, &trim, &ratio);
     if (!isfinite(v)) {
         snprintf(buf, cap, "-");
         return;
     }
+    if (ratio && v != 0 && fabs(v) < 0.0005) dec = -1, sig = 2; /* 0.00031, not 0.000 */
     if (dec >= 0) {
         snprintf(buf, cap, "%.*f", dec, v);
         if (trim && strchr(buf, '.')) {

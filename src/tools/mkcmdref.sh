@@ -31,6 +31,8 @@ ex "grid" grid --ies samples/ies/spot_warn_30deg_800lm.ies --at 2,1.5,2.8 --plan
 ex "grid" grid --ies samples/ies/spot_warn_30deg_800lm.ies --at 2,1.5,2.8 --plane z=0.8 --area 0:4,0:3 --spacing 1 --points-at centres --format table
 ex "irradiance" irradiance samples/envmaps/sky_sun.exr --normal 0,0,1 --method fast --format csv
 ex "luminance-map" luminance-map samples/envmaps/sky_sun.exr --format csv
+ex "sky" sky --type cie --number 12 --zenith-luminance 6000cd/m2 --sun-altitude 40deg --sun-azimuth 180deg --sun-illuminance 80000lx --format csv
+LINES_MAX=30 ex "ugr" ugr samples/ies/downlight_lambert_1000lm.ies
 LINES_MAX=20 ex "scene" scene samples/scenes/spectral.scene
 ex "devices" devices --format csv
 topics=$("$LX" bench --help 2>&1 | awk '/^topics:/ { on = 1; next } on && NF { printf "%s%s", sep, $1; sep = "|" }')

@@ -118,6 +118,22 @@ else
 fi
 run ugr
 expect_rc 1 "ugr without a file"
+# the table format: the matrix of data sheets (CIE 190:2010 Table 2 layout); every cell the csv's
+# value to one decimal, in the csv's order (rooms down, crosswise then endwise across)
+run ugr samples/ies/downlight_lambert_1000lm.ies --format csv
+expect_rc 0 "ugr csv, sample downlight"
+printf '%s\n' "$out" | awk -F, 'NR > 1 { for (i = 3; i <= 12; i++) printf "%.1f ", $i + 0; print "" }' >"$T/ugr_csv"
+run ugr samples/ies/downlight_lambert_1000lm.ies
+expect_rc 0 "ugr matrix"
+expect_out_match '^  ceiling +0\.70 +0\.70 +0\.50 +0\.50 +0\.30 +0\.70 +0\.70 +0\.50 +0\.50 +0\.30$' "reflectances over the ten columns"
+expect_out_match '^  floor cavity +0\.20( +0\.20){9}$' "floor cavity line"
+expect_out_match '^room size +X +Y +viewed crosswise +viewed endwise$' "column heads"
+expect_out_match '^ +2H +2H( +[0-9]+\.[0-9]){10}$' "first room: X and Y, ten values to one decimal"
+expect_out_match '^ +12H +4H( +[0-9]+\.[0-9]){10}$' "12H group starts with its X"
+printf '%s\n' "$out" | awk '/^ +[0-9]+H/ && NF >= 11 { for (i = NF - 9; i <= NF; i++) printf "%s ", $i; print "" }' >"$T/ugr_tab"
+if [ "$(wc -l <"$T/ugr_tab")" -eq 19 ] && cmp -s "$T/ugr_csv" "$T/ugr_tab"; then ok "19 room lines, each cell the csv value rounded"
+else notok "19 room lines, each cell the csv value rounded" "$(diff "$T/ugr_csv" "$T/ugr_tab" | head -4)"; fi
+if printf '%s\n' "$out" | grep -q '0000'; then notok "no long-form padding" "$out"; else ok "no long-form padding (26.7000)"; fi
 
 # openings (issue 21 part B): a 1 x 1 m roof opening at the centre of a 4 x 4 x 3 m room's ceiling
 cat > "$T/roof.scene" <<'SC'

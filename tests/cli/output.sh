@@ -22,6 +22,35 @@ run point --flux 1000lm --distance 2m --angle 30deg
 expect_out_match '^illuminance_lx +17\.23 lx$' "lux to 4 significant digits"
 expect_out_match '^intensity_cd +79\.58 cd$' "candela to 4 significant digits"
 expect_out_match '^angle_deg +30 deg$' "the echoed angle as given"
+run solve --illuminance 300lx --distance 3m --beam-angle 30deg --format csv
+expect_out_match ',30$' "solve echoes --beam-angle 30deg as 30, not 29.999999999999996"
+# ratios, UGR, areas and percentages (README "Tables"): reflectance 0.200, not 0.200000; UGR to 0.1;
+# an area to 1e-3 without padding; a uniformity that is not zero never prints as 0.000
+run scene --surfaces samples/scenes/office_room.scene
+expect_out_match '^reflectance +0\.200$' "reflectance to 3 decimals"
+expect_out_match '^area_m2 +24 m2$' "an area to 1e-3, trailing zeros dropped (24, not 24.0000)"
+cat >"$T/glare.scene" <<'SC'
+[luminaire p1]
+type = rect
+position = 0, 3, 2.8 m
+luminance = 4000 cd/m2
+width = 0.6 m
+length = 0.6 m
+[receiver r]
+type = point
+position = 0, 0, 0 m
+[observer eye]
+position = 0, 0, 1.2 m
+view = 0, 1, 0
+background_luminance = 30 cd/m2
+SC
+run scene "$T/glare.scene" --glare
+expect_out_match '^ugr +18\.5$' "UGR to 0.1 (18.549)"
+expect_out_match '^position_index +3\.063$' "the position index to 3 decimals"
+expect_out_match '^solid_angle_sr +0\.01465 sr$' "a solid angle to 4 significant digits"
+run grid --ies samples/ies/spot_warn_30deg_800lm.ies --at 0,0,3 --plane z=0 --area 0:10,0:10 --spacing 1 --summary --format table
+expect_out_match '^uniformity_u0 +[1-9]\.[0-9]e-[0-9]+$' "a tiny U0 keeps 2 significant digits, not 0.000"
+if printf '%s\n' "$out" | grep -q ' 0\.000$'; then notok "no ratio printed as 0.000" "$out"; else ok "no ratio printed as 0.000"; fi
 run point --flux 1000lm --distance 2m --angle 30deg --precision 7
 expect_out_match '^illuminance_lx +17\.22903 lx$' "--precision 7"
 run point --flux 1000lm --distance 2m --angle 30deg --precision 0
