@@ -1149,7 +1149,8 @@ typedef struct lx_unc_value {
     int stable;         /* Monte Carlo: 1 when its mean, u and interval ends are stable to delta
                          * (JCGM 101 7.9.4), 0 not (or trials fixed and not checked: -1) */
     int gum_valid;      /* BOTH: 1 when |y - U - lo_mc| and |y + U - hi_mc| are both within delta
-                         * (JCGM 101 8.2), 0 when not, -1 not checked */
+                         * (JCGM 101 8.2), 0 when not, -1 not judged (Monte Carlo not stable to
+                         * delta: too few trials to serve as the reference) */
     double d_low, d_high; /* those two differences */
     double undefined;   /* the fraction of trials where the quantity had no value (CCT off the locus, a
                          * refused CRI): the statistics are of the others */

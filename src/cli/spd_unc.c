@@ -304,9 +304,10 @@ static void explain(const cli_unc *u, const lx_unc_result *r, const lx_unc_model
         if (!v->defined) continue;
         fprintf(f, "  %-16s u %.3g", u->names[i], v->u);
         if (r->method != LX_UNC_GUM && v->undefined > 0) fprintf(f, ", undefined in %.3g %% of the trials", 100 * v->undefined);
-        if (r->method == LX_UNC_BOTH && v->gum_valid >= 0)
+        if (r->method == LX_UNC_BOTH)
             fprintf(f, "; GUM u %.3g %s (|d_low| %.2g, |d_high| %.2g, delta %.2g)", v->gum_u,
-                    v->gum_valid ? "adequate" : "NOT adequate", v->d_low, v->d_high, v->delta);
+                    v->gum_valid < 0 ? "not judged: Monte Carlo not stable to delta"
+                    : v->gum_valid ? "adequate" : "NOT adequate", v->d_low, v->d_high, v->delta);
         if (r->method != LX_UNC_MC && v->top[0] >= 0) {
             fprintf(f, "; budget");
             for (int t = 0; t < 3 && v->top[t] >= 0; t++)

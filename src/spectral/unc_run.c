@@ -604,7 +604,9 @@ static void validate(run *R)
         v->delta = lx__unc_tolerance(isfinite(gu) && R->o.method != LX_UNC_MC ? gu : v->u, v->value, R->o.digits);
         if (R->o.method != LX_UNC_BOTH || !isfinite(gu) || !isfinite(v->mc_lo)) continue;
         v->d_low = fabs(v->gum_lo - v->mc_lo), v->d_high = fabs(v->gum_hi - v->mc_hi);
-        v->gum_valid = v->d_low <= v->delta && v->d_high <= v->delta;
+        /* only against Monte Carlo results stable to delta (JCGM 101 8.1: its interval must be the
+         * reference); unstable ones (too few trials) leave the question open */
+        if (v->stable == 1) v->gum_valid = v->d_low <= v->delta && v->d_high <= v->delta;
     }
 }
 
