@@ -236,7 +236,7 @@ uninstall:
 # the tests that run threads, under ThreadSanitizer with OpenCL on (test_threads runs contexts on
 # OpenCL from four threads at once); tests/tsan.supp may hold reports from inside PoCL's own
 # threads only, never from luxcalc's code
-TSAN_TESTS := test_threads test_batch test_opencl
+TSAN_TESTS := test_threads test_batch test_opencl test_uncertainty
 tsan: deps
 	@$(MAKE) --no-print-directory BUILD=build-tsan CFLAGS="-O1 -g -fsanitize=thread" \
 	  LDFLAGS="-fsanitize=thread" $(TSAN_TESTS:%=build-tsan/tests/%)
