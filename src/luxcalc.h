@@ -43,7 +43,7 @@
  *   exported is removed, renamed, or given another signature or meaning;
  * - structs the caller allocates are of three kinds.
  *   Options (lx_batch_opts, lx_grid_opts, lx_irr_opts, lx_exr_write_opts, lx_scene_eval_opts,
- *   lx_lum_model, lx_sky_map_opts, lx_perez_input, lx_sun_input, lx_leni_input) are only read: zero-initialise them (zero is every field's default) and leave
+ *   lx_lum_model, lx_sky_map_opts, lx_perez_input, lx_sun_input, lx_leni_input, lx_pdf_report_opts) are only read: zero-initialise them (zero is every field's default) and leave
  *   `reserved` zero, which the library checks (LX_EINVAL otherwise); a later option takes reserved
  *   space, its zero meaning the earlier behaviour.
  *   Results (lx_colorimetry, lx_cri, lx_tm30, lx_alphaopic, lx_source_result, lx_lum_summary,
@@ -2545,6 +2545,7 @@ typedef struct lx_scene_design {
     size_t n_obs_group;
     int check_glare;            /* 1 when a requirement rates UGR (lx_scene_check needs lx_scene_glare_eval's) */
     int check_emergency;        /* 1 when a requirement rates emergency lighting (it needs the emergency results) */
+    int has_energy;             /* 1 with an [energy] section (lx_scene_energy) */
 } lx_scene_design;
 
 /** Statistics of a receiver's points (an area's grid): the mean, minimum and maximum and the
@@ -2768,6 +2769,28 @@ typedef struct lx_isolux_opts {
  * E_avg and E_min / E_max (4 significant digits, U0 3 decimals). opts may be NULL. */
 LX_API lx_status lx_grid_write_png(lx_ctx *ctx, const char *path, const lx_plane *plane, const double *E_lx,
                                    const lx_isolux_opts *opts);
+
+/** Options of lx_scene_report_write_pdf (zero-initialise for defaults). */
+typedef struct lx_pdf_report_opts {
+    const char *title;        /* the report's title (NULL: the scene's title, or its file name) */
+    const char *project;      /* a line under it: the project, the client (NULL: none) */
+    const char *author;       /* the designer (NULL: none) */
+    lx_backend backend;       /* where the scene's work runs (AUTO: the size decides) */
+    int imperial;             /* 1: fc and ft in the plots and tables */
+    long long reserved[4];    /* zero: room for later options (ABI policy) */
+} lx_pdf_report_opts;
+
+/** The design report of a scene as a vector PDF (A4, DejaVu Sans; written atomically): a title page
+ * (the values maintained or new, the checks' count), the luminaire schedule (photometry, flux, power,
+ * efficacy, maintenance factor, count), each room's plan (walls, obstructions, areas, luminaires,
+ * observers), the areas' statistics and each grid's isolux plot, the checks against the requirements,
+ * UGR at the observers and the CIE 190 table of each photometric file, emergency lighting (EN 1838),
+ * energy (EN 15193-1) and the method: the planner's effects and reasons, the tolerances and what was
+ * approximated by how much. The scene is planned and evaluated here (and in emergency operation, its
+ * glare and energy, where it has what they need). Errors: those of planning and evaluating the scene,
+ * of the checks, and the plot writers' (LX_EIO, LX_EWRITE: nothing is left at path). opts may be NULL. */
+LX_API lx_status lx_scene_report_write_pdf(lx_ctx *ctx, const lx_scene *scene, const lx_pdf_report_opts *opts,
+                                           const char *path);
 
 /** One point of an error-against-time plot: a method's time (s) and error (any unit > 0; 0 or
  * less is drawn on the bottom edge, marked "= 0"), its label and series (marker shape and colour). */

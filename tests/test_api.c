@@ -695,6 +695,12 @@ static void t_lx_grid_write_png(void)
     EXPECT_EINVAL(lx_grid_write_png(NULL, p, &PLANE, E, NULL));
     assert_absent(p);
 }
+static void t_lx_scene_report_write_pdf(void)
+{
+    const char *p = out_path("r.pdf");
+    EXPECT_EINVAL(lx_scene_report_write_pdf(NULL, SCENE, NULL, p));
+    assert_absent(p);
+}
 static void t_lx_error_time_write_png(void)
 {
     const char *p = out_path("e.png");
@@ -941,7 +947,7 @@ static const struct api_case {
     CASE(lx_irradiance_dirs), CASE(lx_irradiance_map), CASE(lx_spectral_exr_read_xyz), CASE(lx_xyz_image_write_exr),
     CASE(lx_scene_read_file), CASE(lx_scene_read_mem), CASE(lx_scene_plan_make), CASE(lx_scene_eval),
     CASE(lx_scene_plan_make_mode), CASE(lx_en12464_grid_size), CASE(lx_scene_area_stats), CASE(lx_scene_check),
-    CASE(lx_leni_compute), CASE(lx_scene_energy),
+    CASE(lx_leni_compute), CASE(lx_scene_energy), CASE(lx_scene_report_write_pdf),
     CASE(lx_falsecolor_write_png), CASE(lx_envmap_preview_write_png), CASE(lx_irradiance_write_png),
     CASE(lx_spd_report_write_png), CASE(lx_xyz_image_write_png), CASE(lx_grid_write_png), CASE(lx_error_time_write_png),
     CASE(lx_plane_cells),
@@ -1030,6 +1036,9 @@ static void nonzero_reserved_options_refused(void **state)
     li.reserved[0] = 1;
     lx_leni le;
     EXPECT_EINVAL(lx_leni_compute(ctx, &li, &le));
+    lx_pdf_report_opts pro = {0};
+    pro.reserved[2] = 1;
+    EXPECT_EINVAL(lx_scene_report_write_pdf(ctx, SCENE, &pro, "/nonexistent/r.pdf"));
     lx_par pb[2];
     lx_hazard hb[2];
     lx_binning bb[2];

@@ -5,6 +5,7 @@
 #include "lx_test.h"
 
 #include <string.h>
+#include <unistd.h>
 
 /* Reads, plans (mode) and evaluates a scene given as text. */
 typedef struct run {
@@ -437,6 +438,10 @@ static void test_room_areas(void **state)
     lx_assert_near(plane->points[0], 0.5 + 0.3125, 0, 1e-15);
     lx_assert_near(plane->points[1], 0.5 + 0.3, 0, 1e-15);
     static const size_t na[4] = {8, 8, 15, 15}, nb[4] = {6, 6, 7, 7};
+    /* the cabinet stands against x = 6 m and y = 4 m: the wall points it covers are left out (x max:
+     * the 2 columns at y 3.25, 3.75 x the 4 rows up to z 1.63 m: 8; y max: the 3 columns at x 5.0, 5.4,
+     * 5.8 x the 5 rows up to 1.8 m: 15) */
+    static const size_t n_pts[4] = {48, 40, 105, 90};
     static const char *const names[4] = {"w.wall_xmin", "w.wall_xmax", "w.wall_ymin", "w.wall_ymax"};
     for (int k = 0; k < 4; k++) {
         const lx_scene_area *A = &d->area[1 + k];
@@ -445,7 +450,8 @@ static void test_room_areas(void **state)
         assert_int_equal(A->kind, LX_AREA_WALL);
         assert_int_equal(rc->na, na[k]);
         assert_int_equal(rc->nb, nb[k]);
-        assert_int_equal(rc->kind, LX_SREC_GRID);
+        assert_int_equal(rc->n, n_pts[k]);
+        assert_int_equal(rc->kind, n_pts[k] == na[k] * nb[k] ? LX_SREC_GRID : LX_SREC_SET);
         /* on the wall, facing into the room */
         int ax = k / 2;
         lx_assert_near(rc->points[ax], k % 2 ? (ax ? 4 : 6) : 0, 0, 0);
@@ -762,6 +768,35 @@ static void test_leni(void **state)
     lx_scene_free(sc);
 }
 
+/* ---- the PDF report (its content is read back with pdftotext in tests/cli/design.sh) ---- */
+static void test_report_pdf(void **state)
+{
+    lx_ctx *ctx = *state;
+    lx_scene *sc = NULL;
+    lx_assert_ok(ctx, lx_scene_read_file(ctx, "tests/data/design/report.scene", &sc));
+    char path[256];
+    snprintf(path, sizeof path, "%s/lx_report_%d.pdf", getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp", (int)getpid());
+    lx_pdf_report_opts o = {.title = "A title", .backend = LX_BACKEND_CPU};
+    lx_assert_ok(ctx, lx_scene_report_write_pdf(ctx, sc, &o, path));
+    FILE *f = fopen(path, "rb");
+    assert_non_null(f);
+    static char buf[1 << 20];
+    size_t n = fread(buf, 1, sizeof buf, f);
+    fclose(f);
+    assert_true(n > 1000);
+    assert_memory_equal(buf, "%PDF-", 5);
+    assert_non_null(strstr(buf + n - 8, "%%EOF"));
+    size_t pages = 0;
+    for (const char *p = buf; (p = memchr(p, '/', (size_t)(buf + n - p))) && p < buf + n - 12; p++)
+        pages += !strncmp(p, "/Type /Page\n", 12) || !strncmp(p, "/Type /Page ", 12) || !strncmp(p, "/Type /Page/", 12);
+    print_message("report: %zu bytes, %zu page objects\n", n, pages);
+    assert_true(pages >= 8);
+    remove(path);
+    /* a failed write leaves nothing behind */
+    assert_int_equal(lx_scene_report_write_pdf(ctx, sc, &o, "/nonexistent_dir/r.pdf"), LX_EIO);
+    lx_scene_free(sc);
+}
+
 /* ---- CIE 97:2005: MF = LLMF x LSF x LMF x RSMF from typed tables ----
  * The publication's tables are the user's to type (luxcalc ships no copy); what is checked here is
  * the method: each factor read off its table at the scheme's time by linear interpolation (at a
@@ -853,6 +888,7 @@ int main(void)
         cmocka_unit_test(test_observer_positions_directions),
         cmocka_unit_test(test_emergency_areas),
         cmocka_unit_test(test_leni),
+        cmocka_unit_test(test_report_pdf),
         cmocka_unit_test(test_errors),
     };
     return cmocka_run_group_tests(tests, lx_test_ctx_setup, lx_test_ctx_teardown);

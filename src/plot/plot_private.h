@@ -9,6 +9,7 @@
 #include "tables/tables_private.h"
 
 #include <cairo.h>
+#include <cairo-pdf.h>
 
 /* ---- cairo, loaded on the first plot (cairo_load.c) ----
  * luxcalc links no cairo: libcairo.so.2 and the 20-odd libraries it needs (fontconfig, freetype,
@@ -23,7 +24,8 @@
     F(set_line_join) F(set_line_width) F(set_source_rgb) F(set_source_rgba) F(set_source_surface) \
     F(show_text) F(status) F(status_to_string) F(stroke) F(surface_destroy) F(surface_flush) \
     F(surface_mark_dirty) F(surface_status) F(surface_write_to_png_stream) F(text_extents) F(text_path) \
-    F(translate)
+    F(translate) F(pdf_surface_create_for_stream) F(pdf_surface_set_metadata) F(recording_surface_create) \
+    F(show_page) F(surface_finish) F(set_dash) F(rel_line_to)
 typedef struct lx__cairo_api {
 #define LX__CAIRO_FIELD(n) __typeof__(cairo_##n) *n;
     LX__CAIRO_FNS(LX__CAIRO_FIELD)
@@ -75,6 +77,13 @@ lx_status lx__cairo_load(lx_ctx *ctx);
 #define cairo_text_extents (lx__cairo.text_extents)
 #define cairo_text_path (lx__cairo.text_path)
 #define cairo_translate (lx__cairo.translate)
+#define cairo_pdf_surface_create_for_stream (lx__cairo.pdf_surface_create_for_stream)
+#define cairo_pdf_surface_set_metadata (lx__cairo.pdf_surface_set_metadata)
+#define cairo_recording_surface_create (lx__cairo.recording_surface_create)
+#define cairo_show_page (lx__cairo.show_page)
+#define cairo_surface_finish (lx__cairo.surface_finish)
+#define cairo_set_dash (lx__cairo.set_dash)
+#define cairo_rel_line_to (lx__cairo.rel_line_to)
 
 /* ---- what a plot drew (page.c) ---- */
 
@@ -147,6 +156,9 @@ typedef struct lx__font {
 
 /* Creates a w x h page filled with bg. LX_EINVAL for a size out of 1..16384, LX_ENOMEM. */
 lx_status lx__page_init(lx_ctx *ctx, lx__page *pg, int w, int h, const unsigned char bg[3]);
+/* The same page as a recording of the drawing (cairo's recording surface), to be painted as vectors
+ * into another drawing (the PDF report); lx__page_write_png does not apply to it. */
+lx_status lx__page_init_vector(lx_ctx *ctx, lx__page *pg, int w, int h, const unsigned char bg[3]);
 /* Frees the page (its layout too unless it was moved out with lx__page_take_layout). */
 void lx__page_free(lx__page *pg);
 /* Moves the page's layout into *out (the caller frees it with lx__layout_free). */
@@ -240,6 +252,10 @@ double lx__srgb_encode(double v);
 
 /* ---- the plots, with their layout for tests (each public writer is one of these with NULL) ---- */
 
+/* The isolux plot drawn on a new page (an image, or with vector = 1 a recording to paint into another
+ * drawing), into *pg (the caller frees it with lx__page_free); its width and height are pg->w, pg->h. */
+lx_status lx__isolux_page(lx_ctx *ctx, const lx_plane *plane, const double *E, const lx_isolux_opts *opts, int vector,
+                          lx__page *pg);
 lx_status lx__isolux_png(lx_ctx *ctx, const char *path, const lx_plane *plane, const double *E,
                          const lx_isolux_opts *opts, lx__layout *out);
 lx_status lx__falsecolor_png(lx_ctx *ctx, const char *path, int w, int h, const double *values,
