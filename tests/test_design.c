@@ -66,7 +66,8 @@ static void expect_error(lx_ctx *ctx, const char *text, long line, const char *f
     "[luminaire d]\ntype = disk\nposition = 2 m, 0.8 m, 2.4 m\nradius = 0.15 m\nflux = 600 lm\n"                       \
     "[receiver plane]\ntype = grid\nx = 0.25 m, 2.75 m\ny = 0.25 m, 2.25 m\nz = 0.8 m\nspacing = 0.5 m\n"            \
     "[receiver near]\ntype = point\nposition = 1.05 m, 1 m, 2.2 m\n"                                                   \
-    "[receiver wall]\ntype = point\nposition = 2.99 m, 1.2 m, 1.2 m\nnormal = -1, 0, 0\n"
+    "[receiver wall]\ntype = point\nposition = 2.99 m, 1.2 m, 1.2 m\nnormal = -1, 0, 0\n"                            \
+    "[receiver eye]\ntype = point\nposition = 1.6 m, 1.8 m, 1.2 m\ncylindrical = yes\nsemicylindrical = 1, 0, 0\n"
 
 static void test_maintained_is_new_times_mf(void **state)
 {
@@ -86,6 +87,11 @@ static void test_maintained_is_new_times_mf(void **state)
         for (size_t l = 0; l < a.sc->n_lum; l++)
             lx_assert_near(b.res->contrib_lx[g * 4 + l], 0.8 * a.res->contrib_lx[g * 4 + l], 1e-300, 1e-12);
         worst = fmax(worst, fabs(b.res->E_lx[g] / (0.8 * a.res->E_lx[g]) - 1));
+        if (!isnan(a.res->cylindrical_lx[g])) { /* cylinders: direct and interreflected */
+            lx_assert_near(b.res->cylindrical_lx[g], 0.8 * a.res->cylindrical_lx[g], 0, 1e-12);
+            lx_assert_near(b.res->semicylindrical_lx[g], 0.8 * a.res->semicylindrical_lx[g], 0, 1e-12);
+            lx_assert_near(b.res->modelling[g], a.res->modelling[g], 0, 1e-12);
+        }
     }
     for (size_t s = 0; s < a.res->n_surfaces; s++) {
         if (isnan(a.res->surfaces[s].E_lx)) { /* no exposed area (the box's bottom on the floor) */

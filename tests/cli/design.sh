@@ -81,3 +81,7 @@ if command -v pdftotext >/dev/null 2>&1 && command -v pdfinfo >/dev/null 2>&1 &&
 else
   skip "the PDF report's pages, text and figures" "no pdftotext, pdfinfo or pdfimages (Debian poppler-utils; make deps installs it)"
 fi
+# a task area outside its room: file and line, exit 2
+run scene tests/data/design/bad_task.scene
+expect_rc 2 "a task area outside the room: input error"
+expect_err_match "^luxcalc: scene: tests/data/design/bad_task.scene:10: area 'desk': the task area \(x 3 to 4.5 m, y 1 to 2 m, z 0.75 m\) reaches outside room 'r'" "names file and line"
