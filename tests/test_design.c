@@ -778,8 +778,15 @@ static void test_leni(void **state)
 static void test_report_pdf(void **state)
 {
     lx_ctx *ctx = *state;
+    /* small: the content of a whole report is read back in tests/cli/design.sh */
+    const char *t = "[scene]\ntitle = small\n[room r]\nsize = 3 m, 2 m, 2.5 m\n[effects]\ninterreflection = off\n"
+                    "[luminaire a]\ntype = rect\nposition = 1.5 m, 1 m, 2.49 m\nwidth = 0.6 m\nlength = 0.6 m\nflux = 3000 lm\n"
+                    "power = 30 W\n[luminaire e]\ntype = point\nposition = 1 m, 1 m, 2.4 m\nflux = 100 lm\n"
+                    "emergency = non-maintained\n[area desk]\ntype = task\nx = 1 m, 2 m\ny = 0.5 m, 1.5 m\nz = 0.75 m\n"
+                    "[observer o]\nposition = 1.5 m, 0.2 m, 1.2 m\nview = 0, 1, 0\nbackground_luminance = 20 cd/m2\n"
+                    "[requirement q]\narea = desk\nmaintained_illuminance = 500 lx\n[energy]\nnight_hours = 2000 h\n";
     lx_scene *sc = NULL;
-    lx_assert_ok(ctx, lx_scene_read_file(ctx, "tests/data/design/report.scene", &sc));
+    lx_assert_ok(ctx, lx_scene_read_mem(ctx, "small.scene", t, strlen(t), &sc));
     char path[256];
     snprintf(path, sizeof path, "%s/lx_report_%d.pdf", getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp", (int)getpid());
     lx_pdf_report_opts o = {.title = "A title", .backend = LX_BACKEND_CPU};
@@ -796,7 +803,7 @@ static void test_report_pdf(void **state)
     for (const char *p = buf; (p = memchr(p, '/', (size_t)(buf + n - p))) && p < buf + n - 12; p++)
         pages += !strncmp(p, "/Type /Page\n", 12) || !strncmp(p, "/Type /Page ", 12) || !strncmp(p, "/Type /Page/", 12);
     print_message("report: %zu bytes, %zu page objects\n", n, pages);
-    assert_true(pages >= 8);
+    assert_true(pages >= 5); /* title, schedule, rooms, areas, glare; the rest where they fit */
     remove(path);
     /* a failed write leaves nothing behind */
     assert_int_equal(lx_scene_report_write_pdf(ctx, sc, &o, "/nonexistent_dir/r.pdf"), LX_EIO);

@@ -434,9 +434,9 @@ lx_status lx_scene_report_write_pdf(lx_ctx *ctx, const lx_scene *sc, const lx_pd
     memset(&r, 0, sizeof r);
     r.ctx = ctx, r.sc = sc, r.imperial = o.imperial, r.project = o.project, r.author = o.author;
     r.title = o.title ? o.title : *sc->title ? sc->title : base_name(sc->file);
-    st = evaluate(&r, o.backend);
-    if (st == LX_OK) st = lx__doc_open(ctx, &r.doc, path, r.title, r.author);
-    if (st == LX_OK) {
+    st = lx__doc_open(ctx, &r.doc, path, r.title, r.author); /* a path that cannot be written fails first */
+    if (st == LX_OK && (st = evaluate(&r, o.backend)) != LX_OK) st = lx__doc_close(&r.doc, st);
+    else if (st == LX_OK) {
         title_page(&r);
         schedule(&r);
         lx__rep_plans(&r);
