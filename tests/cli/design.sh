@@ -85,3 +85,13 @@ fi
 run scene tests/data/design/bad_task.scene
 expect_rc 2 "a task area outside the room: input error"
 expect_err_match "^luxcalc: scene: tests/data/design/bad_task.scene:10: area 'desk': the task area \(x 3 to 4.5 m, y 1 to 2 m, z 0.75 m\) reaches outside room 'r'" "names file and line"
+# emergency operation from the command line: the exit luminaire alone (150 lm, MF 0.8, 2.7 m up at
+# x 2 m on the route's line): at (0.6, 2.5, 0) m, d^2 = 1.4^2 + 2.7^2: E = 0.8 (150 / 4 pi) 2.7 / d^3
+run scene tests/data/design/report.scene --emergency --format csv
+expect_rc 0 "--emergency runs"
+v=$(printf '%s\n' "$out" | awk -F, '$1 == "way" && $2 == "0.6" {print $5}')
+if awk -v a="$v" 'BEGIN { d2 = 1.4 * 1.4 + 2.7 * 2.7; e = 0.8 * 150 / (4 * 3.14159265358979) * 2.7 / (d2 * sqrt(d2)); d = a - e; if (d < 0) d = -d; exit !(a != "" && d < 1e-12) }'
+then ok "--emergency: the route's first point against the closed form"; else notok "--emergency closed form" "got '$v'"; fi
+run scene tests/data/design/report.scene --emergency --explain
+expect_out_match '^  interreflection off \[forced\] emergency lighting \(EN 1838\): direct light only' "--emergency --explain: why interreflection is off"
+expect_out_match '^operation: emergency \(EN 1838\)' "--emergency --explain: the operation"
