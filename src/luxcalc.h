@@ -890,19 +890,39 @@ typedef enum lx_risk_group {
     LX_RISK_3 = 3       /* high risk */
 } lx_risk_group;
 
+/** The IEC 62471:2006 Table 6.1 limit a criterion was judged by (lx_hazard_risk.limit). */
+typedef enum lx_hazard_limit {
+    LX_HZ_LIMIT_NONE = 0, /* not judged */
+    LX_HZ_LIMIT_L_B,      /* blue-light radiance L_B (sources of 0.011 rad and more) */
+    LX_HZ_LIMIT_E_B,      /* blue-light irradiance E_B of a small source (below 0.011 rad) */
+    LX_HZ_LIMIT_L_R,      /* retinal thermal radiance L_R, limits C / alpha */
+    LX_HZ_LIMIT_E_S,      /* actinic UV irradiance E_S */
+    LX_HZ_LIMIT_E_UVA     /* near-UV irradiance E_UVA */
+} lx_hazard_limit;
+
 /** The risk group of each criterion and the worst of them (group: LX_RISK_NONE when none could be
- * evaluated; a criterion that is not covered could raise it). A result struct (ABI policy). */
+ * evaluated; a criterion that is not covered could raise it), the limit each criterion was judged
+ * by, and the source's solid angle used to turn irradiance into radiance or back (0: none). A
+ * result struct (ABI policy). */
 typedef struct lx_hazard_risk {
     lx_risk_group group;
     lx_risk_group criterion[LX_HZ_COUNT];
-    long long reserved[4]; /* zero: room for later results */
+    lx_hazard_limit limit[LX_HZ_COUNT]; /* LX_HZ_LIMIT_NONE where criterion is LX_RISK_NONE */
+    double source_sr;      /* 2 pi (1 - cos(alpha / 2)): the solid angle of a circular source of full
+                            * angle alpha, when a limit needed the other quantity; else 0 */
+    long long reserved[1]; /* zero: room for later results */
 } lx_hazard_risk;
 
 /** Risk groups from the emission limits of IEC 62471:2006 Table 6.1 (continuous-wave lamps;
- * src/data/iec62471_limits.csv) into *out. radiance 1: h holds radiances (W/sr/m2/nm input): L_B,
- * and L_R when alpha_rad > 0 (the source's angular subtense, clamped to 0.0017-0.1 rad).
- * radiance 0: irradiances (W/m2/nm): E_S, E_UVA and the small-source blue-light E_B (for sources
- * subtending less than 0.011 rad). Errors: LX_EINVAL (NULL h or out). */
+ * src/data/iec62471_limits.csv) into *out. alpha_rad: the source's angular subtense (full angle,
+ * rad), 0 when not known. radiance 1: h holds radiances (W/sr/m2/nm input); blue light by L_B, or,
+ * for a small source (0 < alpha < 0.011 rad), by E_B = L_B Omega; retinal thermal L_R when alpha > 0
+ * (limits C / alpha, alpha clamped to 0.0017-0.1 rad). radiance 0: irradiances (W/m2/nm): E_S,
+ * E_UVA; blue light by E_B (a small source, assumed when alpha is 0), or, for alpha >= 0.011 rad,
+ * by L_B = E_B / Omega; L_R = E_R / Omega when alpha > 0. Omega = 2 pi (1 - cos(alpha / 2)): the
+ * source's own radiance, not averaged over the standard's measurement field of view (conservative
+ * where the field is larger than the source). Errors: LX_EINVAL (NULL h or out, alpha negative or
+ * not finite). */
 LX_API lx_status lx_hazard_risk_group(lx_ctx *ctx, const lx_hazard *h, int radiance, double alpha_rad,
                                       lx_hazard_risk *out);
 

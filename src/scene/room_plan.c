@@ -191,14 +191,22 @@ static lx_status plan_interreflection(lx_ctx *ctx, const lx_scene *sc, lx_scene_
                                       const lx__scene_lum *le)
 {
     const lx_effect_force f = sc->force[LX_EFFECT_INTERREFLECTION];
-    int reflectors = sc->n_room > 0;
+    /* a face of reflectance 0 reflects nothing: a room whose every face is black, with black
+     * obstructions and surfaces, holds no indirect light */
+    int reflectors = 0, bodies = sc->n_room + sc->n_surf + sc->n_obst > 0;
+    for (size_t i = 0; i < sc->n_room; i++)
+        for (int k = 0; k < 6; k++) reflectors |= sc->room[i].reflectance[k] > 0;
     for (size_t i = 0; i < sc->n_surf; i++) reflectors |= sc->surf[i].reflectance > 0;
     for (size_t i = 0; i < sc->n_obst; i++) reflectors |= sc->obst[i].reflectance > 0;
     if (!reflectors) {
         if (f == LX_FORCE_ON)
             return lx__error(ctx, LX_EPARSE, sc->file, sc->force_line[LX_EFFECT_INTERREFLECTION],
-                             "interreflection forced on, but the scene has no room and no reflecting surface");
-        why(p, LX_EFFECT_INTERREFLECTION, 0, "no room and no reflecting surfaces");
+                             bodies ? "interreflection forced on, but every reflectance of the scene's rooms, surfaces "
+                                      "and obstructions is 0: no light is reflected"
+                                    : "interreflection forced on, but the scene has no room and no reflecting surface");
+        why(p, LX_EFFECT_INTERREFLECTION, 0,
+            bodies ? "every reflectance is 0 (rooms, surfaces, obstructions): no light is reflected"
+                   : "no room and no reflecting surfaces");
         return LX_OK;
     }
     if (f == LX_FORCE_OFF) {

@@ -4,6 +4,7 @@
 #include "scene/daylight_private.h"
 #include "scene/design_private.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -102,7 +103,12 @@ static double point_E(lx_counters *cnt, const lx__scene_lum *le, const double s[
 {
     double v[3] = {q[0] - s[0], q[1] - s[1], q[2] - s[2]};
     double d2 = dot(v, v);
-    if (!(d2 > 0)) return 0;
+    int e = 0; /* closer than 1.5e-154 m d2 underflows: the vector scaled by 2^600 (exact), 1/d2 by 2^1200 */
+    if (!(d2 >= DBL_MIN)) {
+        if (v[0] == 0 && v[1] == 0 && v[2] == 0) return NAN; /* the source at the point: E is undefined */
+        for (int k = 0; k < 3; k++) v[k] = ldexp(v[k], 600);
+        d2 = dot(v, v), e = 1200;
+    }
     double d = sqrt(d2);
     double u[3] = {v[0] / d, v[1] / d, v[2] / d};
     double cx = le->cosine ? -dot(n, u) : 1; /* cos(xi): the ray arrives against the normal */
@@ -111,7 +117,7 @@ static double point_E(lx_counters *cnt, const lx__scene_lum *le, const double s[
         cnt->visibility_tests++;
         if (!lx__room_visible(vis->occ, vis->n_occ, s, q, vis->skip, -1)) return 0;
     }
-    return intensity(cnt, le, u, frac) * cx / d2;
+    return ldexp(intensity(cnt, le, u, frac) * cx / d2, e); /* beyond the range: infinite, refused by check_finite */
 }
 
 double lx__scene_point_E(lx_ctx *ctx, const lx__scene_lum *le, const double s[3], const double q[3], const double n[3],
@@ -380,7 +386,7 @@ static lx_status check_finite(lx_ctx *ctx, const lx_scene *sc, const lx_scene_re
             if (what)
                 return lx__error(ctx, LX_ERANGE, rc->file, rc->line,
                                  "receiver '%s', point %zu (%g, %g, %g m): %s is %s%s%s%s: the fluxes, intensities or "
-                                 "distances leave the double range",
+                                 "distances leave the double range (or a point source sits on the point)",
                                  rc->name, g - res->first[r] + 1, q[0], q[1], q[2], what, isnan(v) ? "NaN" : "infinite",
                                  who ? " from luminaire '" : "", who ? who : "", who ? "'" : "");
         }
