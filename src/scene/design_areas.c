@@ -319,16 +319,18 @@ static lx_status add_area(lx_ctx *ctx, lx_scene *sc, const lx__area_raw *r, lx_s
     if (nr) sc->rec = nr;
     if (ar) sc->design->area = ar;
     A->name = lx__strdup(name);
-    if (!nr || !ar || !A->name) {
+    if (!nr || !ar || !A->name || lx__design_rec_grow_to(sc, sc->n_rec + 1) != LX_OK) {
         lx__free(rc.name);
         lx__free(A->name);
+        A->name = NULL;
         return lx__error(ctx, LX_ENOMEM, r->file, r->line, "out of memory");
     }
-    P->p = NULL, P->n = P->cap = 0; /* the receiver owns them */
+    /* the receiver owns the points and the area its outlines from here */
+    P->p = NULL, P->n = P->cap = 0;
     A->rec = sc->n_rec;
     sc->rec[sc->n_rec++] = rc;
     sc->design->area[sc->design->n_area++] = *A;
-    if (lx__design_rec_grow(sc) != LX_OK) return lx__error(ctx, LX_ENOMEM, r->file, r->line, "out of memory");
+    A->name = NULL, A->outline = A->inner = NULL;
     size_t i = sc->n_rec - 1;
     sc->design->rec_cylinder[i] = cyl_ok ? (unsigned char)r->cyl.cyl : 0;
     double *f = sc->design->rec_facing + 3 * i;
