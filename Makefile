@@ -158,12 +158,18 @@ $(BUILD)/tests/%: tests/%.c $(STATIC)
 	@mkdir -p $(dir $@)
 	$(CC) $(ALL_CPPFLAGS) $(ALL_CFLAGS) -Itests -MMD -MP -MF $@.d -MT $@ -o $@ $< $(TEST_LIB) -lcmocka $(LIBS) $(CAIRO_LIB)
 
+# tools the CLI tests run: pngpx reads a PNG's pixels (tests/cli/*.sh check where a plot draws a mark)
+TEST_TOOLS := $(BUILD)/tests/pngpx
+$(BUILD)/tests/pngpx: tests/tools/pngpx.c
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CFLAGS) $(CAIRO_CFLAGS) -o $@ $< $(CAIRO_LIB)
+
 -include $(wildcard $(BUILD)/obj/*/*.d $(BUILD)/obj/cli/bench/*.d $(BUILD)/obj-faults/*/*.d \
   $(BUILD)/tests/*.d $(BUILD)/tests/hard_cases/*.d)
 
 # ---- the two README commands, and the rest ----
 test: deps
-	@$(MAKE) --no-print-directory all $(TEST_BIN) $(FAULT_CLI)
+	@$(MAKE) --no-print-directory all $(TEST_BIN) $(TEST_TOOLS) $(FAULT_CLI)
 	@LX_SHARED_DIR=$${LX_SHARED_DIR:-$(CURDIR)/../shared} POCL_CACHE_DIR=$(CURDIR)/$(BUILD)/pocl-cache \
 	  sh tests/run.sh $(BUILD) $(TEST_BIN)
 
@@ -171,7 +177,7 @@ test: deps
 # binaries of `make test`, not rebuilt); the tests of the paths above the cap report SKIPPED
 SIMD_CAPS ?= avx2 scalar
 test-simd: deps
-	@$(MAKE) --no-print-directory all $(TEST_BIN) $(FAULT_CLI)
+	@$(MAKE) --no-print-directory all $(TEST_BIN) $(TEST_TOOLS) $(FAULT_CLI)
 	@for s in $(SIMD_CAPS); do log=$$(mktemp); \
 	  LX_SIMD=$$s LX_SHARED_DIR=$${LX_SHARED_DIR:-$(CURDIR)/../shared} POCL_CACHE_DIR=$(CURDIR)/$(BUILD)/pocl-cache \
 	  sh tests/run.sh $(BUILD) $(TEST_BIN) > $$log 2>&1; rc=$$?; \

@@ -43,14 +43,16 @@
  *   exported is removed, renamed, or given another signature or meaning;
  * - structs the caller allocates are of three kinds.
  *   Options (lx_batch_opts, lx_grid_opts, lx_irr_opts, lx_exr_write_opts, lx_scene_eval_opts,
- *   lx_lum_model, lx_sky_map_opts, lx_perez_input, lx_sun_input, lx_leni_input, lx_pdf_report_opts) are only read: zero-initialise them (zero is every field's default) and leave
+ *   lx_lum_model, lx_sky_map_opts, lx_perez_input, lx_sun_input, lx_leni_input, lx_isolux_opts,
+ *   lx_receiver_png_opts, lx_pdf_report_opts) are only read: zero-initialise them (zero is every field's default) and leave
  *   `reserved` zero, which the library checks (LX_EINVAL otherwise); a later option takes reserved
  *   space, its zero meaning the earlier behaviour.
  *   Results (lx_colorimetry, lx_cri, lx_tm30, lx_alphaopic, lx_source_result, lx_lum_summary,
  *   lx_grid_stats, lx_cl_device_info, lx_counters, lx_sky, lx_sun_position, lx_ugr_table, lx_en12464_grid,
  *   lx_area_stats, lx_leni) are
  *   written whole by the library, `reserved` set to zero; a later result takes reserved space.
- *   Views and values (lx_spd, lx_batch, lx_placement, lx_plane, lx_plot_point, lx_unit, lx_sh9)
+ *   Views and values (lx_spd, lx_batch, lx_placement, lx_plane, lx_plot_point, lx_plot_outline,
+ *   lx_plot_mark, lx_unit, lx_sh9)
  *   never change within a soname: a new need gets a new type.
  * - structs only the library allocates (lx_spd_set, lx_batch_table, lx_luminaire, lx_envmap,
  *   lx_xyz_image, lx_scene, lx_scene_plan, lx_scene_result, lx_scene_glare, lx_scene_design,
@@ -2752,6 +2754,31 @@ LX_API lx_status lx_spd_report_write_png(lx_ctx *ctx, const lx_spd *spd, const l
  * luminance, Reinhard tone curve), enlarged to at least 256 pixels wide. */
 LX_API lx_status lx_xyz_image_write_png(lx_ctx *ctx, const char *path, const lx_xyz_image *img);
 
+/** Kinds of outline on a plan, each drawn in its own style as lighting-design plans draw them. */
+typedef enum lx_outline_kind {
+    LX_OUTLINE_WALL = 0,    /* a room's boundary: a heavy line, sRGB (55, 55, 62), 4 px */
+    LX_OUTLINE_OBSTRUCTION, /* furniture (a desk): a fine dark outline over a light veil */
+    LX_OUTLINE_SURFACE,     /* a partition or free-standing surface: a brown line, (122, 74, 30), 3.5 px */
+    LX_OUTLINE_OPENING,     /* a window, door or roof light: a light-blue band (150, 215, 250) edged in dark blue */
+    LX_OUTLINE_LUMINAIRE    /* a luminaire's luminous area: a fine dashed line */
+} lx_outline_kind;
+
+/** A 2-D outline on a plot's plane: n vertices (a, b) in metres along the plane's u and v from its
+ * origin (the coordinates of lx_plane's a0 .. b1). A value (ABI policy: never changes). */
+typedef struct lx_plot_outline {
+    lx_outline_kind kind;
+    int closed;             /* 1: the last vertex joins the first (a polygon); 0: a polyline */
+    size_t n;               /* vertices (1: drawn as a dot) */
+    const double *ab_m;     /* n x 2 */
+    const char *name;       /* what it is ("office", "desk"; NULL: none) */
+} lx_plot_outline;
+
+/** What an isolux plot shows. */
+typedef enum lx_plot_quantity {
+    LX_PLOT_ILLUMINANCE = 0,    /* illuminance in lx (fc with imperial) */
+    LX_PLOT_DAYLIGHT_FACTOR = 1 /* the daylight factor in % (never converted) */
+} lx_plot_quantity;
+
 /** A luminaire marked on an isolux plot: where it is, where its nadir points, its name. */
 typedef struct lx_plot_mark {
     double pos_m[3];
@@ -2777,7 +2804,13 @@ typedef struct lx_isolux_opts {
     double area_m[4];             /* A0, A1, B0, B1 of the area drawn when A1 > A0 or B1 > B0 (the
                                    * calculation area around cell-centre points); else the points' extent */
     int imperial;                 /* 1: fc and ft instead of lx and m */
-    long long reserved[4];        /* zero: room for later options (ABI policy) */
+    /* taken from the reserved space (ABI policy: the struct keeps its size and offsets on LP64) */
+    const lx_plot_outline *outlines; /* walls, obstructions, partitions, openings and luminous areas drawn
+                                   * over the plot (lx_scene_outlines makes a scene's; NULL: none); the
+                                   * view grows to take in those that reach within half the area's size */
+    size_t n_outlines;
+    int quantity;                 /* lx_plot_quantity of the values (0: illuminance) */
+    long long reserved[1];        /* zero: room for later options (ABI policy) */
 } lx_isolux_opts;
 
 /** An isolux plot of the illuminance E on a plane (na x nb values, A fastest, as lx_plane_points
@@ -2811,6 +2844,42 @@ typedef struct lx_pdf_report_opts {
  * of the checks, and the plot writers' (LX_EIO, LX_EWRITE: nothing is left at path). opts may be NULL. */
 LX_API lx_status lx_scene_report_write_pdf(lx_ctx *ctx, const lx_scene *scene, const lx_pdf_report_opts *opts,
                                            const char *path);
+/** A scene's geometry on the plane of a plot, as outlines for lx_isolux_opts: the walls of every room
+ * the plane passes through, every obstruction, surface and opening, and the luminous area of every
+ * luminaire that has one (disk, rectangle, a photometric file's opening), each projected along the
+ * plane's normal as the convex hull of its corners (a partition or a window seen edge-on is a
+ * segment). Names point into the scene (valid while it lives). *out is one block, NULL when there
+ * is nothing to draw, freed with lx_scene_outlines_free (accepts NULL). Errors: LX_EINVAL (NULL),
+ * LX_ENOMEM. Thread-safe for distinct contexts. */
+LX_API lx_status lx_scene_outlines(lx_ctx *ctx, const lx_scene *scene, const lx_plane *plane, lx_plot_outline **out,
+                                   size_t *n);
+LX_API void lx_scene_outlines_free(lx_plot_outline *outlines);
+
+/** The plane of grid receiver `receiver` as lx_grid_write_png takes it: its first free axis (x
+ * before y before z) as u, the second as v, the points' extent, na x nb, the receiver's normal.
+ * Errors: LX_EINVAL (NULL, an index out of range, a point receiver). */
+LX_API lx_status lx_scene_receiver_plane(lx_ctx *ctx, const lx_scene *scene, size_t receiver, lx_plane *out);
+
+/** Options of lx_scene_receiver_write_png (zero-initialise for defaults). */
+typedef struct lx_receiver_png_opts {
+    lx_plot_quantity quantity;        /* ILLUMINANCE (the result's E_lx) or DAYLIGHT_FACTOR (daylight_factor) */
+    lx_isolux_background background;
+    lx_plot_scale scale;              /* AUTO: as lx_grid_write_png */
+    int imperial;                     /* 1: fc and ft */
+    int no_outlines;                  /* 1: the luminaires' marks only (no rooms, obstructions, surfaces, openings) */
+    long long reserved[4];            /* zero: room for later options (ABI policy) */
+} lx_receiver_png_opts;
+
+/** The isolux plot of grid receiver `receiver` of an evaluated scene (res: lx_scene_eval of this
+ * scene), as lx_grid_write_png draws it, with the scene's luminaires marked and its outlines
+ * (lx_scene_outlines) drawn; the view takes in the rooms the plane cuts. The title names the
+ * receiver, the plane and the scene file, the caption is the scene's title. DAYLIGHT_FACTOR plots
+ * res->daylight_factor in % with DF contours and statistics. Errors: LX_EINVAL (NULL, an index out
+ * of range, a point receiver, a result of another scene, a daylight factor the scene does not
+ * define), and those of lx_grid_write_png. opts may be NULL. */
+LX_API lx_status lx_scene_receiver_write_png(lx_ctx *ctx, const char *path, const lx_scene *scene,
+                                             const lx_scene_result *res, size_t receiver,
+                                             const lx_receiver_png_opts *opts);
 
 /** One point of an error-against-time plot: a method's time (s) and error (any unit > 0; 0 or
  * less is drawn on the bottom edge, marked "= 0"), its label and series (marker shape and colour). */

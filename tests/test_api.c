@@ -701,6 +701,27 @@ static void t_lx_scene_report_write_pdf(void)
     EXPECT_EINVAL(lx_scene_report_write_pdf(NULL, SCENE, NULL, p));
     assert_absent(p);
 }
+static void t_lx_scene_outlines(void)
+{
+    lx_plot_outline *o = PSENT;
+    size_t n = 7;
+    EXPECT_EINVAL(lx_scene_outlines(NULL, SCENE, &PLANE, &o, &n));
+    assert_true(o == PSENT && n == 7);
+}
+static void t_lx_scene_receiver_plane(void)
+{
+    lx_plane p, ref;
+    memset(&p, 0xab, sizeof p);
+    ref = p;
+    EXPECT_EINVAL(lx_scene_receiver_plane(NULL, SCENE, 0, &p));
+    assert_memory_equal(&p, &ref, sizeof p);
+}
+static void t_lx_scene_receiver_write_png(void)
+{
+    const char *p = out_path("r.png");
+    EXPECT_EINVAL(lx_scene_receiver_write_png(NULL, p, SCENE, NULL, 0, NULL));
+    assert_absent(p);
+}
 static void t_lx_error_time_write_png(void)
 {
     const char *p = out_path("e.png");
@@ -950,6 +971,7 @@ static const struct api_case {
     CASE(lx_leni_compute), CASE(lx_scene_energy), CASE(lx_scene_report_write_pdf),
     CASE(lx_falsecolor_write_png), CASE(lx_envmap_preview_write_png), CASE(lx_irradiance_write_png),
     CASE(lx_spd_report_write_png), CASE(lx_xyz_image_write_png), CASE(lx_grid_write_png), CASE(lx_error_time_write_png),
+    CASE(lx_scene_outlines), CASE(lx_scene_receiver_plane), CASE(lx_scene_receiver_write_png),
     CASE(lx_plane_cells),
 };
 #define NCASES (sizeof CASES / sizeof CASES[0])
@@ -1101,6 +1123,28 @@ static void nonzero_reserved_options_refused(void **state)
     p = out_path("reserved_g.png");
     EXPECT_EINVAL(lx_grid_write_png(ctx, p, &PLANE, E, &iso));
     assert_absent(p);
+    lx_receiver_png_opts rpo = {0};
+    rpo.reserved[2] = 1;
+    p = out_path("reserved_s.png");
+    EXPECT_EINVAL(lx_scene_receiver_write_png(ctx, p, SCENE, NULL, 0, &rpo));
+    assert_absent(p);
+#if defined(__LP64__)
+    /* the outlines and the quantity took lx_isolux_opts' reserved space: its size and the offset of
+     * every earlier field are those of 0.2.0 (the same struct with long long reserved[4]) */
+    struct isolux_020 {
+        lx_isolux_background background;
+        lx_plot_scale scale;
+        const lx_plot_mark *marks;
+        size_t n_marks;
+        const char *source, *surface, *caption;
+        double area_m[4];
+        int imperial;
+        long long reserved[4];
+    };
+    assert_int_equal(sizeof(lx_isolux_opts), sizeof(struct isolux_020));
+    assert_int_equal(offsetof(lx_isolux_opts, imperial), offsetof(struct isolux_020, imperial));
+    assert_int_equal(offsetof(lx_isolux_opts, outlines), offsetof(struct isolux_020, reserved));
+#endif
     lx_report_opts ro = {0};
     ro.reserved[1] = 1;
     p = out_path("reserved_r.png");
@@ -1376,6 +1420,7 @@ static void free_functions_accept_null(void **state)
     lx_scene_plan_free(NULL);
     lx_scene_result_free(NULL);
     lx_scene_checks_free(NULL);
+    lx_scene_outlines_free(NULL);
 }
 
 int main(void)

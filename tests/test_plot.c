@@ -4,7 +4,9 @@
  * isotropic source), the luminaire mark where it stands, round legend ticks, the statistics to
  * their digits. False colour: decade ticks, a two-decade range for a flat map, the map's colours as
  * the legend reads them. Irradiance: a uniform sky gives pi L everywhere. Errors: missing
- * directory (LX_EIO), full disk (LX_EWRITE), nothing left behind. Round numbers of scale.c. */
+ * directory (LX_EIO), full disk (LX_EWRITE), nothing left behind. Round numbers of scale.c. Plans:
+ * a scene's walls, window, desk, partition and luminous area where they stand, in their colours;
+ * the daylight-factor plot. */
 #include "plot_test.h"
 
 #include <errno.h>
@@ -197,6 +199,163 @@ static void isolux(void **state)
     free(E);
 }
 
+/* ---- outlines on a plan ---- */
+
+/* the pixel of data coordinates (a, b) on the layout's area */
+static void px_of(const lx__layout *L, double a, double b, int *x, int *y)
+{
+    *x = (int)floor(L->area.x0 + (a - L->ax0) / (L->ax1 - L->ax0) * (L->area.x1 - L->area.x0));
+    *y = (int)floor(L->area.y1 - (b - L->ay0) / (L->ay1 - L->ay0) * (L->area.y1 - L->area.y0));
+}
+
+/* 1 when pixel (a, b) of the plot has the colour rgb (within tol in every channel) */
+static int colour_near(const test_png *png, const lx__layout *L, double a, double b, const unsigned char *rgb, int tol)
+{
+    int x, y;
+    unsigned char c[3];
+    px_of(L, a, b, &x, &y);
+    test_px(png, x, y, c);
+    int ok = abs(c[0] - rgb[0]) <= tol && abs(c[1] - rgb[1]) <= tol && abs(c[2] - rgb[2]) <= tol;
+    if (!ok) print_error("(%g, %g) at pixel (%d, %d) is %d %d %d, not %d %d %d\n", a, b, x, y, c[0], c[1], c[2], rgb[0], rgb[1], rgb[2]);
+    return ok;
+}
+#define colour_at(png, L, a, b, rgb) colour_near(png, L, a, b, rgb, 3)
+
+/* a room with a window, a desk, a partition and a turned panel, a second room above it */
+static const char PLAN_SCENE[] =
+    "[room office]\nsize = 6, 4, 3 m\nceiling = 0.7\nwalls = 0.5\nfloor = 0.2\n"
+    "[room above]\norigin = 0, 0, 3 m\nsize = 6, 4, 3 m\n"
+    "[opening window]\ncorner = 1, 0, 0.9 m\nedge1 = 2, 0, 0 m\nedge2 = 0, 0, 1.5 m\n"
+    "[obstruction desk]\nmin = 1, 1, 0 m\nmax = 2.6, 1.8, 0.75 m\nreflectance = 0.3\n"
+    "[surface partition]\ncorner = 3.6, 0.2, 0 m\nedge1 = 0, 1.5, 0 m\nedge2 = 0, 0, 1.6 m\nreflectance = 0.4\n"
+    "[luminaire panel]\ntype = rect\nposition = 3, 2, 2.8 m\nluminance = 3000 cd/m2\nwidth = 1.2 m\nlength = 0.3 m\n"
+    "rotate = 90 deg\n"
+    "[receiver wp]\ntype = grid\nx = 0.5 m, 5.5 m\ny = 0.5 m, 3.5 m\nz = 0.8 m\nspacing = 0.5 m\n"
+    "[effects]\ninterreflection = off\n";
+
+static const lx_plot_outline *outline_of(const lx_plot_outline *o, size_t n, lx_outline_kind kind)
+{
+    for (size_t k = 0; k < n; k++)
+        if (o[k].kind == kind) return &o[k];
+    return NULL;
+}
+
+static void outline_extent_is(const lx_plot_outline *o, double a0, double a1, double b0, double b1)
+{
+    double e[4];
+    assert_true(lx__outlines_extent(o, 1, e));
+    lx_assert_near(e[0], a0, 1e-12, 0), lx_assert_near(e[1], a1, 1e-12, 0);
+    lx_assert_near(e[2], b0, 1e-12, 0), lx_assert_near(e[3], b1, 1e-12, 0);
+}
+
+static void plan_outlines(void **state)
+{
+    lx_ctx *ctx = *state;
+    lx_scene *sc = NULL;
+    lx_assert_ok(ctx, lx_scene_read_mem(ctx, "plan.scene", PLAN_SCENE, sizeof PLAN_SCENE - 1, &sc));
+    lx_plane p;
+    lx_assert_ok(ctx, lx_scene_receiver_plane(ctx, sc, 0, &p));
+    lx_assert_near(p.origin_m[2], 0.8, 0, 0), lx_assert_near(p.a0, 0.5, 0, 0), lx_assert_near(p.b1, 3.5, 0, 0);
+    lx_plot_outline *o = NULL;
+    size_t n = 0;
+    lx_assert_ok(ctx, lx_scene_outlines(ctx, sc, &p, &o, &n));
+    /* the office's walls (the room above is not cut by z = 0.8), the window, desk, partition, panel */
+    assert_int_equal(n, 5);
+    const lx_plot_outline *w = outline_of(o, n, LX_OUTLINE_WALL);
+    assert_non_null(w);
+    assert_string_equal(w->name, "office");
+    assert_true(w->closed && w->n == 4);
+    outline_extent_is(w, 0, 6, 0, 4);
+    const lx_plot_outline *d = outline_of(o, n, LX_OUTLINE_OBSTRUCTION);
+    assert_true(d->closed && d->n == 4);
+    outline_extent_is(d, 1, 2.6, 1, 1.8);
+    const lx_plot_outline *s = outline_of(o, n, LX_OUTLINE_SURFACE); /* upright: seen edge-on, a segment */
+    assert_true(!s->closed && s->n == 2);
+    outline_extent_is(s, 3.6, 3.6, 0.2, 1.7);
+    const lx_plot_outline *win = outline_of(o, n, LX_OUTLINE_OPENING); /* in the wall y = 0: a segment */
+    assert_true(!win->closed && win->n == 2);
+    outline_extent_is(win, 1, 3, 0, 0);
+    const lx_plot_outline *lum = outline_of(o, n, LX_OUTLINE_LUMINAIRE); /* turned 90 deg: its width along y */
+    assert_true(lum->closed && lum->n == 4);
+    outline_extent_is(lum, 2.85, 3.15, 1.4, 2.6);
+    lx_scene_outlines_free(o);
+    /* the plot of the evaluated receiver: the view takes in the room, every kind drawn in its colour */
+    lx_scene_plan *plan = NULL;
+    lx_scene_result *res = NULL;
+    lx_assert_ok(ctx, lx_scene_plan_make(ctx, sc, LX_BACKEND_CPU, &plan));
+    lx_assert_ok(ctx, lx_scene_eval(ctx, sc, plan, NULL, &res));
+    char path[128];
+    snprintf(path, sizeof path, "%s/plan.png", dir);
+    lx__layout L = {0};
+    lx_assert_ok(ctx, lx__scene_receiver_png(ctx, path, sc, res, 0, NULL, &L));
+    assert_true(L.ax0 < 0 && L.ax1 > 6 && L.ay0 < 0 && L.ay1 > 4);
+    for (int k = 0; k < 5; k++) assert_int_equal(L.outlines[k], 1);
+    test_png png;
+    test_png_read(path, &png);
+    test_labels_ok(&png, &L);
+    assert_true(colour_at(&png, &L, 0, 2, lx__outline_rgb(LX_OUTLINE_WALL)));      /* the west wall */
+    assert_true(colour_at(&png, &L, 5, 4, lx__outline_rgb(LX_OUTLINE_WALL)));      /* the north wall */
+    assert_true(colour_at(&png, &L, 2, 0, lx__outline_rgb(LX_OUTLINE_OPENING)));   /* the window, over the wall */
+    assert_true(colour_at(&png, &L, 4.5, 0, lx__outline_rgb(LX_OUTLINE_WALL)));    /* the wall beside it */
+    assert_true(colour_at(&png, &L, 3.6, 1.0, lx__outline_rgb(LX_OUTLINE_SURFACE))); /* the partition */
+    assert_true(colour_near(&png, &L, 1, 1.4, lx__outline_rgb(LX_OUTLINE_OBSTRUCTION), 16)); /* the desk's fine edge */
+    assert_non_null(test_find(&L, LX__TEXT_TITLE, "Illuminance on wp (z = 0.8 m)"));
+    test_png_free(&png);
+    lx__layout_free(&L);
+    /* without outlines: the view is the receiver's area */
+    lx_receiver_png_opts po = {.no_outlines = 1};
+    lx_assert_ok(ctx, lx__scene_receiver_png(ctx, path, sc, res, 0, &po, &L));
+    for (int k = 0; k < 5; k++) assert_int_equal(L.outlines[k], 0);
+    lx_assert_near(L.ax0, 0.5, 1e-12, 0);
+    lx__layout_free(&L);
+    /* no daylight: no daylight factor to plot, said so */
+    po = (lx_receiver_png_opts){.quantity = LX_PLOT_DAYLIGHT_FACTOR};
+    assert_int_equal(lx_scene_receiver_write_png(ctx, path, sc, res, 0, &po), LX_EINVAL);
+    assert_non_null(strstr(lx_ctx_errmsg(ctx), "daylight factor is not defined"));
+    po = (lx_receiver_png_opts){.quantity = 7};
+    assert_int_equal(lx_scene_receiver_write_png(ctx, path, sc, res, 0, &po), LX_EINVAL);
+    assert_int_equal(lx_scene_receiver_write_png(ctx, path, sc, res, 1, NULL), LX_EINVAL);
+    lx_scene_result_free(res);
+    lx_scene_plan_free(plan);
+    lx_scene_free(sc);
+}
+
+/* The daylight-factor plot: % in the legend and statistics, contours at the 1-2-5 % series, values
+ * never converted to imperial units. */
+static void daylight_factor_plot(void **state)
+{
+    lx_ctx *ctx = *state;
+    lx_plane p;
+    lx_assert_ok(ctx, lx_plane_axis(ctx, 'z', 0.85, 0, 4, 0, 3, 0.25, 0, 0, &p));
+    double *v = malloc(p.na * p.nb * sizeof *v);
+    for (size_t j = 0; j < p.nb; j++) /* a side-lit room: 12 % at the window, falling away from it */
+        for (size_t i = 0; i < p.na; i++) v[j * p.na + i] = 12 * exp(-1.2 * (p.b0 + 0.25 * j)) + 0.2;
+    char path[128];
+    snprintf(path, sizeof path, "%s/df.png", dir);
+    lx_isolux_opts o = {.quantity = LX_PLOT_DAYLIGHT_FACTOR, .imperial = 1};
+    lx__layout L = {0};
+    lx_assert_ok(ctx, lx__isolux_png(ctx, path, &p, v, &o, &L));
+    assert_non_null(test_find(&L, LX__TEXT_LEGEND, "DF (%)"));
+    assert_non_null(test_find(&L, LX__TEXT_TITLE, "Daylight factor on"));
+    const lx__label *s = test_find(&L, LX__TEXT_STATS, "DF_max ");
+    assert_non_null(s);
+    lx_assert_near(strtod(strchr(s->text, ' ') + 1, NULL), 12.2, 0, 5e-4); /* % stays %, with imperial */
+    assert_non_null(strstr(s->text, "%"));
+    assert_int_equal(L.n_levels, 4); /* 1, 2, 5, 10 % */
+    static const double want[4] = {1, 2, 5, 10};
+    for (int k = 0; k < 4; k++) assert_true(L.level[k] == want[k] && L.level_segments[k] > 0);
+    test_png png;
+    test_png_read(path, &png);
+    test_labels_ok(&png, &L);
+    test_png_free(&png);
+    lx__layout_free(&L);
+    o.quantity = 2;
+    assert_int_equal(lx_grid_write_png(ctx, path, &p, v, &o), LX_EINVAL);
+    o.quantity = 0, o.n_outlines = 1;
+    assert_int_equal(lx_grid_write_png(ctx, path, &p, v, &o), LX_EINVAL); /* a count without outlines */
+    free(v);
+}
+
 /* ---- false colour ---- */
 
 static void falsecolor(void **state)
@@ -366,6 +525,8 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(round_numbers),
         cmocka_unit_test_setup_teardown(isolux, setup, teardown),
+        cmocka_unit_test_setup_teardown(plan_outlines, setup, teardown),
+        cmocka_unit_test_setup_teardown(daylight_factor_plot, setup, teardown),
         cmocka_unit_test_setup_teardown(falsecolor, setup, teardown),
         cmocka_unit_test_setup_teardown(irradiance_preview, setup, teardown),
         cmocka_unit_test_setup_teardown(preview, setup, teardown),

@@ -371,7 +371,11 @@ static int from_scene(lx_ctx *ctx, const grid_args *g, lx_plane *p, double **pts
             lx_scene_free(sc);
             return CLI_USAGE;
         }
-        cli_scene_plane(&sc->rec[r], p);
+        lx_status sp = lx_scene_receiver_plane(ctx, sc, r, p);
+        if (sp) {
+            lx_scene_free(sc);
+            return cli_fail("grid", ctx, sp);
+        }
     }
     lx_status st = lx_scene_plan_make(ctx, sc, (int)g->go.backend, &plan);
     if (!st) st = lx_scene_eval(ctx, sc, plan, NULL, &res);
@@ -440,7 +444,11 @@ int cmd_grid(int argc, char **argv)
             double da = p.na > 1 ? (p.a1 - p.a0) / (p.na - 1) : 0, db = p.nb > 1 ? (p.b1 - p.b0) / (p.nb - 1) : 0;
             io.area_m[0] = p.a0 - da / 2, io.area_m[1] = p.a1 + da / 2, io.area_m[2] = p.b0 - db / 2, io.area_m[3] = p.b1 + db / 2;
         }
-        lx_status st = lx_grid_write_png(ctx, g.png, &p, E, &io);
+        lx_plot_outline *ol = NULL; /* the scene's rooms, obstructions, surfaces, openings on the plane */
+        lx_status st = sc ? lx_scene_outlines(ctx, sc, &p, &ol, &io.n_outlines) : LX_OK;
+        io.outlines = ol;
+        if (!st) st = lx_grid_write_png(ctx, g.png, &p, E, &io);
+        lx_scene_outlines_free(ol);
         if (st) {
             rc = cli_fail("grid", ctx, st);
             goto done;

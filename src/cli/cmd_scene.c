@@ -571,19 +571,6 @@ static cli_table *surfaces_table(const lx_scene_result *res)
     return t;
 }
 
-/* The plane of a grid receiver (its first free axis as A, the second as B) for the isolux plot. */
-void cli_scene_plane(const lx_scene_receiver *rc, lx_plane *p)
-{
-    memset(p, 0, sizeof *p);
-    int k = rc->axis - 'x', ia = k == 0 ? 1 : 0, ib = k == 2 ? 1 : 2;
-    p->u[ia] = 1, p->v[ib] = 1;
-    p->origin_m[k] = rc->points[k];
-    const double *first = rc->points, *last_a = rc->points + 3 * (rc->na - 1), *last_b = rc->points + 3 * (rc->nb - 1) * rc->na;
-    p->a0 = first[ia], p->a1 = last_a[ia], p->b0 = first[ib], p->b1 = last_b[ib];
-    p->na = rc->na, p->nb = rc->nb;
-    memcpy(p->normal, rc->normal, sizeof p->normal);
-}
-
 /* The scene's luminaires as plot marks (free with free()); NULL when there are none or no memory. */
 lx_plot_mark *cli_scene_marks(const lx_scene *sc)
 {
@@ -597,31 +584,31 @@ lx_plot_mark *cli_scene_marks(const lx_scene *sc)
 }
 
 /* Each grid receiver's illuminance as an isolux plot DIR/SCENE_RECEIVER.png (DIR created when
- * missing), seen from the side its normal points to: the first free axis to the right, the
- * second upwards. */
-static lx_status write_pngs(lx_ctx *ctx, const lx_scene *sc, const lx_scene_result *res, const char *scene_path,
-                            const char *dir, int imperial)
+ * missing), seen from the side its normal points to (the first free axis to the right, the second
+ * upwards), with the scene's rooms, obstructions, surfaces, openings and luminaires drawn on it
+ * (lx_scene_receiver_write_png); and where the scene defines the daylight factor, its plot
+ * DIR/SCENE_RECEIVER_df.png too. */
+static lx_status write_pngs(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *plan, const lx_scene_result *res,
+                            const char *scene_path, const char *dir, int imperial)
 {
     const char *base = strrchr(scene_path, '/');
     base = base ? base + 1 : scene_path;
     size_t bl = strlen(base);
     const char *dot = strrchr(base, '.');
     if (dot && dot != base) bl = (size_t)(dot - base);
-    lx_plot_mark *mk = cli_scene_marks(sc);
     lx_status st = LX_OK;
     for (size_t r = 0; r < sc->n_rec && !st; r++) {
         const lx_scene_receiver *rc = &sc->rec[r];
         if (rc->kind != LX_SREC_GRID) continue;
-        char path[4096];
-        lx_plane p;
-        cli_scene_plane(rc, &p);
-        snprintf(path, sizeof path, "%s/%.*s_%s.png", dir, (int)bl, base, rc->name);
-        lx_isolux_opts io = {.marks = mk, .n_marks = mk ? sc->n_lum : 0, .source = scene_path, .surface = rc->name,
-                             .caption = sc->title, .imperial = imperial};
-        st = lx_grid_write_png(ctx, path, &p, res->E_lx + res->first[r], &io);
-        if (!st && !cli_quiet) fprintf(stderr, "luxcalc: scene: wrote %s\n", path);
+        for (int q = 0; q < 2 && !st; q++) {
+            if (q == 1 && !(plan->on[LX_EFFECT_DAYLIGHT] && plan->daylight.df)) break;
+            char path[4096];
+            snprintf(path, sizeof path, "%s/%.*s_%s%s.png", dir, (int)bl, base, rc->name, q ? "_df" : "");
+            lx_receiver_png_opts po = {.quantity = q ? LX_PLOT_DAYLIGHT_FACTOR : LX_PLOT_ILLUMINANCE, .imperial = imperial};
+            st = lx_scene_receiver_write_png(ctx, path, sc, res, r, &po);
+            if (!st && !cli_quiet) fprintf(stderr, "luxcalc: scene: wrote %s\n", path);
+        }
     }
-    free(mk);
     return st;
 }
 
@@ -751,7 +738,7 @@ int cmd_scene(int argc, char **argv)
         lx_ctx_destroy(ctx);
         return CLI_INPUT;
     }
-    if (st == LX_OK && png_dir) st = write_pngs(ctx, sc, res, argv[optind], png_dir, cli_imperial());
+    if (st == LX_OK && png_dir) st = write_pngs(ctx, sc, plan, res, argv[optind], png_dir, cli_imperial());
     if (st == LX_OK && do_surfaces && !res->surfaces) {
         cli_error(cmd, "%s: --surfaces: interreflection is off (%s)", argv[optind], plan->reason[LX_EFFECT_INTERREFLECTION]);
         rc = CLI_INPUT;

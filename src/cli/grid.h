@@ -1,13 +1,10 @@
-/* grid.h - what `luxcalc grid` and `luxcalc scene` share: a scene grid receiver as a plane and the
- * scene's luminaires as plot marks (cmd_scene.c), the grid printed as a grid and the grid summary
- * (grid_out.c). */
+/* grid.h - what `luxcalc grid` and `luxcalc scene` share: the scene's luminaires as plot marks
+ * (cmd_scene.c), the grid printed as a grid and the grid summary (grid_out.c). */
 #ifndef LX_CLI_GRID_H
 #define LX_CLI_GRID_H
 
 #include "cli.h"
 
-/* The plane of a grid receiver (its first free axis as A, the second as B). */
-void cli_scene_plane(const lx_scene_receiver *rc, lx_plane *p);
 /* The scene's luminaires as plot marks (free with free()); NULL when there are none or no memory. */
 lx_plot_mark *cli_scene_marks(const lx_scene *sc);
 

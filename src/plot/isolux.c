@@ -28,6 +28,7 @@ typedef struct iso {
     double level[LX__MAX_LEVELS];
     int nlev, geometric, white;
     const char *lunit, *eunit;
+    const char *qname, *qsym; /* "Illuminance", "E"; "Daylight factor", "DF" */
 } iso;
 
 /* Catmull-Rom weights of the four nodes around fraction t of a cell */
@@ -354,8 +355,8 @@ static void title(lx__page *pg, const iso *g, const lx_isolux_opts *o, double x,
     plane_name(plane, sizeof plane, g);
     const char *src = o->source, *base = src ? strrchr(src, '/') : NULL;
     base = base ? base + 1 : src;
-    if (o->surface && *o->surface) snprintf(head, sizeof head, "Illuminance on %s (%s)", o->surface, plane);
-    else snprintf(head, sizeof head, "Illuminance on %s", plane);
+    if (o->surface && *o->surface) snprintf(head, sizeof head, "%s on %s (%s)", g->qname, o->surface, plane);
+    else snprintf(head, sizeof head, "%s on %s", g->qname, plane);
     if (base && *base) snprintf(head + strlen(head), sizeof head - strlen(head), " \u2014 %s", base);
     double maxw = pg->w - x - 16;
     lx__box b = lx__page_text_fit(pg, &ft, x, y, LX__TEXT_TITLE, head, maxw);
@@ -446,15 +447,20 @@ static void stats_box(lx__page *pg, const iso *g, lx__box box)
     cairo_stroke(cr);
     char v[5][48];
     lx__fmt_sig(v[0], 40, avg, 4), lx__fmt_sig(v[1], 40, mn, 4), lx__fmt_sig(v[2], 40, mx, 4);
-    for (int k = 0; k < 3; k++) strcat(v[k], " "), strcat(v[k], g->eunit);
+    for (int k = 0; k < 3; k++) strcat(v[k], strcmp(g->eunit, "%") ? " " : ""), strcat(v[k], g->eunit);
     snprintf(v[3], 48, isfinite(u0) ? "%.3f" : "-", u0);
     snprintf(v[4], 48, isfinite(g2) ? "%.3f" : "-", g2);
     double col = (box.x1 - box.x0 - 24) / 3, y0 = box.y0 + 9, y1 = box.y0 + 33;
-    stat(pg, box.x0 + 12, y0, "E_avg", avg, v[0]);
-    stat(pg, box.x0 + 12 + col, y0, "E_min", mn, v[1]);
-    stat(pg, box.x0 + 12 + 2 * col, y0, "E_max", mx, v[2]);
-    stat(pg, box.x0 + 12, y1, "U_0 = E_min / E_avg", u0, v[3]);
-    stat(pg, box.x0 + 12 + 2 * col, y1, "E_min / E_max", g2, v[4]);
+    char q[5][48];
+    const char *e = g->qsym;
+    snprintf(q[0], sizeof q[0], "%s_avg", e), snprintf(q[1], sizeof q[1], "%s_min", e);
+    snprintf(q[2], sizeof q[2], "%s_max", e);
+    snprintf(q[3], sizeof q[3], "U_0 = %s_min / %s_avg", e, e), snprintf(q[4], sizeof q[4], "%s_min / %s_max", e, e);
+    stat(pg, box.x0 + 12, y0, q[0], avg, v[0]);
+    stat(pg, box.x0 + 12 + col, y0, q[1], mn, v[1]);
+    stat(pg, box.x0 + 12 + 2 * col, y0, q[2], mx, v[2]);
+    stat(pg, box.x0 + 12, y1, q[3], u0, v[3]);
+    stat(pg, box.x0 + 12 + 2 * col, y1, q[4], g2, v[4]);
 }
 
 /* the grid in display units, its extents, the scale and the contour levels */
@@ -462,9 +468,12 @@ static lx_status setup(lx_ctx *ctx, iso *g, const lx_plane *p, const double *E_l
 {
     memset(g, 0, sizeof *g);
     g->p = p;
+    int df = o->quantity == LX_PLOT_DAYLIGHT_FACTOR;
     g->len = o->imperial ? FT_M : 1;
     g->lunit = o->imperial ? "ft" : "m";
-    g->eunit = o->imperial ? "fc" : "lx";
+    g->eunit = df ? "%" : o->imperial ? "fc" : "lx";
+    g->qname = df ? "Daylight factor" : "Illuminance";
+    g->qsym = df ? "DF" : "E";
     g->white = o->background == LX_ISOLUX_WHITE;
     size_t n = p->na * p->nb;
     double *E = lx__alloc_n(n, sizeof *E);
@@ -475,7 +484,7 @@ static lx_status setup(lx_ctx *ctx, iso *g, const lx_plane *p, const double *E_l
             lx__free(E);
             return lx__error(ctx, LX_EINVAL, NULL, 0, "grid plot: value %zu is not finite", i);
         }
-        E[i] = o->imperial ? E_lx[i] / LX_PER_FC : E_lx[i];
+        E[i] = o->imperial && !df ? E_lx[i] / LX_PER_FC : E_lx[i];
         mn = fmin(mn, E[i]), mx = fmax(mx, E[i]);
     }
     g->E = *Eu = E;
@@ -502,8 +511,26 @@ static lx_status setup(lx_ctx *ctx, iso *g, const lx_plane *p, const double *E_l
             g->B0 = fmin(g->B0, b - pad), g->B1 = fmax(g->B1, b + pad);
         }
     }
+    /* and the outlines that reach within half the area's size of it (the room around a work plane) */
+    for (size_t k = 0; k < o->n_outlines; k++) {
+        double ext[4];
+        if (!lx__outlines_extent(&o->outlines[k], 1, ext)) continue;
+        for (int i = 0; i < 4; i++) ext[i] /= g->len;
+        if (ext[1] < g->fA0 - 0.5 * wa || ext[0] > g->fA1 + 0.5 * wa || ext[3] < g->fB0 - 0.5 * wb || ext[2] > g->fB1 + 0.5 * wb)
+            continue;
+        double pa = o->outlines[k].kind == LX_OUTLINE_WALL || o->outlines[k].kind == LX_OUTLINE_OPENING ? pad : 0;
+        g->A0 = fmin(g->A0, ext[0] - pa), g->A1 = fmax(g->A1, ext[1] + pa);
+        g->B0 = fmin(g->B0, ext[2] - pa), g->B1 = fmax(g->B1, ext[3] + pa);
+    }
     g->nlev = lx__levels_125(mn, mx, g->level, LX__MAX_LEVELS, &g->geometric);
-    int log = o->scale == LX_PLOT_SCALE_LOG || (o->scale == LX_PLOT_SCALE_AUTO && g->geometric);
+    if (df) { /* the daylight factor: the 1-2-5 % series designers read (2 % and 5 %: BS 8206-2, EN 17037) */
+        static const double dfl[] = {0.1, 0.2, 0.5, 1, 2, 5, 10, 20, 50};
+        int n = 0;
+        for (size_t k = 0; k < sizeof dfl / sizeof *dfl; k++)
+            if (dfl[k] > mn && dfl[k] < mx) g->level[n++] = dfl[k];
+        if (n) g->nlev = n, g->geometric = 1;
+    }
+    int log = o->scale == LX_PLOT_SCALE_LOG || (o->scale == LX_PLOT_SCALE_AUTO && g->geometric && !(df && mx / mn <= 20));
     if (log && !(mx > 0)) log = 0;
     if (log) lx__scale_auto(&g->scale, E, n, 1, NAN, NAN);
     else {
@@ -522,6 +549,9 @@ lx_status lx__isolux_page(lx_ctx *ctx, const lx_plane *p, const double *E_lx, co
     if (opts) o = *opts;
     lx_status rs = lx__check_reserved(ctx, "isolux options", o.reserved, sizeof o.reserved);
     if (rs) return rs;
+    if (o.quantity != LX_PLOT_ILLUMINANCE && o.quantity != LX_PLOT_DAYLIGHT_FACTOR)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "grid plot: unknown quantity %d", o.quantity);
+    if (o.n_outlines && !o.outlines) return lx__error(ctx, LX_EINVAL, NULL, 0, "grid plot: n_outlines without outlines");
     iso g;
     double *E = NULL;
     lx_status st = setup(ctx, &g, p, E_lx, &o, &E);
@@ -559,13 +589,17 @@ lx_status lx__isolux_page(lx_ctx *ctx, const lx_plane *p, const double *E_lx, co
     memset(segs, 0, sizeof segs);
     if (!g.white && (st = draw_field(ctx, &pg, &g))) goto done;
     if ((st = contours(ctx, &pg, &g, segs))) goto done;
+    if (o.n_outlines && o.outlines) {
+        lx__plan_view pv = {g.area, g.A0 * g.len, g.A1 * g.len, g.B0 * g.len, g.B1 * g.len, 1};
+        lx__plan_draw(pg.cr, &pv, o.outlines, o.n_outlines, pg.lay.outlines);
+    }
     title(&pg, &g, &o, left, 12);
     marks(&pg, &g, &o);
     axes(&pg, &g);
     contour_labels(&pg, &g, segs);
     mark_names(&pg, &g, &o);
     char lt[32];
-    snprintf(lt, sizeof lt, "E (%s)", g.eunit);
+    snprintf(lt, sizeof lt, "%s (%s)", g.qsym, g.eunit);
     lx__page_legend(&pg, (lx__box){left + pw + gap, top, W - right, top + body}, &g.scale, lt);
     stats_box(&pg, &g, (lx__box){left, top + body + below, left + pw + gap + legend_w, top + body + below + stats_h});
 done:

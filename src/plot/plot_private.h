@@ -21,11 +21,11 @@
     F(fill_preserve) F(font_extents) F(get_source) F(image_surface_create) F(image_surface_get_data) \
     F(image_surface_get_stride) F(line_to) F(move_to) F(new_path) F(paint) F(pattern_set_filter) \
     F(rectangle) F(restore) F(rotate) F(save) F(scale) F(select_font_face) F(set_font_size) F(set_line_cap) \
-    F(set_line_join) F(set_line_width) F(set_source_rgb) F(set_source_rgba) F(set_source_surface) \
-    F(show_text) F(status) F(status_to_string) F(stroke) F(surface_destroy) F(surface_flush) \
+    F(set_dash) F(set_line_join) F(set_line_width) F(set_source_rgb) F(set_source_rgba) F(set_source_surface) \
+    F(show_text) F(status) F(status_to_string) F(stroke) F(stroke_preserve) F(surface_destroy) F(surface_flush) \
     F(surface_mark_dirty) F(surface_status) F(surface_write_to_png_stream) F(text_extents) F(text_path) \
     F(translate) F(pdf_surface_create_for_stream) F(pdf_surface_set_metadata) F(recording_surface_create) \
-    F(show_page) F(surface_finish) F(set_dash) F(rel_line_to)
+    F(show_page) F(surface_finish) F(rel_line_to)
 typedef struct lx__cairo_api {
 #define LX__CAIRO_FIELD(n) __typeof__(cairo_##n) *n;
     LX__CAIRO_FNS(LX__CAIRO_FIELD)
@@ -60,6 +60,7 @@ lx_status lx__cairo_load(lx_ctx *ctx);
 #define cairo_select_font_face (lx__cairo.select_font_face)
 #define cairo_set_font_size (lx__cairo.set_font_size)
 #define cairo_set_line_cap (lx__cairo.set_line_cap)
+#define cairo_set_dash (lx__cairo.set_dash)
 #define cairo_set_line_join (lx__cairo.set_line_join)
 #define cairo_set_line_width (lx__cairo.set_line_width)
 #define cairo_set_source_rgb (lx__cairo.set_source_rgb)
@@ -69,6 +70,7 @@ lx_status lx__cairo_load(lx_ctx *ctx);
 #define cairo_status (lx__cairo.status)
 #define cairo_status_to_string (lx__cairo.status_to_string)
 #define cairo_stroke (lx__cairo.stroke)
+#define cairo_stroke_preserve (lx__cairo.stroke_preserve)
 #define cairo_surface_destroy (lx__cairo.surface_destroy)
 #define cairo_surface_flush (lx__cairo.surface_flush)
 #define cairo_surface_mark_dirty (lx__cairo.surface_mark_dirty)
@@ -82,7 +84,6 @@ lx_status lx__cairo_load(lx_ctx *ctx);
 #define cairo_recording_surface_create (lx__cairo.recording_surface_create)
 #define cairo_show_page (lx__cairo.show_page)
 #define cairo_surface_finish (lx__cairo.surface_finish)
-#define cairo_set_dash (lx__cairo.set_dash)
 #define cairo_rel_line_to (lx__cairo.rel_line_to)
 
 /* ---- what a plot drew (page.c) ---- */
@@ -130,6 +131,7 @@ typedef struct lx__layout {
     size_t level_segments[LX__MAX_LEVELS];
     int n_marks;                   /* luminaire marks drawn (pixel centres) */
     double mark[64][2];
+    size_t outlines[5];            /* outlines drawn, per lx_outline_kind */
 } lx__layout;
 
 /* Frees what a layout holds and zeroes it. */
@@ -250,6 +252,25 @@ lx_status lx__page_tonemap(lx_ctx *ctx, lx__page *pg, lx__box box, const float *
 /* sRGB encoding of a linear value clamped to [0, 1]. */
 double lx__srgb_encode(double v);
 
+/* ---- outlines on a plan or a section (plan.c) ---- */
+
+/* Where a plan goes on the page: the box (pixels, or points on a PDF page) and the plane
+ * coordinates in metres at its left, right, bottom and top edges; unit scales every line width
+ * (1: the PNG plots' pixels). */
+typedef struct lx__plan_view {
+    lx__box box;
+    double a0, a1, b0, b1;
+    double unit;
+} lx__plan_view;
+/* Draws the outlines into the view, clipped to its box, each kind in its style (under to over:
+ * obstructions, luminous areas, surfaces, walls, openings); counts what it drew per kind into
+ * count[5] when count is not NULL. Every plan of every plot and report is drawn here. */
+void lx__plan_draw(cairo_t *cr, const lx__plan_view *v, const lx_plot_outline *o, size_t n, size_t *count);
+/* The extent of the outlines' finite vertices: a0, a1, b0, b1 in ext; 0 when there is none. */
+int lx__outlines_extent(const lx_plot_outline *o, size_t n, double ext[4]);
+/* The colour a kind is drawn in (an opening: its light band), for tests and legends. */
+const unsigned char *lx__outline_rgb(lx_outline_kind kind);
+
 /* ---- the plots, with their layout for tests (each public writer is one of these with NULL) ---- */
 
 /* The isolux plot drawn on a new page (an image, or with vector = 1 a recording to paint into another
@@ -258,6 +279,8 @@ lx_status lx__isolux_page(lx_ctx *ctx, const lx_plane *plane, const double *E, c
                           lx__page *pg);
 lx_status lx__isolux_png(lx_ctx *ctx, const char *path, const lx_plane *plane, const double *E,
                          const lx_isolux_opts *opts, lx__layout *out);
+lx_status lx__scene_receiver_png(lx_ctx *ctx, const char *path, const lx_scene *scene, const lx_scene_result *res,
+                                 size_t receiver, const lx_receiver_png_opts *opts, lx__layout *out);
 lx_status lx__falsecolor_png(lx_ctx *ctx, const char *path, int w, int h, const double *values,
                              const lx_falsecolor_opts *opts, lx__layout *out);
 lx_status lx__irradiance_png(lx_ctx *ctx, const char *path, const lx_envmap *radiance, const lx_envmap *irradiance,

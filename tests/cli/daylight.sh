@@ -212,3 +212,60 @@ expect_rc 0 "glare with the background from the room"
 expect_field 1 background_cd_m2 "$(awk -v e="$eind" -v p=$PI 'BEGIN{printf "%.17g", e/p}')" 1e-9 "Lb = E_ind / pi at the eye"
 run bench --help
 expect_out_match 'daylight' "bench lists the daylight topic"
+
+# scene --png: the plan drawn on the plots (walls, the window, the desk, the partition) and, where
+# the scene defines the daylight factor, its own plot DIR/SCENE_RECEIVER_df.png; pixels read back
+# with tests/tools/pngpx (the colours of lx_outline_kind in luxcalc.h)
+cat > "$T/side.scene" <<'SC'
+[room office]
+size = 6, 4, 3 m
+[opening window]
+corner = 1, 0, 0.9 m
+edge1 = 2, 0, 0 m
+edge2 = 0, 0, 1.5 m
+glazing = clear
+[obstruction desk]
+min = 3, 2, 0 m
+max = 4.6, 2.8, 0.72 m
+reflectance = 0.3
+[surface partition]
+corner = 5, 0.5, 0 m
+edge1 = 0, 1.5, 0 m
+edge2 = 0, 0, 1.6 m
+reflectance = 0.4
+[sky]
+type = overcast
+luminance = 10000 cd/m2
+[receiver wp]
+type = grid
+x = 0.5 m, 5.5 m
+y = 0.5 m, 3.5 m
+z = 0.85 m
+spacing = 0.5 m
+[effects]
+interreflection = off
+SC
+px=${LX_BUILD_DIR:-build}/tests/pngpx
+run scene "$T/side.scene" --png "$T/plans"
+expect_rc 0 "scene --png with daylight"
+expect_err_match "wrote .*/side_wp_df\.png" "the daylight-factor plot is written and named"
+if [ -x "$px" ] && [ -f "$T/plans/side_wp.png" ] && [ -f "$T/plans/side_wp_df.png" ]; then
+  for f in side_wp side_wp_df; do
+    wall=$("$px" "$T/plans/$f.png" box 37373e 2); win=$("$px" "$T/plans/$f.png" box 96d7fa 2)
+    part=$("$px" "$T/plans/$f.png" box 7a4a1e 2)
+    set -- $wall; wx0=${1:-0}; wy0=${2:-0}; wx1=${3:-0}; wy1=${4:-0}; wn=${5:-0}
+    set -- $win; nx0=${1:-0}; ny1=${4:-0}; nn=${5:-0}
+    set -- $part; pn=${5:-0}
+    if [ "$wn" -gt 1000 ] && [ $((wx1 - wx0)) -gt 400 ] && [ $((wy1 - wy0)) -gt 200 ]; then ok "$f: the walls drawn around the room"
+    else notok "$f: walls" "wall colour box '$wall'"; fi
+    # the window: in the south wall (the bottom edge of the room, y = 0), from x = 1 m to 3 m
+    if [ "$nn" -gt 100 ] && [ $((wy1 - ny1)) -le 4 ] && [ "$nx0" -gt "$wx0" ]; then ok "$f: the window on the south wall"
+    else notok "$f: window" "window box '$win', walls '$wall'"; fi
+    if [ "$pn" -gt 50 ]; then ok "$f: the partition drawn"; else notok "$f: partition" "'$part'"; fi
+  done
+else
+  skip "plan pixels" "no $px or no plots"
+fi
+run scene samples/scenes/office.scene --png "$T/plans2"
+if [ -f "$T/plans2/office_desk.png" ] && [ ! -e "$T/plans2/office_desk_df.png" ]; then ok "no daylight-factor plot without daylight"
+else notok "no df plot without daylight" "$(ls "$T/plans2")"; fi
