@@ -20,19 +20,6 @@ static const lx_scene_area *area_of(const lx_scene *sc, size_t rec)
     return NULL;
 }
 
-/* the plane of a grid receiver (its first free axis as A, the second as B), as `luxcalc scene --png` */
-static void rec_plane(const lx_scene_receiver *rc, lx_plane *p)
-{
-    memset(p, 0, sizeof *p);
-    int k = rc->axis - 'x', ia = k == 0 ? 1 : 0, ib = k == 2 ? 1 : 2;
-    p->u[ia] = 1, p->v[ib] = 1;
-    p->origin_m[k] = rc->points[k];
-    const double *first = rc->points, *last_a = rc->points + 3 * (rc->na - 1), *last_b = rc->points + 3 * (rc->nb - 1) * rc->na;
-    p->a0 = first[ia], p->a1 = last_a[ia], p->b0 = first[ib], p->b1 = last_b[ib];
-    p->na = rc->na, p->nb = rc->nb;
-    memcpy(p->normal, rc->normal, sizeof p->normal);
-}
-
 static void stats_row(lx__rep *r, lx__strtab *t, size_t rec, const lx_scene_result *res)
 {
     const lx_scene *sc = r->sc;
@@ -54,18 +41,24 @@ static void stats_row(lx__rep *r, lx__strtab *t, size_t rec, const lx_scene_resu
     lx__strtab_row(t, row);
 }
 
-/* each grid's isolux plot, as vectors, with its statistics under it */
+/* each grid's isolux plot, as vectors, with its statistics under it and the scene's outlines on it (the
+ * plan drawer of `scene --png`: lx_scene_receiver_plane, lx_scene_outlines) */
 static lx_status isolux(lx__rep *r, size_t rec, const lx_plot_mark *mk)
 {
     const lx_scene *sc = r->sc;
     const lx_scene_receiver *rc = &sc->rec[rec];
     lx_plane p;
-    rec_plane(rc, &p);
+    lx_status st = lx_scene_receiver_plane(r->ctx, sc, rec, &p);
+    if (st != LX_OK) return st;
+    lx_plot_outline *ol = NULL;
+    size_t n_ol = 0;
+    if ((st = lx_scene_outlines(r->ctx, sc, &p, &ol, &n_ol)) != LX_OK) return st;
     lx_isolux_opts o;
     memset(&o, 0, sizeof o);
     int vertical = fabs(rc->normal[2]) < 0.5; /* a wall: the luminaires would all sit on its top edge */
     o.marks = vertical ? NULL : mk, o.n_marks = mk && !vertical ? sc->n_lum : 0, o.source = sc->file, o.surface = rc->name, o.caption = sc->title;
     o.imperial = r->imperial;
+    o.outlines = ol, o.n_outlines = n_ol;
     const lx_scene_area *A = area_of(sc, rec);
     if (A) { /* the field covers the area's cells, not only the points */
         int k = rc->axis - 'x', ia = k == 0 ? 1 : 0, ib = k == 2 ? 1 : 2;
@@ -73,7 +66,8 @@ static lx_status isolux(lx__rep *r, size_t rec, const lx_plot_mark *mk)
         o.area_m[2] = A->origin_m[ib] + A->box_m[2], o.area_m[3] = A->origin_m[ib] + A->box_m[3];
     }
     lx__page pic;
-    lx_status st = lx__isolux_page(r->ctx, &p, r->res->E_lx + r->res->first[rec], &o, 1, &pic);
+    st = lx__isolux_page(r->ctx, &p, r->res->E_lx + r->res->first[rec], &o, 1, &pic);
+    lx_scene_outlines_free(ol);
     if (st != LX_OK) return st;
     lx__doc_drawing(&r->doc, &pic, LX__DOC_RIGHT - LX__DOC_LEFT, 330);
     lx__page_free(&pic);
