@@ -439,8 +439,8 @@ lx_status lx_scene_report_write_pdf(lx_ctx *ctx, const lx_scene *sc, const lx_pd
     else if (st == LX_OK) {
         title_page(&r);
         schedule(&r);
-        lx__rep_plans(&r);
-        st = lx__rep_surfaces(&r);
+        st = lx__rep_plans(&r);
+        if (st == LX_OK) st = lx__rep_surfaces(&r);
         if (st == LX_OK) checks(&r);
         if (st == LX_OK) st = lx__rep_glare(&r);
         if (st == LX_OK) lx__rep_emergency(&r);

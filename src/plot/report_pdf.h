@@ -38,7 +38,7 @@ void lx__strtab_show(lx__doc *d, lx__strtab *t, const char *const *head, const d
 void lx__rep_num(char *buf, size_t cap, double v, int sig, const char *unit);
 
 /* The plan of each room (report_pdf_plan.c). */
-void lx__rep_plans(lx__rep *r);
+lx_status lx__rep_plans(lx__rep *r);
 /* The EN 12464-1 areas and each grid's isolux plot (report_pdf_tables.c). */
 lx_status lx__rep_surfaces(lx__rep *r);
 /* UGR at the observers and the CIE 190 tables of the luminaires (report_pdf_tables.c). */

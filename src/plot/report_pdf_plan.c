@@ -89,57 +89,30 @@ static void areas(lx__page *pg, const lx_scene *sc, long room, const view *v)
     }
 }
 
-/* the room's walls, its openings, the obstructions and surfaces in it */
-static void building(lx__page *pg, const lx_scene *sc, long room, const view *v)
+/* the room's walls, openings, obstructions, surfaces and luminous areas: the plan drawer's outlines
+ * of the scene on a horizontal plane through the room (plan.c: every plan is drawn there) */
+static lx_status building(lx_ctx *ctx, lx__page *pg, const lx_scene *sc, long room, const view *v, lx__box box)
 {
-    cairo_t *cr = pg->cr;
     const lx_scene_room *R = &sc->room[room];
-    for (size_t i = 0; i < sc->n_obst; i++) {
-        const lx_scene_obstruction *o = &sc->obst[i];
-        double c[3] = {0.5 * (o->min_m[0] + o->max_m[0]), 0.5 * (o->min_m[1] + o->max_m[1]), 0.5 * (o->min_m[2] + o->max_m[2])};
-        int in = 1;
-        for (int k = 0; k < 3; k++) in &= c[k] >= R->min_m[k] && c[k] <= R->max_m[k];
-        if (!in) continue;
-        cairo_rectangle(cr, PX(v, o->min_m[0]), PY(v, o->max_m[1]), (o->max_m[0] - o->min_m[0]) * v->s,
-                        (o->max_m[1] - o->min_m[1]) * v->s);
-        rgb(cr, 215, 215, 215);
-        cairo_fill_preserve(cr);
-        rgb(cr, 120, 120, 120);
-        cairo_set_line_width(cr, 0.6);
-        cairo_stroke(cr);
-        lx__page_keep(pg, (lx__box){PX(v, o->min_m[0]), PY(v, o->max_m[1]), PX(v, o->max_m[0]), PY(v, o->min_m[1])});
+    lx_plane p;
+    memset(&p, 0, sizeof p);
+    p.origin_m[2] = 0.5 * (R->min_m[2] + R->max_m[2]);
+    p.u[0] = 1, p.v[1] = 1, p.normal[2] = 1;
+    p.a0 = R->min_m[0], p.a1 = R->max_m[0], p.b0 = R->min_m[1], p.b1 = R->max_m[1], p.na = p.nb = 2;
+    lx_plot_outline *o = NULL;
+    size_t n = 0;
+    lx_status st = lx_scene_outlines(ctx, sc, &p, &o, &n);
+    if (st != LX_OK) return st;
+    lx__plan_view pv = {box, 0, 0, 0, 0, 0.7};
+    pv.a0 = v->x0 + (box.x0 - v->px0) / v->s, pv.a1 = v->x0 + (box.x1 - v->px0) / v->s;
+    pv.b0 = v->y0 + (v->py0 - box.y1) / v->s, pv.b1 = v->y0 + (v->py0 - box.y0) / v->s;
+    lx__plan_draw(pg->cr, &pv, o, n, NULL);
+    lx_scene_outlines_free(o);
+    for (size_t i = 0; i < sc->n_obst; i++) { /* labels must not cover an obstruction */
+        const lx_scene_obstruction *b = &sc->obst[i];
+        lx__page_keep(pg, (lx__box){PX(v, b->min_m[0]), PY(v, b->max_m[1]), PX(v, b->max_m[0]), PY(v, b->min_m[1])});
     }
-    for (size_t i = 0; i < sc->n_surf; i++) {
-        const lx_scene_surface *s = &sc->surf[i];
-        double q[4][3];
-        for (int k = 0; k < 3; k++) {
-            q[0][k] = s->corner_m[k];
-            q[1][k] = s->corner_m[k] + s->edge1_m[k];
-            q[2][k] = q[1][k] + s->edge2_m[k];
-            q[3][k] = s->corner_m[k] + s->edge2_m[k];
-        }
-        if (!(q[0][0] >= R->min_m[0] && q[0][0] <= R->max_m[0] && q[0][1] >= R->min_m[1] && q[0][1] <= R->max_m[1])) continue;
-        for (int k = 0; k < 4; k++) (k ? cairo_line_to : cairo_move_to)(cr, PX(v, q[k][0]), PY(v, q[k][1]));
-        cairo_close_path(cr);
-        rgb(cr, 90, 90, 90);
-        cairo_set_line_width(cr, 1.6);
-        cairo_stroke(cr);
-    }
-    /* the walls */
-    cairo_rectangle(cr, PX(v, R->min_m[0]), PY(v, R->max_m[1]), (R->max_m[0] - R->min_m[0]) * v->s, (R->max_m[1] - R->min_m[1]) * v->s);
-    rgb(cr, 25, 25, 25);
-    cairo_set_line_width(cr, 2.2);
-    cairo_stroke(cr);
-    for (size_t i = 0; i < sc->n_open; i++) { /* openings in walls: their span in the plan */
-        const lx_scene_opening *o = &sc->open[i];
-        if ((long)o->room != room || o->face == LX_ROOM_CEILING) continue;
-        double a[2] = {o->corner_m[0], o->corner_m[1]}, b[2] = {a[0] + o->edge1_m[0] + o->edge2_m[0], a[1] + o->edge1_m[1] + o->edge2_m[1]};
-        cairo_move_to(cr, PX(v, a[0]), PY(v, a[1]));
-        cairo_line_to(cr, PX(v, b[0]), PY(v, b[1]));
-        rgb(cr, 60, 150, 230);
-        cairo_set_line_width(cr, 3.5);
-        cairo_stroke(cr);
-    }
+    return LX_OK;
 }
 
 /* luminaires and observers, and their names */
@@ -219,13 +192,14 @@ static void axes(lx__page *pg, const lx_scene_room *R, const view *v)
 
 static void legend(lx__doc *d)
 {
-    lx__doc_note(d, "Plan: walls black, openings blue, obstructions grey, surfaces dark grey; task areas green (the immediate "
+    lx__doc_note(d, "Plan: walls, openings (light blue), obstructions, surfaces and luminous areas as the plots draw them; "
+                    "task areas green (the immediate "
                     "surrounding dashed, the background dotted), room planes blue dashed, escape routes red (the central band "
                     "dotted), open areas orange; luminaires as crossed circles (emergency luminaires green), observers as blue "
                     "dots with their line of sight.");
 }
 
-void lx__rep_plans(lx__rep *r)
+lx_status lx__rep_plans(lx__rep *r)
 {
     lx__doc *d = &r->doc;
     const lx_scene *sc = r->sc;
@@ -233,7 +207,7 @@ void lx__rep_plans(lx__rep *r)
     lx__doc_heading(d, 1, "2 Rooms");
     if (!sc->n_room) {
         lx__doc_para(d, "The scene has no rooms: its luminaires and receivers are in the open.");
-        return;
+        return LX_OK;
     }
     for (size_t i = 0; i < sc->n_room; i++) {
         const lx_scene_room *R = &sc->room[i];
@@ -259,11 +233,14 @@ void lx__rep_plans(lx__rep *r)
         v.px0 = LX__DOC_LEFT + 30 + 0.5 * (avail_w - w * v.s);
         v.py0 = d->y + 12 + h * v.s;
         lx__box within = {LX__DOC_LEFT, d->y, LX__DOC_RIGHT, v.py0 + 30};
-        building(&d->pg, sc, (long)i, &v);
+        lx__box frame = {PX(&v, R->min_m[0]) - 8, PY(&v, R->max_m[1]) - 8, PX(&v, R->max_m[0]) + 8, PY(&v, R->min_m[1]) + 8};
+        lx_status st = building(r->ctx, &d->pg, sc, (long)i, &v, frame);
+        if (st != LX_OK) return st;
         areas(&d->pg, sc, (long)i, &v);
         people_and_lights(&d->pg, sc, (long)i, &v, within);
         axes(&d->pg, R, &v);
         d->y = v.py0 + 34;
         legend(d);
     }
+    return LX_OK;
 }
