@@ -47,7 +47,7 @@
  *   lx_receiver_png_opts) are only read: zero-initialise them (zero is every field's default) and leave
  *   `reserved` zero, which the library checks (LX_EINVAL otherwise); a later option takes reserved
  *   space, its zero meaning the earlier behaviour.
- *   Results (lx_colorimetry, lx_cri, lx_tm30, lx_alphaopic, lx_source_result, lx_lum_summary,
+ *   Results (lx_colorimetry, lx_cri, lx_tm30, lx_alphaopic, lx_dominant, lx_spd_shape, lx_source_result, lx_lum_summary,
  *   lx_grid_stats, lx_cl_device_info, lx_counters, lx_sky, lx_sun_position, lx_ugr_table) are
  *   written whole by the library, `reserved` set to zero; a later result takes reserved space.
  *   Views and values (lx_spd, lx_batch, lx_placement, lx_plane, lx_plot_point, lx_plot_outline,
@@ -563,6 +563,48 @@ LX_API lx_status lx_colorimetry_from_integrals(lx_ctx *ctx, lx_observer observer
  * names the quantity. cct_K and duv are not checked (NaN there means no CCT, cct_valid = 0). */
 LX_API lx_status lx_colorimetry_check(lx_ctx *ctx, const lx_colorimetry *r, double max_abs);
 
+/** Dominant wavelength and purity (CIE 015:2018 section 9.1) of a chromaticity x, y against the
+ * white xw, yw (the achromatic stimulus: for light sources usually illuminant E, 1/3, 1/3; for
+ * surface colours the illuminant). Results only: the library writes it whole (ABI policy). */
+typedef struct lx_dominant {
+    double wavelength_nm;       /* the dominant wavelength: where the ray from the white through the colour
+                                 * meets the spectral locus (linear between its 1 nm points; the shortest
+                                 * wavelength where the locus folds back beyond 700 nm); for a purple (the
+                                 * ray meets the purple line) the complementary wavelength, negative
+                                 * ("-509": lambda_c = 509 nm), as colour-science writes it; NaN at the white */
+    int purple;                 /* 1: complementary wavelength */
+    int outside;                /* 1: the colour lies beyond the locus (excitation purity > 1) */
+    double locus_x, locus_y;    /* where the ray meets the locus or the purple line */
+    double excitation_purity;   /* pe = (y - yw) / (yd - yw) (or with x, whichever difference is larger):
+                                 * 0 at the white, 1 on the locus */
+    double colorimetric_purity; /* pc = pe yd / y (eq. 9.2; yd the point on the purple line for purples) */
+    long long reserved[4];      /* zero: room for later results (ABI policy) */
+} lx_dominant;
+
+/** Dominant (or complementary) wavelength and excitation and colorimetric purity of (x, y) against
+ * (xw, yw) on the spectral locus of observer obs (360-830 nm at 1 nm) closed by the purple line.
+ * Errors: LX_EINVAL (a bad observer, a value not finite, a white point outside the locus). Pure
+ * apart from the context's error; thread-safe. */
+LX_API lx_status lx_dominant_wavelength(lx_ctx *ctx, lx_observer obs, double x, double y, double xw, double yw,
+                                        lx_dominant *out);
+
+/** The shape of a spectrum (the piecewise-linear function through its samples). A result. */
+typedef struct lx_spd_shape {
+    double peak_nm;             /* the wavelength of the largest value (the first of equal ones) */
+    double peak_value;          /* that value, in the spectrum's unit */
+    double half_lo_nm, half_hi_nm; /* the nearest crossings of half the peak value below and above it */
+    double fwhm_nm;             /* full width at half maximum: half_hi_nm - half_lo_nm; NaN when the spectrum
+                                 * does not fall to half the peak on one side within its data */
+    double noise;               /* the median |second difference| of the values over their range: 0 for a
+                                 * constant, about 0.25 for white noise (a dark frame, a detector's raw
+                                 * counts), under 0.02 for a lamp measured at 1-5 nm steps */
+    long long reserved[4];      /* zero: room for later results (ABI policy) */
+} lx_spd_shape;
+
+/** Peak wavelength, FWHM and the noise measure of spd. Errors: those of lx_spd_check; LX_ERANGE
+ * when no value is positive (no peak); LX_ENOMEM. */
+LX_API lx_status lx_spd_shape_compute(lx_ctx *ctx, const lx_spd *spd, lx_spd_shape *out);
+
 /* ============================================================================================ */
 /* 5. Correlated colour temperature; LED binning (src/spectral) */
 /* ============================================================================================ */
@@ -934,10 +976,12 @@ typedef struct lx_cri {
     int ref_daylight;   /* 0: Planckian reference (CCT < 5000 K), 1: CIE daylight (>= 5000 K) */
     double dc;          /* distance test - reference white in CIE 1960 uv (CIE 13.3 "DC") */
     int valid;          /* 1 when dc <= 5.4e-3; else the CIE says Ra is not meaningful */
-    long long reserved[4]; /* zero: room for later results (ABI policy) */
+    double r15;         /* R15 of JIS Z 8726:1990 (test colour sample No. 15, Japanese complexion),
+                         * computed as R9-R14 are (taken from the reserved space) */
+    long long reserved[3]; /* zero: room for later results (ABI policy) */
 } lx_cri;
 
-/** CIE 13.3-1995 colour rendering index: R1-R14 and Ra with the CIE reference illuminant
+/** CIE 13.3-1995 colour rendering index: R1-R14 and Ra (and R15 of JIS Z 8726) with the CIE reference illuminant
  * (Planckian below 5000 K, CIE D-series from 5000 K), von Kries adaptation in CIE 1960 UCS and
  * CIE 1964 U*V*W*. Sums at 5 nm over 360-830 nm for data sampled every 5 nm on multiples of
  * 5 nm, else at 1 nm (spectrum and test colour samples interpolated linearly; spectrum zero

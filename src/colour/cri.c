@@ -1,4 +1,4 @@
-/* cri.c - CIE 13.3-1995 colour rendering index (R1-R14, Ra) with its reference illuminant and
+/* cri.c - CIE 13.3-1995 colour rendering index (R1-R14, Ra; R15 of JIS Z 8726) with its reference illuminant and
  * von Kries adaptation, plus the quadrature shared with tm30.c (lx__qgrid, lx__quality_*): the
  * CIE sums for uniformly sampled data, exact integration of line spectra. */
 #include "colour/colour_private.h"
@@ -10,7 +10,7 @@
 
 #define CRI_START 360.0
 #define CRI_END 830.0
-#define NTCS 14
+#define NTCS 15         /* CIE 13.3 TCS01-TCS14, then JIS Z 8726 No. 15 (R15, computed as R9-R14 are) */
 #define DC_LIMIT 5.4e-3       /* CIE 13.3: Ra is not meaningful beyond this uv distance */
 #define DUV_LIMIT 0.05        /* beyond it CCT has no meaning (as lx_spd_colorimetry) */
 #define OUTSIDE_LIMIT 0.01    /* refuse when 1 % of the reference's X, Y or Z is outside the data */
@@ -167,7 +167,7 @@ static void stimulus(const double *cmf, const lx__qgrid *g, const double *illum,
 static double cterm(double u, double v) { return (4 - u - 10 * v) / v; }
 static double dterm(double u, double v) { return (1.708 * v + 0.404 - 1.481 * u) / v; }
 
-/* U*, V*, W* of the 14 samples under illum (adapted to the reference white ur, vr when the
+/* U*, V*, W* of the 15 samples under illum (adapted to the reference white ur, vr when the
  * illuminant's white ut, vt differs). */
 static void uvw_samples(const double *cmf, const lx__qgrid *g, const double *illum, const double *tcs, double ut,
                         double vt, double ur, double vr, int adapt, double uvw[NTCS][3])
@@ -217,8 +217,8 @@ lx_status lx_cri_compute(lx_ctx *ctx, const lx_spd *spd, lx_cri *out)
     if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "CRI: output is NULL");
     lx_status st = lx_spd_check(ctx, spd);
     if (st != LX_OK) return st;
-    const lx__table *tt = lx__table_find("cie13_3_tcs");
-    if (!tt) return lx__error(ctx, LX_EINVAL, NULL, 0, "CRI: embedded table cie13_3_tcs missing");
+    const lx__table *tt = lx__table_find("cie13_3_tcs"), *t15 = lx__table_find("jis_z8726_tcs15");
+    if (!tt || !t15) return lx__error(ctx, LX_EINVAL, NULL, 0, "CRI: embedded table cie13_3_tcs or jis_z8726_tcs15 missing");
     lx__qgrid g;
     if ((st = lx__qgrid_make(ctx, spd, CRI_START, CRI_END, &g)) != LX_OK) return st;
     size_t n = g.n;
@@ -232,7 +232,8 @@ lx_status lx_cri_compute(lx_ctx *ctx, const lx_spd *spd, lx_cri *out)
     for (int s = 0; s < NTCS; s++) {
         char name[8];
         snprintf(name, sizeof name, "TCS%02d", s + 1);
-        lx__quality_table(tt, lx__table_col(tt, name), &g, tcs + (size_t)s * n);
+        const lx__table *t = s < 14 ? tt : t15;
+        lx__quality_table(t, lx__table_col(t, name), &g, tcs + (size_t)s * n);
     }
     lx__quality_sample(spd, &g, test);
     lx_cri r;
@@ -268,7 +269,8 @@ lx_status lx_cri_compute(lx_ctx *ctx, const lx_spd *spd, lx_cri *out)
         double dE = sqrt((uvw_t[s][0] - uvw_r[s][0]) * (uvw_t[s][0] - uvw_r[s][0]) +
                          (uvw_t[s][1] - uvw_r[s][1]) * (uvw_t[s][1] - uvw_r[s][1]) +
                          (uvw_t[s][2] - uvw_r[s][2]) * (uvw_t[s][2] - uvw_r[s][2]));
-        r.r[s] = 100.0 - 4.6 * dE;
+        if (s < 14) r.r[s] = 100.0 - 4.6 * dE;
+        else r.r15 = 100.0 - 4.6 * dE;
         if (s < 8) sum += r.r[s];
     }
     r.ra = sum / 8.0;
