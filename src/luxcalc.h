@@ -43,21 +43,23 @@
  *   exported is removed, renamed, or given another signature or meaning;
  * - structs the caller allocates are of three kinds.
  *   Options (lx_batch_opts, lx_grid_opts, lx_irr_opts, lx_exr_write_opts, lx_scene_eval_opts,
- *   lx_lum_model, lx_sky_map_opts, lx_perez_input, lx_sun_input, lx_isolux_opts,
+ *   lx_lum_model, lx_sky_map_opts, lx_perez_input, lx_sun_input, lx_leni_input, lx_isolux_opts,
  *   lx_receiver_png_opts) are only read: zero-initialise them (zero is every field's default) and leave
  *   `reserved` zero, which the library checks (LX_EINVAL otherwise); a later option takes reserved
  *   space, its zero meaning the earlier behaviour.
- *   Results (lx_colorimetry, lx_cri, lx_tm30, lx_alphaopic, lx_dominant, lx_spd_shape, lx_source_result, lx_lum_summary,
- *   lx_grid_stats, lx_cl_device_info, lx_counters, lx_sky, lx_sun_position, lx_ugr_table) are
+ *   Results (lx_colorimetry, lx_cri, lx_tm30, lx_alphaopic, lx_dominant, lx_spd_shape, lx_source_result,
+ *   lx_lum_summary, lx_grid_stats, lx_cl_device_info, lx_counters, lx_sky, lx_sun_position, lx_ugr_table,
+ *   lx_en12464_grid, lx_area_stats, lx_leni) are
  *   written whole by the library, `reserved` set to zero; a later result takes reserved space.
  *   Views and values (lx_spd, lx_batch, lx_placement, lx_plane, lx_plot_point, lx_plot_outline,
  *   lx_plot_mark, lx_unit, lx_sh9)
  *   never change within a soname: a new need gets a new type.
  * - structs only the library allocates (lx_spd_set, lx_batch_table, lx_luminaire, lx_envmap,
- *   lx_xyz_image, lx_scene, lx_scene_plan, lx_scene_result, lx_scene_glare) grow by fields appended
- *   at their end: read their fields, but never allocate, copy or take the size of one. The structs
- *   of their arrays (lx_scene_luminaire, lx_scene_receiver, lx_scene_observer, lx_glare_term) carry
- *   reserved space, as results do.
+ *   lx_xyz_image, lx_scene, lx_scene_plan, lx_scene_result, lx_scene_glare, lx_scene_design,
+ *   lx_scene_checks) grow by fields appended at their end: read their fields, but never allocate,
+ *   copy or take the size of one. The structs of their arrays (lx_scene_luminaire, lx_scene_receiver,
+ *   lx_scene_observer, lx_glare_term, lx_maintenance, lx_scene_area, lx_check) carry reserved space,
+ *   as results do.
  * - LX_EFFECT_COUNT sizes arrays inside lx_scene and lx_scene_plan: a new effect changes their
  *   layout and so needs a new soname; LX_FN_COUNT and LX_Q_COUNT size nothing public and may grow.
  * An incompatible change needs a new MAJOR version, whose soname follows it (1.0: libluxcalc.so.1).
@@ -932,19 +934,39 @@ typedef enum lx_risk_group {
     LX_RISK_3 = 3       /* high risk */
 } lx_risk_group;
 
+/** The IEC 62471:2006 Table 6.1 limit a criterion was judged by (lx_hazard_risk.limit). */
+typedef enum lx_hazard_limit {
+    LX_HZ_LIMIT_NONE = 0, /* not judged */
+    LX_HZ_LIMIT_L_B,      /* blue-light radiance L_B (sources of 0.011 rad and more) */
+    LX_HZ_LIMIT_E_B,      /* blue-light irradiance E_B of a small source (below 0.011 rad) */
+    LX_HZ_LIMIT_L_R,      /* retinal thermal radiance L_R, limits C / alpha */
+    LX_HZ_LIMIT_E_S,      /* actinic UV irradiance E_S */
+    LX_HZ_LIMIT_E_UVA     /* near-UV irradiance E_UVA */
+} lx_hazard_limit;
+
 /** The risk group of each criterion and the worst of them (group: LX_RISK_NONE when none could be
- * evaluated; a criterion that is not covered could raise it). A result struct (ABI policy). */
+ * evaluated; a criterion that is not covered could raise it), the limit each criterion was judged
+ * by, and the source's solid angle used to turn irradiance into radiance or back (0: none). A
+ * result struct (ABI policy). */
 typedef struct lx_hazard_risk {
     lx_risk_group group;
     lx_risk_group criterion[LX_HZ_COUNT];
-    long long reserved[4]; /* zero: room for later results */
+    lx_hazard_limit limit[LX_HZ_COUNT]; /* LX_HZ_LIMIT_NONE where criterion is LX_RISK_NONE */
+    double source_sr;      /* 2 pi (1 - cos(alpha / 2)): the solid angle of a circular source of full
+                            * angle alpha, when a limit needed the other quantity; else 0 */
+    long long reserved[1]; /* zero: room for later results */
 } lx_hazard_risk;
 
 /** Risk groups from the emission limits of IEC 62471:2006 Table 6.1 (continuous-wave lamps;
- * src/data/iec62471_limits.csv) into *out. radiance 1: h holds radiances (W/sr/m2/nm input): L_B,
- * and L_R when alpha_rad > 0 (the source's angular subtense, clamped to 0.0017-0.1 rad).
- * radiance 0: irradiances (W/m2/nm): E_S, E_UVA and the small-source blue-light E_B (for sources
- * subtending less than 0.011 rad). Errors: LX_EINVAL (NULL h or out). */
+ * src/data/iec62471_limits.csv) into *out. alpha_rad: the source's angular subtense (full angle,
+ * rad), 0 when not known. radiance 1: h holds radiances (W/sr/m2/nm input); blue light by L_B, or,
+ * for a small source (0 < alpha < 0.011 rad), by E_B = L_B Omega; retinal thermal L_R when alpha > 0
+ * (limits C / alpha, alpha clamped to 0.0017-0.1 rad). radiance 0: irradiances (W/m2/nm): E_S,
+ * E_UVA; blue light by E_B (a small source, assumed when alpha is 0), or, for alpha >= 0.011 rad,
+ * by L_B = E_B / Omega; L_R = E_R / Omega when alpha > 0. Omega = 2 pi (1 - cos(alpha / 2)): the
+ * source's own radiance, not averaged over the standard's measurement field of view (conservative
+ * where the field is larger than the source). Errors: LX_EINVAL (NULL h or out, alpha negative or
+ * not finite). */
 LX_API lx_status lx_hazard_risk_group(lx_ctx *ctx, const lx_hazard *h, int radiance, double alpha_rad,
                                       lx_hazard_risk *out);
 
@@ -1017,7 +1039,7 @@ LX_API lx_status lx_tm30_compute(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out);
 /* ============================================================================================ */
 
 /* Units and quantities (units.c). Values are converted to and from the SI unit of their
- * quantity (lm, W, cd, W/sr, lx, W/m2, cd/m2, W/sr/m2, sr, m, rad, K, lm/W). */
+ * quantity (lm, W, cd, W/sr, lx, W/m2, cd/m2, W/sr/m2, sr, m, rad, K, lm/W, s, m2). */
 
 /** Physical quantities the unit parser knows. */
 typedef enum lx_quantity {
@@ -1035,6 +1057,8 @@ typedef enum lx_quantity {
     LX_Q_ANGLE,              /* rad */
     LX_Q_TEMPERATURE,        /* K */
     LX_Q_EFFICACY,           /* lm/W */
+    LX_Q_TIME,               /* s (also h, and a = 365 d = 8760 h, the year of EN 15193-1) */
+    LX_Q_AREA,               /* m2 */
     LX_Q_COUNT
 } lx_quantity;
 
@@ -2030,7 +2054,12 @@ typedef struct lx_scene_luminaire {
 } lx_scene_luminaire;
 
 /** Receiver kinds. */
-typedef enum lx_scene_rec_kind { LX_SREC_POINT = 0, LX_SREC_GRID = 1 } lx_scene_rec_kind;
+typedef enum lx_scene_rec_kind {
+    LX_SREC_POINT = 0,
+    LX_SREC_GRID = 1,
+    LX_SREC_SET = 2   /* points of an area that is not a whole grid (an EN 12464-1 band): the cell centres of
+                       * na x nb cells that lie inside it (lx_scene_design.area) */
+} lx_scene_rec_kind;
 
 /** One receiver: a point, or a grid of na x nb points on a plane x, y or z = level. An element of
  * lx_scene.rec (ABI policy: reserved space, as results). */
@@ -2195,6 +2224,9 @@ typedef struct lx_scene {
     /* openings in the faces of rooms (README "Daylight") */
     size_t n_open;
     lx_scene_opening *open;
+    /* the deliverable: maintenance factors, EN 12464-1 areas and requirements, emergency lighting,
+     * energy (README "The deliverable"; never NULL in a scene the library read) */
+    struct lx_scene_design *design;
 } lx_scene;
 
 /** Reads a scene file ('-' is standard input); includes are resolved relative to the including
@@ -2298,6 +2330,12 @@ typedef struct lx_scene_plan {
     lx_scene_room_plan room;
     /* daylight through openings (README "Daylight") */
     lx_scene_daylight_plan daylight;
+    /* the deliverable (README "The deliverable") */
+    int mode;                         /* lx_scene_mode the plan was made for */
+    double *lum_scale;                /* n_lum: the factor every luminaire's light is multiplied by in this mode:
+                                       * its maintenance factor; in emergency operation MF x emergency flux / flux
+                                       * (0 for a luminaire dark in the mode); owned */
+    void *internal;                   /* the planner's own state (owned) */
 } lx_scene_plan;
 
 /** Plans a scene: which effects, and which pairs take the near-field path. backend: AUTO lets
@@ -2308,6 +2346,21 @@ typedef struct lx_scene_plan {
  * on failure) and frees it with lx_scene_plan_free, which accepts NULL. The plan refers to the
  * scene: use it only with that scene, and free it before the scene. */
 LX_API lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *scene, lx_backend backend, lx_scene_plan **out);
+
+/** The operation a scene is planned for. */
+typedef enum lx_scene_mode {
+    LX_SCENE_NORMAL = 0,    /* every luminaire but the non-maintained emergency ones, at its maintenance factor */
+    LX_SCENE_EMERGENCY = 1  /* EN 1838: the emergency luminaires alone at their emergency flux (times their
+                             * maintenance factor), direct light only: interreflection, daylight and the sky
+                             * are off (the standard counts no reflected light) */
+} lx_scene_mode;
+
+/** lx_scene_plan_make for an operation (lx_scene_plan_make is LX_SCENE_NORMAL). In emergency
+ * operation the reasons of interreflection, daylight and environment say why they are off. Errors:
+ * those of lx_scene_plan_make; LX_EINVAL (an unknown mode); LX_EPARSE (emergency operation of a
+ * scene without an emergency luminaire, naming the scene file). */
+LX_API lx_status lx_scene_plan_make_mode(lx_ctx *ctx, const lx_scene *scene, lx_backend backend, lx_scene_mode mode,
+                                         lx_scene_plan **out);
 LX_API void lx_scene_plan_free(lx_scene_plan *plan);
 
 /** One face's results (`luxcalc scene --surfaces`): area-weighted averages over its exposed area
@@ -2384,6 +2437,13 @@ typedef struct lx_scene_result {
                                  * the plane facing the line of sight (NULL without interreflection or
                                  * observers) */
     lx_scene_daylight_stats daylight;
+    /* the deliverable: the luminaires' light on small vertical cylinders (direct and interreflected;
+     * daylight not included), NULL when no receiver asks; NaN at the points of receivers that do not */
+    double *cylindrical_lx;     /* n_points: E_z */
+    double *semicylindrical_lx; /* n_points: E_sz towards the receiver's facing direction */
+    double *modelling;          /* n_points: E_z / E_h with E_h the luminaires' horizontal illuminance (receivers
+                                 * facing up; NaN elsewhere) */
+    double cylinder_tol;        /* the relative tolerance the interreflected part of E_z and E_sz met */
 } lx_scene_result;
 
 /** Options of lx_scene_eval (zero-initialise for defaults: everything; ABI policy: reserved stays
@@ -2435,6 +2495,223 @@ typedef struct lx_scene_glare {
  * forced off); the scene's evaluation errors. Free with lx_scene_glare_free. */
 LX_API lx_status lx_scene_glare_eval(lx_ctx *ctx, const lx_scene *scene, lx_scene_glare **out);
 LX_API void lx_scene_glare_free(lx_scene_glare *glare);
+
+/* ---- The deliverable (README "The deliverable"): maintained values, EN 12464-1 areas and
+ * requirements, emergency lighting (EN 1838), energy (EN 15193-1) (src/scene/design_*.c) ---- */
+
+/** A maintenance scheme ([maintenance NAME]): CIE 97:2005 MF = LLMF x LSF x LMF x RSMF. Each factor is
+ * typed as a value, or as a table against time that the user reads off the publication or the
+ * lamp maker's data (luxcalc ships no copy of those tables), interpolated linearly at the scheme's
+ * burning hours (LLMF, LSF) or cleaning intervals (LMF, RSMF). An element of lx_scene_design.maint
+ * (ABI policy: reserved space, as results). */
+typedef struct lx_maintenance {
+    char *name;
+    const char *file;           /* the scene file and line of its section header */
+    long line;
+    double llmf, lsf, lmf, rsmf;/* lamp lumen maintenance, lamp survival, luminaire maintenance and room
+                                 * surface maintenance factors (1 where not given) */
+    double mf;                  /* their product: the maintenance factor */
+    double burning_h;           /* lamp burning hours the lamp factors are read at (NaN: not given) */
+    double cleaning_a;          /* luminaire cleaning interval, years (NaN: not given) */
+    double room_cleaning_a;     /* room surface cleaning interval, years (NaN: not given) */
+    char *lamp_type, *luminaire_type, *environment; /* free text for the report ("" when not given) */
+    long long reserved[4];      /* zero: room for later fields */
+} lx_maintenance;
+
+/** Kinds of an area ([area NAME] type; the bands are generated from a task area). */
+typedef enum lx_area_kind {
+    LX_AREA_TASK = 0,        /* EN 12464-1 task area: a rectangle on a horizontal plane */
+    LX_AREA_SURROUNDING,     /* its immediate surrounding: a band around it (0.5 m), clipped at the room's walls */
+    LX_AREA_BACKGROUND,      /* its background: a band around the surrounding (3 m), clipped at the walls */
+    LX_AREA_ROOM,            /* a room's plane at a height, less a margin from the walls (0.5 m) */
+    LX_AREA_WALL,            /* a wall of a room (one area each), less a margin */
+    LX_AREA_CEILING,         /* a room's ceiling, less a margin */
+    LX_AREA_ESCAPE_ROUTE,    /* EN 1838: the centre line of an escape route on the floor */
+    LX_AREA_ROUTE_BAND,      /* its central band (half the route's width) */
+    LX_AREA_OPEN,            /* EN 1838 open (anti-panic) area on the floor, less a 0.5 m border */
+    LX_AREA_HIGH_RISK,       /* EN 1838 high-risk task area */
+    LX_AREA_KIND_COUNT
+} lx_area_kind;
+
+/** Rounding of EN 12464-1's number of grid points d / p. */
+typedef enum lx_grid_rounding {
+    LX_GRID_ROUND_NEAREST = 0, /* the nearest whole number (EN 12464-1:2021) */
+    LX_GRID_ROUND_UP = 1       /* the next whole number up (EN 12464-1:2011) */
+} lx_grid_rounding;
+
+/** An EN 12464-1 calculation grid (lx_en12464_grid). */
+typedef struct lx_en12464_grid {
+    double d_m;              /* the dimension the rule was applied to */
+    double p_m;              /* the maximum cell size 0.2 x 5^log10(d), at most 10 m */
+    size_t n[2];             /* cells (points at their centres) along the first and second sides */
+    double cell_m[2];        /* the cell sizes: side / n */
+    long long reserved[4];   /* zero: room for later results */
+} lx_en12464_grid;
+
+/** The calculation grid EN 12464-1 (after EN 12193) gives an area of sides a x b (m): the maximum cell
+ * size p = 0.2 x 5^log10(d), at most 10 m, with d the longer side, or the shorter one where the longer
+ * is at least twice it; along d, n = d / p cells (rounded as `rounding` says, at least 1), of size
+ * d / n; along the other side as many cells of about that size (the same rounding), so that the cells
+ * are nearly square. Points lie at the cells' centres. Errors: LX_EINVAL (a side not positive and
+ * finite, an unknown rounding). Pure, thread-safe. */
+LX_API lx_status lx_en12464_grid_size(lx_ctx *ctx, double a_m, double b_m, lx_grid_rounding rounding, lx_en12464_grid *out);
+
+/** An area of a scene ([area NAME], and the bands of a task area): its plane, outline and grid, and
+ * the receiver that holds its points. An element of lx_scene_design.area (ABI policy: reserved space). */
+typedef struct lx_scene_area {
+    char *name;                /* the receiver's name: NAME, NAME.surrounding, NAME.background, NAME.wall_xmin ... */
+    const char *file;          /* the scene file and line of its section */
+    long line;
+    lx_area_kind kind;
+    size_t rec;                /* its receiver (index into lx_scene.rec) */
+    long task;                 /* a band: the index of its task area (-1 otherwise) */
+    long room;                 /* its room (index into lx_scene.room; -1 none) */
+    double origin_m[3], u[3], v[3]; /* its plane: origin + a u + b v (u, v unit) */
+    size_t n_outline;          /* the outline's vertices (plane coordinates a, b; counter-clockwise) */
+    double *outline;           /* n_outline x 2 (owned) */
+    size_t n_inner;            /* a band's inner edge (the area it surrounds, clipped), 0 otherwise */
+    double *inner;             /* n_inner x 2 (owned) */
+    double area_m2;            /* the outline's area less the inner edge's */
+    lx_en12464_grid grid;      /* the grid over the outline's bounding box; a band keeps the cell centres inside it */
+    double box_m[4];           /* that box: a0, a1, b0, b1 */
+    long long reserved[4];     /* zero: room for later fields */
+} lx_scene_area;
+
+/** Luminaire modes ([luminaire] emergency). */
+typedef enum lx_lum_mode {
+    LX_LUM_NORMAL = 0,       /* lights in normal operation only */
+    LX_LUM_MAINTAINED = 1,   /* normal operation and, at its emergency flux, emergency operation */
+    LX_LUM_EMERGENCY = 2     /* emergency operation only (a non-maintained emergency luminaire) */
+} lx_lum_mode;
+
+/** What a scene holds for the deliverable (a struct only the library allocates: ABI policy). */
+typedef struct lx_scene_design {
+    size_t n_maint;
+    lx_maintenance *maint;      /* [maintenance NAME] schemes */
+    double *lum_mf;             /* n_lum: each luminaire's maintenance factor (1: new values) */
+    long *lum_maint;            /* n_lum: the scheme it takes its factor from (-1: typed, or none) */
+    int maintained;             /* 1 when a maintenance factor or scheme is given (for the scene or a luminaire):
+                                 * results are maintained values; 0: new values */
+    double scene_mf;            /* [scene] maintenance_factor or its scheme's (1 when none) */
+    long scene_maint;           /* [scene] maintenance: the scheme (-1: none) */
+    double *lum_power_W;        /* n_lum: the luminaire's power ([luminaire] power; an IES file's input
+                                 * watts), NaN when unknown */
+    lx_lum_mode *lum_mode;      /* n_lum */
+    double *lum_emergency_lm;   /* n_lum: the flux in emergency operation (0 for LX_LUM_NORMAL) */
+    void *internal;             /* the reader's own state (owned) */
+    unsigned char *rec_cylinder;/* n_rec: LX_REC_CYLINDRICAL | LX_REC_SEMICYLINDRICAL ([receiver] cylindrical,
+                                 * semicylindrical) */
+    double *rec_facing;         /* n_rec x 3: the direction a semi-cylinder faces (unit, horizontal) */
+    size_t n_area;
+    lx_scene_area *area;        /* the areas: each task area is followed by its bands */
+    size_t n_req;               /* [requirement NAME] sections (checked by lx_scene_check) */
+    long *obs_group;            /* n_obs: the [observer] section each observer came from (index into
+                                 * obs_group_name); NULL when every observer is its own section */
+    char **obs_group_name;
+    size_t n_obs_group;
+    int check_glare;            /* 1 when a requirement rates UGR (lx_scene_check needs lx_scene_glare_eval's) */
+    int check_emergency;        /* 1 when a requirement rates emergency lighting (it needs the emergency results) */
+} lx_scene_design;
+
+/** Statistics of a receiver's points (an area's grid): the mean, minimum and maximum and the
+ * uniformities U0 = E_min / E_mean and E_min / E_max, of its illuminance and, where asked, of its
+ * cylindrical illuminance (NaN otherwise). */
+typedef struct lx_area_stats {
+    size_t n;                   /* points */
+    double mean_lx, min_lx, max_lx, u0, min_max;
+    double cyl_mean_lx, cyl_min_lx, cyl_u0;
+    double modelling_min, modelling_max;
+    long long reserved[4];      /* zero: room for later results */
+} lx_area_stats;
+
+/** The statistics of receiver rec's points in res. Errors: LX_EINVAL (rec outside the scene, res of
+ * another scene). */
+LX_API lx_status lx_scene_area_stats(lx_ctx *ctx, const lx_scene *scene, const lx_scene_result *res, size_t rec,
+                                     lx_area_stats *out);
+
+/** One line of the check against the requirements ([requirement NAME]). */
+typedef struct lx_check {
+    const char *requirement;    /* the requirement's name */
+    const char *reference;      /* its `reference` text ("" when none) */
+    const char *file;           /* the scene file and line of the key it checks */
+    long line;
+    const char *target;         /* what is rated: an area (receiver), an observer, a luminaire */
+    const char *quantity;       /* "E_m", "U_0", "E_min", "E_z", "U_0,z", "modelling", "UGR", "R_a", "E_max/E_min" */
+    const char *unit;           /* "lx" or "" */
+    int at_most;                /* 0: value >= required; 1: value <= required */
+    double required;
+    double value;               /* computed (maintained values where a maintenance factor is given) */
+    int pass;                   /* 1 when the value meets the requirement */
+    int emergency;              /* 1: rated in emergency operation */
+    long long reserved[4];      /* zero: room for later fields (an element of lx_scene_checks.check) */
+} lx_check;
+
+/** The checks of a scene against its requirements; made by lx_scene_check, freed with
+ * lx_scene_checks_free (a struct only the library allocates). */
+typedef struct lx_scene_checks {
+    size_t n;
+    lx_check *check;
+    int all_pass;               /* 1 when every line passes */
+    size_t n_fail;
+} lx_scene_checks;
+
+/** Checks the scene's results against its [requirement] sections: each given quantity of the
+ * requirement's area (E_m, U_0, E_min of the area and of its bands, E_z and U_0,z, the modelling range
+ * of its points, the walls' and the ceiling's E_m and U_0) from res, UGR at its observers from glare
+ * (the highest of each observer's directions), R_a of the luminaires that light the area (CIE 13.3
+ * from their spectra), and the emergency lighting's minimum and E_max / E_min from emergency.
+ * glare and emergency may be NULL when no requirement needs them (LX_EINVAL otherwise). The quantities
+ * a requirement may name were checked when the scene was read (an error there names the key's line
+ * when nothing computes one). */
+LX_API lx_status lx_scene_check(lx_ctx *ctx, const lx_scene *scene, const lx_scene_result *res,
+                                const lx_scene_result *emergency, const lx_scene_glare *glare, lx_scene_checks **out);
+LX_API void lx_scene_checks_free(lx_scene_checks *checks);
+
+/** The inputs of EN 15193-1's lighting energy numeric indicator (LENI), per year. */
+typedef struct lx_leni_input {
+    double area_m2;             /* A: the floor area the energy is spread over */
+    double power_W;             /* P_n: the installed power of the luminaires in normal operation */
+    double daylight_h;          /* t_D: operating hours with daylight */
+    double night_h;             /* t_N: operating hours without */
+    double constant_factor;     /* F_C: 1, or (1 + MF) / 2 under constant illuminance control */
+    double occupancy_factor;    /* F_O (0..1) */
+    double daylight_factor;     /* F_D (0..1): 1 - F_DS x F_DC by the simplified method */
+    double parasitic_W;         /* P_pc: controls' standby power, drawn in the hours the lighting is off */
+    double emergency_W;         /* P_em: emergency batteries' charging power */
+    double emergency_h;         /* t_em: its hours */
+    long long reserved[4];      /* zero: room for later inputs */
+} lx_leni_input;
+
+/** LENI and its parts. */
+typedef struct lx_leni {
+    double lighting_kWh;        /* W_L = P_n F_C F_O (t_D F_D + t_N) / 1000 */
+    double parasitic_kWh;       /* W_P = (P_pc (t_y - (t_D + t_N)) + P_em t_em) / 1000, t_y = 8760 h */
+    double total_kWh;           /* W = W_L + W_P */
+    double leni_kWh_m2;         /* LENI = W / A, kWh / (m2 a) */
+    double power_density_W_m2;  /* P_n / A */
+    long long reserved[4];      /* zero: room for later results */
+} lx_leni;
+
+/** EN 15193-1 LENI from its inputs (t_y = 8760 h). Errors: LX_EINVAL (an area or power that is not
+ * positive and finite, hours negative or more than a year together, factors outside 0..1, non-zero
+ * reserved). Pure, thread-safe. */
+LX_API lx_status lx_leni_compute(lx_ctx *ctx, const lx_leni_input *in, lx_leni *out);
+
+/** The scene's [energy] section as LENI inputs: P_n the sum of its luminaires' power in normal
+ * operation ([luminaire] power, or an IES file's input watts), F_C from their power-weighted
+ * maintenance factor when constant illuminance control is on, F_D = 1 - F_DS x F_DC from the typed
+ * daylight supply and control factors, A given or the rooms' floor area. Errors: LX_EPARSE naming the
+ * scene file when it has no [energy] section, or a luminaire that has no power (its section's line). */
+LX_API lx_status lx_scene_energy(lx_ctx *ctx, const lx_scene *scene, lx_leni_input *in, lx_leni *out);
+
+/** What a receiver asks besides its plane's illuminance (lx_scene_design.rec_cylinder). */
+enum {
+    LX_REC_CYLINDRICAL = 1,     /* the cylindrical illuminance E_z (EN 12464-1): the mean illuminance on the curved
+                                 * surface of a very small vertical cylinder at the point; with a receiver facing up
+                                 * (normal 0, 0, 1), the modelling ratio E_z / E_h */
+    LX_REC_SEMICYLINDRICAL = 2  /* the semi-cylindrical illuminance E_sz: the mean on the curved half of such a
+                                 * cylinder facing rec_facing */
+};
 
 /* ============================================================================================ */
 /* 15. Plots (PNG with cairo, written atomically) (src/plot) */

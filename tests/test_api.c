@@ -601,6 +601,59 @@ static void t_lx_scene_eval(void)
     EXPECT_EINVAL(lx_scene_eval(NULL, SCENE, PLAN, NULL, &r));
     assert_ptr_equal(r, PSENT);
 }
+static void t_lx_scene_plan_make_mode(void)
+{
+    lx_scene_plan *p = PSENT;
+    EXPECT_EINVAL(lx_scene_plan_make_mode(NULL, SCENE, LX_BACKEND_CPU, LX_SCENE_EMERGENCY, &p));
+    assert_ptr_equal(p, PSENT);
+}
+static void t_lx_en12464_grid_size(void)
+{
+    lx_en12464_grid g;
+    memset(&g, 0xcd, sizeof g);
+    unsigned char before[sizeof g];
+    memcpy(before, &g, sizeof g);
+    EXPECT_EINVAL(lx_en12464_grid_size(NULL, 5, 4, LX_GRID_ROUND_NEAREST, &g));
+    assert_memory_equal(&g, before, sizeof g);
+}
+static void t_lx_scene_area_stats(void)
+{
+    lx_area_stats s;
+    memset(&s, 0xcd, sizeof s);
+    unsigned char before[sizeof s];
+    memcpy(before, &s, sizeof s);
+    lx_scene_result *r = NULL;
+    assert_int_equal(lx_scene_eval(C, SCENE, PLAN, NULL, &r), LX_OK);
+    EXPECT_EINVAL(lx_scene_area_stats(NULL, SCENE, r, 0, &s));
+    assert_memory_equal(&s, before, sizeof s);
+    lx_scene_result_free(r);
+}
+static void t_lx_leni_compute(void)
+{
+    lx_leni_input in = {.area_m2 = 10, .power_W = 100, .night_h = 100, .constant_factor = 1, .occupancy_factor = 1,
+                        .daylight_factor = 1};
+    lx_leni e;
+    memset(&e, 0xcd, sizeof e);
+    unsigned char before[sizeof e];
+    memcpy(before, &e, sizeof e);
+    EXPECT_EINVAL(lx_leni_compute(NULL, &in, &e));
+    assert_memory_equal(&e, before, sizeof e);
+}
+static void t_lx_scene_energy(void)
+{
+    lx_leni_input in;
+    lx_leni e;
+    EXPECT_EINVAL(lx_scene_energy(NULL, SCENE, &in, &e));
+}
+static void t_lx_scene_check(void)
+{
+    lx_scene_checks *k = PSENT;
+    lx_scene_result *r = NULL;
+    assert_int_equal(lx_scene_eval(C, SCENE, PLAN, NULL, &r), LX_OK);
+    EXPECT_EINVAL(lx_scene_check(NULL, SCENE, r, NULL, NULL, &k));
+    assert_ptr_equal(k, PSENT);
+    lx_scene_result_free(r);
+}
 
 /* plots: nothing may appear at the path */
 static void t_lx_falsecolor_write_png(void)
@@ -701,6 +754,22 @@ static void t_lx_ugr_table_compute(void)
     EXPECT_EINVAL(lx_ugr_table_compute(NULL, LUM, t));
     assert_memory_equal(t, &ref, sizeof ref);
     free(t);
+}
+static void t_lx_dominant_wavelength(void)
+{
+    lx_dominant d, ref;
+    memset(&d, 0xab, sizeof d);
+    ref = d;
+    EXPECT_EINVAL(lx_dominant_wavelength(NULL, LX_OBSERVER_2, 0.5, 0.4, 1.0 / 3, 1.0 / 3, &d));
+    assert_memory_equal(&d, &ref, sizeof d);
+}
+static void t_lx_spd_shape_compute(void)
+{
+    lx_spd_shape sh, ref;
+    memset(&sh, 0xab, sizeof sh);
+    ref = sh;
+    EXPECT_EINVAL(lx_spd_shape_compute(NULL, &D65, &sh));
+    assert_memory_equal(&sh, &ref, sizeof sh);
 }
 static void t_lx_ugr_table_text(void)
 {
@@ -878,7 +947,7 @@ static const struct api_case {
     void (*run)(void);
 } CASES[] = {
     CASE(lx_ctx_set_input_limit), CASE(lx_ctx_input_limit), CASE(lx_colorimetry_check), CASE(lx_ugr),
-    CASE(lx_ugr_table_compute), CASE(lx_ugr_table_text), CASE(lx_sky_cie), CASE(lx_sky_cie_params), CASE(lx_sky_perez), CASE(lx_sky_illuminance),
+    CASE(lx_ugr_table_compute), CASE(lx_ugr_table_text), CASE(lx_dominant_wavelength), CASE(lx_spd_shape_compute), CASE(lx_sky_cie), CASE(lx_sky_cie_params), CASE(lx_sky_perez), CASE(lx_sky_illuminance),
     CASE(lx_sun_spa), CASE(lx_sky_map), CASE(lx_scene_glare_eval), CASE(lx_warn_cone_flux), CASE(lx_envmap_concentration),
     CASE(lx_ctx_irradiance_method),
     CASE(lx_spd_read_file_opts), CASE(lx_spd_read_mem_opts), CASE(lx_spd_set_vendor), CASE(lx_binning_compute),
@@ -908,6 +977,8 @@ static const struct api_case {
     CASE(lx_exr_read_any), CASE(lx_envmap_write_exr), CASE(lx_sh9_project), CASE(lx_sh9_irradiance),
     CASE(lx_irradiance_dirs), CASE(lx_irradiance_map), CASE(lx_spectral_exr_read_xyz), CASE(lx_xyz_image_write_exr),
     CASE(lx_scene_read_file), CASE(lx_scene_read_mem), CASE(lx_scene_plan_make), CASE(lx_scene_eval),
+    CASE(lx_scene_plan_make_mode), CASE(lx_en12464_grid_size), CASE(lx_scene_area_stats), CASE(lx_scene_check),
+    CASE(lx_leni_compute), CASE(lx_scene_energy),
     CASE(lx_falsecolor_write_png), CASE(lx_envmap_preview_write_png), CASE(lx_irradiance_write_png),
     CASE(lx_spd_report_write_png), CASE(lx_xyz_image_write_png), CASE(lx_grid_write_png), CASE(lx_error_time_write_png),
     CASE(lx_scene_outlines), CASE(lx_scene_receiver_plane), CASE(lx_scene_receiver_write_png),
@@ -992,6 +1063,11 @@ static void nonzero_reserved_options_refused(void **state)
     lx_colorimetry cc[2];
     EXPECT_EINVAL(lx_batch_colorimetry(ctx, &BATCH, LX_OBSERVER_2, &bo, cc));
     EXPECT_EINVAL(lx_alphaopic_batch(ctx, &BATCH, &bo, out));
+    lx_leni_input li = {.area_m2 = 10, .power_W = 100, .night_h = 100, .constant_factor = 1, .occupancy_factor = 1,
+                        .daylight_factor = 1};
+    li.reserved[0] = 1;
+    lx_leni le;
+    EXPECT_EINVAL(lx_leni_compute(ctx, &li, &le));
     lx_par pb[2];
     lx_hazard hb[2];
     lx_binning bb[2];
@@ -1125,6 +1201,14 @@ static void results_write_reserved_as_zero(void **state)
     DIRTY(cri);
     lx_assert_ok(ctx, lx_cri_compute(ctx, &D65, &cri));
     ZERO_RESERVED(cri);
+    lx_dominant dom;
+    DIRTY(dom);
+    lx_assert_ok(ctx, lx_dominant_wavelength(ctx, LX_OBSERVER_2, 0.5, 0.4, 1.0 / 3, 1.0 / 3, &dom));
+    ZERO_RESERVED(dom);
+    lx_spd_shape shp;
+    DIRTY(shp);
+    lx_assert_ok(ctx, lx_spd_shape_compute(ctx, &D65, &shp));
+    ZERO_RESERVED(shp);
     static lx_tm30 tm;
     DIRTY(tm);
     lx_assert_ok(ctx, lx_tm30_compute(ctx, &D65, &tm));
@@ -1246,6 +1330,23 @@ static void results_write_reserved_as_zero(void **state)
     ZERO_RESERVED(*ut);
     free(ut);
     lx_luminaire_free(panel);
+    lx_en12464_grid g;
+    DIRTY(g);
+    lx_assert_ok(ctx, lx_en12464_grid_size(ctx, 5, 4, LX_GRID_ROUND_NEAREST, &g));
+    ZERO_RESERVED(g);
+    lx_scene_result *ar = NULL;
+    lx_assert_ok(ctx, lx_scene_eval(ctx, SCENE, PLAN, NULL, &ar));
+    lx_area_stats as;
+    DIRTY(as);
+    lx_assert_ok(ctx, lx_scene_area_stats(ctx, SCENE, ar, 0, &as));
+    ZERO_RESERVED(as);
+    lx_leni_input li = {.area_m2 = 10, .power_W = 100, .night_h = 100, .constant_factor = 1, .occupancy_factor = 1,
+                        .daylight_factor = 1};
+    lx_leni le;
+    DIRTY(le);
+    lx_assert_ok(ctx, lx_leni_compute(ctx, &li, &le));
+    ZERO_RESERVED(le);
+    lx_scene_result_free(ar);
 }
 
 /* Creating functions set *out to NULL when they fail (here: on an argument they refuse). */
@@ -1333,6 +1434,7 @@ static void free_functions_accept_null(void **state)
     lx_scene_free(NULL);
     lx_scene_plan_free(NULL);
     lx_scene_result_free(NULL);
+    lx_scene_checks_free(NULL);
     lx_scene_outlines_free(NULL);
 }
 

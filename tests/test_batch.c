@@ -12,12 +12,55 @@
 
 static const lx_function XYZ[3] = {LX_FN_XBAR_2, LX_FN_YBAR_2, LX_FN_ZBAR_2};
 
+/* The piecewise-linear w at x (0 outside its samples). */
+static long double lin_at(const lx_spd *w, long double x)
+{
+    if (x < w->lambda_nm[0] || x > w->lambda_nm[w->n - 1]) return 0;
+    for (size_t m = 0; m + 1 < w->n; m++)
+        if (x >= w->lambda_nm[m] && x <= w->lambda_nm[m + 1]) {
+            long double t = (x - w->lambda_nm[m]) / (w->lambda_nm[m + 1] - w->lambda_nm[m]);
+            return w->value[m] + t * (w->value[m + 1] - w->value[m]);
+        }
+    return 0;
+}
+
+/* The band functions (PAR, ePAR, YPF: a step at each end of the band) are integrated exactly: the
+ * piecewise-linear spectrum times the piecewise-linear weight, by Simpson's rule between every pair
+ * of breakpoints of either (exact for the quadratic product there). */
+static long double oracle_band(const lx_spd *w, const double *row, size_t n, double start, double step)
+{
+    long double s = 0, hi_grid = start + (double)(n - 1) * step;
+    long double lo = fmaxl(start, w->lambda_nm[0]), hi = fminl(hi_grid, w->lambda_nm[w->n - 1]);
+    long double a = lo;
+    while (a < hi) {
+        long double b = hi; /* the next breakpoint of either function */
+        long double g = start + ceill((a - start) / step + 1e-12L) * step;
+        if (g <= a) g += step;
+        if (g < b) b = g;
+        for (size_t m = 0; m < w->n; m++)
+            if (w->lambda_nm[m] > a && w->lambda_nm[m] < b) b = w->lambda_nm[m];
+        long double pts[3] = {a, 0.5L * (a + b), b}, f[3];
+        for (int q = 0; q < 3; q++) {
+            long double k = (pts[q] - start) / step;
+            size_t j = (size_t)floorl(k);
+            if (j + 1 >= n) j = n - 2;
+            long double t = k - (long double)j, sv = row[j] + t * (row[j + 1] - row[j]);
+            f[q] = sv * lin_at(w, pts[q]);
+        }
+        s += (b - a) / 6 * (f[0] + 4 * f[1] + f[2]);
+        a = b;
+    }
+    return s;
+}
+
 /* Naive oracle: long double, one term at a time, weights from lx_function_get interpolated by
  * hand (independent of src/spectral/batch.c's weight matrix and vector code). */
 static long double oracle(lx_ctx *ctx, const double *row, size_t n, double start, double step, lx_function fn)
 {
     lx_spd w;
     lx_assert_ok(ctx, lx_function_get(ctx, fn, &w));
+    if (fn == LX_FN_PHOTON_PAR || fn == LX_FN_PHOTON_EPAR || fn == LX_FN_YPF_MCCREE)
+        return oracle_band(&w, row, n, start, step);
     long double s = 0;
     for (size_t j = 0; j < n; j++) {
         double x = start + (double)j * step, wv = 0;

@@ -47,6 +47,19 @@ static void test_spa_published(void **state)
     in.month = 13;
     assert_int_equal(lx_sun_spa(ctx, &in, &p), LX_EINVAL);
     assert_non_null(strstr(lx_ctx_errmsg(ctx), "month"));
+    /* a day its month does not have is refused, not rolled into the next month (2003-02-30 was
+     * taken as 2003-03-02): the Gregorian leap years (2000 and 2004 are, 1900 and 2003 are not), the
+     * Julian calendar before 1582-10-15 (1500 is a leap year there), and the ten days that never were */
+    static const struct { int y, m, d, ok; } days[] = {
+        {2003, 2, 30, 0}, {2003, 2, 29, 0}, {2003, 2, 28, 1}, {2004, 2, 29, 1}, {2000, 2, 29, 1}, {1900, 2, 29, 0},
+        {2003, 4, 31, 0}, {2003, 4, 30, 1}, {2003, 12, 31, 1}, {1500, 2, 29, 1}, {1582, 10, 4, 1}, {1582, 10, 10, 0},
+        {1582, 10, 15, 1}};
+    for (size_t i = 0; i < sizeof days / sizeof *days; i++) {
+        in.year = days[i].y, in.month = days[i].m, in.day = days[i].d;
+        lx_status st = lx_sun_spa(ctx, &in, &p);
+        if (days[i].ok) lx_assert_ok(ctx, st);
+        else assert_int_equal(st, LX_EINVAL);
+    }
 }
 
 /* A physical check away from the published case: 2024-03-20 12:00 UTC on the equator at longitude

@@ -181,6 +181,101 @@ static void test_risk_groups(void **state)
     assert_string_equal(lx_risk_group_name(LX_RISK_NONE), "");
 }
 
+/* PAR is the integral over its band whatever the method asked for: a flat 1 W m-2 nm-1 gives
+ * (700^2 - 400^2)/2 / (h c N_A) = 1379.29 umol s-1 m-2 with auto, cie15, exact and linear1nm, on 1 nm
+ * and 5 nm data spanning the band exactly or beyond it, per spectrum and as a batch. The CIE 015 sum
+ * at 1 nm counted 301 nm of the 300 nm band: 1383.89 (closed form: 301 x 550 / (h c N_A)). */
+static void test_par_band_integral(void **state)
+{
+    lx_ctx *ctx = *state;
+    static double l[401], v[401];
+    const double ppfd = 0.5 * (700.0 * 700 - 400.0 * 400) * UMOL_PER_J_NM;
+    const double epar = 0.5 * (750.0 * 750 - 400.0 * 400) * UMOL_PER_J_NM;
+    static const double span[][3] = {{400, 700, 1}, {380, 780, 1}, {380, 780, 5}, {400, 750, 5}};
+    static const lx_method meth[] = {LX_METHOD_AUTO, LX_METHOD_CIE15, LX_METHOD_EXACT, LX_METHOD_LINEAR1NM};
+    for (size_t i = 0; i < sizeof span / sizeof *span; i++) {
+        lx_spd s = flat(l, v, span[i][0], span[i][1], span[i][2]);
+        for (size_t m = 0; m < sizeof meth / sizeof *meth; m++) {
+            lx_par p;
+            lx_assert_ok(ctx, lx_par_compute(ctx, &s, meth[m], &p));
+            lx_assert_near(p.ppfd, ppfd, 0, 1e-12);
+            lx_assert_near(p.ppfd, 1379.29229, 1e-4, 0);
+            if (span[i][1] >= 750) lx_assert_near(p.epar, epar, 0, 1e-12);
+        }
+        /* the batch path: the same integral (the sample weights are the hat functions' exact integrals) */
+        size_t n = s.n;
+        static double vb[3 * 401];
+        for (size_t k = 0; k < 3 * n; k++) vb[k] = 1.0 + (double)(k / n); /* 1, 2 and 3 W m-2 nm-1 */
+        lx_batch b = {3, n, 0, span[i][0], span[i][2], LX_F64, vb};
+        lx_par pb[3];
+        lx_assert_ok(ctx, lx_par_batch(ctx, &b, NULL, pb));
+        for (int k = 0; k < 3; k++) lx_assert_near(pb[k].ppfd, (k + 1) * ppfd, 0, 1e-12);
+    }
+    /* the CIE 015 sum itself is unchanged for a caller who asks lx_spd_integrate for it */
+    lx_spd s = flat(l, v, 400, 700, 1), w;
+    double sum;
+    lx_assert_ok(ctx, lx_function_get(ctx, LX_FN_PHOTON_PAR, &w));
+    lx_assert_ok(ctx, lx_spd_integrate(ctx, &s, &w, LX_METHOD_CIE15, &sum));
+    lx_assert_near(sum, 301 * 550 * UMOL_PER_J_NM, 0, 1e-12);
+    /* an unknown method is still refused */
+    lx_par p;
+    assert_int_equal(lx_par_compute(ctx, &s, (lx_method)99, &p), LX_EINVAL);
+}
+
+/* The source's size decides the blue-light limit (IEC 62471:2006 4.3.3/4.3.4): E_B for a small source
+ * (alpha < 0.011 rad), L_B for a larger one, the data turned into the limit's quantity by the
+ * source's solid angle Omega = 2 pi (1 - cos(alpha / 2)) (about pi alpha^2 / 4); the result says
+ * which limit and which Omega. The LI-COR LI-180 file's E_B = 5.881 W m-2 is RG2 as a small source
+ * (1 < E_B <= 400) and RG1 as a 0.1 rad one (L_B = 5.881 / 7.851e-3 = 749 W m-2 sr-1, 100 < L_B <= 1e4). */
+static void test_risk_subtense(void **state)
+{
+    lx_ctx *ctx = *state;
+    lx_hazard_risk r;
+    lx_hazard e = {{5.881, NAN, NAN, NAN}, {0.99, 0.87, 0, 0.24}, {0}};
+    double om01 = 2 * M_PI * (1 - cos(0.05));
+    lx_assert_near(om01, M_PI * 0.1 * 0.1 / 4, 0, 1e-3); /* the small-angle area of the disc */
+    lx_assert_ok(ctx, lx_hazard_risk_group(ctx, &e, 0, 0, &r)); /* not known: a small source */
+    assert_int_equal(r.criterion[LX_HZ_BLUE], LX_RISK_2);
+    assert_int_equal(r.limit[LX_HZ_BLUE], LX_HZ_LIMIT_E_B);
+    assert_true(r.source_sr == 0);
+    lx_assert_ok(ctx, lx_hazard_risk_group(ctx, &e, 0, 0.005, &r)); /* small: E_B */
+    assert_int_equal(r.criterion[LX_HZ_BLUE], LX_RISK_2);
+    assert_int_equal(r.limit[LX_HZ_BLUE], LX_HZ_LIMIT_E_B);
+    lx_assert_ok(ctx, lx_hazard_risk_group(ctx, &e, 0, 0.1, &r)); /* large: L_B = E_B / Omega */
+    assert_int_equal(r.criterion[LX_HZ_BLUE], LX_RISK_1);
+    assert_int_equal(r.limit[LX_HZ_BLUE], LX_HZ_LIMIT_L_B);
+    lx_assert_near(r.source_sr, om01, 0, 1e-15);
+    assert_int_equal(r.group, LX_RISK_1);
+    /* at the L_B limit 100 exactly (exempt) and just above it (RG1) */
+    e.value[LX_HZ_BLUE] = 100 * om01;
+    lx_assert_ok(ctx, lx_hazard_risk_group(ctx, &e, 0, 0.1, &r));
+    assert_int_equal(r.criterion[LX_HZ_BLUE], LX_RISK_EXEMPT);
+    e.value[LX_HZ_BLUE] = 100.01 * om01;
+    lx_assert_ok(ctx, lx_hazard_risk_group(ctx, &e, 0, 0.1, &r));
+    assert_int_equal(r.criterion[LX_HZ_BLUE], LX_RISK_1);
+    /* irradiance with a subtense: L_R = E_R / Omega against 28000 / alpha (exempt), 71000 / alpha (RG2) */
+    double om05 = 2 * M_PI * (1 - cos(0.025));
+    e.value[LX_HZ_THERMAL] = 28000 / 0.05 * om05;
+    lx_assert_ok(ctx, lx_hazard_risk_group(ctx, &e, 0, 0.05, &r));
+    assert_int_equal(r.criterion[LX_HZ_THERMAL], LX_RISK_EXEMPT);
+    assert_int_equal(r.limit[LX_HZ_THERMAL], LX_HZ_LIMIT_L_R);
+    e.value[LX_HZ_THERMAL] = 71000 / 0.05 * om05 * 1.001;
+    lx_assert_ok(ctx, lx_hazard_risk_group(ctx, &e, 0, 0.05, &r));
+    assert_int_equal(r.criterion[LX_HZ_THERMAL], LX_RISK_3);
+    /* radiance of a small source: E_B = L_B Omega; 5000 W m-2 sr-1 at 0.005 rad is 0.098 W m-2: exempt */
+    lx_hazard l = {{5000, NAN, NAN, NAN}, {1, 1, 1, 1}, {0}};
+    lx_assert_ok(ctx, lx_hazard_risk_group(ctx, &l, 1, 0.005, &r));
+    assert_int_equal(r.criterion[LX_HZ_BLUE], LX_RISK_EXEMPT);
+    assert_int_equal(r.limit[LX_HZ_BLUE], LX_HZ_LIMIT_E_B);
+    lx_assert_near(r.source_sr, 2 * M_PI * (1 - cos(0.0025)), 0, 1e-15);
+    lx_assert_ok(ctx, lx_hazard_risk_group(ctx, &l, 1, 0, &r)); /* not known: L_B, RG1 */
+    assert_int_equal(r.criterion[LX_HZ_BLUE], LX_RISK_1);
+    assert_int_equal(r.limit[LX_HZ_BLUE], LX_HZ_LIMIT_L_B);
+    assert_true(r.reserved[0] == 0);
+    assert_int_equal(lx_hazard_risk_group(ctx, &l, 1, -0.1, &r), LX_EINVAL);
+    assert_int_equal(lx_hazard_risk_group(ctx, &l, 1, NAN, &r), LX_EINVAL);
+}
+
 static void test_batch_matches(void **state)
 {
     lx_ctx *ctx = *state;
@@ -215,7 +310,7 @@ int main(void)
 #define T(f) cmocka_unit_test_setup_teardown(f, lx_test_ctx_setup, lx_test_ctx_teardown)
     const struct CMUnitTest tests[] = {
         T(test_tables), T(test_actinic_against_icnirp_fit), T(test_par_closed_forms), T(test_hazard_closed_forms),
-        T(test_risk_groups), T(test_batch_matches),
+        T(test_risk_groups), T(test_batch_matches), T(test_par_band_integral), T(test_risk_subtense),
     };
     return cmocka_run_group_tests_name("photobio", tests, NULL, NULL);
 }

@@ -2,6 +2,7 @@
  * evaluates it and prints the receivers' results, or (--explain) the plan with its reasons and
  * the estimated and measured work. */
 #include "grid.h"
+#include "design.h"
 #include "spd_report.h"
 
 #include <getopt.h>
@@ -10,7 +11,8 @@
 #include <string.h>
 
 static const char help[] =
-    "usage: luxcalc scene FILE [--explain] [--contributions] [--surfaces] [--format table|csv|json]\n"
+    "usage: luxcalc scene FILE [--explain] [--contributions] [--surfaces] [--check] [--energy]\n"
+    "                     [--format table|csv|json]\n"
     "                     [-o FILE] [--png DIR] [--backend auto|cpu|opencl]\n"
     "\n"
     "Computes a lighting scene (see README \"Scenes\" for the file format): luminaires (point, spot,\n"
@@ -25,6 +27,10 @@ static const char help[] =
     "                    interreflection the reflected part is indirect_lx)\n"
     "  --glare           UGR (CIE 117) at each [observer]: one row per luminaire that counts with its\n"
     "                    luminance, solid angle, position index and term L^2 w / p^2, and the UGR\n"
+    "  --energy          EN 15193-1 LENI from the [energy] section: installed power, hours, factors,\n"
+    "                    the lighting and parasitic energy (kWh a year) and LENI (kWh/(m2 a))\n"
+    "  --check           the checks against the scene's [requirement] sections: one row per line\n"
+    "                    (requirement, target, quantity, required, computed, pass or FAIL)\n"
     "  --surfaces        rooms: one row per room face, surface side and obstruction face instead:\n"
     "                    surface,area_m2,direct_lx,indirect_lx,illuminance_lx,luminance_cd_m2,reflectance\n"
     "                    (area-weighted averages: the flux each receives over its exposed area)\n"
@@ -271,7 +277,10 @@ static void explain(FILE *f, const lx_scene *sc, const lx_scene_plan *p, const l
             fprintf(f, "%s\n    \"%s\": ", e ? "," : "", lx_effect_name((lx_effect)e));
             json_string(f, p->reason[e]);
         }
-        fputs("\n  },\n  \"forced\": {", f);
+        char vt[128];
+        fputs("\n  },\n  \"values\": ", f);
+        json_string(f, cli_scene_values(sc, vt, sizeof vt));
+        fputs(",\n  \"forced\": {", f);
         for (int e = 0; e < LX_EFFECT_COUNT; e++)
             fprintf(f, "%s\"%s\": %s", e ? ", " : "", lx_effect_name((lx_effect)e), p->forced[e] ? "true" : "false");
         fprintf(f, "},\n  \"pairs\": {\"total\": %zu, \"near_field\": %zu, \"costly\": [", p->n_pairs, p->n_near);
@@ -319,6 +328,9 @@ static void explain(FILE *f, const lx_scene *sc, const lx_scene_plan *p, const l
     for (int e = 0; e < LX_EFFECT_COUNT; e++)
         fprintf(f, "  %-15s %-3s %s%s\n", lx_effect_name((lx_effect)e), p->on[e] ? "on" : "off",
                 p->forced[e] ? "[forced] " : "", p->reason[e]);
+    char vt[128];
+    fprintf(f, "\nvalues: %s\n", cli_scene_values(sc, vt, sizeof vt));
+    cli_scene_maintenance_text(f, sc);
     fprintf(f, "\npairs: %zu luminaire-receiver point pairs, %zu on the near-field path\n", p->n_pairs, p->n_near);
     for (size_t l = 0; l < sc->n_lum; l++)
         for (size_t r = 0; r < sc->n_rec; r++) {
@@ -373,6 +385,7 @@ typedef struct {
 static void summary_columns(const lx_scene *sc, const lx_scene_result *res, const res_cols *w, col_list *c)
 {
     COL("points", "");
+    COL("values", "");
     COL("illuminance_avg_lx", "lx");
     COL("illuminance_min_lx", "lx");
     COL("illuminance_max_lx", "lx");
@@ -384,6 +397,8 @@ static void summary_columns(const lx_scene *sc, const lx_scene_result *res, cons
     if (sc->want_luminance) COL("luminance_avg_cd_m2", "cd/m2");
     if (sc->want_cct) COL("cct_avg_K", "K");
     if (sc->want_melanopic) COL("melanopic_edi_avg_lx", "lx");
+    if (res->cylindrical_lx)
+        COL("cylindrical_avg_lx", "lx"), COL("semicylindrical_avg_lx", "lx"), COL("modelling_min", ""), COL("modelling_max", "");
     if (w->contrib) {
         for (size_t l = 0; l < sc->n_lum; l++) {
             char b[300];
@@ -409,6 +424,7 @@ static void point_columns(const lx_scene *sc, const lx_scene_result *res, const 
     if (sc->want_luminance) COL("luminance_cd_m2", "cd/m2");
     if (sc->want_cct) COL("cct_K", "K"), COL("duv", "");
     if (sc->want_melanopic) COL("melanopic_edi_lx", "lx");
+    if (res->cylindrical_lx) COL("cylindrical_lx", "lx"), COL("semicylindrical_lx", "lx"), COL("modelling", "");
     if (w->contrib) {
         for (size_t l = 0; l < sc->n_lum; l++) {
             char b[300];
@@ -417,6 +433,7 @@ static void point_columns(const lx_scene *sc, const lx_scene_result *res, const 
         }
         if (w->sky) COL("E_sky_lx", "lx");
     }
+    if (sc->design && sc->design->maintained) COL("values", "");
 }
 
 #undef COL
@@ -443,8 +460,10 @@ static void summary_row(cli_table *t, const lx_scene *sc, const lx_scene_result 
         avg = 0;
         for (size_t g = a; g < b; g++) avg += res->E_lx[g] / n;
     }
+    char vt[128];
     cli_table_str(t, sc->rec[r].name);
     cli_table_int(t, (long long)(b - a));
+    cli_table_str(t, cli_scene_values(sc, vt, sizeof vt));
     cli_table_num(t, avg);
     cli_table_num(t, mn);
     cli_table_num(t, mx);
@@ -460,6 +479,7 @@ static void summary_row(cli_table *t, const lx_scene *sc, const lx_scene_result 
     if (sc->want_luminance) cli_table_num(t, ls / n);
     if (sc->want_cct) cli_table_num(t, cn == b - a ? cs / (double)cn : NAN);
     if (sc->want_melanopic) cli_table_num(t, ms / n);
+    if (res->cylindrical_lx) cli_scene_cylinder_summary(t, res, a, b);
     for (size_t l = 0; w->contrib && l < sc->n_lum + (size_t)w->sky; l++) {
         double c = 0;
         for (size_t g = a; g < b; g++) c += res->contrib_lx[g * (sc->n_lum + 1) + l];
@@ -487,8 +507,14 @@ static void point_rows(cli_table *t, const lx_scene *sc, const lx_scene_result *
         if (sc->want_luminance) cli_table_num(t, res->L_cd_m2[g]);
         if (sc->want_cct) cli_table_num(t, res->cct_K[g]), cli_table_num(t, res->duv[g]);
         if (sc->want_melanopic) cli_table_num(t, res->melanopic_edi_lx[g]);
+        if (res->cylindrical_lx) {
+            cli_table_num(t, res->cylindrical_lx[g]);
+            cli_table_num(t, res->semicylindrical_lx[g]);
+            cli_table_num(t, res->modelling[g]);
+        }
         if (w->contrib)
             for (size_t l = 0; l < sc->n_lum + (size_t)w->sky; l++) cli_table_num(t, res->contrib_lx[g * (sc->n_lum + 1) + l]);
+        if (sc->design && sc->design->maintained) cli_table_str(t, "maintained");
     }
 }
 
@@ -588,9 +614,10 @@ static int glare_out(const char *cmd, lx_ctx *ctx, const lx_scene *sc, cli_forma
     lx_status st = lx_scene_glare_eval(ctx, sc, &g);
     if (st != LX_OK) return cli_fail(cmd, ctx, st);
     static const char *const names[] = {"observer", "luminaire", "luminance_cd_m2", "solid_angle_sr", "sigma_deg",
-                                        "tau_deg", "position_index", "term", "background_cd_m2", "ugr"};
-    static const char *const units[] = {"", "", "cd/m2", "sr", "deg", "deg", "", "", "cd/m2", ""};
-    cli_table *t = cli_table_new(10, names, units);
+                                        "tau_deg", "position_index", "term", "background_cd_m2", "ugr",
+                                        "eye_x", "eye_y", "eye_z", "view_azimuth_deg"};
+    static const char *const units[] = {"", "", "cd/m2", "sr", "deg", "deg", "", "", "cd/m2", "", "m", "m", "m", "deg"};
+    cli_table *t = cli_table_new(14, names, units);
     for (size_t o = 0; o < g->n_obs; o++) {
         int any = 0;
         for (size_t l = 0; l < g->n_lum; l++) {
@@ -607,6 +634,7 @@ static int glare_out(const char *cmd, lx_ctx *ctx, const lx_scene *sc, cli_forma
             cli_table_num(t, x->term);
             cli_table_num(t, g->background_cd_m2[o]);
             cli_table_num(t, g->ugr[o]);
+            cli_observer_cells(t, &sc->obs[o]);
         }
         if (!any) { /* no glare source in view: one row, UGR empty */
             cli_table_str(t, sc->obs[o].name);
@@ -614,6 +642,7 @@ static int glare_out(const char *cmd, lx_ctx *ctx, const lx_scene *sc, cli_forma
             for (int k = 0; k < 6; k++) cli_table_num(t, NAN);
             cli_table_num(t, g->background_cd_m2[o]);
             cli_table_num(t, NAN);
+            cli_observer_cells(t, &sc->obs[o]);
         }
     }
     int rc = CLI_OK;
@@ -633,10 +662,11 @@ int cmd_scene(int argc, char **argv)
     static const struct option opts[] = {{"explain", no_argument, 0, 'e'},      {"contributions", no_argument, 0, 'c'},
                                          {"format", required_argument, 0, 'f'}, {"backend", required_argument, 0, 'b'},
                                          {"png", required_argument, 0, 'p'},     {"glare", no_argument, 0, 'g'},
-                                         {"surfaces", no_argument, 0, 's'},
+                                         {"surfaces", no_argument, 0, 's'},      {"check", no_argument, 0, 'k'},
+                                         {"energy", no_argument, 0, 'E'},
                                          {"help", no_argument, 0, 'h'},         {0, 0, 0, 0}};
     const char *cmd = "scene", *out = NULL, *backend_text = NULL, *png_dir = NULL;
-    int do_explain = 0, contrib = 0, glare = 0, do_surfaces = 0, c;
+    int do_explain = 0, contrib = 0, glare = 0, do_surfaces = 0, do_check = 0, do_energy = 0, c;
     cli_format fmt = CLI_FMT_TABLE;
     optind = 1;
     opterr = 0;
@@ -646,6 +676,8 @@ int cmd_scene(int argc, char **argv)
         case 'c': contrib = 1; break;
         case 'g': glare = 1; break;
         case 's': do_surfaces = 1; break;
+        case 'k': do_check = 1; break;
+        case 'E': do_energy = 1; break;
         case 'o': out = optarg; break;
         case 'b': backend_text = optarg; break;
         case 'p': png_dir = optarg; break;
@@ -678,6 +710,12 @@ int cmd_scene(int argc, char **argv)
     lx_scene_plan *plan = NULL;
     lx_scene_result *res = NULL;
     lx_status st = lx_scene_read_file(ctx, argv[optind], &sc);
+    if (st == LX_OK && do_energy) {
+        int erc = cli_energy_out(cmd, ctx, sc, fmt, out);
+        lx_scene_free(sc);
+        lx_ctx_destroy(ctx);
+        return erc;
+    }
     if (st == LX_OK && glare) {
         int grc = glare_out(cmd, ctx, sc, fmt, out);
         lx_scene_free(sc);
@@ -705,6 +743,13 @@ int cmd_scene(int argc, char **argv)
         else if (do_explain) {
             explain(o.fp, sc, plan, res, fmt);
             if (cli_output_close(&o, !ferror(o.fp), cmd) != 0) rc = CLI_RUNTIME;
+        } else if (do_check) {
+            cli_design_results dr;
+            int drc = cli_design_evaluate(cmd, ctx, sc, backend, res, &dr);
+            if (drc) rc = drc;
+            else if (cli_check_write(o.fp, sc, dr.checks, fmt) != 0) rc = CLI_RUNTIME;
+            cli_design_results_free(&dr);
+            if (cli_output_close(&o, rc == CLI_OK, cmd) != 0 && rc == CLI_OK) rc = CLI_RUNTIME;
         } else if (do_surfaces) {
             cli_table *t = surfaces_table(res);
             int ok = t && cli_table_write(t, fmt, o.fp, 1) == 0;

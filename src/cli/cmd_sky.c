@@ -3,6 +3,7 @@
  * lat-long luminance EXR (the convention of [sky] type = map) and summarised on stdout. */
 #include "cli.h"
 
+#include <errno.h>
 #include <getopt.h>
 #include <math.h>
 #include <stdlib.h>
@@ -61,13 +62,20 @@ static int quantity(lx_ctx *ctx, const char *opt, const char *text, lx_quantity 
     return 0;
 }
 
+/* A whole number from lo to hi: CLI_USAGE when the text is not a number, CLI_INPUT when it is out of
+ * the range (printed), else 0. */
 static int whole(const char *opt, const char *text, int lo, int hi, int *out)
 {
     char *e;
+    errno = 0;
     long v = strtol(text, &e, 10);
-    if (*e || e == text || v < lo || v > hi) {
+    if (*e || e == text) {
         cli_error("sky", "--%s: expected a whole number from %d to %d, got '%s'", opt, lo, hi, text);
-        return -1;
+        return CLI_USAGE;
+    }
+    if (errno == ERANGE || v < lo || v > hi) {
+        cli_error("sky", "--%s: %s is out of range (%d to %d)", opt, text, lo, hi);
+        return CLI_INPUT;
     }
     *out = (int)v;
     return 0;
@@ -84,6 +92,10 @@ static int sun_from_args(lx_ctx *ctx, const sky_args *a, double dir[3], int *doy
         double alt, az;
         if (quantity(ctx, "sun-altitude", a->alt, LX_Q_ANGLE, "deg", &alt) || quantity(ctx, "sun-azimuth", a->az, LX_Q_ANGLE, "deg", &az))
             return CLI_USAGE;
+        if (!(fabs(alt) <= CLI_PI / 2)) { /* 95 deg is not an 85 deg sun on the other side */
+            cli_error("sky", "--sun-altitude: %s is out of range (-90 to 90 deg)", a->alt);
+            return CLI_INPUT;
+        }
         lx_sun_direction(alt, az, dir);
         *alt_deg = alt * DEG_PER_RAD, *az_deg = az * DEG_PER_RAD;
         return CLI_OK;
@@ -115,10 +127,8 @@ static int sun_from_args(lx_ctx *ctx, const sky_args *a, double dir[3], int *doy
     in.latitude_deg = lat * DEG_PER_RAD, in.longitude_deg = lon * DEG_PER_RAD;
     in.delta_t_s = 69, in.pressure_mbar = 1013.25, in.temperature_C = 15, in.refraction_deg = 0.5667;
     lx_sun_position p;
-    if (lx_sun_spa(ctx, &in, &p) != LX_OK) {
-        cli_error("sky", "%s", lx_ctx_errmsg(ctx));
-        return CLI_USAGE;
-    }
+    lx_status st = lx_sun_spa(ctx, &in, &p);
+    if (st != LX_OK) return cli_fail("sky", ctx, st); /* a value out of range (latitude 91deg, 2003-02-30): 2 */
     memcpy(dir, p.dir, 3 * sizeof *dir);
     static const int cum[12] = {0, 31, 59, 90, 120, 151, 181, 212, 243, 273, 304, 334};
     int leap = (in.year % 4 == 0 && in.year % 100 != 0) || in.year % 400 == 0;
@@ -140,7 +150,8 @@ static int build_sky(lx_ctx *ctx, const sky_args *a, lx_sky *sky, double *evn, d
             cli_error("sky", "--type cie needs --number 1..15");
             return CLI_USAGE;
         }
-        if (whole("number", a->number, 1, 15, &number)) return CLI_USAGE;
+        int e = whole("number", a->number, 1, 15, &number);
+        if (e) return e;
         if (!a->lz == !a->dv) {
             cli_error("sky", "give --zenith-luminance or --horizontal-illuminance (one of them)");
             return CLI_USAGE;
@@ -167,7 +178,8 @@ static int build_sky(lx_ctx *ctx, const sky_args *a, lx_sky *sky, double *evn, d
     if (quantity(ctx, "direct-normal", a->dni, LX_Q_IRRADIANCE, "W/m2", &in.direct_normal_W_m2) ||
         quantity(ctx, "diffuse-horizontal", a->dhi, LX_Q_IRRADIANCE, "W/m2", &in.diffuse_horizontal_W_m2))
         return CLI_USAGE;
-    if (a->doy && whole("day-of-year", a->doy, 1, 366, &doy)) return CLI_USAGE;
+    int e = a->doy ? whole("day-of-year", a->doy, 1, 366, &doy) : 0;
+    if (e) return e;
     if (!doy) {
         cli_error("sky", "--type perez with --sun-altitude needs --day-of-year");
         return CLI_USAGE;
@@ -233,17 +245,21 @@ int cmd_sky(int argc, char **argv)
     lx_sky_map_opts mo;
     memset(&mo, 0, sizeof mo);
     mo.sun_normal_lx = evn;
-    if (rc == CLI_OK && a.ground && (cli_parse_double(a.ground, &mo.ground_reflectance) != 0 ||
-                                     !(mo.ground_reflectance >= 0 && mo.ground_reflectance <= 1))) {
+    if (rc == CLI_OK && a.ground && cli_parse_double(a.ground, &mo.ground_reflectance) != 0) {
         cli_error("sky", "--ground-reflectance: expected 0..1, got '%s'", a.ground);
         rc = CLI_USAGE;
+    } else if (rc == CLI_OK && a.ground && !(mo.ground_reflectance >= 0 && mo.ground_reflectance <= 1)) {
+        cli_error("sky", "--ground-reflectance: %s is out of range (0 to 1)", a.ground);
+        rc = CLI_INPUT;
     }
     if (rc == CLI_OK && a.size) {
         char x, tail;
-        if (sscanf(a.size, "%d%c%d%c", &mo.width, &x, &mo.height, &tail) != 3 || (x != 'x' && x != 'X') || mo.width < 1 ||
-            mo.height < 1) {
+        if (sscanf(a.size, "%d%c%d%c", &mo.width, &x, &mo.height, &tail) != 3 || (x != 'x' && x != 'X')) {
             cli_error("sky", "--size: expected WxH, got '%s'", a.size);
             rc = CLI_USAGE;
+        } else if (mo.width < 1 || mo.height < 1) {
+            cli_error("sky", "--size: %s is out of range (at least 1x1)", a.size);
+            rc = CLI_INPUT;
         }
     }
     lx_envmap *map = NULL;

@@ -56,8 +56,11 @@ static const char help[] =
     ;
 static const char help2[] =
     "  --photoperiod H        hours of light a day for the daily light integral (par_dli_mol_m2_d)\n"
-    "  --subtense A           the source's angular subtense (rad, or 0.6deg) for the IEC 62471\n"
-    "                         retinal thermal limits (risk group from L_R)\n"
+    "  --subtense A           the source's full angular subtense (rad, or 0.6deg) for the IEC 62471\n"
+    "                         risk group: blue light by E_B below 0.011 rad, by L_B from it on\n"
+    "                         (irradiance / the source's solid angle), and the retinal thermal L_R;\n"
+    "                         without it irradiance is judged as a small source, radiance as a large\n"
+    "                         one (hazard_risk_basis says which)\n"
     "  --format F             table (default) | csv | json (json adds each file's \"instrument\":\n"
     "                         its layout, unit and header fields)\n"
     "  -o FILE                write the results to FILE (atomically)\n"

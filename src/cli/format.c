@@ -182,7 +182,8 @@ static void style(const char *name, const char *unit, int *dec, int *sig, int *t
         *sig = cli_precision;
         return;
     }
-    static const char *const photometric[] = {"lx", "cd", "lm", "klm", "cd/m2", "fc", "fL", "cd/ft2", "nit", "W", "lm/W", "sr"};
+    static const char *const photometric[] = {"lx", "cd", "lm", "klm", "cd/m2", "fc", "fL", "cd/ft2", "nit", "W", "lm/W", "sr",
+                                              "h", "kWh", "W/m2", "kWh/(m2 a)"};
     if (!strcmp(name, "duv") || !strcmp(name, "cri_dc") || ends_with(name, "duv_offset") ||
         (!*unit && (!strcmp(name, "x") || !strcmp(name, "y") || !strcmp(name, "u_prime") || !strcmp(name, "v_prime"))))
         *dec = 5;
@@ -193,7 +194,8 @@ static void style(const char *name, const char *unit, int *dec, int *sig, int *t
     else if (!strcmp(unit, "%")) *dec = 2;
     else if (!strcmp(name, "U0") || strstr(name, "uniformity") || !strcmp(name, "lor") || !strcmp(name, "downward_fraction") ||
              strstr(name, "reflectance") || strstr(name, "transmittance") || ends_with(name, "_coverage") ||
-             !strcmp(name, "position_index") || ends_with(name, "_der") || !strcmp(name, "sp_ratio"))
+             !strcmp(name, "position_index") || ends_with(name, "_der") || !strcmp(name, "sp_ratio") ||
+             !strncmp(name, "modelling", 9) || ends_with(name, "_factor"))
         *dec = 3, *ratio = 1;
     else if (!strcmp(unit, "m") || !strcmp(unit, "ft") || !strcmp(unit, "deg") || !strcmp(unit, "m2") || !strcmp(unit, "ft2") ||
              ends_with(name, "_H"))

@@ -12,7 +12,7 @@ enum { G_CRI = 1, G_TM30 = 2, G_AO = 4, G_MES = 8, G_VENDOR = 16, G_PAR = 32, G_
 
 /* Column kinds: where each value comes from. */
 enum { K_RA, K_R, K_RF, K_RG, K_MEL_EDI, K_MEL_DER, K_AO_E, K_CRI_VALID, K_CRI_DC, K_RF_H, K_RCS_H, K_RHS_H,
-       K_AO_EDI, K_AO_DER, K_MES_L, K_MES_M, K_VEND, K_PAR, K_HZ, K_HZ_COV, K_HZ_GROUP, K_HZ_BASIS, K_HZ_NOTCOV,
+       K_AO_EDI, K_AO_DER, K_MES_L, K_MES_M, K_VEND, K_PAR, K_HZ, K_HZ_COV, K_HZ_GROUP, K_HZ_BASIS, K_HZ_ALPHA, K_HZ_NOTCOV,
        K_BIN_ANSI, K_BIN_ANSI_DUV, K_BIN_FLEX, K_BIN_FLEX_DUV, K_BIN_SDCM, K_BIN_CENTRE };
 
 /* the vendor columns, in lx_vendor_results order (index: the field's slot, see vendor_value) */
@@ -79,6 +79,7 @@ static void build(void)
         snprintf(nm, sizeof nm, "hazard_%s_coverage", hz_names[i]), add(nm, G_HAZ, K_HZ_COV, i);
     add("hazard_risk_group", G_HAZ, K_HZ_GROUP, 0);
     add("hazard_risk_basis", G_HAZ, K_HZ_BASIS, 0);
+    add("hazard_subtense_rad", G_HAZ, K_HZ_ALPHA, 0);
     add("hazard_not_covered", G_HAZ, K_HZ_NOTCOV, 0);
     /* binning */
     add("binning_ansi_K", G_BIN, K_BIN_ANSI, 0);
@@ -190,7 +191,7 @@ int cli_metrics_columns(const cli_metrics *m, const char *unit, const char **nam
         names[n] = col_name(i, unit);
         units[n] = k == K_MEL_EDI || k == K_AO_EDI ? edi_unit : k == K_AO_E ? ao_unit : k == K_MES_L ? "cd/m2"
                  : k == K_PAR ? (x < 3 ? par_unit(unit) : x == 3 ? "umol/J" : "mol/(m2 d)")
-                 : k == K_HZ ? hz_unit(unit) : k == K_VEND ? (x == 0 ? "K" : x == 2 ? "lx" : "") : "";
+                 : k == K_HZ ? hz_unit(unit) : k == K_HZ_ALPHA ? "rad" : k == K_VEND ? (x == 0 ? "K" : x == 2 ? "lx" : "") : "";
         n++;
     }
     return n;
@@ -225,6 +226,22 @@ static double vendor_value(const lx_vendor_results *v, int x)
     return x - 26 < 5 ? tail[x - 26] : NAN;
 }
 
+/* How a criterion was judged, for hazard_risk_basis: the limit, and how the data reached its
+ * quantity (the source's solid angle Omega from --subtense) or which source size was assumed. */
+static const char *basis_text(lx_hazard_limit lim, int radiance, int alpha_given)
+{
+    switch (lim) {
+    case LX_HZ_LIMIT_L_B:
+        return !radiance ? "L_B (E_B/Omega)" : alpha_given ? "L_B" : "L_B (large source assumed)";
+    case LX_HZ_LIMIT_E_B:
+        return radiance ? "E_B (L_B*Omega)" : alpha_given ? "E_B" : "E_B (small source assumed)";
+    case LX_HZ_LIMIT_L_R: return radiance ? "L_R" : "L_R (E_R/Omega)";
+    case LX_HZ_LIMIT_E_S: return "E_S";
+    case LX_HZ_LIMIT_E_UVA: return "E_UVA";
+    default: return "";
+    }
+}
+
 /* Appends the cells of the groups computed elsewhere (vendor, PAR, hazard, binning) for column i;
  * returns 0 when column i is not one of them. */
 static int append_lab(cli_table *t, const cli_metrics *m, int i, const char *unit, const lx_par *par,
@@ -249,14 +266,15 @@ static int append_lab(cli_table *t, const cli_metrics *m, int i, const char *uni
     case K_HZ_COV: cli_table_num(t, hz ? hz->coverage[x] : NAN); return 1;
     case K_HZ_GROUP: cli_table_str(t, risk ? lx_risk_group_name(risk->group) : ""); return 1;
     case K_HZ_BASIS: {
-        char buf[64] = "";
-        static const char *const rad[LX_HZ_COUNT] = {"L_B", "L_R", NULL, NULL}, *const irr[LX_HZ_COUNT] = {"E_B", NULL, "E_S", "E_UVA"};
+        char buf[160] = "";
         for (int k = 0; risk && k < LX_HZ_COUNT; k++)
             if (risk->criterion[k] != LX_RISK_NONE)
-                snprintf(buf + strlen(buf), sizeof buf - strlen(buf), "%s%s", *buf ? "," : "", radiance ? rad[k] : irr[k]);
+                snprintf(buf + strlen(buf), sizeof buf - strlen(buf), "%s%s", *buf ? "," : "",
+                         basis_text(risk->limit[k], radiance, m->subtense_rad > 0));
         cli_table_str(t, risk ? buf : "");
         return 1;
     }
+    case K_HZ_ALPHA: cli_table_num(t, risk && m->subtense_rad > 0 ? m->subtense_rad : NAN); return 1;
     case K_HZ_NOTCOV: {
         char buf[64] = "";
         for (int k = 0; hz && k < LX_HZ_COUNT; k++)

@@ -3,6 +3,7 @@
  * CIE sums for uniformly sampled data, exact integration of line spectra. */
 #include "colour/colour_private.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -211,12 +212,10 @@ static lx_status cri_cct(lx_ctx *ctx, double ut, double vt, double Yt, double *T
     return LX_OK;
 }
 
-lx_status lx_cri_compute(lx_ctx *ctx, const lx_spd *spd, lx_cri *out)
+/* The work of lx_cri_compute on a checked spectrum. */
+static lx_status cri_compute_spd(lx_ctx *ctx, const lx_spd *spd, lx_cri *out)
 {
-    LX__NEED_CTX(ctx);
-    if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "CRI: output is NULL");
-    lx_status st = lx_spd_check(ctx, spd);
-    if (st != LX_OK) return st;
+    lx_status st;
     const lx__table *tt = lx__table_find("cie13_3_tcs"), *t15 = lx__table_find("jis_z8726_tcs15");
     if (!tt || !t15) return lx__error(ctx, LX_EINVAL, NULL, 0, "CRI: embedded table cie13_3_tcs or jis_z8726_tcs15 missing");
     lx__qgrid g;
@@ -278,5 +277,22 @@ lx_status lx_cri_compute(lx_ctx *ctx, const lx_spd *spd, lx_cri *out)
 done:
     lx__free(buf);
     lx__qgrid_free(&g);
+    return st;
+}
+
+lx_status lx_cri_compute(lx_ctx *ctx, const lx_spd *spd, lx_cri *out)
+{
+    LX__NEED_CTX(ctx);
+    if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "CRI: output is NULL");
+    lx_status st = lx_spd_check(ctx, spd);
+    if (st != LX_OK) return st;
+    /* values near the bottom of the double range: the same spectrum scaled up by a power of two
+     * (exact; every result is scale-free) */
+    lx_spd up;
+    double *ubuf;
+    int te = lx__spd_tiny_scale(spd, &up, &ubuf);
+    if (te == INT_MIN) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    st = cri_compute_spd(ctx, te ? &up : spd, out);
+    lx__free(ubuf);
     return st;
 }

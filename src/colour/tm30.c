@@ -2,6 +2,7 @@
  * 16 hue-bin values, in CAM02-UCS (CIECAM02 forward model, Luo et al. 2006 UCS) with 99 CES. */
 #include "colour/colour_private.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -156,12 +157,10 @@ static void samples_jab(const double *cmf10, const lx__qgrid *g, const double *i
     }
 }
 
-lx_status lx_tm30_compute(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out)
+/* The work of lx_tm30_compute on a checked spectrum. */
+static lx_status tm30_compute_spd(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out)
 {
-    LX__NEED_CTX(ctx);
-    if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "TM-30: output is NULL");
-    lx_status st = lx_spd_check(ctx, spd);
-    if (st != LX_OK) return st;
+    lx_status st;
     const lx__table *tc = lx__table_find("ies_tm30_ces_1nm");
     const lx__table *t10 = lx__table_find("cie1964_10deg_xyz_1nm");
     const lx__table *t2 = lx__table_find("cie1931_2deg_xyz_1nm");
@@ -278,4 +277,21 @@ lx_status lx_tm30_compute(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out)
     lx__qgrid_free(&g);
     *out = r;
     return LX_OK;
+}
+
+lx_status lx_tm30_compute(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out)
+{
+    LX__NEED_CTX(ctx);
+    if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "TM-30: output is NULL");
+    lx_status st = lx_spd_check(ctx, spd);
+    if (st != LX_OK) return st;
+    /* values near the bottom of the double range: the same spectrum scaled up by a power of two
+     * (exact; every result is scale-free) */
+    lx_spd up;
+    double *ubuf;
+    int te = lx__spd_tiny_scale(spd, &up, &ubuf);
+    if (te == INT_MIN) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    st = tm30_compute_spd(ctx, te ? &up : spd, out);
+    lx__free(ubuf);
+    return st;
 }

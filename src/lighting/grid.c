@@ -5,6 +5,7 @@
  * the CPU or by kernels/grid.cl. */
 #include "grid_private.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -649,6 +650,43 @@ static lx_status grid_check_finite(lx_ctx *ctx, const lx_placement *lums, size_t
     return LX_OK;
 }
 
+/* A luminaire closer to a receiver point than double arithmetic resolves (d^2 below DBL_MIN: 1.5e-154
+ * m) and in front of it, or on the point itself: refused with the point named, never the 0 lx that
+ * the loops' d^2 > 0 test gave an underflowed distance (1e-155 m was an overflow error, 1e-162 m
+ * 0 lx). Only luminaires that close to the points' bounding box are looked at point by point, so the
+ * cost is O(n + m) on every real grid. The distance is computed on the vector scaled by 2^600 (exact). */
+static lx_status grid_check_near(lx_ctx *ctx, const lx_placement *lums, size_t m, const double *points, size_t n,
+                                 const double *normals, int shared_normal)
+{
+    const double r = 1.5e-154; /* > sqrt(DBL_MIN) = 1.49e-154 */
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (size_t i = 0; i < n; i++)
+        for (int c = 0; c < 3; c++) lo[c] = fmin(lo[c], points[3 * i + c]), hi[c] = fmax(hi[c], points[3 * i + c]);
+    for (size_t k = 0; k < m; k++) {
+        const double *p = lums[k].pos_m;
+        if (p[0] < lo[0] - r || p[0] > hi[0] + r || p[1] < lo[1] - r || p[1] > hi[1] + r || p[2] < lo[2] - r ||
+            p[2] > hi[2] + r)
+            continue;
+        for (size_t i = 0; i < n; i++) {
+            const double *q = points + 3 * i, *nv = normals + 3 * (shared_normal ? 0 : i);
+            double w[3] = {ldexp(q[0] - p[0], 600), ldexp(q[1] - p[1], 600), ldexp(q[2] - p[2], 600)};
+            double d2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2]; /* the true d^2 times 2^1200 */
+            if (!(d2 < ldexp(DBL_MIN, 1200))) continue;
+            if (d2 == 0)
+                return lx__error(ctx, LX_ERANGE, NULL, 0,
+                                 "luminaire %zu sits on point %zu (%g, %g, %g m): a point source's illuminance there is "
+                                 "undefined",
+                                 k + 1, i + 1, q[0], q[1], q[2]);
+            if (-(w[0] * nv[0] + w[1] * nv[1] + w[2] * nv[2]) <= 0) continue; /* behind the receiver: 0 lx */
+            return lx__error(ctx, LX_ERANGE, NULL, 0,
+                             "luminaire %zu is %g m from point %zu (%g, %g, %g m), closer than double arithmetic "
+                             "resolves (1.5e-154 m): its illuminance there leaves the double range",
+                             k + 1, ldexp(sqrt(d2), -600), i + 1, q[0], q[1], q[2]);
+        }
+    }
+    return LX_OK;
+}
+
 lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, const double *points, size_t n,
                               const double *normals, int shared_normal, const lx_grid_opts *opts, double *E_lx)
 {
@@ -671,7 +709,8 @@ lx_status lx_grid_illuminance(lx_ctx *ctx, const lx_placement *lums, size_t m, c
     }
     size_t tables_n = 0;
     lx_backend used = LX_BACKEND_CPU;
-    st = grid_place(ctx, lums, m, &o, mf, pl, own, &tables_n);
+    st = grid_check_near(ctx, lums, m, points, n, normals, shared_normal);
+    if (st == LX_OK) st = grid_place(ctx, lums, m, &o, mf, pl, own, &tables_n);
     if (st == LX_OK) st = grid_compute(ctx, pl, m, own, tables_n, points, n, normals, shared_normal, &o, tol, E, &used);
     if (st == LX_OK) st = grid_check_finite(ctx, lums, m, points, n, E, o.interp);
     if (st == LX_OK) {

@@ -65,6 +65,14 @@ static const lx_unit units[] = {
     {"arcsec", LX_Q_ANGLE, LX__PI / 648000.0, 1, "second of arc"},
     {"K", LX_Q_TEMPERATURE, 1.0, 1, "kelvin"},
     {"lm/W", LX_Q_EFFICACY, 1.0, 1, "lumen per watt"},
+    {"s", LX_Q_TIME, 1.0, 1, "second"},
+    {"min", LX_Q_TIME, 60.0, 1, "minute"},
+    {"h", LX_Q_TIME, 3600.0, 1, "hour"},
+    {"d", LX_Q_TIME, 86400.0, 1, "day"},
+    {"a", LX_Q_TIME, 8760.0 * 3600.0, 1, "year of 365 days (8760 h, as EN 15193-1 counts a year)"},
+    {"year", LX_Q_TIME, 8760.0 * 3600.0, 0, "year"},
+    {"m2", LX_Q_AREA, 1.0, 1, "square metre"},
+    {"ft2", LX_Q_AREA, FT_M * FT_M, 1, "square foot"},
 };
 
 #define NUNITS (sizeof units / sizeof units[0])
@@ -90,6 +98,8 @@ static const char *const qnames[LX_Q_COUNT][2] = {
     {"angle", "rad"},
     {"temperature", "K"},
     {"luminous efficacy", "lm/W"},
+    {"time", "s"},
+    {"area", "m2"},
 };
 
 const char *lx_quantity_name(lx_quantity q) { return q >= 0 && q < LX_Q_COUNT ? qnames[q][0] : ""; }

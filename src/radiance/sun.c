@@ -73,6 +73,19 @@ static lx_status check_input(lx_ctx *ctx, const lx_sun_input *in)
     };
     for (size_t i = 0; i < sizeof c / sizeof c[0]; i++)
         if (c[i].bad) return lx__error(ctx, LX_EINVAL, NULL, 0, "sun position: %s out of range", c[i].what);
+    /* the day exists in its month: the Gregorian calendar from 1582-10-15 on, the Julian before it
+     * (as julian_day counts), and 1582-10-05 .. 14 never existed */
+    int y = in->year, m = in->month, gregorian = y > 1582 || (y == 1582 && m > 10) || (y == 1582 && m == 10 && in->day >= 15);
+    int leap = gregorian ? (y % 4 == 0 && y % 100 != 0) || y % 400 == 0 : ((y % 4) + 4) % 4 == 0;
+    static const int dim[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+    int days = dim[m - 1] + (m == 2 && leap);
+    if (in->day > days)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "sun position: day %d out of range (%04d-%02d has %d days)", in->day, y, m,
+                         days);
+    if (y == 1582 && m == 10 && in->day > 4 && in->day < 15)
+        return lx__error(ctx, LX_EINVAL, NULL, 0,
+                         "sun position: 1582-10-%02d does not exist (the Gregorian calendar follows 1582-10-04 with 10-15)",
+                         in->day);
     return LX_OK;
 }
 

@@ -3,6 +3,7 @@
  * the form factors and the solve on the patches; the gather at every element centre (from the
  * patches) and at the receiver points (from the elements); the faces' results. */
 #include "scene/room_private.h"
+#include "scene/design_private.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -67,7 +68,7 @@ static lx_status direct_light(lx_ctx *ctx, const lx_scene *sc, const lx_scene_pl
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     }
     for (size_t l = 0; l < sc->n_lum; l++) {
-        lx__scene_lum_init(&le[l], &sc->lum[l], plan);
+        lx__scene_lum_init(&le[l], sc, l, plan);
         lc[l] = lx__room_cell(sc, sc->lum[l].pos_m);
     }
     *J = (direct_job){sc, m, le, lc, only, fmax(sc->nearfield_tol, m->quad_tol), E_dir, {{0}}};
@@ -218,6 +219,8 @@ lx_status lx__room_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
     for (size_t k = 0; k < n_eg; k++) Ei[elist[k]] = Eg[k];
     for (size_t e = 0; e < ne; e++) Be[e] = m->elem[e].rho * (Ed[e] + Ei[e]);
     if (sc->n_obs && (st = lx__glare_room_background(ctx, sc, m, Be, backend, res)) != LX_OK) goto out; /* UGR's Lb */
+    /* cylindrical receivers: the interreflected light on small vertical cylinders */
+    if ((st = lx__design_room_cylinder(ctx, sc, m, Be, backend, 0.25 * plan->room.tolerance, res)) != LX_OK) goto out;
     /* 4. the gather at the receiver points from the elements */
     size_t g = 0;
     for (size_t r = 0; r < sc->n_rec; r++)

@@ -562,7 +562,7 @@ lx_status lx__room_mesh_build(lx_ctx *ctx, const lx_scene *sc, const lx_scene_pl
         else memcpy(m->open, o->open, o->n_open * sizeof *m->open), m->n_open = o->n_open;
     }
     for (size_t l = 0; st == LX_OK && l < sc->n_lum; l++) {
-        lx__scene_lum_init(&b.le[l], &sc->lum[l], plan);
+        lx__scene_lum_init(&b.le[l], sc, l, plan);
         b.lum_cell[l] = lx__room_cell(sc, sc->lum[l].pos_m);
     }
     b.vis.occ = m->occ;

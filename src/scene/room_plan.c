@@ -141,7 +141,8 @@ static double share_max(const lx_scene *sc, lx_scene_plan *p, const lx__room_mes
 
 /* The reflecting area, its mean reflectance and the flux that reaches it (luminaires in a room,
  * or in the open with reflectors there). */
-static void flux_balance(const lx_scene *sc, const lx__room_mesh *m, double *S, double *rho, double *flux)
+static void flux_balance(const lx_scene *sc, const lx_scene_plan *p, const lx__room_mesh *m, double *S, double *rho,
+                         double *flux)
 {
     double a = 0, ra = 0;
     int open_reflectors = 0;
@@ -160,7 +161,7 @@ static void flux_balance(const lx_scene *sc, const lx__room_mesh *m, double *S, 
     double F = 0;
     for (size_t l = 0; l < sc->n_lum; l++) {
         int c = lx__room_cell(sc, sc->lum[l].pos_m);
-        if (c >= 0 || open_reflectors) F += sc->lum[l].flux_lm;
+        if (c >= 0 || open_reflectors) F += sc->lum[l].flux_lm * (p->lum_scale ? p->lum_scale[l] : 1);
     }
     *S = a;
     *rho = a > 0 ? ra / a : 0;
@@ -190,14 +191,22 @@ static lx_status plan_interreflection(lx_ctx *ctx, const lx_scene *sc, lx_scene_
                                       const lx__scene_lum *le)
 {
     const lx_effect_force f = sc->force[LX_EFFECT_INTERREFLECTION];
-    int reflectors = sc->n_room > 0;
+    /* a face of reflectance 0 reflects nothing: a room whose every face is black, with black
+     * obstructions and surfaces, holds no indirect light */
+    int reflectors = 0, bodies = sc->n_room + sc->n_surf + sc->n_obst > 0;
+    for (size_t i = 0; i < sc->n_room; i++)
+        for (int k = 0; k < 6; k++) reflectors |= sc->room[i].reflectance[k] > 0;
     for (size_t i = 0; i < sc->n_surf; i++) reflectors |= sc->surf[i].reflectance > 0;
     for (size_t i = 0; i < sc->n_obst; i++) reflectors |= sc->obst[i].reflectance > 0;
     if (!reflectors) {
         if (f == LX_FORCE_ON)
             return lx__error(ctx, LX_EPARSE, sc->file, sc->force_line[LX_EFFECT_INTERREFLECTION],
-                             "interreflection forced on, but the scene has no room and no reflecting surface");
-        why(p, LX_EFFECT_INTERREFLECTION, 0, "no room and no reflecting surfaces");
+                             bodies ? "interreflection forced on, but every reflectance of the scene's rooms, surfaces "
+                                      "and obstructions is 0: no light is reflected"
+                                    : "interreflection forced on, but the scene has no room and no reflecting surface");
+        why(p, LX_EFFECT_INTERREFLECTION, 0,
+            bodies ? "every reflectance is 0 (rooms, surfaces, obstructions): no light is reflected"
+                   : "no room and no reflecting surfaces");
         return LX_OK;
     }
     if (f == LX_FORCE_OFF) {
@@ -206,7 +215,7 @@ static lx_status plan_interreflection(lx_ctx *ctx, const lx_scene *sc, lx_scene_
     }
     lx_scene_room_plan *R = &p->room;
     double S, rho, flux;
-    flux_balance(sc, occ, &S, &rho, &flux);
+    flux_balance(sc, p, occ, &S, &rho, &flux);
     R->tolerance = sc->interreflection_tol;
     R->indirect_est_lx = S > 0 ? rho * flux / (S * (1 - rho)) : 0;
     R->share_est = share_max(sc, p, occ, le, R->indirect_est_lx);
@@ -239,7 +248,7 @@ static lx_status plan_interreflection(lx_ctx *ctx, const lx_scene *sc, lx_scene_
     add_counters(&p->planning, &m->probe);
     if (!p->on[LX_EFFECT_OCCLUSION]) m->n_occ = 0; /* occlusion off: nothing blocks, faces still reflect */
     R->mesh = m;
-    flux_balance(sc, m, &S, &rho, &flux); /* the exposed area */
+    flux_balance(sc, p, m, &S, &rho, &flux); /* the exposed area */
     R->flux_lm = flux;
     R->area_m2 = S;
     R->mean_reflectance = rho;
@@ -291,7 +300,7 @@ lx_status lx__room_plan(lx_ctx *ctx, const lx_scene *sc, int backend, lx_scene_p
     lx__scene_lum *le = lx__calloc(sc->n_lum ? sc->n_lum : 1, sizeof *le);
     lx__room_mesh *occ = NULL;
     if (!le) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
-    for (size_t l = 0; l < sc->n_lum; l++) lx__scene_lum_init(&le[l], &sc->lum[l], p);
+    for (size_t l = 0; l < sc->n_lum; l++) lx__scene_lum_init(&le[l], sc, l, p);
     lx_status st = lx__room_occluders(ctx, sc, &occ); /* and the faces, without patches */
     if (st == LX_OK) st = plan_occlusion(ctx, sc, p, occ, le);
     if (st == LX_OK) st = plan_interreflection(ctx, sc, p, occ, le);

@@ -1,6 +1,7 @@
 /* scene_daylight.c - daylight in scene files: the [sky] keys of CIE and Perez skies, the [sun]
  * section (a direction, altitude and azimuth, or a date, time and site through NREL SPA), the
  * [observer NAME] sections of glare, and their checks once the whole scene is read. */
+#include "scene/design_private.h"
 #include "scene/scene_private.h"
 
 #include <ctype.h>
@@ -271,12 +272,18 @@ lx_status lx__scene_obs_key(lx_ctx *ctx, lx_scene *sc, const char *file, long li
             return lx__error(ctx, LX_EPARSE, file, line, "background_luminance: must be positive");
         return st;
     }
+    lx_status st = LX_OK;
+    if (lx__design_obs_key(ctx, sc, file, line, key, value, &st)) return st;
     return lx__error(ctx, LX_EPARSE, file, line,
-                     "unknown key '%s' in [observer] (keys: position, view, background_luminance)", key);
+                     "unknown key '%s' in [observer] (keys: position, view, background_luminance, x, y, z, spacing, "
+                     "directions, direction_step)",
+                     key);
 }
 
 lx_status lx__scene_obs_finish(lx_ctx *ctx, lx_scene *sc)
 {
+    lx_status est = lx__design_obs_expand(ctx, sc); /* several positions and directions */
+    if (est != LX_OK) return est;
     for (size_t i = 0; i < sc->n_obs; i++) {
         lx_scene_observer *o = &sc->obs[i];
         if (isnan(o->pos_m[0]) || isnan(o->view[0]))

@@ -1,6 +1,6 @@
 /* scene_entities.c - the keys of [luminaire], [receiver] and [sky] sections, their checks when a
  * section ends (required keys, exclusive keys, ranges), and the scene's own life cycle. */
-#include "scene_private.h"
+#include "scene/design_private.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -40,7 +40,7 @@ lx_scene *lx__scene_new(const char *file)
     sc->nearfield_tol = 1e-5;
     sc->interreflection_tol = 1e-3;
     sc->patch_refinement = 1;
-    if (!sc->file || !sc->title) {
+    if (!sc->file || !sc->title || lx__design_new(sc) != LX_OK) {
         lx_scene_free(sc);
         return NULL;
     }
@@ -70,6 +70,7 @@ void lx_scene_free(lx_scene *sc)
     lx_envmap_free(sc->sky_map);
     lx__room_scene_free(sc);
     lx__daylight_scene_free(sc);
+    lx__design_free(sc);
     for (size_t i = 0; i < sc->n_obs; i++) lx__free(sc->obs[i].name);
     lx__free(sc->obs);
     lx__free(sc->title);
@@ -105,6 +106,7 @@ void lx__scene_lum_raw_free(scene__lum_raw *r)
     lx__free(r->lum_file);
     lx__free(r->spd);
     lx__free(r->spectrum);
+    lx__design_lum_raw_free(&r->design);
     memset(r, 0, sizeof *r);
 }
 
@@ -145,9 +147,12 @@ lx_status lx__scene_lum_key(lx_ctx *ctx, scene__lum_raw *r, const char *file, lo
     VEC("length", 1, LX_Q_LENGTH, &r->length, r->has_length)
     VEC("cct", 1, LX_Q_TEMPERATURE, &r->cct, r->has_cct)
     VEC("multiplier", 1, LX_Q_NONE, &r->multiplier, r->has_multiplier)
+    lx_status st = LX_OK;
+    if (lx__design_lum_key(ctx, &r->design, file, line, key, value, &st)) return st;
     return lx__error(ctx, LX_EPARSE, file, line,
                      "unknown key '%s' in [luminaire] (keys: type, position, aim, rotate, flux, intensity, exponent, "
-                     "beam, luminance, radius, width, length, file, multiplier, spd, spectrum, cct)",
+                     "beam, luminance, radius, width, length, file, multiplier, spd, spectrum, cct, "
+                     "maintenance_factor, maintenance, power, emergency, emergency_flux)",
                      key);
 }
 
@@ -411,6 +416,7 @@ lx_status lx__scene_lum_finish(lx_ctx *ctx, lx_scene *sc, scene__lum_raw *r)
     l.name = r->name;
     r->name = NULL;
     sc->lum[sc->n_lum++] = l;
+    st = lx__design_lum_finish(ctx, sc, &r->design);
     goto out;
 fail_l:
     lx_luminaire_free(l.lum);
@@ -450,6 +456,10 @@ lx_status lx__scene_rec_key(lx_ctx *ctx, scene__rec_raw *r, const char *file, lo
     VEC("normal", 3, LX_Q_NONE, r->normal, r->has_normal)
     VEC("reflectance", 1, LX_Q_NONE, &r->refl, r->has_refl)
     VEC("spacing", 1, LX_Q_LENGTH, &r->spacing, r->has_spacing)
+    {
+        lx_status st = LX_OK;
+        if (lx__design_rec_key(ctx, &r->design, file, line, key, value, &st)) return st;
+    }
     if (!strcmp(key, "x") || !strcmp(key, "y") || !strcmp(key, "z")) {
         int *n = key[0] == 'x' ? &r->nx : key[0] == 'y' ? &r->ny : &r->nz;
         double *d = key[0] == 'x' ? r->xr : key[0] == 'y' ? r->yr : r->zr;
@@ -469,7 +479,7 @@ lx_status lx__scene_rec_key(lx_ctx *ctx, scene__rec_raw *r, const char *file, lo
     }
     return lx__error(ctx, LX_EPARSE, file, line,
                      "unknown key '%s' in [receiver] (keys: type, position, normal, reflectance, x, y, z, spacing, "
-                     "points)",
+                     "points, cylindrical, semicylindrical)",
                      key);
 }
 
@@ -596,6 +606,9 @@ lx_status lx__scene_rec_finish(lx_ctx *ctx, lx_scene *sc, scene__rec_raw *r)
     rc.name = r->name;
     r->name = NULL;
     sc->rec[sc->n_rec++] = rc;
+    scene__rec_design dz = r->design;
+    lx__scene_rec_raw_free(r);
+    return lx__design_rec_finish(ctx, sc, &dz);
 out:
     if (st != LX_OK) lx__free(rc.points);
     lx__scene_rec_raw_free(r);

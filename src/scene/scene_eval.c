@@ -2,7 +2,9 @@
  * computed once (point law or near-field patches) and summed (linearity), plus the sky, the
  * Lambertian luminance and the spectral quantities; counts the work per effect. */
 #include "scene/daylight_private.h"
+#include "scene/design_private.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -38,6 +40,9 @@ void lx_scene_result_free(lx_scene_result *res)
     lx__free(res->externally_reflected);
     lx__free(res->internally_reflected);
     lx__free(res->observer_indirect_lx);
+    lx__free(res->cylindrical_lx);
+    lx__free(res->semicylindrical_lx);
+    lx__free(res->modelling);
     for (size_t i = 0; i < res->n_surfaces; i++) lx__free(res->surfaces[i].name);
     lx__free(res->surfaces);
     lx__free(res);
@@ -45,9 +50,11 @@ void lx_scene_result_free(lx_scene_result *res)
 
 typedef lx__scene_lum lum_eval;
 
-void lx__scene_lum_init(lx__scene_lum *e, const lx_scene_luminaire *l, const lx_scene_plan *plan)
+void lx__scene_lum_init(lx__scene_lum *e, const lx_scene *sc, size_t li, const lx_scene_plan *plan)
 {
+    const lx_scene_luminaire *l = &sc->lum[li];
     e->l = l;
+    e->k = plan->lum_scale ? plan->lum_scale[li] : 1;
     lx__scene_frame(l, e->ex, e->ey, e->ez);
     e->area = l->radius_m > 0 ? LX__PI * l->radius_m * l->radius_m : l->width_m * l->length_m;
     e->spot_falloff = plan->on[LX_EFFECT_SPOT_FALLOFF];
@@ -84,6 +91,11 @@ static double intensity(lx_counters *cnt, const lum_eval *le, const double u[3],
     return 0;
 }
 
+double lx__scene_intensity(lx_counters *cnt, const lx__scene_lum *le, const double u[3], double frac)
+{
+    return intensity(cnt, le, u, frac);
+}
+
 /* E at receiver point q (normal n) from a point source at s with intensity I(u) scaled by frac;
  * with vis, 0 when an occluder cuts the segment. */
 static double point_E(lx_counters *cnt, const lx__scene_lum *le, const double s[3], const double q[3], const double n[3],
@@ -91,7 +103,12 @@ static double point_E(lx_counters *cnt, const lx__scene_lum *le, const double s[
 {
     double v[3] = {q[0] - s[0], q[1] - s[1], q[2] - s[2]};
     double d2 = dot(v, v);
-    if (!(d2 > 0)) return 0;
+    int e = 0; /* closer than 1.5e-154 m d2 underflows: the vector scaled by 2^600 (exact), 1/d2 by 2^1200 */
+    if (!(d2 >= DBL_MIN)) {
+        if (v[0] == 0 && v[1] == 0 && v[2] == 0) return NAN; /* the source at the point: E is undefined */
+        for (int k = 0; k < 3; k++) v[k] = ldexp(v[k], 600);
+        d2 = dot(v, v), e = 1200;
+    }
     double d = sqrt(d2);
     double u[3] = {v[0] / d, v[1] / d, v[2] / d};
     double cx = le->cosine ? -dot(n, u) : 1; /* cos(xi): the ray arrives against the normal */
@@ -100,7 +117,7 @@ static double point_E(lx_counters *cnt, const lx__scene_lum *le, const double s[
         cnt->visibility_tests++;
         if (!lx__room_visible(vis->occ, vis->n_occ, s, q, vis->skip, -1)) return 0;
     }
-    return intensity(cnt, le, u, frac) * cx / d2;
+    return ldexp(intensity(cnt, le, u, frac) * cx / d2, e); /* beyond the range: infinite, refused by check_finite */
 }
 
 double lx__scene_point_E(lx_ctx *ctx, const lx__scene_lum *le, const double s[3], const double q[3], const double n[3],
@@ -205,8 +222,9 @@ static void probe_point(const lx__scene_lum *le, int k, double s[3])
     for (int c = 0; c < 3; c++) s[c] = l->pos_m[c] + a * le->ex[c] + b * le->ey[c];
 }
 
-double lx__scene_lum_E(lx_counters *cnt, const lx__scene_lum *le, const double q[3], const double n[3], int path,
-                       double near_tol, const lx__scene_vis *vis)
+/* The luminaire's light at q by its path, before the plan's factor (lx__scene_lum_E). */
+static double lum_E(lx_counters *cnt, const lx__scene_lum *le, const double q[3], const double n[3], int path,
+                    double near_tol, const lx__scene_vis *vis)
 {
     double size = lx__scene_lum_size(le->l);
     if (vis && size > 0) {
@@ -226,6 +244,14 @@ double lx__scene_lum_E(lx_counters *cnt, const lx__scene_lum *le, const double q
     if (path) return near_E(cnt, le, q, n, near_tol, NULL, LX__NEAR_MAX_CELLS);
     cnt->point_evaluations++;
     return point_E(cnt, le, le->l->pos_m, q, n, 1, vis);
+}
+
+double lx__scene_lum_E(lx_counters *cnt, const lx__scene_lum *le, const double q[3], const double n[3], int path,
+                       double near_tol, const lx__scene_vis *vis)
+{
+    if (!(le->k > 0)) return 0; /* dark in this operation */
+    double E = lum_E(cnt, le, q, n, path, near_tol, vis);
+    return le->k == 1 ? E : le->k * E;
 }
 
 /* The probe function of the near-field decision (as the planner's): the luminaire as a point at
@@ -325,6 +351,7 @@ static lx_status device_blocks(lx_ctx *ctx, const lx_scene *sc, const lx_scene_p
             }
             double tilt = lx_luminaire_tilt_factor(L->lum, acos(fmax(-1.0, fmin(1.0, -L->aim[2]))));
             double k = tilt > 0 ? L->scale / tilt : 0;
+            if (plan->lum_scale) k *= plan->lum_scale[l]; /* maintenance, emergency operation */
             for (size_t i = 0; i < rc->n; i++) contrib[(g0 + i) * (nl + 1) + l] = E[i] * k;
             ctx->counters.kernel_launches += lx_ctx_backend_used(ctx) == LX_BACKEND_OPENCL;
             ctx->counters.point_evaluations += rc->n;
@@ -359,7 +386,7 @@ static lx_status check_finite(lx_ctx *ctx, const lx_scene *sc, const lx_scene_re
             if (what)
                 return lx__error(ctx, LX_ERANGE, rc->file, rc->line,
                                  "receiver '%s', point %zu (%g, %g, %g m): %s is %s%s%s%s: the fluxes, intensities or "
-                                 "distances leave the double range",
+                                 "distances leave the double range (or a point source sits on the point)",
                                  rc->name, g - res->first[r] + 1, q[0], q[1], q[2], what, isnan(v) ? "NaN" : "infinite",
                                  who ? " from luminaire '" : "", who ? who : "", who ? "'" : "");
         }
@@ -369,7 +396,8 @@ static lx_status check_finite(lx_ctx *ctx, const lx_scene *sc, const lx_scene_re
 
 /* Each point's luminance, and with spectral on its CCT, Duv and melanopic EDI from the sources'
  * contributions (and the interreflected and daylight parts). */
-static void point_colour(lx_ctx *ctx, const lx_scene *sc, lx_scene_result *res, const scene__spec *spec, long only,
+static void point_colour(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *plan, lx_scene_result *res,
+                         const scene__spec *spec, long only,
                          const lx__daylight *day, int spectral)
 {
     size_t nl = sc->n_lum, nc = nl + 1;
@@ -394,7 +422,7 @@ static void point_colour(lx_ctx *ctx, const lx_scene *sc, lx_scene_result *res, 
                 }
                 for (size_t l = 0; l < nl && Eind > 0; l++)
                     if (only < 0 || (long)l == only) {
-                        double f = sc->lum[l].flux_lm;
+                        double f = sc->lum[l].flux_lm * (plan->lum_scale ? plan->lum_scale[l] : 1);
                         fl += f, fx += f * spec[l].x_per_lx, fz += f * spec[l].z_per_lx, fm += f * spec[l].mel_W_per_lx;
                     }
                 if (fl > 0) X += Eind * fx / fl, Z += Eind * fz / fl, mel += Eind * fm / fl;
@@ -407,6 +435,22 @@ static void point_colour(lx_ctx *ctx, const lx_scene *sc, lx_scene_result *res, 
             }
         }
     }
+}
+
+/* What follows the luminaires' direct light at the points: the cylindrical receivers' direct light,
+ * the daylight through the openings, the interreflected part (E_lx gains indirect_lx, the
+ * daylight's too) and the modelling ratio. */
+static lx_status after_direct(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *plan, const lum_eval *le,
+                              const lx__scene_vis *vis, long only, lx__daylight *day, lx_scene_result *res)
+{
+    lx_status st = lx__design_cyl_alloc(ctx, sc, res);
+    if (st != LX_OK) return st;
+    lx__design_cyl_direct(&ctx->counters, sc, plan, le, vis, only, res); /* small vertical cylinders */
+    if (day && (st = lx__daylight_points(ctx, day, res)) != LX_OK) return st; /* the sky's column */
+    if (plan->on[LX_EFFECT_INTERREFLECTION] && (st = lx__room_eval(ctx, sc, plan, only, day, res)) != LX_OK) return st;
+    if (day && (st = lx__daylight_finish(ctx, day, res)) != LX_OK) return st;
+    lx__design_cyl_modelling(sc, res);
+    return LX_OK;
 }
 
 lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *plan, const lx_scene_eval_opts *opts,
@@ -443,7 +487,7 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
     if (!res->first || !res->E_lx || !res->contrib_lx || !res->L_cd_m2 || !res->cct_K || !res->duv ||
         !res->melanopic_edi_lx)
         goto nomem;
-    for (size_t l = 0; l < nl; l++) lx__scene_lum_init(&le[l], &sc->lum[l], plan);
+    for (size_t l = 0; l < nl; l++) lx__scene_lum_init(&le[l], sc, l, plan);
     int sky = plan->on[LX_EFFECT_ENVIRONMENT] && only < 0;
     int spectral = plan->on[LX_EFFECT_SPECTRAL];
     if (sky && sc->sky == LX_SKY_MAP && (st = lx__scene_sky_map_load(ctx, sc, &map)) != LX_OK) goto fail;
@@ -500,12 +544,8 @@ lx_status lx_scene_eval(lx_ctx *ctx, const lx_scene *sc, const lx_scene_plan *pl
         }
     }
     res->first[sc->n_rec] = g;
-    /* daylight through the openings at the points (the sky's column) */
-    if (day && (st = lx__daylight_points(ctx, day, res)) != LX_OK) goto fail;
-    /* the interreflected part: E_lx gains indirect_lx (the daylight's too) */
-    if (plan->on[LX_EFFECT_INTERREFLECTION] && (st = lx__room_eval(ctx, sc, plan, only, day, res)) != LX_OK) goto fail;
-    if (day && (st = lx__daylight_finish(ctx, day, res)) != LX_OK) goto fail;
-    point_colour(ctx, sc, res, spec, only, day, spectral);
+    if ((st = after_direct(ctx, sc, plan, le, &vis, only, day, res)) != LX_OK) goto fail;
+    point_colour(ctx, sc, plan, res, spec, only, day, spectral);
     if ((st = check_finite(ctx, sc, res, nl, spectral)) != LX_OK) goto fail;
     lx__daylight_free(day);
     lx__daylight_free(sun);

@@ -80,6 +80,8 @@ void lx_scene_plan_free(lx_scene_plan *plan)
     lx__free(plan->near_why);
     lx__free(plan->device);
     lx__room_plan_free(plan);
+    lx__free(plan->lum_scale);
+    lx__free(plan->internal); /* an emergency plan's copy of the scene (its arrays are the scene's) */
     lx__free(plan);
 }
 
@@ -144,7 +146,7 @@ static lx_status plan_near(lx_ctx *ctx, const lx_scene *sc, lx_scene_plan *p, si
     }
     int any_file = 0;
     for (size_t l = 0; l < nl; l++) {
-        lx__scene_lum_init(&le[l], &sc->lum[l], p);
+        lx__scene_lum_init(&le[l], sc, l, p);
         any_file |= sc->lum[l].kind == LX_SLUM_FILE && lx__scene_lum_size(&sc->lum[l]) > 0;
     }
     lx_counters before = ctx->counters;
@@ -517,16 +519,65 @@ static lx_status plan_opencl(lx_ctx *ctx, const lx_scene *sc, lx_backend backend
     return LX_OK;
 }
 
+/* The factor of each luminaire's light in the plan's operation (lx_scene_plan.lum_scale). */
+static lx_status plan_scale(lx_ctx *ctx, const lx_scene *sc, lx_scene_mode mode, lx_scene_plan *p)
+{
+    const lx_scene_design *d = sc->design;
+    p->mode = (int)mode;
+    p->lum_scale = lx__alloc_n((sc->n_lum ? sc->n_lum : 1), sizeof *p->lum_scale);
+    if (!p->lum_scale) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    size_t n_em = 0;
+    for (size_t l = 0; l < sc->n_lum; l++) {
+        double mf = d && d->lum_mf ? d->lum_mf[l] : 1;
+        lx_lum_mode m = d && d->lum_mode ? d->lum_mode[l] : LX_LUM_NORMAL;
+        if (mode == LX_SCENE_NORMAL) p->lum_scale[l] = m == LX_LUM_EMERGENCY ? 0 : mf;
+        else {
+            p->lum_scale[l] = m == LX_LUM_NORMAL ? 0 : mf * d->lum_emergency_lm[l] / sc->lum[l].flux_lm;
+            n_em += m != LX_LUM_NORMAL;
+        }
+    }
+    if (mode == LX_SCENE_EMERGENCY && !n_em)
+        return lx__error(ctx, LX_EPARSE, sc->file, 0,
+                         "emergency lighting: no luminaire has 'emergency = maintained' or 'non-maintained'");
+    return LX_OK;
+}
+
 lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, lx_backend backend, lx_scene_plan **out)
+{
+    return lx_scene_plan_make_mode(ctx, sc, backend, LX_SCENE_NORMAL, out);
+}
+
+/* EN 1838's emergency operation counts direct light only: the scene planned with interreflection,
+ * daylight and the sky forced off (a copy of the scene's header that the plan keeps: the mesh and
+ * the daylight state point to it) and those reasons saying why. */
+static const char emergency_why[] = "emergency lighting (EN 1838): direct light only, as the standard counts it";
+
+lx_status lx_scene_plan_make_mode(lx_ctx *ctx, const lx_scene *sc, lx_backend backend, lx_scene_mode mode,
+                                  lx_scene_plan **out)
 {
     LX__NEED_CTX(ctx);
     if (!sc || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_plan_make: NULL argument");
     *out = NULL;
     if (backend != LX_BACKEND_AUTO && backend != LX_BACKEND_CPU && backend != LX_BACKEND_OPENCL)
         return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_plan_make: unknown backend %d", (int)backend);
+    if (mode != LX_SCENE_NORMAL && mode != LX_SCENE_EMERGENCY)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_scene_plan_make_mode: unknown mode %d", (int)mode);
     lx_scene_plan *p = plan_alloc(sc);
     if (!p) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     lx_status st;
+    if ((st = plan_scale(ctx, sc, mode, p)) != LX_OK) goto fail;
+    if (mode == LX_SCENE_EMERGENCY) {
+        lx_scene *em = lx__alloc(sizeof *em);
+        if (!em) {
+            st = lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+            goto fail;
+        }
+        *em = *sc;
+        em->force[LX_EFFECT_INTERREFLECTION] = em->force[LX_EFFECT_DAYLIGHT] = em->force[LX_EFFECT_ENVIRONMENT] =
+            LX_FORCE_OFF;
+        p->internal = em;
+        sc = em;
+    }
     if ((st = plan_point_laws(ctx, sc, p)) != LX_OK || (st = plan_near_field(ctx, sc, p)) != LX_OK) goto fail;
     /* spectral: only when asked for and every source has a spectrum; the environment */
     if ((st = plan_spectral(ctx, sc, p)) != LX_OK || (st = plan_environment(ctx, sc, p)) != LX_OK) goto fail;
@@ -539,6 +590,11 @@ lx_status lx_scene_plan_make(lx_ctx *ctx, const lx_scene *sc, lx_backend backend
     if ((st = plan_opencl(ctx, sc, backend, p)) != LX_OK) goto fail;
     for (int e = 0; e < LX_EFFECT_COUNT; e++)
         p->forced[e] = sc->force[e] != LX_FORCE_AUTO;
+    if (mode == LX_SCENE_EMERGENCY) {
+        snprintf(p->reason[LX_EFFECT_INTERREFLECTION], sizeof p->reason[0], "%s", emergency_why);
+        snprintf(p->reason[LX_EFFECT_DAYLIGHT], sizeof p->reason[0], "%s", emergency_why);
+        snprintf(p->reason[LX_EFFECT_ENVIRONMENT], sizeof p->reason[0], "%s", emergency_why);
+    }
     *out = p;
     return LX_OK;
 fail:

@@ -7,6 +7,15 @@
 #include "radiance/radiance_private.h"
 
 
+/* The deliverable's keys of a [luminaire] section (design_read.c): maintenance factor or scheme,
+ * power, emergency operation. */
+typedef struct scene__lum_design {
+    int has_mf, has_power, has_eflux, mode;
+    double mf, power, eflux;
+    char *maint;
+    long mf_line, maint_line, power_line, eflux_line, mode_line;
+} scene__lum_design;
+
 /* Raw keys of a [luminaire] section, checked when the section ends. */
 typedef struct scene__lum_raw {
     char *name;
@@ -20,7 +29,15 @@ typedef struct scene__lum_raw {
     double pos[3], aim[3], rotate, flux, intensity, exponent, beam, luminance, radius, width, length, cct,
         multiplier;
     long flux_line, cct_line;
+    scene__lum_design design;
 } scene__lum_raw;
+
+/* The deliverable's keys of a [receiver] section (design_read.c): cylindrical, semicylindrical. */
+typedef struct scene__rec_design {
+    int cyl, has_facing;
+    double facing[3];
+    long line;
+} scene__rec_design;
 
 /* Raw keys of a [receiver] section. */
 typedef struct scene__rec_raw {
@@ -33,6 +50,7 @@ typedef struct scene__rec_raw {
     int nx, ny, nz; /* values given for x, y, z (0: key absent) */
     double pos[3], normal[3], refl, spacing, xr[2], yr[2], zr[2];
     long points[2];
+    scene__rec_design design;
 } scene__rec_raw;
 
 void lx__scene_lum_raw_init(scene__lum_raw *r, const char *name, const char *file, long line);
@@ -134,8 +152,13 @@ typedef struct lx__scene_lum {
     double ex[3], ey[3], ez[3];
     double area;
     int spot_falloff, gonio, cosine;
+    double k; /* the plan's factor of its light (maintenance, emergency operation): lx_scene_plan.lum_scale */
 } lx__scene_lum;
-void lx__scene_lum_init(lx__scene_lum *e, const lx_scene_luminaire *l, const lx_scene_plan *plan);
+/* Luminaire l of scene sc as the plan evaluates it. */
+void lx__scene_lum_init(lx__scene_lum *e, const lx_scene *sc, size_t l, const lx_scene_plan *plan);
+/* The luminaire's intensity (cd, before the plan's factor k) towards the unit direction u (from the
+ * luminaire), or that of a fraction frac of its luminous area; counts its spot and table work. */
+double lx__scene_intensity(lx_counters *cnt, const lx__scene_lum *le, const double u[3], double frac);
 /* E at receiver point q (unit normal n) of the luminaire as a point source at s carrying frac of
  * its intensity (the point model; counts its spot and table work). */
 double lx__scene_point_E(lx_ctx *ctx, const lx__scene_lum *le, const double s[3], const double q[3], const double n[3],

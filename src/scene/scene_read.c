@@ -1,7 +1,7 @@
 /* scene_read.c - the scene file reader: INI-like sections, `key = value` with units on every
  * number, `#` comments, includes relative to the including file (cycles detected). Every error
  * names the scene file and line; unknown sections and keys are errors. */
-#include "scene/scene_private.h"
+#include "scene/design_private.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -15,7 +15,8 @@
 
 #define MAX_DEPTH LX__SCENE_MAX_DEPTH
 
-enum { SEC_NONE = 0, SEC_SCENE, SEC_LUM, SEC_REC, SEC_SKY, SEC_OUTPUT, SEC_EFFECTS, SEC_SUN, SEC_OBS, SEC_ROOM, SEC_OPEN };
+enum { SEC_NONE = 0, SEC_SCENE, SEC_LUM, SEC_REC, SEC_SKY, SEC_OUTPUT, SEC_EFFECTS, SEC_SUN, SEC_OBS, SEC_ROOM, SEC_OPEN,
+       SEC_DESIGN };
 
 /* Keys given in the current section (duplicates are errors). */
 #define MAX_KEYS 32
@@ -173,10 +174,20 @@ static lx_status open_section(reader *r, const char *file, long line, char *s, c
                                         "sun",   "observer",  "room",     "surface",     "obstruction", "opening"};
     int k = 0;
     while (k < 12 && strcmp(kind, known[k])) k++;
+    int design = lx__design_section_kind(kind);
+    if (design) {
+        if (design == LX__DSEC_ENERGY && *name)
+            return lx__error(r->ctx, LX_EPARSE, file, line, "[energy] takes no name (got '%s')", name);
+        if (design != LX__DSEC_ENERGY && !*name)
+            return lx__error(r->ctx, LX_EPARSE, file, line, "[%s] needs a name: [%s NAME]", kind, kind);
+        r->sec = SEC_DESIGN;
+        return lx__design_open(r->ctx, r->sc, design, name, file, line);
+    }
     if (k == 12)
         return lx__error(r->ctx, LX_EPARSE, file, line,
                          "unknown section [%s] (sections: scene, luminaire NAME, receiver NAME, sky, sun, observer NAME, "
-                         "output, effects, room NAME, surface NAME, obstruction NAME, opening NAME)",
+                         "output, effects, room NAME, surface NAME, obstruction NAME, opening NAME, maintenance NAME, "
+                         "area NAME, requirement NAME, energy)",
                          kind);
     int room_kind = k == 8 ? SCENE__ROOM : k == 9 ? SCENE__SURFACE : k == 10 ? SCENE__OBSTRUCTION : 0;
     int named = !strcmp(kind, "luminaire") || !strcmp(kind, "receiver") || !strcmp(kind, "observer") || !strcmp(kind, "opening") ||
@@ -295,10 +306,11 @@ static lx_status key_value(reader *r, const char *file, long line, const char *k
         {
             lx_status st = LX_OK;
             if (lx__room_scene_key(ctx, sc, file, line, key, value, &st)) return st;
+            if (lx__design_scene_key(ctx, sc, file, line, key, value, &st)) return st;
         }
         return lx__error(ctx, LX_EPARSE, file, line,
                          "unknown key '%s' in [scene] (keys: title, near_field_tolerance, interreflection_tolerance, "
-                         "patch_size, patch_refinement)",
+                         "patch_size, patch_refinement, maintenance_factor, maintenance)",
                          key);
     case SEC_LUM: return lx__scene_lum_key(ctx, &r->lraw, file, line, key, value);
     case SEC_REC: return lx__scene_rec_key(ctx, &r->rraw, file, line, key, value);
@@ -307,6 +319,7 @@ static lx_status key_value(reader *r, const char *file, long line, const char *k
     case SEC_OBS: return lx__scene_obs_key(ctx, sc, file, line, key, value);
     case SEC_ROOM: return lx__room_key(ctx, &r->mraw, file, line, key, value);
     case SEC_OPEN: return lx__scene_open_key(ctx, sc, file, line, key, value);
+    case SEC_DESIGN: return lx__design_key(ctx, sc, file, line, key, value);
     case SEC_OUTPUT: {
         int b = 0;
         if (!strcmp(key, "illuminance")) {
@@ -429,6 +442,7 @@ lx_status lx_scene_read_mem(lx_ctx *ctx, const char *name, const char *text, siz
     lx__room_raw_free(&r.mraw);
     if (st == LX_OK) st = lx__scene_daylight_finish(ctx, r.sc, &r.sun);
     if (st == LX_OK) st = lx__scene_obs_finish(ctx, r.sc);
+    if (st == LX_OK) st = lx__design_finish(ctx, r.sc);
     if (st == LX_OK) st = lx__scene_finish(ctx, r.sc);
     if (st != LX_OK) {
         lx_scene_free(r.sc);

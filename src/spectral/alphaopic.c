@@ -2,6 +2,7 @@
  * (EDI) and daylight efficacy ratios (DER), for one spectrum and for batches. */
 #include "spectral/spectral_private.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,6 +24,20 @@ lx_status lx_alphaopic_compute(lx_ctx *ctx, const lx_spd *spd, lx_method method,
     if (!out) return lx__error(ctx, LX_EINVAL, NULL, 0, "alpha-opic: output is NULL");
     lx_status st = lx_spd_check(ctx, spd);
     if (st != LX_OK) return st;
+    lx_spd up; /* values near the bottom of the range: scaled up (exact), the absolute results back */
+    double *ubuf;
+    int te = lx__spd_tiny_scale(spd, &up, &ubuf);
+    if (te == INT_MIN) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    if (te) {
+        lx_alphaopic a;
+        st = lx_alphaopic_compute(ctx, &up, method, &a);
+        lx__free(ubuf);
+        if (st != LX_OK) return st;
+        for (int k = 0; k < 5; k++) a.irradiance[k] = ldexp(a.irradiance[k], te), a.edi[k] = ldexp(a.edi[k], te);
+        a.illuminance = ldexp(a.illuminance, te);
+        *out = a;
+        return LX_OK;
+    }
     method = lx_method_resolve(spd, method);
     lx_alphaopic r;
     memset(&r, 0, sizeof r); /* reserved included (ABI policy) */

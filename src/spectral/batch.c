@@ -26,6 +26,26 @@
 
 /* ---- weights ---- */
 
+/* The exact weights of a band function fn on the grid: sample j weighs the integral of its hat
+ * function (1 at the sample, 0 at its neighbours; half a hat at the grid's ends, the spectrum being
+ * zero outside them) times fn, so that the dot product is lx_spd_integrate's exact method. */
+static void band_weights(const lx_spd *fn, double start_nm, double step_nm, size_t n_lambda, double *w)
+{
+    size_t k = 0; /* fn's first segment that can reach the current hat */
+    for (size_t j = 0; j < n_lambda; j++) {
+        double l[3], v[3];
+        size_t n = 0;
+        if (j > 0) l[n] = start_nm + (double)(j - 1) * step_nm, v[n++] = 0.0;
+        l[n] = start_nm + (double)j * step_nm, v[n++] = 1.0;
+        if (j + 1 < n_lambda) l[n] = start_nm + (double)(j + 1) * step_nm, v[n++] = 0.0;
+        w[j] = 0.0;
+        if (n < 2 || fn->n < 2 || l[n - 1] <= fn->lambda_nm[0] || l[0] >= fn->lambda_nm[fn->n - 1]) continue;
+        while (k + 2 < fn->n && fn->lambda_nm[k + 1] <= l[0]) k++;
+        lx_spd hat = {NULL, n, l, v}, part = {NULL, fn->n - k, fn->lambda_nm + k, fn->value + k};
+        w[j] = lx__exact_product(&hat, &part);
+    }
+}
+
 lx_status lx__batch_weights(lx_ctx *ctx, const lx_function *fns, size_t k, double start_nm, double step_nm,
                             size_t n_lambda, double *w)
 {
@@ -33,6 +53,10 @@ lx_status lx__batch_weights(lx_ctx *ctx, const lx_function *fns, size_t k, doubl
         lx_spd fn;
         lx_status st = lx_function_get(ctx, fns[f], &fn);
         if (st) return st;
+        if (lx__fn_band_exact(fns[f])) {
+            band_weights(&fn, start_nm, step_nm, n_lambda, w + f * n_lambda);
+            continue;
+        }
         /* lx__interp at increasing wavelengths, its bracket found by walking instead of bisection
          * (the same bracket, so the same values) */
         size_t lo = 0;

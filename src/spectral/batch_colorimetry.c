@@ -81,6 +81,20 @@ static void range_keep(lx_observer obs, const lx_batch *b, double lo, double hi)
     pthread_mutex_unlock(&ranges_lock);
 }
 
+/* Spectrum i of the batch through lx_spd_colorimetry (cie15 at the grid), which scales values near the
+ * bottom of the double range up before integrating (the batch sums round every subnormal term). */
+static lx_status row_exact(lx_ctx *ctx, const job *j, size_t i)
+{
+    size_t n = j->b->n_lambda;
+    double *buf = lx__alloc_n(2 * n, sizeof *buf);
+    if (!buf) return LX_ENOMEM;
+    for (size_t k = 0; k < n; k++) buf[k] = j->b->start_nm + (double)k * j->b->step_nm, buf[n + k] = value_at(j->b, i, k, 0);
+    lx_spd s = {.n = n, .lambda_nm = buf, .value = buf + n, .name = "row"};
+    lx_status st = lx_spd_colorimetry(ctx, &s, j->obs, LX_METHOD_CIE15, &j->out[i]);
+    lx__free(buf);
+    return st;
+}
+
 /* Spectra [i0, i1) on thread t, with a context of its own (a context is one thread's). */
 static void work(void *arg, long i0, long i1, int t)
 {
@@ -88,9 +102,14 @@ static void work(void *arg, long i0, long i1, int t)
     lx_ctx *ctx = NULL;
     if ((j->st[t] = lx_ctx_create(&ctx)) != LX_OK) return;
     for (long i = i0; i < i1 && j->st[t] == LX_OK; i++) {
+        const double *q = j->ints + 4 * i;
+        double rad = lx__batch_radiant(j->b, i), big = fmax(fmax(fabs(q[0]), fabs(q[1])), fmax(fmax(fabs(q[2]), fabs(q[3])), fabs(rad)));
+        if (big > 0 && big < 0x1p-540) { /* a row of values below 2^-600 or so: its integrals lost digits */
+            j->st[t] = row_exact(ctx, j, (size_t)i);
+            continue;
+        }
         j->out[i].method = LX_METHOD_CIE15;
-        j->st[t] = lx__colorimetry_fast(ctx, j->obs, j->ints + 4 * i, j->ints[4 * i + 3], lx__batch_radiant(j->b, i), j->lo_K,
-                                        j->hi_K, &j->out[i]);
+        j->st[t] = lx__colorimetry_fast(ctx, j->obs, q, q[3], rad, j->lo_K, j->hi_K, &j->out[i]);
     }
     lx_ctx_destroy(ctx);
 }

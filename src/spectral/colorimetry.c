@@ -2,6 +2,7 @@
  * chromaticities, CCT and Duv, luminous efficacy of radiation, scotopic quantities. */
 #include "spectral/spectral_private.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -149,6 +150,22 @@ lx_status lx_spd_colorimetry(lx_ctx *ctx, const lx_spd *spd, lx_observer obs, lx
         return lx__error(ctx, LX_EINVAL, NULL, 0, "observer must be 2 or 10 degrees, not %d", (int)obs);
     lx_status st = lx_spd_check(ctx, spd);
     if (st != LX_OK) return st;
+    /* values near the bottom of the range: the colorimetry of the spectrum scaled up by 2^-e
+     * (exact), its absolute quantities scaled back; chromaticities, CCT and ratios as they are */
+    lx_spd up;
+    double *ubuf;
+    int te = lx__spd_tiny_scale(spd, &up, &ubuf);
+    if (te == INT_MIN) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    if (te) {
+        lx_colorimetry r;
+        st = lx_spd_colorimetry(ctx, &up, obs, method, &r);
+        lx__free(ubuf);
+        if (st != LX_OK) return st;
+        r.X = ldexp(r.X, te), r.Y = ldexp(r.Y, te), r.Z = ldexp(r.Z, te);
+        r.radiant = ldexp(r.radiant, te), r.scotopic_Y = ldexp(r.scotopic_Y, te);
+        *out = r;
+        return LX_OK;
+    }
     method = lx_method_resolve(spd, method);
     lx_function f0 = obs == LX_OBSERVER_2 ? LX_FN_XBAR_2 : LX_FN_XBAR_10;
     double xyz[3], scot, radiant;

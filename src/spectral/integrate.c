@@ -3,6 +3,7 @@
  * near the top of the double range are integrated scaled by a power of two (exact). */
 #include "spectral/spectral_private.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -70,7 +71,7 @@ static int is_unit_grid(const lx_spd *w)
 }
 
 /* Exact integral of the product of two piecewise-linear functions, each zero outside its samples. */
-static double exact_product(const lx_spd *a, const lx_spd *b)
+double lx__exact_product(const lx_spd *a, const lx_spd *b)
 {
     double lo = fmax(a->lambda_nm[0], b->lambda_nm[0]);
     double hi = fmin(a->lambda_nm[a->n - 1], b->lambda_nm[b->n - 1]);
@@ -108,6 +109,22 @@ double lx__spd_max_abs(const lx_spd *spd)
     return m;
 }
 
+int lx__spd_tiny_scale(const lx_spd *spd, lx_spd *scaled, double **buf)
+{
+    *scaled = *spd;
+    *buf = NULL;
+    double m = lx__spd_max_abs(spd);
+    if (!(m > 0) || m >= LX__SPD_TINY) return 0;
+    int e = 0;
+    frexp(m, &e); /* m = f 2^e, 0.5 <= f < 1 */
+    double *v = lx__alloc_n(spd->n, sizeof *v);
+    if (!v) return INT_MIN;
+    for (size_t i = 0; i < spd->n; i++) v[i] = ldexp(spd->value[i], -e); /* scaling up: exact, subnormals too */
+    scaled->value = v;
+    *buf = v;
+    return e;
+}
+
 /* Calls integral(ctx, spd, arg, out) and, when the result leaves the double range although every
  * value is finite, again on the values scaled by 2^-e (e: the exponent of the largest; exact) and
  * scales the result back: an intermediate product or partial sum that overflowed does not make the
@@ -115,6 +132,19 @@ double lx__spd_max_abs(const lx_spd *spd)
 static lx_status integrate_scaled(lx_ctx *ctx, const lx_spd *spd, const void *arg,
                                   lx_status (*integral)(lx_ctx *, const lx_spd *, const void *, double *), double *out)
 {
+    /* values so small that their products with a weight would fall among the subnormal numbers
+     * (1e-320 keeps 3 digits): integrated scaled up by a power of two (exact) and scaled back, so the
+     * result is rounded once, not every term (a flat 1e-320 moved xy by 1.5e-5) */
+    lx_spd up;
+    double *ubuf;
+    int te = lx__spd_tiny_scale(spd, &up, &ubuf);
+    if (te == INT_MIN) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
+    if (te) {
+        lx_status st = integral(ctx, &up, arg, out);
+        lx__free(ubuf);
+        if (st == LX_OK) *out = ldexp(*out, te);
+        return st;
+    }
     lx_status st = integral(ctx, spd, arg, out);
     if (st != LX_OK || isfinite(*out)) return st;
     double m = lx__spd_max_abs(spd), r = NAN;
@@ -164,7 +194,7 @@ static lx_status weighted(lx_ctx *ctx, const lx_spd *spd, const void *arg, doubl
     lx_method method = a->method;
     double sum = 0.0;
     if (method == LX_METHOD_EXACT) {
-        sum = exact_product(spd, w);
+        sum = lx__exact_product(spd, w);
     } else if (method == LX_METHOD_CIE15) {
         double step = uniform_step(spd);
         if (step <= 0)

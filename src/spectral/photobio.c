@@ -29,11 +29,18 @@ double lx__coverage(const lx_spd *w, double a, double b)
     return all > 0 ? w_integral(w, a, b) / all : 0.0;
 }
 
+int lx__fn_band_exact(lx_function fn)
+{
+    return fn == LX_FN_PHOTON_PAR || fn == LX_FN_PHOTON_EPAR || fn == LX_FN_YPF_MCCREE;
+}
+
 static lx_status integrate_fns(lx_ctx *ctx, const lx_spd *spd, lx_method method, const lx_function *fns, size_t k,
                                double *val, double *cov)
 {
     lx_status st = lx_spd_check(ctx, spd);
     if (st != LX_OK) return st;
+    if ((int)method < LX_METHOD_AUTO || method > LX_METHOD_LINEAR1NM)
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown integration method %d", (int)method);
     for (size_t f = 0; f < k; f++) {
         lx_spd w;
         if ((st = lx_function_get(ctx, fns[f], &w)) != LX_OK) return st;
@@ -42,7 +49,11 @@ static lx_status integrate_fns(lx_ctx *ctx, const lx_spd *spd, lx_method method,
             val[f] = NAN;
             continue;
         }
-        if ((st = lx_spd_integrate(ctx, spd, &w, method, &val[f])) != LX_OK) return st;
+        /* a band integral (ANSI/ASABE S640 defines PPFD as the integral over 400-700 nm): exact,
+         * as the radiant integral; the CIE 015 sum of a flat 1 W m-2 nm-1 at 1 nm counts 301 nm of
+         * the 300 nm band (1383.89 umol s-1 m-2 instead of 1379.29) */
+        lx_method m = lx__fn_band_exact(fns[f]) ? LX_METHOD_EXACT : method;
+        if ((st = lx_spd_integrate(ctx, spd, &w, m, &val[f])) != LX_OK) return st;
     }
     return LX_OK;
 }
@@ -120,23 +131,47 @@ lx_status lx_hazard_risk_group(lx_ctx *ctx, const lx_hazard *h, int radiance, do
 {
     LX__NEED_CTX(ctx);
     if (!h || !out) return lx__error(ctx, LX_EINVAL, NULL, 0, "lx_hazard_risk_group: NULL argument");
+    if (!(alpha_rad >= 0) || !isfinite(alpha_rad))
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "the angular subtense must be 0 (not known) or positive (got %g rad)",
+                         alpha_rad);
     lx_hazard_risk r;
     memset(&r, 0, sizeof r);
     for (int k = 0; k < LX_HZ_COUNT; k++) r.criterion[k] = LX_RISK_NONE;
-    /* (criterion, limits row) per geometry */
-    static const int rad_rows[LX_HZ_COUNT] = {2, 4, -1, -1}, irr_rows[LX_HZ_COUNT] = {3, -1, 0, 1};
-    const int *rows = radiance ? rad_rows : irr_rows;
+    /* the source's solid angle: a circular source of full angle alpha */
+    double omega = alpha_rad > 0 ? 2 * LX__PI * (1 - cos(0.5 * alpha_rad)) : 0;
+    /* per criterion: the limits row (0 E_S, 1 E_UVA, 2 L_B, 3 E_B, 4 L_R), the value in that row's
+     * quantity, the limit named; -1: not judged */
+    int row[LX_HZ_COUNT] = {-1, -1, -1, -1};
+    double val[LX_HZ_COUNT] = {NAN, NAN, NAN, NAN};
+    int conv[LX_HZ_COUNT] = {0};
+    int small = alpha_rad > 0 && alpha_rad < 0.011;
+    if (radiance) {
+        if (small) row[LX_HZ_BLUE] = 3, val[LX_HZ_BLUE] = h->value[LX_HZ_BLUE] * omega, conv[LX_HZ_BLUE] = 1;
+        else row[LX_HZ_BLUE] = 2, val[LX_HZ_BLUE] = h->value[LX_HZ_BLUE];
+        if (alpha_rad > 0) row[LX_HZ_THERMAL] = 4, val[LX_HZ_THERMAL] = h->value[LX_HZ_THERMAL];
+    } else {
+        if (alpha_rad >= 0.011) row[LX_HZ_BLUE] = 2, val[LX_HZ_BLUE] = h->value[LX_HZ_BLUE] / omega, conv[LX_HZ_BLUE] = 1;
+        else row[LX_HZ_BLUE] = 3, val[LX_HZ_BLUE] = h->value[LX_HZ_BLUE];
+        if (alpha_rad > 0) row[LX_HZ_THERMAL] = 4, val[LX_HZ_THERMAL] = h->value[LX_HZ_THERMAL] / omega, conv[LX_HZ_THERMAL] = 1;
+        row[LX_HZ_ACTINIC] = 0, val[LX_HZ_ACTINIC] = h->value[LX_HZ_ACTINIC];
+        row[LX_HZ_UVA] = 1, val[LX_HZ_UVA] = h->value[LX_HZ_UVA];
+    }
+    static const lx_hazard_limit named[5] = {LX_HZ_LIMIT_E_S, LX_HZ_LIMIT_E_UVA, LX_HZ_LIMIT_L_B, LX_HZ_LIMIT_E_B,
+                                             LX_HZ_LIMIT_L_R};
     for (int k = 0; k < LX_HZ_COUNT; k++) {
         double lim[3];
-        if (rows[k] < 0) continue;
-        if (limits(rows[k], lim) != 0)
-            return lx__error(ctx, LX_EINVAL, NULL, 0, "the embedded IEC 62471 limits table lacks row %d", rows[k]);
-        if (rows[k] == 4) { /* L_R: C / alpha, alpha clamped to 1.7 mrad ... 100 mrad */
-            if (!(alpha_rad > 0)) continue;
+        if (row[k] < 0) continue;
+        if (limits(row[k], lim) != 0)
+            return lx__error(ctx, LX_EINVAL, NULL, 0, "the embedded IEC 62471 limits table lacks row %d", row[k]);
+        if (row[k] == 4) { /* L_R: C / alpha, alpha clamped to 1.7 mrad ... 100 mrad */
             double a = alpha_rad < 0.0017 ? 0.0017 : alpha_rad > 0.1 ? 0.1 : alpha_rad;
             for (int j = 0; j < 3; j++) lim[j] /= a;
         }
-        r.criterion[k] = group_of(h->value[k], lim);
+        r.criterion[k] = group_of(val[k], lim);
+        if (r.criterion[k] != LX_RISK_NONE) {
+            r.limit[k] = named[row[k]];
+            if (conv[k]) r.source_sr = omega;
+        }
     }
     r.group = LX_RISK_NONE;
     for (int k = 0; k < LX_HZ_COUNT; k++)

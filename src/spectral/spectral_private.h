@@ -15,6 +15,19 @@ lx_status lx__spd_set_build(lx_ctx *ctx, const char *file, size_t nlam, const do
                             const double *val, size_t ss, size_t ks, char *const *names,
                             const long *lines, lx_spd_set **out);
 
+/* The exact integral of the product of two piecewise-linear functions, each zero outside its
+ * samples (integrate.c: the exact method). */
+double lx__exact_product(const lx_spd *a, const lx_spd *b);
+
+/* A spectrum whose largest |value| is below LX__SPD_TINY (2^-600), where products with weighting
+ * functions and the quantities derived from them (ratios, squares, 100 / Y) leave the normal double
+ * range: *scaled gets its values times 2^-e (exact; e the exponent of the largest, which becomes
+ * 0.5 .. 1) in *buf (the caller frees it), and e is returned. Otherwise *scaled is spd, *buf NULL
+ * and 0 is returned; INT_MIN when out of memory. Scale-invariant results (chromaticities, CRI,
+ * TM-30, ratios) are computed on *scaled as they are; absolute ones scaled back by 2^e. */
+#define LX__SPD_TINY 0x1p-600
+int lx__spd_tiny_scale(const lx_spd *spd, lx_spd *scaled, double **buf);
+
 /* The largest |value| of spd. */
 double lx__spd_max_abs(const lx_spd *spd);
 
@@ -82,6 +95,10 @@ lx_status lx__text_read(lx__rd *rd, const char *text, size_t len, int layout, lx
 extern const lx_function lx__par_fns[3];
 extern const lx_function lx__hazard_fns[LX_HZ_COUNT];
 double lx__coverage(const lx_spd *w, double a, double b);
+/* 1 for the weighting functions of a band integral (PAR, ePAR, YPF of ANSI/ASABE S640): a step at
+ * each end of the band, so they are integrated exactly (piecewise-linear spectrum times the weight)
+ * whatever the method: a CIE 015 sum would count the samples at the band's ends a full step wide. */
+int lx__fn_band_exact(lx_function fn);
 /* One chromaticity binned with the embedded tables (binning.c); -1 when they are missing. */
 int lx__bin_xy(double x, double y, double cct_K, double duv, lx_binning *out);
 
@@ -93,7 +110,9 @@ lx_status lx__cct_from_uv_table(lx_ctx *ctx, lx_observer obs, double u, double v
  * (batch_colorimetry.c). */
 double lx__batch_radiant(const lx_batch *b, size_t i);
 
-/* The batch weight matrix: w[f * n_lambda + j] = w_f(start + j step) * step (cie15 rule). */
+/* The batch weight matrix: w[f * n_lambda + j] = w_f(start + j step) * step (cie15 rule); for a band
+ * function (lx__fn_band_exact) the exact weight of sample j, the integral of its hat function times
+ * w_f, so that the sum is the exact integral of the piecewise-linear spectrum times w_f. */
 lx_status lx__batch_weights(lx_ctx *ctx, const lx_function *fns, size_t k, double start_nm, double step_nm,
                             size_t n_lambda, double *w);
 

@@ -142,6 +142,10 @@ w("scene/scene_bad_ies.scene", S.replace("type = point\nposition = 0 m, 0 m, 3 m
                                          "type = file\nfile = ../ies/ies_num_nan.ies\nposition = 0 m, 0 m, 3 m", 1))
 w("scene/scene_include_dir.scene", "include = .\n" + S)
 w("scene/scene_truncated_section.scene", S + "\n[luminaire")
+# a point source closer to the receiver than double arithmetic resolves (d^2 underflows below 1.5e-154 m:
+# it gave 0 lx), and one on the receiver point (undefined)
+w("scene/scene_lamp_1e-162m.scene", S.replace("position = 0 m, 0 m, 3 m", "position = 0 m, 0 m, 1e-162 m"))
+w("scene/scene_lamp_on_receiver.scene", S.replace("position = 0 m, 0 m, 3 m", "position = 0 m, 0 m, 0 m"))
 
 # ---------- EXR ----------
 w("exr/exr_empty.exr", "")

@@ -31,7 +31,25 @@ expect_field 1 sun_normal_lx 58156.639908585057 1e-6 "perez Evn (tests/ref/perez
 run sky --type cie --number 12 --zenith-luminance 1000cd/m2
 expect_rc 1 "no sun is a usage error"
 run sky --type cie --number 16 --zenith-luminance 1000cd/m2 --sun-altitude 30deg --sun-azimuth 0deg
-expect_rc 1 "sky number 16 is refused"
+expect_rc 2 "sky number 16 is refused (a value out of range: exit 2)"
+expect_err_match '^luxcalc: sky: --number: 16 is out of range \(1 to 15\)$' "sky number 16: the range"
+run sky --type cie --number twelve --zenith-luminance 1000cd/m2 --sun-altitude 30deg --sun-azimuth 0deg
+expect_rc 1 "sky number 'twelve' is a usage error"
+# values out of range are refused with exit 2 (README "Exit status"), never computed as another value:
+# 2003-02-30 was taken as 2003-03-02, a 95 deg sun as an 85 deg one on the other side
+SITE="--date 2003-10-17 --time 12:30 --timezone -7 --latitude 39.74deg --longitude -105.18deg"
+for bad in "--latitude 91deg|latitude" "--time 25:61|hour" "--timezone 99|timezone" "--date 2003-02-30|day 30 out of range \\(2003-02 has 28 days\\)"; do
+  opt=${bad%%|*}; what=${bad#*|}
+  # shellcheck disable=SC2086
+  run sky --type cie --number 12 --zenith-luminance 6000cd/m2 --size 16x8 $SITE $opt
+  expect_rc 2 "sky $opt: exit 2"
+  expect_err_match "^luxcalc: sky: sun position: $what" "sky $opt: names what is out of range"
+done
+run sky --type cie --number 12 --zenith-luminance 6000cd/m2 --size 16x8 --sun-altitude 95deg --sun-azimuth 180deg
+expect_rc 2 "sky --sun-altitude 95deg: exit 2"
+expect_err_match '^luxcalc: sky: --sun-altitude: 95deg is out of range \(-90 to 90 deg\)$' "sky --sun-altitude 95deg says the range"
+run sky --type cie --number 12 --zenith-luminance 6000cd/m2 --size 16x8 --sun-altitude 90deg --sun-azimuth 180deg --format csv
+expect_rc 0 "sky --sun-altitude 90deg: the zenith is in range"
 
 # a scene: CIE sky 12 and the sun; the sun on a south-facing wall adds Evn cos
 cat > "$T/day.scene" <<'SC'

@@ -127,3 +127,17 @@ expect_rc 0 "grid --scene uses the scene's one grid"
 expect_field 1 E_avg "$desk" 1e-9 "the same desk average as luxcalc scene"
 run grid --ies $P --scene tests/data/scenes/point.scene --plane z=0 --area 0:1,0:0 --points 2x1
 expect_rc 1 "--ies and --scene together are a usage error"
+# a luminaire closer to a point than double arithmetic resolves (d^2 below DBL_MIN: 1.5e-154 m) is
+# refused with the point named, as 1e-155 m always was: 1e-162 m gave 0 lx (d^2 underflowed to 0)
+for z in 1e-155 1e-162 1e-300; do
+  run grid --ies samples/ies/point_isotropic_1000lm.ies --at 0,0,$z --plane z=0 --area 0:0,0:0 --points 1x1 --format csv
+  expect_rc 2 "a luminaire $z m above a point: exit 2"
+  expect_err_match "luminaire 1 is $z m from point 1 \(0, 0, 0 m\), closer than double arithmetic resolves" "$z m: the distance and the point named"
+done
+run grid --ies samples/ies/point_isotropic_1000lm.ies --at 0,0,0 --plane z=0 --area 0:1,0:0 --points 2x1 --format csv
+expect_rc 2 "a luminaire on a grid point: exit 2"
+expect_err_match "luminaire 1 sits on point 1 \(0, 0, 0 m\): a point source's illuminance there is undefined" "on the point: undefined"
+# below the plane (behind every receiver) it gives 0 lx, as it should
+run grid --ies samples/ies/point_isotropic_1000lm.ies --at 0,0,-1e-162 --plane z=0 --area 0:0,0:0 --points 1x1 --format csv
+expect_rc 0 "a luminaire 1e-162 m behind the receivers: 0 lx"
+expect_field 1 illuminance_lx 0 0 "behind the receivers: 0 lx"

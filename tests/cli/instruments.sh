@@ -201,5 +201,22 @@ expect_out_match ",exempt,L_B," "radiance: the risk group from L_B (L_R not cove
 run spd --metrics hazard --subtense 0.011 --unit W/sr/m2/nm "$T/few.csv"
 expect_out_match '^hazard_thermal +not covered$' "table: 'not covered' without a unit"
 expect_out_match '^hazard_blue +[0-9.e+-]+ W/\(sr m2\)$' "table: a covered hazard keeps its unit"
+# the source's size decides the blue-light limit and the basis says which, with the size assumed
+run spd --metrics hazard --unit W/m2/nm --format csv "$T/few.csv"
+expect_out_match ',exempt,E_B \(small source assumed\),,' "irradiance without --subtense: E_B, a small source assumed"
+run spd --metrics hazard --unit W/m2/nm --subtense 0.1 --format csv "$T/few.csv"
+expect_out_match ',exempt,L_B \(E_B/Omega\),0.1,' "irradiance with --subtense 0.1: L_B = E_B / Omega, the subtense printed"
+run spd --metrics hazard --unit W/m2/nm --subtense 0.6deg --format csv "$T/few.csv"
+expect_out_match ',exempt,E_B,0.010471975511965976,' "irradiance with --subtense 0.6deg (below 0.011 rad): E_B"
+if [ -f "$I/licor-li180-irrad.txt" ]; then
+  # E_B = 5.881 W m-2: RG2 as a small source (1 < E_B <= 400); as a 0.1 rad source L_B = 5.881 / 7.851e-3 sr
+  # = 749 W m-2 sr-1: RG1 (100 < L_B <= 1e4; IEC 62471:2006 Table 6.1)
+  run spd --metrics hazard --format csv "$I/licor-li180-irrad.txt"
+  expect_out_match ',RG2,E_B \(small source assumed\),,' "LI-180 without --subtense: RG2 from E_B, small source assumed"
+  run spd --metrics hazard --subtense 0.1 --format csv "$I/licor-li180-irrad.txt"
+  expect_out_match ',RG1,L_B \(E_B/Omega\),0.1,' "LI-180 with --subtense 0.1: RG1 from L_B = E_B / Omega"
+else
+  skip "LI-180 risk group and --subtense" "$I is absent"
+fi
 run spd --metrics hazard --unit W/sr/m2/nm --format csv "$D/good/excel.csv"
 expect_out_match ',,,"blue,thermal,actinic_uv,uva"$' "380-400 nm data: no hazard is covered, no risk group"

@@ -80,3 +80,34 @@ run scene "$T/bad3.scene"
 unset LX_ROOM_MEMORY_MB
 expect_rc 2 "beyond the memory bound: input error"
 expect_err_match "bad3.scene:2: interreflection needs [0-9]+ patches .* allows [0-9]+" "the memory bound says how many"
+# a room whose every reflectance is 0, with a black box: no light can be reflected, so the planner
+# leaves interreflection off (and says why), the result is the direct light alone
+# (1000 / (4 pi) cos / d^2, d^2 = 15.39, cos = 1.7 / sqrt(15.39): 2.2406866550 lx), and forcing it on is an error
+cat >"$T/black.scene" <<'EOF2'
+[room black]
+size = 4, 4, 3 m
+ceiling = 0
+walls = 0
+floor = 0
+[obstruction box]
+min = 1, 1, 0 m
+max = 2, 2, 1 m
+reflectance = 0
+[luminaire l]
+type = point
+position = 3, 3, 2.5 m
+flux = 1000 lm
+[receiver p]
+type = point
+position = 0.5 m, 0.5 m, 0.8 m
+EOF2
+run scene "$T/black.scene" --explain
+expect_rc 0 "black room: explain"
+expect_out_match '^  interreflection off every reflectance is 0' "black room: interreflection off, every reflectance 0"
+run scene "$T/black.scene" --format csv
+expect_out_match '^receiver,x,y,z,illuminance_lx$' "black room: direct light only (no indirect columns)"
+expect_field 1 illuminance_lx 2.2406866550 1e-9 "black room: the inverse-square and cosine law"
+printf '[effects]\ninterreflection = on\n' | cat - "$T/black.scene" >"$T/black_on.scene"
+run scene "$T/black_on.scene"
+expect_rc 2 "black room, interreflection forced on: input error"
+expect_err_match "black_on.scene:2: interreflection forced on, but every reflectance .* is 0" "forced on names file and line"

@@ -56,3 +56,19 @@ run scene tests/data/scenes/point.scene --contributions --format csv
 expect_out_match '^receiver,x,y,z,illuminance_lx,luminance_cd_m2,E_lamp_lx$' "csv contributions without a sky column"
 run scene samples/scenes/facade.scene --contributions --format csv
 expect_out_match ',E_sky_lx$' "a scene with a sky has the sky column"
+# a point source closer than double arithmetic resolves: the vector scaled by 2^600 (exact), so 1e-10 cd
+# at 1e-155 m is 1e-10 / 1e-310 = 1e300 lx exactly (it was 1.0000000000000047e300: d^2 subnormal), and
+# 400 cd at 1e-162 m (1e-322 m2, 4e324 lx) an overflow error, not the 0 lx of an underflowed d^2
+sed -e 's/0 m, 0 m, 2 m/0 m, 0 m, 1e-155 m/' -e 's/intensity = 400 cd/intensity = 1e-10 cd/' tests/data/scenes/point.scene >"$T/near.scene"
+run scene "$T/near.scene" --format csv
+expect_rc 0 "1e-10 cd at 1e-155 m computes"
+expect_field 1 illuminance_lx 1e300 0 "1e-10 cd at 1e-155 m: exactly 1e300 lx"
+expect_field 2 illuminance_lx 5e299 1e285 "and cos 60 deg of it on the tilted receiver"
+sed -e 's/0 m, 0 m, 2 m/0 m, 0 m, 1e-162 m/' tests/data/scenes/point.scene >"$T/near2.scene"
+run scene "$T/near2.scene" --format csv
+expect_rc 2 "400 cd at 1e-162 m: exit 2"
+expect_err_match "near2.scene:[0-9]+: receiver 'floor', point 1 \(0, 0, 0 m\): illuminance_lx is infinite from luminaire 'lamp'" "1e-162 m: the receiver and the luminaire named"
+sed -e 's/0 m, 0 m, 2 m/0 m, 0 m, 0 m/' tests/data/scenes/point.scene >"$T/near3.scene"
+run scene "$T/near3.scene" --format csv
+expect_rc 2 "a point source on the receiver point: exit 2"
+expect_err_match "illuminance_lx is NaN from luminaire 'lamp'.*a point source sits on the point" "on the point: undefined"

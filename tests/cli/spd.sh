@@ -75,3 +75,16 @@ a=$(printf '%s\n' "$out" | cut -d, -f2- | sed -n 2,3p)
 run spd --format csv samples/spd/cie_illuminants.csv
 b=$(printf '%s\n' "$out" | cut -d, -f2- | sed -n 4,5p)
 if [ -n "$a" ] && [ "$a" = "$b" ]; then ok "Argyll .sp sample = csv sample, bit for bit"; else notok "Argyll .sp sample" "$a / $b"; fi
+# values near the bottom of the double range: a flat 1e-320 (subnormal, 2024 x 2^-1074) has the
+# chromaticity of a flat 1 (scale-free; it moved by 1.5e-5), and CRI and TM-30 (they were NaN)
+printf 'nm,one,tiny\n' >"$T/sub.csv"
+awk 'BEGIN { for (l = 380; l <= 780; l += 5) print l ",1,1e-320" }' >>"$T/sub.csv"
+run spd --metrics cri,tm30 --format csv "$T/sub.csv"
+expect_rc 0 "flat 1e-320: exit 0"
+r=$(printf '%s\n' "$out" | awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
+  { for (k in c) v[NR, k] = $c[k] }
+  END { bad = ""; n = split("x y u_prime v_prime cct_K cri_ra tm30_rf tm30_rg", q, " ");
+    for (i = 1; i <= n; i++) { a = v[2, q[i]]; b = v[3, q[i]]; d = a - b; if (d < 0) d = -d;
+      if (a == "" || b == "" || d > 1e-9 * (a < 0 ? -a : a)) bad = bad " " q[i] ":" a "/" b }
+    print bad }')
+[ -z "$r" ] && ok "flat 1e-320: xy, CCT, CRI and TM-30 of a flat 1 (1e-9)" || notok "flat 1e-320: the flat 1's values" "$r"

@@ -206,6 +206,72 @@ static void disk_near_the_top(void **state)
     assert_int_equal(lx_rect_illuminance(ctx, 1e308, 1, 1, 1e-3, 0, 0, LX_MODEL_AUTO, &r), LX_ERANGE);
 }
 
+/* The bottom of the range: D65 times 2^-1060 (subnormal: about 14 bits of mantissa) and times 1e-300
+ * (normal, but its products with the weights and CRI's 100 / Y leave the normal range). The results
+ * follow from D65's by the same oracle, linearity: chromaticities, CCT, efficacy, CRI, TM-30 and DER
+ * are scale-free and must equal D65's (1e-12); X, Y, Z, radiant and the alpha-opic irradiances are
+ * D65's times the factor, rounded once (the subnormal ulp 4.9e-324 of the result). Before, every
+ * product was rounded to the subnormal grid: a flat 1e-320 moved xy by 1.5e-5 and CRI and TM-30
+ * were NaN. The batch path likewise (its rows of such values go through the scaled path). */
+static void spectrum_near_the_bottom(void **state)
+{
+    lx_ctx *ctx = *state;
+    double l1[200], v1[200], l2[200], v2[200];
+    lx_spd a = d65_times(ctx, 1.0, l1, v1);
+    const double k[2] = {ldexp(1.0, -1060), 1e-300};
+    for (int q = 0; q < 2; q++) {
+        lx_spd b = d65_times(ctx, k[q], l2, v2);
+        for (size_t i = 0; i < b.n; i++) v2[i] = k[q] * v1[i]; /* k times each value, as the file would hold it */
+        /* the reference: the same values (subnormals hold only 14 bits of D65's: a slightly other
+         * spectrum) times 2^1060 or 2^997, exactly, computed in the normal range */
+        static double v3[200];
+        int up = q == 0 ? 1060 : 997;
+        for (size_t i = 0; i < b.n; i++) v3[i] = ldexp(v2[i], up);
+        lx_spd a3 = {"d65 again", b.n, l2, v3};
+        double kk = q == 0 ? k[0] : ldexp(1.0, -up); /* b = kk x a3, exactly */
+        lx_colorimetry ra, rb, rd;
+        lx_assert_ok(ctx, lx_spd_colorimetry(ctx, &a, LX_OBSERVER_2, LX_METHOD_CIE15, &rd));
+        lx_assert_ok(ctx, lx_spd_colorimetry(ctx, &a3, LX_OBSERVER_2, LX_METHOD_CIE15, &ra));
+        lx_assert_near(ra.x, rd.x, q == 0 ? 1e-6 : 1e-14, 0); /* and that is D65 to its rounding */
+        lx_assert_ok(ctx, lx_spd_colorimetry(ctx, &b, LX_OBSERVER_2, LX_METHOD_CIE15, &rb));
+        lx_assert_near(rb.x, ra.x, 1e-14, 0);
+        lx_assert_near(rb.y, ra.y, 1e-14, 0);
+        lx_assert_near(rb.u_prime, ra.u_prime, 1e-14, 0);
+        lx_assert_near(rb.cct_K, ra.cct_K, 0, 1e-12);
+        lx_assert_near(rb.ler_lm_per_W, ra.ler_lm_per_W, 0, 1e-12);
+        /* absolute values: the reference's times kk, rounded once (2^-1060 x 7e4: 1e-9 relative) */
+        double tol = q == 0 ? 1e-9 : 1e-15;
+        lx_assert_near(rb.Y, kk * ra.Y, 0, tol);
+        lx_assert_near(rb.radiant, kk * ra.radiant, 0, tol);
+        lx_cri ca, cb;
+        lx_assert_ok(ctx, lx_cri_compute(ctx, &a3, &ca));
+        lx_assert_ok(ctx, lx_cri_compute(ctx, &b, &cb));
+        lx_assert_near(cb.ra, ca.ra, 1e-9, 0);
+        lx_assert_near(cb.r[8], ca.r[8], 1e-9, 0);
+        static lx_tm30 ta, tb;
+        lx_assert_ok(ctx, lx_tm30_compute(ctx, &a3, &ta));
+        lx_assert_ok(ctx, lx_tm30_compute(ctx, &b, &tb));
+        lx_assert_near(tb.rf, ta.rf, 1e-9, 0);
+        lx_assert_near(tb.rg, ta.rg, 1e-9, 0);
+        lx_alphaopic aa, ab;
+        lx_assert_ok(ctx, lx_alphaopic_compute(ctx, &a3, LX_METHOD_CIE15, &aa));
+        lx_assert_ok(ctx, lx_alphaopic_compute(ctx, &b, LX_METHOD_CIE15, &ab));
+        lx_assert_near(ab.der[4], aa.der[4], 0, 1e-12);
+        lx_assert_near(ab.irradiance[4], kk * aa.irradiance[4], 0, tol);
+        /* the batch path: the same row among ordinary ones */
+        double rows[3 * 81];
+        for (int r = 0; r < 3; r++)
+            for (size_t i = 0; i < 81; i++) rows[r * 81 + i] = r == 1 ? v2[i] : v1[i];
+        lx_batch bt = {3, 81, 0, 380, 5, LX_F64, rows};
+        lx_colorimetry out[3];
+        lx_assert_ok(ctx, lx_batch_colorimetry(ctx, &bt, LX_OBSERVER_2, NULL, out));
+        lx_assert_near(out[1].x, ra.x, 1e-14, 0);
+        lx_assert_near(out[1].y, ra.y, 1e-14, 0);
+        lx_assert_near(out[1].Y, kk * ra.Y, 0, tol);
+        lx_assert_near(out[0].x, rd.x, 1e-14, 0);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -216,6 +282,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(nan_results_named, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(luminaire_flux_near_the_top, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(disk_near_the_top, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(spectrum_near_the_bottom, lx_test_ctx_setup, lx_test_ctx_teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
