@@ -2740,8 +2740,11 @@ typedef struct lx_falsecolor_opts {
                             * the 1st percentile of the positive values (at most 6 decades below
                             * the top, at least 2) to the decade at or above the largest; linear
                             * from 0 (or a round value below a minimum under -5 % of the largest)
-                            * to the round value above the largest. Values below the range take
-                            * its lowest colour. */
+                            * to the round value above the largest; where a small bright source
+                            * (values over 100 times the 99.9th percentile: the sun disc) would take
+                            * the range, it ends above the rest instead, the source drawn in the top
+                            * colour and a line under the title saying so. Values below the range
+                            * take its lowest colour. */
     const char *quantity;  /* the legend's quantity ("luminance"; NULL: none) */
     const char *unit;      /* its unit ("cd/m²"; NULL: none) */
     const char *title;     /* the heading (NULL: none); a line of min / median / max follows it */

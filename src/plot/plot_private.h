@@ -124,6 +124,7 @@ typedef struct lx__layout {
     int n_marks;                   /* luminaire marks drawn (pixel centres) */
     double mark[64][2];
     size_t outlines[5];            /* outlines drawn, per lx_outline_kind */
+    size_t above;                  /* values above the colour range (a map's small bright source) */
 } lx__layout;
 
 /* Frees what a layout holds and zeroes it. */
@@ -214,6 +215,12 @@ double lx__scale_t(const lx__scale *s, double v);
  * at least two decades; linear: 0 (or the round value below a minimum under -5 % of the maximum)
  * to the round value at or above the maximum. lo or hi not NaN are kept as given. */
 void lx__scale_auto(lx__scale *s, const double *v, size_t n, int log, double lo, double hi);
+/* lx__scale_auto for a map, where a small bright source (the sun disc) would take the range from
+ * everything else: with hi not given, values more than 100 times the 99.9th percentile of the
+ * positive ones (at least 1000 of them) are left out of the range, which then ends at the decade
+ * (log) or round value (linear) above the rest. Returns how many values lie above the range
+ * (drawn in its top colour) and their largest in *above_max (NaN when none). */
+size_t lx__scale_auto_map(lx__scale *s, const double *v, size_t n, int log, double lo, double hi, double *above_max);
 /* The false-colour palette at t in [0, 1] (dark violet, blue, cyan, green, yellow, orange, red:
  * the look of Radiance falsecolor). */
 void lx__falsecolor(double t, unsigned char rgb[3]);
