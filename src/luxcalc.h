@@ -2789,12 +2789,25 @@ typedef struct lx_report_opts {
  * in lm, lx, cd/m² or cd per the unit, radiant power, x, y, u', v', CCT, Duv, Ra, R9, Rf, Rg,
  * melanopic DER, efficacy); the colour of the light as a normalised sRGB swatch; the CIE 1931 xy
  * or 1976 u'v' diagram (spectral locus, Planckian locus, isotemperature lines labelled where the
- * labels collide with nothing, the point); CIE 13.3 Ra and R1-R14 bars with their values; the
- * TM-30 colour vector graphic with its 16 hue bins. A metric that is undefined for the spectrum
+ * labels collide with nothing, the point); CIE 13.3 Ra and R1-R14 bars and R15 (JIS Z 8726) with their values; the
+ * TM-30 colour vector graphic with its 16 hue bins and an arrow with its head in each (the whole
+ * TM-30 page: lx_tm30_report_write_png). A metric that is undefined for the spectrum
  * (lx_cri_compute or lx_tm30_compute refuse) is shown with its reason instead. Errors: those of
  * lx_spd_check and lx_spd_colorimetry, and the writers' above. */
 LX_API lx_status lx_spd_report_write_png(lx_ctx *ctx, const lx_spd *spd, const lx_report_opts *opts,
                                          const char *path);
+
+/** The ANSI/IES TM-30-20 colour rendition report of one spectrum as a PNG page (1200 x 1080), laid
+ * out as the IES TM-30-20 calculator prints it: the test and reference spectra at equal luminous
+ * flux; the colour vector graphic (the hue bins in the calculator's colours, the +-10 % and +-20 %
+ * chroma circles, the reference circle, the test's shape in red, an arrow with its head from the
+ * reference to the test in each bin) with Rf, Rg, CCT and Duv at its corners; bar charts of the
+ * local chroma shift Rcs,hj (-40..40 %), hue shift Rhs,hj (-0.5..0.5) and fidelity Rf,hj (0..100)
+ * of the 16 bins, each value on its bar; the fidelity of the 99 samples (Rf,CESi, each bar in the
+ * sample's colour under D65); and the numbers (Rf, Rg, CCT, Duv, x, y, u', v', CIE Ra and R9).
+ * opts: only title is used (may be NULL). Errors: those of lx_tm30_compute (LX_ERANGE where TM-30
+ * is undefined: the page would have nothing to show) and the writers' above. */
+LX_API lx_status lx_tm30_report_write_png(lx_ctx *ctx, const lx_spd *spd, const lx_report_opts *opts, const char *path);
 
 /** Writes an sRGB preview PNG of an XYZ image (XYZ -> linear sRGB, exposure from the median
  * luminance, Reinhard tone curve), enlarged to at least 256 pixels wide. */

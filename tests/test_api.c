@@ -682,6 +682,12 @@ static void t_lx_spd_report_write_png(void)
     EXPECT_EINVAL(lx_spd_report_write_png(NULL, &D65, NULL, p));
     assert_absent(p);
 }
+static void t_lx_tm30_report_write_png(void)
+{
+    const char *p = out_path("t.png");
+    EXPECT_EINVAL(lx_tm30_report_write_png(NULL, &D65, NULL, p));
+    assert_absent(p);
+}
 static void t_lx_xyz_image_write_png(void)
 {
     const char *p = out_path("x.png");
@@ -980,7 +986,7 @@ static const struct api_case {
     CASE(lx_scene_plan_make_mode), CASE(lx_en12464_grid_size), CASE(lx_scene_area_stats), CASE(lx_scene_check),
     CASE(lx_leni_compute), CASE(lx_scene_energy),
     CASE(lx_falsecolor_write_png), CASE(lx_envmap_preview_write_png), CASE(lx_irradiance_write_png),
-    CASE(lx_spd_report_write_png), CASE(lx_xyz_image_write_png), CASE(lx_grid_write_png), CASE(lx_error_time_write_png),
+    CASE(lx_spd_report_write_png), CASE(lx_tm30_report_write_png), CASE(lx_xyz_image_write_png), CASE(lx_grid_write_png), CASE(lx_error_time_write_png),
     CASE(lx_scene_outlines), CASE(lx_scene_receiver_plane), CASE(lx_scene_receiver_write_png),
     CASE(lx_plane_cells),
 };

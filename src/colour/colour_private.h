@@ -28,5 +28,8 @@ void lx__quality_table(const lx__table *t, int col, const lx__qgrid *g, double *
 /* The fraction (max over X, Y, Z with the 2 deg CMFs) of the grid spectrum ref that lies
  * outside [lo_nm, hi_nm]. */
 double lx__quality_outside(const double *ref, const lx__qgrid *g, double lo_nm, double hi_nm);
+/* The reference illuminant of CIE 224 / TM-30 at T (Planckian, CIE daylight, or their Y-normalised
+ * mix between 4000 and 5000 K) at 380, 381, ..., 780 nm (for the report's SPD panel). */
+lx_status lx__tm30_reference_1nm(lx_ctx *ctx, double T, double ref[401]);
 
 #endif /* LX_COLOUR_PRIVATE_H */

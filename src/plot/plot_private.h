@@ -125,6 +125,10 @@ typedef struct lx__layout {
     double mark[64][2];
     size_t outlines[5];            /* outlines drawn, per lx_outline_kind */
     size_t above;                  /* values above the colour range (a map's small bright source) */
+    int n_iso;                     /* isotherms drawn on a chromaticity diagram: T, then the end away from */
+    double iso[8][5];              /* the label and the labelled end, pixels (x0, y0, x1, y1) */
+    int n_arrows;                  /* arrows of a TM-30 vector graphic: from (x0, y0) to the tip (x1, y1), */
+    double arrow[16][5];           /* and the hue bin (0..15) */
 } lx__layout;
 
 /* Frees what a layout holds and zeroes it. */
@@ -279,6 +283,7 @@ lx_status lx__irradiance_png(lx_ctx *ctx, const char *path, const lx_envmap *rad
                              const char *label, lx_plot_scale scale, lx__layout *out);
 lx_status lx__report_png(lx_ctx *ctx, const lx_spd *spd, const lx_report_opts *opts, const char *path,
                          lx__layout *out);
+lx_status lx__tm30_png(lx_ctx *ctx, const lx_spd *spd, const lx_report_opts *opts, const char *path, lx__layout *out);
 lx_status lx__error_time_png(lx_ctx *ctx, const char *path, const char *title, const char *x_title,
                              const char *y_title, size_t n, const lx_plot_point *pts, int n_series,
                              const char *const *series_names, lx__layout *out);
@@ -296,7 +301,10 @@ lx_status lx__isotemp_xy(lx_ctx *ctx, lx_observer obs, double T_K, double duv, d
 /* TM-30 colour vector graphic: a hue bin's test point normalised so the reference lies on the
  * unit circle at its own hue: (test - ref) / |ref| + (cos h_ref, sin h_ref). */
 void lx__cvg_point(const double ref_ab[2], const double test_ab[2], double out[2]);
-/* The colour of CIE 13.3 test colour sample k (0-based, 0..13) under D65 (2 deg, sRGB). */
+/* The colour of CIE 13.3 test colour sample k (0-based, 0..13; 14: JIS Z 8726 No. 15) under D65 (2 deg, sRGB). */
 void lx__tcs_srgb8(lx_ctx *ctx, int k, unsigned char rgb[3]);
+/* The colour under D65 of the reflectance in column col (1-based) of table t (the first column the
+ * wavelength), 2 deg, sRGB; grey when t is NULL. */
+void lx__refl_srgb8(lx_ctx *ctx, const lx__table *t, int col, unsigned char rgb[3]);
 
 #endif /* LX_PLOT_PRIVATE_H */
