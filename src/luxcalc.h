@@ -44,7 +44,8 @@
  * - structs the caller allocates are of three kinds.
  *   Options (lx_batch_opts, lx_grid_opts, lx_irr_opts, lx_exr_write_opts, lx_scene_eval_opts,
  *   lx_lum_model, lx_sky_map_opts, lx_perez_input, lx_sun_input, lx_leni_input, lx_isolux_opts,
- *   lx_receiver_png_opts) are only read: zero-initialise them (zero is every field's default) and leave
+ *   lx_receiver_png_opts, lx_unc_opts, lx_unc_component) are only read: zero-initialise them (zero
+ *   is every field's default) and leave
  *   `reserved` zero, which the library checks (LX_EINVAL otherwise); a later option takes reserved
  *   space, its zero meaning the earlier behaviour.
  *   Results (lx_colorimetry, lx_cri, lx_tm30, lx_alphaopic, lx_dominant, lx_spd_shape, lx_source_result,
@@ -56,10 +57,10 @@
  *   never change within a soname: a new need gets a new type.
  * - structs only the library allocates (lx_spd_set, lx_batch_table, lx_luminaire, lx_envmap,
  *   lx_xyz_image, lx_scene, lx_scene_plan, lx_scene_result, lx_scene_glare, lx_scene_design,
- *   lx_scene_checks) grow by fields appended at their end: read their fields, but never allocate,
- *   copy or take the size of one. The structs of their arrays (lx_scene_luminaire, lx_scene_receiver,
- *   lx_scene_observer, lx_glare_term, lx_maintenance, lx_scene_area, lx_check) carry reserved space,
- *   as results do.
+ *   lx_scene_checks, lx_unc_result) grow by fields appended at their end: read their fields, but
+ *   never allocate, copy or take the size of one. The structs of their arrays (lx_scene_luminaire,
+ *   lx_scene_receiver, lx_scene_observer, lx_glare_term, lx_maintenance, lx_scene_area, lx_check,
+ *   lx_unc_value) carry reserved space, as results do. lx_unc_model is opaque.
  * - LX_EFFECT_COUNT sizes arrays inside lx_scene and lx_scene_plan: a new effect changes their
  *   layout and so needs a new soname; LX_FN_COUNT and LX_Q_COUNT size nothing public and may grow.
  * An incompatible change needs a new MAJOR version, whose soname follows it (1.0: libluxcalc.so.1).
@@ -100,6 +101,7 @@ LX_API const char *lx_version(void);
  *   6. spectral  Batches: many spectra on one grid, CSV files end to end
  *   7. spectral  Photobiology: alpha-opic and mesopic quantities, PAR, IEC 62471 hazards, efficacy of a file
  *   8. colour    Colour rendering: CIE 13.3 CRI, CIE 224 / TM-30
+ *  8b. spectral, colour  Measurement uncertainty: input models, GUM and Monte Carlo
  *   9. lighting  Units and quantities
  *  10. lighting  Sources, inverse problems and solid angles
  *  11. lighting  Luminaires (IES LM-63, EULUMDAT) and illuminance grids
@@ -223,7 +225,8 @@ LX_API lx_backend lx_backend_from_env(void);
 /** The backend (LX_BACKEND_CPU or LX_BACKEND_OPENCL) that did the work of the last successful call on
  * this context that chooses one: lx_batch_integrate, lx_batch_resample, lx_batch_colorimetry,
  * lx_alphaopic_batch, lx_spectral_exr_read_xyz, lx_grid_illuminance, lx_irradiance_dirs,
- * lx_irradiance_map and lx_scene_eval (OPENCL when any of its grid work ran on a device). A failed
+ * lx_irradiance_map, lx_spd_uncertainty (where its Monte Carlo trials were drawn) and lx_scene_eval
+ * (OPENCL when any of its grid work ran on a device). A failed
  * call leaves it as it was. LX_BACKEND_AUTO before any such call, and for a NULL context. */
 LX_API lx_backend lx_ctx_backend_used(const lx_ctx *ctx);
 
@@ -1033,6 +1036,215 @@ typedef struct lx_tm30 {
  * 5000 K, a Y-normalised mix between. Missing data counts as zero (CIE 224). Errors: LX_ERANGE
  * (refusals as for lx_cri_compute), LX_EINVAL (an invalid view). */
 LX_API lx_status lx_tm30_compute(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out);
+
+/* ============================================================================================ */
+/* 8b. Measurement uncertainty of every spectral result: GUM and Monte Carlo (src/spectral: the
+ *     input models and the engine; src/colour: colour rendering and the entry point) */
+/* ============================================================================================ */
+
+/** The kinds of input uncertainty of a measured spectrum S (README "Measurement uncertainty").
+ * Each is a zero-mean error of the values; a model adds any number of them, independent of each
+ * other. z below is a standard normal deviate. */
+typedef enum lx_unc_kind {
+    LX_UNC_NOISE = 0,     /* uncorrelated: S_j + u_j z_j, independent at every sample */
+    LX_UNC_SCALE = 1,     /* fully correlated: S (1 + sigma z), sigma relative */
+    LX_UNC_SHIFT = 2,     /* a wavelength-scale error: S(lambda - sigma z), sigma in nm, the spectrum
+                           * interpolated linearly and its end values held beyond its ends */
+    LX_UNC_BANDWIDTH = 3, /* a bandwidth error: S + ((b0 + sigma z)^2 - b0^2) / 12 S'' (the second
+                           * term of a triangular bandpass of FWHM b, Stearns and Stearns, CIE
+                           * 214), sigma and b0 in nm, S'' by divided differences */
+    LX_UNC_FOURIER = 4,   /* unknown correlations, Kaerhae et al. 2017 (Metrologia 54 524): S (1 +
+                           * sigma sum_{i=0..N} gamma_i f_i(x)), f_0 = 1, f_i = sqrt2 sin(2 pi i x +
+                           * phi_i), x = (lambda - first) / (last - first), phi_i uniform, gamma a
+                           * random unit vector (normals over their norm); sigma relative */
+    LX_UNC_COVARIANCE = 5 /* a full covariance matrix of the values: a multivariate normal */
+} lx_unc_kind;
+
+/** One component of an input model (zero-initialise; ABI policy: reserved stays zero). */
+typedef struct lx_unc_component {
+    lx_unc_kind kind;
+    double sigma;          /* SCALE, FOURIER, and NOISE without u: relative standard uncertainty
+                            * (0.01 is 1 %); SHIFT, BANDWIDTH: standard uncertainty in nm */
+    double bandwidth_nm;   /* BANDWIDTH: the nominal bandpass b0 (0: the mean sample interval) */
+    int terms;             /* FOURIER: N, 0 .. 1000 (0: the N in 1 .. 50 with the largest GUM
+                            * u(CCT), Kaerhae's unfavourable case; 3 when the CCT is undefined) */
+    int relative;          /* NOISE with u, COVARIANCE: 1 when u (cov) is relative to the values
+                            * (fractions; cov[i][j] multiplies S_i S_j) */
+    int absolute;          /* NOISE without u: 1 when sigma is in the values' unit at every sample */
+    size_t n;              /* NOISE with u, COVARIANCE: the samples of u / cov */
+    const double *lambda_nm; /* their wavelengths: the spectrum's own, to 1e-6 nm (NULL: taken to
+                            * be the spectrum's, n must then equal its sample count) */
+    const double *u;       /* NOISE: n standard uncertainties (NULL: sigma at every sample) */
+    const double *cov;     /* COVARIANCE: n x n, row-major, symmetric positive semi-definite */
+    const char *label;     /* its name in budgets ("fourier=1%"; NULL: the kind's name) */
+    long long reserved[4];
+} lx_unc_component;
+
+/** An input model: components added one by one, or parsed from text. Made by lx_unc_model_create
+ * or lx_unc_model_parse, freed with lx_unc_model_free; read-only once made (several threads may
+ * use one). */
+typedef struct lx_unc_model lx_unc_model;
+
+/** An empty model in *out. Errors: LX_ENOMEM. */
+LX_API lx_status lx_unc_model_create(lx_ctx *ctx, lx_unc_model **out);
+
+/** Adds a component (its arrays and label are copied). Errors: LX_EINVAL (an unknown kind, a sigma
+ * that is negative or not finite, u or cov NULL with n > 0, negative or non-finite u, non-zero
+ * reserved; the message names the component). Grids and positive semi-definiteness are checked
+ * against the spectrum, in lx_spd_uncertainty. */
+LX_API lx_status lx_unc_model_add(lx_ctx *ctx, lx_unc_model *m, const lx_unc_component *c);
+
+/** Parses a model from text, terms joined with '+' (README "Measurement uncertainty"):
+ *   P%                  uncorrelated, P per cent of each value (NOISE)
+ *   noise=P% | noise=V  uncorrelated, relative or V absolute (the values' unit)
+ *   column=NAME[:%]     uncorrelated, the standard uncertainties in the spectrum named NAME of set
+ *                       (a column of the same file; :% when they are per cent of the values)
+ *   file=PATH[:%]       the same from the single spectrum of another file (lx_spd_read_file)
+ *   scale=P%            fully correlated (SCALE)
+ *   shift=Dnm           wavelength scale (SHIFT)
+ *   bandwidth=Dnm[@Bnm] bandwidth, nominal bandpass B (BANDWIDTH)
+ *   fourier=P%[:N]      Kaerhae et al. 2017 with N terms (FOURIER)
+ *   covariance=PATH[:rel] a full covariance matrix (COVARIANCE): a CSV of n rows of n numbers, or
+ *                       a header row of wavelengths and each row led by its wavelength
+ * set may be NULL (column= is then refused). Errors: LX_EINVAL (a term that is none of these, a
+ * value out of range: the message names the term), those of the file readers (LX_EIO, LX_EPARSE). */
+LX_API lx_status lx_unc_model_parse(lx_ctx *ctx, const char *spec, const lx_spd_set *set, lx_unc_model **out);
+
+/** The number of components of m (0 for NULL) and the label of component i (NULL beyond). */
+LX_API size_t lx_unc_model_count(const lx_unc_model *m);
+LX_API const char *lx_unc_model_label(const lx_unc_model *m, size_t i);
+
+/** 1 when a column= term of m took its values from spd (a member of the set given to
+ * lx_unc_model_parse): that spectrum holds uncertainties, not a measurement. */
+LX_API int lx_unc_model_uses(const lx_unc_model *m, const lx_spd *spd);
+
+/** Frees a model. Accepts NULL. */
+LX_API void lx_unc_model_free(lx_unc_model *m);
+
+/** The quantities with an uncertainty, in the order of lx_unc_result.q. */
+typedef enum lx_unc_quantity {
+    LX_UQ_X = 0, LX_UQ_Y, LX_UQ_Z,           /* absolute tristimulus values (lx_colorimetry) */
+    LX_UQ_CX, LX_UQ_CY,                      /* chromaticity x, y */
+    LX_UQ_U_PRIME, LX_UQ_V_PRIME,            /* CIE 1976 u', v' */
+    LX_UQ_CCT, LX_UQ_DUV,                    /* K; CIE 1960 uv */
+    LX_UQ_LER, LX_UQ_SCOTOPIC_Y, LX_UQ_SP_RATIO, LX_UQ_RADIANT,
+    LX_UQ_AO_SC, LX_UQ_AO_MC, LX_UQ_AO_LC, LX_UQ_AO_RH, LX_UQ_AO_MEL,      /* alpha-opic irradiances */
+    LX_UQ_EDI_SC, LX_UQ_EDI_MC, LX_UQ_EDI_LC, LX_UQ_EDI_RH, LX_UQ_EDI_MEL, /* equivalent daylight */
+    LX_UQ_DER_SC, LX_UQ_DER_MC, LX_UQ_DER_LC, LX_UQ_DER_RH, LX_UQ_DER_MEL, /* daylight efficacy ratios */
+    LX_UQ_PPFD, LX_UQ_EPAR, LX_UQ_YPF,       /* lx_par */
+    LX_UQ_RA,                                /* CIE 13.3 Ra, then R1 .. R14 */
+    LX_UQ_R1, LX_UQ_R2, LX_UQ_R3, LX_UQ_R4, LX_UQ_R5, LX_UQ_R6, LX_UQ_R7, LX_UQ_R8, LX_UQ_R9, LX_UQ_R10,
+    LX_UQ_R11, LX_UQ_R12, LX_UQ_R13, LX_UQ_R14,
+    LX_UQ_RF, LX_UQ_RG,                      /* CIE 224 / TM-30 */
+    LX_UQ_COUNT
+} lx_unc_quantity;
+
+/** The quantity's name ("X", "x", "cct_K", "melanopic_edi", "par_ppfd", "cri_r9", "tm30_rf"; the
+ * column names of `luxcalc spd`), NULL for another value. Thread-safe. */
+LX_API const char *lx_unc_quantity_name(lx_unc_quantity q);
+
+/** Groups of quantities to compute (lx_unc_opts.quantities, OR-ed). */
+#define LX_UNC_COLORIMETRY 1u /* X .. radiant */
+#define LX_UNC_ALPHAOPIC 2u   /* alpha-opic irradiances, EDI, DER */
+#define LX_UNC_PAR 4u         /* PPFD, ePAR, YPF */
+#define LX_UNC_CRI 8u         /* Ra, R1 .. R14 */
+#define LX_UNC_TM30 16u       /* Rf, Rg */
+
+/** Methods (lx_unc_opts.method). */
+typedef enum lx_unc_method {
+    LX_UNC_MC = 0,   /* Monte Carlo, JCGM 101 (GUM Supplement 1) */
+    LX_UNC_GUM = 1,  /* the law of propagation of uncertainty, JCGM 100, with analytic derivatives
+                      * (central differences for CRI and TM-30) */
+    LX_UNC_BOTH = 2  /* both, and JCGM 101 section 8's validation of GUM against Monte Carlo */
+} lx_unc_method;
+
+/** Options of lx_spd_uncertainty (zero-initialise for defaults; ABI policy: reserved stays zero). */
+typedef struct lx_unc_opts {
+    lx_unc_method method;
+    unsigned quantities;    /* LX_UNC_* groups; 0: LX_UNC_COLORIMETRY */
+    lx_observer observer;   /* 0: 2 deg */
+    lx_method integration;  /* the integration method of the quantities (lx_spd_colorimetry) */
+    size_t trials;          /* Monte Carlo trials (their values may take at most 2 GB: LX_EINVAL beyond);
+                             * 0: adaptive (JCGM 101 7.9): sequences of
+                             * max(10^4, 100 / (1 - coverage)) trials until the mean, u and the
+                             * interval's ends are stable to `digits` significant digits of u */
+    int digits;             /* adaptive: significant digits of u (1 or 2; 0: 2) */
+    size_t max_trials;      /* adaptive: the most trials (0: as many as 512 MB of values hold, at
+                             * most 10^7: 5.1e6 for the 13 colorimetric quantities) */
+    double coverage;        /* coverage probability of the intervals (0: 0.95) */
+    int shortest;           /* 1: the shortest coverage interval (JCGM 101 7.7.3), else the
+                             * probabilistically symmetric one */
+    unsigned long long seed; /* the trials are a function of the seed alone (0 is a seed): the same
+                             * on every number of threads and on OpenCL */
+    lx_backend backend;     /* where the trials are drawn (AUTO: the CPU below the measured
+                             * break-even; also LX_BACKEND) */
+    int threads;            /* 0: every core */
+    long long reserved[4];
+} lx_unc_opts;
+
+/** One quantity's result. A result struct (ABI policy: reserved written as zero). */
+typedef struct lx_unc_value {
+    int defined;        /* 1 when computed: asked for and defined for the measured spectrum */
+    double value;       /* the quantity of the measured spectrum (the estimate y = f(x)) */
+    double u;           /* standard uncertainty (Monte Carlo's when it ran, else GUM's) */
+    double lo, hi;      /* coverage interval at the coverage probability (Monte Carlo's, else y -+ k u) */
+    double mc_mean;     /* Monte Carlo: the average of the trials (NaN without) */
+    double mc_u, mc_lo, mc_hi; /* Monte Carlo's (NaN without) */
+    double gum_u, gum_lo, gum_hi; /* GUM's: u, y - k u, y + k u with k the normal quantile (NaN without) */
+    double delta;       /* the numerical tolerance of u: half a unit of its digits-th significant digit */
+    int stable;         /* Monte Carlo: 1 when its mean, u and interval ends are stable to delta
+                         * (JCGM 101 7.9.4), 0 not (or trials fixed and not checked: -1) */
+    int gum_valid;      /* BOTH: 1 when |y - U - lo_mc| and |y + U - hi_mc| are both within delta
+                         * (JCGM 101 8.2), 0 when not, -1 not judged (Monte Carlo not stable to
+                         * delta: too few trials to serve as the reference) */
+    double d_low, d_high; /* those two differences */
+    double undefined;   /* the fraction of trials where the quantity had no value (CCT off the locus, a
+                         * refused CRI): the statistics are of the others */
+    int top[3];         /* GUM budget: the components (model order) contributing most, -1 none */
+    double top_u[3];    /* their u_i(y) = sqrt(J C_i J^T) */
+    double peak_nm;     /* GUM: the wavelength of the largest sensitivity to the spectrum (NaN) */
+    long long reserved[4];
+} lx_unc_value;
+
+/** The uncertainty of every quantity of one spectrum (lx_spd_uncertainty; free with
+ * lx_unc_result_free). Only the library allocates it (ABI policy: fields are appended). */
+typedef struct lx_unc_result {
+    size_t nq;            /* LX_UQ_COUNT of the library that made it */
+    lx_unc_value *q;      /* nq entries, by lx_unc_quantity */
+    lx_unc_method method;
+    size_t trials;        /* Monte Carlo trials run (0: none) */
+    size_t sequence;      /* adaptive: trials per sequence (JCGM 101 7.9.4's M); 0 fixed */
+    int stable;           /* adaptive: 1 when every computed quantity is stable */
+    int digits;
+    double coverage, k;   /* coverage probability; the GUM coverage factor */
+    int fourier_terms;    /* N of the Fourier components (the chosen one for terms 0; 0 none) */
+    lx_backend backend;   /* where the trials ran */
+    size_t nhistory;      /* adaptive: one entry per sequence: */
+    size_t *history_trials; /* the trials after it */
+    double *history_ratio;  /* the largest 2 s / delta over the quantities (stable at <= 1) */
+    int *history_worst;     /* the quantity it belongs to */
+    size_t rank;          /* the rank of the normal part in the integrals' space (the draws per trial) */
+    double seconds_mc, seconds_gum; /* wall time of each method */
+    double seconds_draw;  /* of seconds_mc, drawing the trials (OpenCL: the device's calls; CPU: the
+                           * threads' time in it over their number) */
+} lx_unc_result;
+
+/** The measurement uncertainty of the quantities of one spectrum (opts->quantities) under the input
+ * model m, by Monte Carlo (JCGM 101), GUM (JCGM 100) or both with JCGM 101's validation, into *out
+ * (free with lx_unc_result_free). Every quantity is a function of a few linear integrals of the
+ * spectrum (the weights of opts->integration): the trials draw those integrals from the model's
+ * distribution (exact for every kind of component; a multivariate normal for the normal linear
+ * ones, through the pivoted Cholesky factor of their covariance), not whole spectra. opts may be
+ * NULL (Monte Carlo of the colorimetry, adaptive, 95 %). Errors: those of lx_spd_check and of the
+ * quantities (LX_ERANGE when no asked quantity is defined), LX_EINVAL (a component that does not
+ * fit the spectrum: a grid that is not the spectrum's, a covariance that is not positive
+ * semi-definite, naming its smallest eigenvalue), LX_EUNSUPPORTED and LX_EDEVICE as
+ * lx_batch_integrate for OpenCL. */
+LX_API lx_status lx_spd_uncertainty(lx_ctx *ctx, const lx_spd *spd, const lx_unc_model *m, const lx_unc_opts *opts,
+                                    lx_unc_result **out);
+
+/** Frees a result of lx_spd_uncertainty. Accepts NULL. */
+LX_API void lx_unc_result_free(lx_unc_result *r);
 
 /* ============================================================================================ */
 /* 9. Units and quantities (src/lighting) */
