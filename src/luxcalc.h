@@ -44,22 +44,23 @@
  * - structs the caller allocates are of three kinds.
  *   Options (lx_batch_opts, lx_grid_opts, lx_irr_opts, lx_exr_write_opts, lx_scene_eval_opts,
  *   lx_lum_model, lx_sky_map_opts, lx_perez_input, lx_sun_input, lx_leni_input, lx_isolux_opts,
- *   lx_receiver_png_opts, lx_pdf_report_opts) are only read: zero-initialise them (zero is every field's default) and leave
+ *   lx_receiver_png_opts, lx_unc_opts, lx_unc_component, lx_pdf_report_opts) are only read: zero-initialise
+ *   them (zero is every field's default) and leave
  *   `reserved` zero, which the library checks (LX_EINVAL otherwise); a later option takes reserved
  *   space, its zero meaning the earlier behaviour.
- *   Results (lx_colorimetry, lx_cri, lx_tm30, lx_alphaopic, lx_source_result, lx_lum_summary,
- *   lx_grid_stats, lx_cl_device_info, lx_counters, lx_sky, lx_sun_position, lx_ugr_table, lx_en12464_grid,
- *   lx_area_stats, lx_leni) are
+ *   Results (lx_colorimetry, lx_cri, lx_tm30, lx_alphaopic, lx_dominant, lx_spd_shape, lx_source_result,
+ *   lx_lum_summary, lx_grid_stats, lx_cl_device_info, lx_counters, lx_sky, lx_sun_position, lx_ugr_table,
+ *   lx_en12464_grid, lx_area_stats, lx_leni) are
  *   written whole by the library, `reserved` set to zero; a later result takes reserved space.
  *   Views and values (lx_spd, lx_batch, lx_placement, lx_plane, lx_plot_point, lx_plot_outline,
  *   lx_plot_mark, lx_unit, lx_sh9)
  *   never change within a soname: a new need gets a new type.
  * - structs only the library allocates (lx_spd_set, lx_batch_table, lx_luminaire, lx_envmap,
  *   lx_xyz_image, lx_scene, lx_scene_plan, lx_scene_result, lx_scene_glare, lx_scene_design,
- *   lx_scene_checks) grow by fields appended at their end: read their fields, but never allocate,
- *   copy or take the size of one. The structs of their arrays (lx_scene_luminaire, lx_scene_receiver,
- *   lx_scene_observer, lx_glare_term, lx_maintenance, lx_scene_area, lx_check) carry reserved space,
- *   as results do.
+ *   lx_scene_checks, lx_unc_result) grow by fields appended at their end: read their fields, but
+ *   never allocate, copy or take the size of one. The structs of their arrays (lx_scene_luminaire,
+ *   lx_scene_receiver, lx_scene_observer, lx_glare_term, lx_maintenance, lx_scene_area, lx_check,
+ *   lx_unc_value) carry reserved space, as results do. lx_unc_model is opaque.
  * - LX_EFFECT_COUNT sizes arrays inside lx_scene and lx_scene_plan: a new effect changes their
  *   layout and so needs a new soname; LX_FN_COUNT and LX_Q_COUNT size nothing public and may grow.
  * An incompatible change needs a new MAJOR version, whose soname follows it (1.0: libluxcalc.so.1).
@@ -100,6 +101,7 @@ LX_API const char *lx_version(void);
  *   6. spectral  Batches: many spectra on one grid, CSV files end to end
  *   7. spectral  Photobiology: alpha-opic and mesopic quantities, PAR, IEC 62471 hazards, efficacy of a file
  *   8. colour    Colour rendering: CIE 13.3 CRI, CIE 224 / TM-30
+ *  8b. spectral, colour  Measurement uncertainty: input models, GUM and Monte Carlo
  *   9. lighting  Units and quantities
  *  10. lighting  Sources, inverse problems and solid angles
  *  11. lighting  Luminaires (IES LM-63, EULUMDAT) and illuminance grids
@@ -223,7 +225,8 @@ LX_API lx_backend lx_backend_from_env(void);
 /** The backend (LX_BACKEND_CPU or LX_BACKEND_OPENCL) that did the work of the last successful call on
  * this context that chooses one: lx_batch_integrate, lx_batch_resample, lx_batch_colorimetry,
  * lx_alphaopic_batch, lx_spectral_exr_read_xyz, lx_grid_illuminance, lx_irradiance_dirs,
- * lx_irradiance_map and lx_scene_eval (OPENCL when any of its grid work ran on a device). A failed
+ * lx_irradiance_map, lx_spd_uncertainty (where its Monte Carlo trials were drawn) and lx_scene_eval
+ * (OPENCL when any of its grid work ran on a device). A failed
  * call leaves it as it was. LX_BACKEND_AUTO before any such call, and for a NULL context. */
 LX_API lx_backend lx_ctx_backend_used(const lx_ctx *ctx);
 
@@ -564,6 +567,48 @@ LX_API lx_status lx_colorimetry_from_integrals(lx_ctx *ctx, lx_observer observer
  * NaN or infinite ("x is undefined (NaN): X + Y + Z = 0 (no luminous content)"); the message
  * names the quantity. cct_K and duv are not checked (NaN there means no CCT, cct_valid = 0). */
 LX_API lx_status lx_colorimetry_check(lx_ctx *ctx, const lx_colorimetry *r, double max_abs);
+
+/** Dominant wavelength and purity (CIE 015:2018 section 9.1) of a chromaticity x, y against the
+ * white xw, yw (the achromatic stimulus: for light sources usually illuminant E, 1/3, 1/3; for
+ * surface colours the illuminant). Results only: the library writes it whole (ABI policy). */
+typedef struct lx_dominant {
+    double wavelength_nm;       /* the dominant wavelength: where the ray from the white through the colour
+                                 * meets the spectral locus (linear between its 1 nm points; the shortest
+                                 * wavelength where the locus folds back beyond 700 nm); for a purple (the
+                                 * ray meets the purple line) the complementary wavelength, negative
+                                 * ("-509": lambda_c = 509 nm), as colour-science writes it; NaN at the white */
+    int purple;                 /* 1: complementary wavelength */
+    int outside;                /* 1: the colour lies beyond the locus (excitation purity > 1) */
+    double locus_x, locus_y;    /* where the ray meets the locus or the purple line */
+    double excitation_purity;   /* pe = (y - yw) / (yd - yw) (or with x, whichever difference is larger):
+                                 * 0 at the white, 1 on the locus */
+    double colorimetric_purity; /* pc = pe yd / y (eq. 9.2; yd the point on the purple line for purples) */
+    long long reserved[4];      /* zero: room for later results (ABI policy) */
+} lx_dominant;
+
+/** Dominant (or complementary) wavelength and excitation and colorimetric purity of (x, y) against
+ * (xw, yw) on the spectral locus of observer obs (360-830 nm at 1 nm) closed by the purple line.
+ * Errors: LX_EINVAL (a bad observer, a value not finite, a white point outside the locus). Pure
+ * apart from the context's error; thread-safe. */
+LX_API lx_status lx_dominant_wavelength(lx_ctx *ctx, lx_observer obs, double x, double y, double xw, double yw,
+                                        lx_dominant *out);
+
+/** The shape of a spectrum (the piecewise-linear function through its samples). A result. */
+typedef struct lx_spd_shape {
+    double peak_nm;             /* the wavelength of the largest value (the first of equal ones) */
+    double peak_value;          /* that value, in the spectrum's unit */
+    double half_lo_nm, half_hi_nm; /* the nearest crossings of half the peak value below and above it */
+    double fwhm_nm;             /* full width at half maximum: half_hi_nm - half_lo_nm; NaN when the spectrum
+                                 * does not fall to half the peak on one side within its data */
+    double noise;               /* the median |second difference| of the values over their range: 0 for a
+                                 * constant, about 0.25 for white noise (a dark frame, a detector's raw
+                                 * counts), under 0.02 for a lamp measured at 1-5 nm steps */
+    long long reserved[4];      /* zero: room for later results (ABI policy) */
+} lx_spd_shape;
+
+/** Peak wavelength, FWHM and the noise measure of spd. Errors: those of lx_spd_check; LX_ERANGE
+ * when no value is positive (no peak); LX_ENOMEM. */
+LX_API lx_status lx_spd_shape_compute(lx_ctx *ctx, const lx_spd *spd, lx_spd_shape *out);
 
 /* ============================================================================================ */
 /* 5. Correlated colour temperature; LED binning (src/spectral) */
@@ -956,10 +1001,12 @@ typedef struct lx_cri {
     int ref_daylight;   /* 0: Planckian reference (CCT < 5000 K), 1: CIE daylight (>= 5000 K) */
     double dc;          /* distance test - reference white in CIE 1960 uv (CIE 13.3 "DC") */
     int valid;          /* 1 when dc <= 5.4e-3; else the CIE says Ra is not meaningful */
-    long long reserved[4]; /* zero: room for later results (ABI policy) */
+    double r15;         /* R15 of JIS Z 8726:1990 (test colour sample No. 15, Japanese complexion),
+                         * computed as R9-R14 are (taken from the reserved space) */
+    long long reserved[3]; /* zero: room for later results (ABI policy) */
 } lx_cri;
 
-/** CIE 13.3-1995 colour rendering index: R1-R14 and Ra with the CIE reference illuminant
+/** CIE 13.3-1995 colour rendering index: R1-R14 and Ra (and R15 of JIS Z 8726) with the CIE reference illuminant
  * (Planckian below 5000 K, CIE D-series from 5000 K), von Kries adaptation in CIE 1960 UCS and
  * CIE 1964 U*V*W*. Sums at 5 nm over 360-830 nm for data sampled every 5 nm on multiples of
  * 5 nm, else at 1 nm (spectrum and test colour samples interpolated linearly; spectrum zero
@@ -989,6 +1036,215 @@ typedef struct lx_tm30 {
  * 5000 K, a Y-normalised mix between. Missing data counts as zero (CIE 224). Errors: LX_ERANGE
  * (refusals as for lx_cri_compute), LX_EINVAL (an invalid view). */
 LX_API lx_status lx_tm30_compute(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out);
+
+/* ============================================================================================ */
+/* 8b. Measurement uncertainty of every spectral result: GUM and Monte Carlo (src/spectral: the
+ *     input models and the engine; src/colour: colour rendering and the entry point) */
+/* ============================================================================================ */
+
+/** The kinds of input uncertainty of a measured spectrum S (README "Measurement uncertainty").
+ * Each is a zero-mean error of the values; a model adds any number of them, independent of each
+ * other. z below is a standard normal deviate. */
+typedef enum lx_unc_kind {
+    LX_UNC_NOISE = 0,     /* uncorrelated: S_j + u_j z_j, independent at every sample */
+    LX_UNC_SCALE = 1,     /* fully correlated: S (1 + sigma z), sigma relative */
+    LX_UNC_SHIFT = 2,     /* a wavelength-scale error: S(lambda - sigma z), sigma in nm, the spectrum
+                           * interpolated linearly and its end values held beyond its ends */
+    LX_UNC_BANDWIDTH = 3, /* a bandwidth error: S + ((b0 + sigma z)^2 - b0^2) / 12 S'' (the second
+                           * term of a triangular bandpass of FWHM b, Stearns and Stearns, CIE
+                           * 214), sigma and b0 in nm, S'' by divided differences */
+    LX_UNC_FOURIER = 4,   /* unknown correlations, Kaerhae et al. 2017 (Metrologia 54 524): S (1 +
+                           * sigma sum_{i=0..N} gamma_i f_i(x)), f_0 = 1, f_i = sqrt2 sin(2 pi i x +
+                           * phi_i), x = (lambda - first) / (last - first), phi_i uniform, gamma a
+                           * random unit vector (normals over their norm); sigma relative */
+    LX_UNC_COVARIANCE = 5 /* a full covariance matrix of the values: a multivariate normal */
+} lx_unc_kind;
+
+/** One component of an input model (zero-initialise; ABI policy: reserved stays zero). */
+typedef struct lx_unc_component {
+    lx_unc_kind kind;
+    double sigma;          /* SCALE, FOURIER, and NOISE without u: relative standard uncertainty
+                            * (0.01 is 1 %); SHIFT, BANDWIDTH: standard uncertainty in nm */
+    double bandwidth_nm;   /* BANDWIDTH: the nominal bandpass b0 (0: the mean sample interval) */
+    int terms;             /* FOURIER: N, 0 .. 1000 (0: the N in 1 .. 50 with the largest GUM
+                            * u(CCT), Kaerhae's unfavourable case; 3 when the CCT is undefined) */
+    int relative;          /* NOISE with u, COVARIANCE: 1 when u (cov) is relative to the values
+                            * (fractions; cov[i][j] multiplies S_i S_j) */
+    int absolute;          /* NOISE without u: 1 when sigma is in the values' unit at every sample */
+    size_t n;              /* NOISE with u, COVARIANCE: the samples of u / cov */
+    const double *lambda_nm; /* their wavelengths: the spectrum's own, to 1e-6 nm (NULL: taken to
+                            * be the spectrum's, n must then equal its sample count) */
+    const double *u;       /* NOISE: n standard uncertainties (NULL: sigma at every sample) */
+    const double *cov;     /* COVARIANCE: n x n, row-major, symmetric positive semi-definite */
+    const char *label;     /* its name in budgets ("fourier=1%"; NULL: the kind's name) */
+    long long reserved[4];
+} lx_unc_component;
+
+/** An input model: components added one by one, or parsed from text. Made by lx_unc_model_create
+ * or lx_unc_model_parse, freed with lx_unc_model_free; read-only once made (several threads may
+ * use one). */
+typedef struct lx_unc_model lx_unc_model;
+
+/** An empty model in *out. Errors: LX_ENOMEM. */
+LX_API lx_status lx_unc_model_create(lx_ctx *ctx, lx_unc_model **out);
+
+/** Adds a component (its arrays and label are copied). Errors: LX_EINVAL (an unknown kind, a sigma
+ * that is negative or not finite, u or cov NULL with n > 0, negative or non-finite u, non-zero
+ * reserved; the message names the component). Grids and positive semi-definiteness are checked
+ * against the spectrum, in lx_spd_uncertainty. */
+LX_API lx_status lx_unc_model_add(lx_ctx *ctx, lx_unc_model *m, const lx_unc_component *c);
+
+/** Parses a model from text, terms joined with '+' (README "Measurement uncertainty"):
+ *   P%                  uncorrelated, P per cent of each value (NOISE)
+ *   noise=P% | noise=V  uncorrelated, relative or V absolute (the values' unit)
+ *   column=NAME[:%]     uncorrelated, the standard uncertainties in the spectrum named NAME of set
+ *                       (a column of the same file; :% when they are per cent of the values)
+ *   file=PATH[:%]       the same from the single spectrum of another file (lx_spd_read_file)
+ *   scale=P%            fully correlated (SCALE)
+ *   shift=Dnm           wavelength scale (SHIFT)
+ *   bandwidth=Dnm[@Bnm] bandwidth, nominal bandpass B (BANDWIDTH)
+ *   fourier=P%[:N]      Kaerhae et al. 2017 with N terms (FOURIER)
+ *   covariance=PATH[:rel] a full covariance matrix (COVARIANCE): a CSV of n rows of n numbers, or
+ *                       a header row of wavelengths and each row led by its wavelength
+ * set may be NULL (column= is then refused). Errors: LX_EINVAL (a term that is none of these, a
+ * value out of range: the message names the term), those of the file readers (LX_EIO, LX_EPARSE). */
+LX_API lx_status lx_unc_model_parse(lx_ctx *ctx, const char *spec, const lx_spd_set *set, lx_unc_model **out);
+
+/** The number of components of m (0 for NULL) and the label of component i (NULL beyond). */
+LX_API size_t lx_unc_model_count(const lx_unc_model *m);
+LX_API const char *lx_unc_model_label(const lx_unc_model *m, size_t i);
+
+/** 1 when a column= term of m took its values from spd (a member of the set given to
+ * lx_unc_model_parse): that spectrum holds uncertainties, not a measurement. */
+LX_API int lx_unc_model_uses(const lx_unc_model *m, const lx_spd *spd);
+
+/** Frees a model. Accepts NULL. */
+LX_API void lx_unc_model_free(lx_unc_model *m);
+
+/** The quantities with an uncertainty, in the order of lx_unc_result.q. */
+typedef enum lx_unc_quantity {
+    LX_UQ_X = 0, LX_UQ_Y, LX_UQ_Z,           /* absolute tristimulus values (lx_colorimetry) */
+    LX_UQ_CX, LX_UQ_CY,                      /* chromaticity x, y */
+    LX_UQ_U_PRIME, LX_UQ_V_PRIME,            /* CIE 1976 u', v' */
+    LX_UQ_CCT, LX_UQ_DUV,                    /* K; CIE 1960 uv */
+    LX_UQ_LER, LX_UQ_SCOTOPIC_Y, LX_UQ_SP_RATIO, LX_UQ_RADIANT,
+    LX_UQ_AO_SC, LX_UQ_AO_MC, LX_UQ_AO_LC, LX_UQ_AO_RH, LX_UQ_AO_MEL,      /* alpha-opic irradiances */
+    LX_UQ_EDI_SC, LX_UQ_EDI_MC, LX_UQ_EDI_LC, LX_UQ_EDI_RH, LX_UQ_EDI_MEL, /* equivalent daylight */
+    LX_UQ_DER_SC, LX_UQ_DER_MC, LX_UQ_DER_LC, LX_UQ_DER_RH, LX_UQ_DER_MEL, /* daylight efficacy ratios */
+    LX_UQ_PPFD, LX_UQ_EPAR, LX_UQ_YPF,       /* lx_par */
+    LX_UQ_RA,                                /* CIE 13.3 Ra, then R1 .. R14 */
+    LX_UQ_R1, LX_UQ_R2, LX_UQ_R3, LX_UQ_R4, LX_UQ_R5, LX_UQ_R6, LX_UQ_R7, LX_UQ_R8, LX_UQ_R9, LX_UQ_R10,
+    LX_UQ_R11, LX_UQ_R12, LX_UQ_R13, LX_UQ_R14,
+    LX_UQ_RF, LX_UQ_RG,                      /* CIE 224 / TM-30 */
+    LX_UQ_COUNT
+} lx_unc_quantity;
+
+/** The quantity's name ("X", "x", "cct_K", "melanopic_edi", "par_ppfd", "cri_r9", "tm30_rf"; the
+ * column names of `luxcalc spd`), NULL for another value. Thread-safe. */
+LX_API const char *lx_unc_quantity_name(lx_unc_quantity q);
+
+/** Groups of quantities to compute (lx_unc_opts.quantities, OR-ed). */
+#define LX_UNC_COLORIMETRY 1u /* X .. radiant */
+#define LX_UNC_ALPHAOPIC 2u   /* alpha-opic irradiances, EDI, DER */
+#define LX_UNC_PAR 4u         /* PPFD, ePAR, YPF */
+#define LX_UNC_CRI 8u         /* Ra, R1 .. R14 */
+#define LX_UNC_TM30 16u       /* Rf, Rg */
+
+/** Methods (lx_unc_opts.method). */
+typedef enum lx_unc_method {
+    LX_UNC_MC = 0,   /* Monte Carlo, JCGM 101 (GUM Supplement 1) */
+    LX_UNC_GUM = 1,  /* the law of propagation of uncertainty, JCGM 100, with analytic derivatives
+                      * (central differences for CRI and TM-30) */
+    LX_UNC_BOTH = 2  /* both, and JCGM 101 section 8's validation of GUM against Monte Carlo */
+} lx_unc_method;
+
+/** Options of lx_spd_uncertainty (zero-initialise for defaults; ABI policy: reserved stays zero). */
+typedef struct lx_unc_opts {
+    lx_unc_method method;
+    unsigned quantities;    /* LX_UNC_* groups; 0: LX_UNC_COLORIMETRY */
+    lx_observer observer;   /* 0: 2 deg */
+    lx_method integration;  /* the integration method of the quantities (lx_spd_colorimetry) */
+    size_t trials;          /* Monte Carlo trials (their values may take at most 2 GB: LX_EINVAL beyond);
+                             * 0: adaptive (JCGM 101 7.9): sequences of
+                             * max(10^4, 100 / (1 - coverage)) trials until the mean, u and the
+                             * interval's ends are stable to `digits` significant digits of u */
+    int digits;             /* adaptive: significant digits of u (1 or 2; 0: 2) */
+    size_t max_trials;      /* adaptive: the most trials (0: as many as 512 MB of values hold, at
+                             * most 10^7: 5.1e6 for the 13 colorimetric quantities) */
+    double coverage;        /* coverage probability of the intervals (0: 0.95) */
+    int shortest;           /* 1: the shortest coverage interval (JCGM 101 7.7.3), else the
+                             * probabilistically symmetric one */
+    unsigned long long seed; /* the trials are a function of the seed alone (0 is a seed): the same
+                             * on every number of threads and on OpenCL */
+    lx_backend backend;     /* where the trials are drawn (AUTO: the CPU below the measured
+                             * break-even; also LX_BACKEND) */
+    int threads;            /* 0: every core */
+    long long reserved[4];
+} lx_unc_opts;
+
+/** One quantity's result. A result struct (ABI policy: reserved written as zero). */
+typedef struct lx_unc_value {
+    int defined;        /* 1 when computed: asked for and defined for the measured spectrum */
+    double value;       /* the quantity of the measured spectrum (the estimate y = f(x)) */
+    double u;           /* standard uncertainty (Monte Carlo's when it ran, else GUM's) */
+    double lo, hi;      /* coverage interval at the coverage probability (Monte Carlo's, else y -+ k u) */
+    double mc_mean;     /* Monte Carlo: the average of the trials (NaN without) */
+    double mc_u, mc_lo, mc_hi; /* Monte Carlo's (NaN without) */
+    double gum_u, gum_lo, gum_hi; /* GUM's: u, y - k u, y + k u with k the normal quantile (NaN without) */
+    double delta;       /* the numerical tolerance of u: half a unit of its digits-th significant digit */
+    int stable;         /* Monte Carlo: 1 when its mean, u and interval ends are stable to delta
+                         * (JCGM 101 7.9.4), 0 not (or trials fixed and not checked: -1) */
+    int gum_valid;      /* BOTH: 1 when |y - U - lo_mc| and |y + U - hi_mc| are both within delta
+                         * (JCGM 101 8.2), 0 when not, -1 not judged (Monte Carlo not stable to
+                         * delta: too few trials to serve as the reference) */
+    double d_low, d_high; /* those two differences */
+    double undefined;   /* the fraction of trials where the quantity had no value (CCT off the locus, a
+                         * refused CRI): the statistics are of the others */
+    int top[3];         /* GUM budget: the components (model order) contributing most, -1 none */
+    double top_u[3];    /* their u_i(y) = sqrt(J C_i J^T) */
+    double peak_nm;     /* GUM: the wavelength of the largest sensitivity to the spectrum (NaN) */
+    long long reserved[4];
+} lx_unc_value;
+
+/** The uncertainty of every quantity of one spectrum (lx_spd_uncertainty; free with
+ * lx_unc_result_free). Only the library allocates it (ABI policy: fields are appended). */
+typedef struct lx_unc_result {
+    size_t nq;            /* LX_UQ_COUNT of the library that made it */
+    lx_unc_value *q;      /* nq entries, by lx_unc_quantity */
+    lx_unc_method method;
+    size_t trials;        /* Monte Carlo trials run (0: none) */
+    size_t sequence;      /* adaptive: trials per sequence (JCGM 101 7.9.4's M); 0 fixed */
+    int stable;           /* adaptive: 1 when every computed quantity is stable */
+    int digits;
+    double coverage, k;   /* coverage probability; the GUM coverage factor */
+    int fourier_terms;    /* N of the Fourier components (the chosen one for terms 0; 0 none) */
+    lx_backend backend;   /* where the trials ran */
+    size_t nhistory;      /* adaptive: one entry per sequence: */
+    size_t *history_trials; /* the trials after it */
+    double *history_ratio;  /* the largest 2 s / delta over the quantities (stable at <= 1) */
+    int *history_worst;     /* the quantity it belongs to */
+    size_t rank;          /* the rank of the normal part in the integrals' space (the draws per trial) */
+    double seconds_mc, seconds_gum; /* wall time of each method */
+    double seconds_draw;  /* of seconds_mc, drawing the trials (OpenCL: the device's calls; CPU: the
+                           * threads' time in it over their number) */
+} lx_unc_result;
+
+/** The measurement uncertainty of the quantities of one spectrum (opts->quantities) under the input
+ * model m, by Monte Carlo (JCGM 101), GUM (JCGM 100) or both with JCGM 101's validation, into *out
+ * (free with lx_unc_result_free). Every quantity is a function of a few linear integrals of the
+ * spectrum (the weights of opts->integration): the trials draw those integrals from the model's
+ * distribution (exact for every kind of component; a multivariate normal for the normal linear
+ * ones, through the pivoted Cholesky factor of their covariance), not whole spectra. opts may be
+ * NULL (Monte Carlo of the colorimetry, adaptive, 95 %). Errors: those of lx_spd_check and of the
+ * quantities (LX_ERANGE when no asked quantity is defined), LX_EINVAL (a component that does not
+ * fit the spectrum: a grid that is not the spectrum's, a covariance that is not positive
+ * semi-definite, naming its smallest eigenvalue), LX_EUNSUPPORTED and LX_EDEVICE as
+ * lx_batch_integrate for OpenCL. */
+LX_API lx_status lx_spd_uncertainty(lx_ctx *ctx, const lx_spd *spd, const lx_unc_model *m, const lx_unc_opts *opts,
+                                    lx_unc_result **out);
+
+/** Frees a result of lx_spd_uncertainty. Accepts NULL. */
+LX_API void lx_unc_result_free(lx_unc_result *r);
 
 /* ============================================================================================ */
 /* 9. Units and quantities (src/lighting) */
@@ -2697,8 +2953,11 @@ typedef struct lx_falsecolor_opts {
                             * the 1st percentile of the positive values (at most 6 decades below
                             * the top, at least 2) to the decade at or above the largest; linear
                             * from 0 (or a round value below a minimum under -5 % of the largest)
-                            * to the round value above the largest. Values below the range take
-                            * its lowest colour. */
+                            * to the round value above the largest; where a small bright source
+                            * (values over 100 times the 99.9th percentile: the sun disc) would take
+                            * the range, it ends above the rest instead, the source drawn in the top
+                            * colour and a line under the title saying so. Values below the range
+                            * take its lowest colour. */
     const char *quantity;  /* the legend's quantity ("luminance"; NULL: none) */
     const char *unit;      /* its unit ("cd/m²"; NULL: none) */
     const char *title;     /* the heading (NULL: none); a line of min / median / max follows it */
@@ -2743,12 +3002,25 @@ typedef struct lx_report_opts {
  * in lm, lx, cd/m² or cd per the unit, radiant power, x, y, u', v', CCT, Duv, Ra, R9, Rf, Rg,
  * melanopic DER, efficacy); the colour of the light as a normalised sRGB swatch; the CIE 1931 xy
  * or 1976 u'v' diagram (spectral locus, Planckian locus, isotemperature lines labelled where the
- * labels collide with nothing, the point); CIE 13.3 Ra and R1-R14 bars with their values; the
- * TM-30 colour vector graphic with its 16 hue bins. A metric that is undefined for the spectrum
+ * labels collide with nothing, the point); CIE 13.3 Ra and R1-R14 bars and R15 (JIS Z 8726) with their values; the
+ * TM-30 colour vector graphic with its 16 hue bins and an arrow with its head in each (the whole
+ * TM-30 page: lx_tm30_report_write_png). A metric that is undefined for the spectrum
  * (lx_cri_compute or lx_tm30_compute refuse) is shown with its reason instead. Errors: those of
  * lx_spd_check and lx_spd_colorimetry, and the writers' above. */
 LX_API lx_status lx_spd_report_write_png(lx_ctx *ctx, const lx_spd *spd, const lx_report_opts *opts,
                                          const char *path);
+
+/** The ANSI/IES TM-30-20 colour rendition report of one spectrum as a PNG page (1200 x 1080), laid
+ * out as the IES TM-30-20 calculator prints it: the test and reference spectra at equal luminous
+ * flux; the colour vector graphic (the hue bins in the calculator's colours, the +-10 % and +-20 %
+ * chroma circles, the reference circle, the test's shape in red, an arrow with its head from the
+ * reference to the test in each bin) with Rf, Rg, CCT and Duv at its corners; bar charts of the
+ * local chroma shift Rcs,hj (-40..40 %), hue shift Rhs,hj (-0.5..0.5) and fidelity Rf,hj (0..100)
+ * of the 16 bins, each value on its bar; the fidelity of the 99 samples (Rf,CESi, each bar in the
+ * sample's colour under D65); and the numbers (Rf, Rg, CCT, Duv, x, y, u', v', CIE Ra and R9).
+ * opts: only title is used (may be NULL). Errors: those of lx_tm30_compute (LX_ERANGE where TM-30
+ * is undefined: the page would have nothing to show) and the writers' above. */
+LX_API lx_status lx_tm30_report_write_png(lx_ctx *ctx, const lx_spd *spd, const lx_report_opts *opts, const char *path);
 
 /** Writes an sRGB preview PNG of an XYZ image (XYZ -> linear sRGB, exposure from the median
  * luminance, Reinhard tone curve), enlarged to at least 256 pixels wide. */

@@ -227,12 +227,82 @@ static void test_irradiance_faults(void **state)
     lx_envmap_free(map);
 }
 
+/* Monte Carlo trials of the uncertainty engine (kernels/unc_trials.cl): the same contract; the
+ * statistics of the trials are the CPU's bit for bit after a fall-back. */
+static lx_status run_unc(const char *fault, lx_backend backend, lx_unc_result **r, logbook *book, char *msg, size_t msglen)
+{
+    lx_ctx *ctx;
+    assert_int_equal(lx_ctx_create(&ctx), LX_OK);
+    lx_ctx_set_log(ctx, on_log, book, LX_LOG_INFO);
+    if (fault) setenv("LX_CL_FAULT", fault, 1);
+    else unsetenv("LX_CL_FAULT");
+    setenv("LX_AUTO_BREAK_EVEN", "0", 1);
+    static double lam[81], v[81];
+    for (int i = 0; i < 81; i++) lam[i] = 380 + 5 * i, v[i] = lx_planck(lam[i], 3000);
+    lx_spd s = {"bb", 81, lam, v};
+    lx_unc_model *m = NULL;
+    assert_int_equal(lx_unc_model_parse(ctx, "1%+shift=0.2nm+fourier=1%:3", NULL, &m), LX_OK);
+    lx_unc_opts o = {.trials = 3000, .seed = 5, .backend = backend};
+    *r = NULL;
+    lx_status st = lx_spd_uncertainty(ctx, &s, m, &o, r);
+    if (msg) snprintf(msg, msglen, "%s", lx_ctx_errmsg(ctx));
+    unsetenv("LX_CL_FAULT");
+    unsetenv("LX_AUTO_BREAK_EVEN");
+    lx_unc_model_free(m);
+    lx_ctx_destroy(ctx);
+    return st;
+}
+
+static void test_uncertainty_faults(void **state)
+{
+    (void)state;
+    NEED_OPENCL();
+    logbook book = {0};
+    char msg[1024];
+    lx_unc_result *cpu = NULL, *got = NULL;
+    assert_int_equal(run_unc(NULL, LX_BACKEND_CPU, &cpu, &book, NULL, 0), LX_OK);
+    assert_int_equal(run_unc(NULL, LX_BACKEND_OPENCL, &got, &book, NULL, 0), LX_OK);
+    assert_int_equal(got->backend, LX_BACKEND_OPENCL);
+    lx_unc_result_free(got);
+    static const struct {
+        const char *fault, *call;
+    } cases[] = {
+        {"clGetPlatformIDs", "no OpenCL platform"},
+        {"clBuildProgram", "clBuildProgram failed: CL_BUILD_PROGRAM_FAILURE"},
+        {"clCreateBuffer", "CL_MEM_OBJECT_ALLOCATION_FAILURE"},
+        {"clCreateBuffer:4", "CL_MEM_OBJECT_ALLOCATION_FAILURE"},
+        {"clEnqueueNDRangeKernel", "clEnqueueNDRangeKernel"},
+        {"clEnqueueReadBuffer", "clEnqueueReadBuffer"},
+        {"clFinish", "clFinish"},
+    };
+    for (size_t c = 0; c < sizeof cases / sizeof *cases; c++) {
+        if (!wanted(cases[c].fault)) continue;
+        lx_status st = run_unc(cases[c].fault, LX_BACKEND_OPENCL, &got, &book, msg, sizeof msg);
+        print_message("uncertainty, %s, backend opencl: %s\n", cases[c].fault, msg);
+        assert_int_equal(st, LX_EDEVICE);
+        assert_null(got);
+        assert_non_null(strstr(msg, cases[c].call));
+        int before = book.fallbacks;
+        st = run_unc(cases[c].fault, LX_BACKEND_AUTO, &got, &book, msg, sizeof msg);
+        assert_int_equal(st, LX_OK);
+        assert_int_equal(got->backend, LX_BACKEND_CPU);
+        assert_int_equal(book.fallbacks, before + 1);
+        for (int q = 0; q <= LX_UQ_RADIANT; q++) {
+            assert_memory_equal(&got->q[q].mc_u, &cpu->q[q].mc_u, sizeof(double));
+            assert_memory_equal(&got->q[q].mc_lo, &cpu->q[q].mc_lo, sizeof(double));
+        }
+        lx_unc_result_free(got);
+    }
+    lx_unc_result_free(cpu);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_batch_faults),
         cmocka_unit_test(test_grid_faults),
         cmocka_unit_test(test_irradiance_faults),
+        cmocka_unit_test(test_uncertainty_faults),
     };
     return cmocka_run_group_tests_name("opencl faults", tests, NULL, NULL);
 }

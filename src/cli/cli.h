@@ -104,6 +104,18 @@ cli_table *cli_table_new(int ncols, const char *const *names, const char *const 
 void cli_table_str(cli_table *t, const char *s);
 void cli_table_num(cli_table *t, double v);
 void cli_table_int(cli_table *t, long long v);
+/* A number with its standard uncertainty and coverage interval: csv, tsv and json write v (the
+ * interval goes in columns of its own), the table "v ± u unit [lo, hi]" to the column's digits. */
+void cli_table_num_pm(cli_table *t, double v, double u, double lo, double hi);
+/* Marks column col as left out of the table format (csv, tsv and json write it). */
+void cli_table_not_in_table(cli_table *t, int col);
+/* The number in column col of the row being filled (or, when none is, of the last row added);
+ * returns -1 when that cell is not a number. */
+int cli_table_cell_num(const cli_table *t, int col, double *v);
+/* Appends to dst a copy of column col's cell of src's row being filled (or its last row). */
+void cli_table_copy_cell(cli_table *dst, const cli_table *src, int col);
+/* Forgets the rows added since the last flush, unwritten. */
+void cli_table_discard(cli_table *t);
 /* Writes every row (the header first) and ends the output. json_array: 1 prints an array even
  * for one row, 0 prints one object when there is exactly one row. Returns 0, or -1 on a write error. */
 int cli_table_write(cli_table *t, cli_format fmt, FILE *out, int json_array);

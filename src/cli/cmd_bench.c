@@ -33,6 +33,8 @@ int cli_bench_room(FILE *out); /* bench_room.c */
 static int bench_room(bench_ctx *b) { return cli_bench_room(b->out); }
 int cli_bench_daylight(FILE *out); /* bench_daylight.c */
 static int bench_daylight(bench_ctx *b) { return cli_bench_daylight(b->out); }
+int cli_bench_uncertainty(FILE *out, const char *tmp); /* bench_uncertainty.c */
+static int bench_uncertainty(bench_ctx *b) { return cli_bench_uncertainty(b->out, b->tmp); }
 int cli_bench_accuracy(FILE *out, const char *outpath); /* bench_accuracy.c */
 static int bench_accuracy(bench_ctx *b) { return cli_bench_accuracy(b->out, b->outpath); }
 static const struct {
@@ -48,6 +50,7 @@ static const struct {
     {"accuracy", bench_accuracy, "error against a reference vs time of every method: spectra, radiance fields, lighting, near field"},
     {"irradiance", bench_irradiance, "irradiance maps: SH9, exact (fast), brute force vs numpy, 512x256..4096x2048"},
     {"room", bench_room, "interreflection: error of the work-plane mean and worst point against time, tolerance 1e-1..1e-4"},
+    {"uncertainty", bench_uncertainty, "GUM and Monte Carlo of one 401-sample spectrum: 1e5 trials (goals 2 s, 20 s with Ra and Rf, GUM 50 ms) vs luxpy"},
     {"daylight", bench_daylight, "daylight factor in a 10 x 6 x 3 m room with two windows: error against a converged reference vs time"},
     {NULL, NULL, NULL},
 };

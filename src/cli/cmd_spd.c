@@ -5,6 +5,7 @@
 #include "progress.h"
 #include "spd_report.h"
 #include "spd_input.h"
+#include "spd_unc.h"
 
 #include <getopt.h>
 
@@ -54,6 +55,23 @@ static const char help[] =
     "                         A metric undefined for a spectrum is left empty, the reason on stderr;\n"
     "                         a band the data does not cover is \"not covered\", never 0\n"
     ;
+static const char help_unc[] =
+    "  --uncertainty SPEC     every quantity with its standard uncertainty and coverage interval\n"
+    "                         (columns NAME_u, NAME_lo, NAME_hi; the table shows value ± u [lo, hi]).\n"
+    "                         SPEC: terms joined with +: P% (uncorrelated, per cent of each value),\n"
+    "                         noise=V (absolute), column=NAME[:%] (a column of the file),\n"
+    "                         file=U.csv[:%], scale=P% (fully correlated), shift=Dnm (wavelength scale),\n"
+    "                         bandwidth=Dnm[@Bnm], fourier=P%[:N] (Kaerhae et al. 2017),\n"
+    "                         covariance=C.csv[:rel] (a full matrix on the spectrum's grid)\n"
+    "  --uncertainty-method M mc (default; JCGM 101 Monte Carlo) | gum (JCGM 100) | both (and JCGM 101\n"
+    "                         section 8's validation of GUM: NAME_gum_u, NAME_gum_valid)\n"
+    "  --trials N|auto        Monte Carlo trials (default auto: JCGM 101 7.9's adaptive procedure)\n"
+    "  --digits 1|2           auto: significant digits of u the results must settle to (default 2)\n"
+    "  --coverage P           coverage probability of the intervals (default 0.95)\n"
+    "  --interval symmetric|shortest  the coverage interval (default probabilistically symmetric)\n"
+    "  --seed S               the trials' seed (default 0): the same results on any number of cores\n"
+    "  --explain              on stderr: the trials and why that many, the budget, GUM's validation\n"
+    ;
 static const char help2[] =
     "  --photoperiod H        hours of light a day for the daily light integral (par_dli_mol_m2_d)\n"
     "  --subtense A           the source's full angular subtense (rad, or 0.6deg) for the IEC 62471\n"
@@ -64,7 +82,8 @@ static const char help2[] =
     "  --format F             table (default) | csv | json (json adds each file's \"instrument\":\n"
     "                         its layout, unit and header fields)\n"
     "  -o FILE                write the results to FILE (atomically)\n"
-    "  --backend B            auto (default; also LX_BACKEND) | cpu | opencl: where batches run.\n"
+    "  --backend B            auto (default; also LX_BACKEND) | cpu | opencl: where batches run (and\n"
+    "                         --uncertainty's Monte Carlo trials are drawn).\n"
     "                         A file of >= 1024 spectra on one uniform 1 or 5 nm grid (or any\n"
     "                         size with --backend) is integrated as a batch (vectorised, threaded;\n"
     "                         agrees with the per-spectrum path to 1e-9 relative)\n"
@@ -79,7 +98,9 @@ static const char help2[] =
     "  --skip-bad-rows        report each malformed data row (FILE:LINE: why) and read the rest; the\n"
     "                         exit status is then 2\n"
     "  --report DIR           one PNG report per spectrum: DIR/<file-stem>_<spectrum>.png (SPD,\n"
-    "                         swatch, CIE xy, R1-R14, TM-30 vector graphic, headline numbers)\n"
+    "                         swatch, CIE xy, R1-R15, TM-30 vector graphic, headline numbers), and\n"
+    "                         where TM-30 is defined its page <file-stem>_<spectrum>_tm30.png (as\n"
+    "                         the IES TM-30-20 calculator: vector graphic, Rcs/Rhs/Rf by hue bin)\n"
     "  --diagram xy|uv        the report's chromaticity diagram: CIE 1931 xy (default) or\n"
     "                         CIE 1976 u'v'\n"
     "  IMAGE.exr -o X.exr --png P.png  spectral EXR (S0.<nm>nm channels): per-pixel XYZ in cd/m2\n"
@@ -96,7 +117,8 @@ static const char help2[] =
     "  luxcalc spd --unit W/nm --observer 10 lamp.csv\n"
     "  luxcalc spd --unit W/m2/nm --metrics all --format csv lamp.csv\n"
     "  luxcalc spd --metrics vendor,par,binning --format csv ESPD2021_0104_231446.xls\n"
-    "  luxcalc spd --report reports/ lamp.csv\n";
+    "  luxcalc spd --report reports/ lamp.csv\n"
+    "  luxcalc spd --unit W/m2/nm --uncertainty '1%+scale=2%+shift=0.2nm' --explain lamp.csv\n";
 
 /* in the order of cli_spd_unit_names */
 static const struct {
@@ -160,6 +182,7 @@ typedef struct spd_args {
     int fmt, unit, unit_given, f32, backend_given;
     lx_diagram diagram;
     cli_metrics msel;
+    cli_unc unc;
     lx_spd_read_opts ropts;
     int reader_opts; /* any option of the text readers given (the rows-layout stream path then steps aside) */
 } spd_args;
@@ -181,11 +204,19 @@ static int parse_args(int argc, char **argv, spd_args *a)
         {"diagram", required_argument, NULL, 'D'},
         {NULL, 0, NULL, 0},
     };
+    struct option all[sizeof opts / sizeof *opts + 16];
+    size_t no = sizeof opts / sizeof *opts - 1, nu = 0;
+    memcpy(all, opts, no * sizeof *opts);
+    while (cli_unc_long_options[nu].name) all[no + nu] = cli_unc_long_options[nu], nu++;
+    memset(&all[no + nu], 0, sizeof *all);
     const char *cmd = a->cmd;
     int c;
     char *end;
     optind = 1;
-    while ((c = getopt_long(argc, argv, ":o:vqh", opts, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":o:vqh", all, NULL)) != -1) {
+        int uo = cli_unc_option(&a->unc, c, optarg, cmd);
+        if (uo < 0) return CLI_USAGE;
+        if (uo > 0) continue;
         switch (c) {
         case 'b':
             if (!strcmp(optarg, "2")) a->obs = LX_OBSERVER_2;
@@ -264,12 +295,12 @@ static int parse_args(int argc, char **argv, spd_args *a)
         case 'o': a->outpath = optarg; break;
         case 'v': cli_verbose++; break;
         case 'q': cli_quiet = 1; break;
-        case 'h': cli_print_help(help), cli_print_help(help2); return -1;
+        case 'h': cli_print_help(help), cli_print_help(help_unc), cli_print_help(help2); return -1;
         default: return cli_bad_option(cmd, argv, c);
         }
     }
     a->msel.observer = a->obs;
-    return CLI_OK;
+    return cli_unc_check(&a->unc, cmd) ? CLI_USAGE : CLI_OK;
 }
 
 /* The column units for a file's unit (base columns then metrics), built once per unit. */
@@ -312,6 +343,9 @@ typedef struct spd_run {
     int table_unit;
     cli_spd_batch B;
     cli_reports reports;
+    cli_table *row; /* --uncertainty: the plain row of a spectrum, before its uncertainty joins it */
+    lx_unc_model *model; /* --uncertainty without column=: parsed once for every file */
+    const char *stream_file; /* the file a stream's rows belong to */
     int rc;
 } spd_run;
 
@@ -319,7 +353,8 @@ static void set_unit(spd_run *R, int u)
 {
     if (u == R->table_unit) return;
     spd_flush(&R->so);
-    cli_table_set_units(R->t, R->C.unit_cols[u]);
+    cli_table_set_units(R->t, R->a->unc.spec ? R->a->unc.units[u] : R->C.unit_cols[u]);
+    if (R->row) cli_table_set_units(R->row, R->C.unit_cols[u]);
     R->table_unit = u;
 }
 
@@ -340,6 +375,51 @@ static void fail(spd_run *R, lx_status st)
     if (e > R->rc) R->rc = e;
 }
 
+/* The plain row of one spectrum into t (the columns without uncertainty): 0 when it has none (the
+ * reason printed, R->rc raised). line < 0: file says where ("FILE (data row N)"). */
+static int plain_row(spd_run *R, cli_table *t, const lx_spd *spd, const char *file, long line, int u,
+                     const lx_vendor_results *vendor, const char *inst)
+{
+    spd_args *a = R->a;
+    char where[1100];
+    if (line >= 0) snprintf(where, sizeof where, "%s:%ld", file, line);
+    else snprintf(where, sizeof where, "%s", file);
+    const char *label = spd->name ? spd->name : "";
+    lx_colorimetry r;
+    lx_status st = lx_spd_colorimetry(R->ctx, spd, a->obs, a->method, &r);
+    if (st == LX_OK) st = lx_colorimetry_check(R->ctx, &r, NAN); /* before printing: no blank columns */
+    if (st != LX_OK) {
+        cli_error(a->cmd, "%s: spectrum '%s': %s", where, label, lx_ctx_errmsg(R->ctx));
+        if (cli_exit_code(st) > R->rc) R->rc = cli_exit_code(st);
+        return 0;
+    }
+    if (!r.cct_valid && !cli_quiet) { /* every empty cell says why */
+        char why[LX__ERRMSG_MAX_CLI];
+        cli_cct_reason(R->ctx, &r, a->obs, why, sizeof why);
+        cli_error(a->cmd, "%s: spectrum '%s': cct_K and duv empty: %s", where, label, why);
+    }
+    cli_table_str(t, line >= 0 ? file : R->stream_file);
+    cli_table_str(t, label);
+    double v[] = {r.X, r.Y, r.Z, r.x, r.y, r.u_prime, r.v_prime, r.cct_K, r.duv, r.ler_lm_per_W, r.scotopic_Y, r.sp_ratio, r.radiant};
+    for (size_t j = 0; j < sizeof v / sizeof *v; j++) cli_table_num(t, v[j]);
+    cli_table_str(t, method_name(r.method));
+    if (a->msel.any && cli_metrics_row(t, R->ctx, &a->msel, spd, a->method, units[u].name, &r, vendor, file, line, a->cmd) > 0 &&
+        R->rc < CLI_INPUT)
+        R->rc = CLI_INPUT;
+    cli_table_json(t, inst);
+    return 1;
+}
+
+/* cli_unc_stream's plain row: a streamed spectrum of the current file (where: "FILE (data row N)") */
+static int stream_plain(void *arg, cli_table *t, const lx_spd *spd, const char *where)
+{
+    spd_run *R = arg;
+    int rc0 = R->rc, ok = plain_row(R, t, spd, where, -1, R->table_unit, NULL, NULL);
+    int e = R->rc;
+    R->rc = rc0;
+    return ok ? (e > rc0 ? e : 0) : -(e > 0 ? e : CLI_INPUT);
+}
+
 static void do_set(spd_run *R, lx_spd_set *set)
 {
     spd_args *a = R->a;
@@ -352,7 +432,7 @@ static void do_set(spd_run *R, lx_spd_set *set)
     char *inst = cli_spd_instrument_json(set);
     cli_spd_batch *B = &R->B;
     B->unit = units[u].name, B->vendor = have_vendor ? &vendor : NULL, B->instrument = inst;
-    if ((!a->msel.any || cli_metrics_batchable(&a->msel)) && !a->report_dir && cli_spd_batchable(B, set)) {
+    if ((!a->msel.any || cli_metrics_batchable(&a->msel)) && !a->report_dir && !a->unc.spec && cli_spd_batchable(B, set)) {
         lx_status st = cli_spd_batch_set(B, set);
         if (st != LX_OK) fail(R, st);
         B->vendor = NULL, B->instrument = NULL;
@@ -360,44 +440,36 @@ static void do_set(spd_run *R, lx_spd_set *set)
         return;
     }
     B->vendor = NULL, B->instrument = NULL;
-    cli_table *t = R->t;
-    if (set->count >= (a->report_dir ? 8 : 256)) cli_progress_start(set->count, set->file);
+    cli_table *t = a->unc.spec ? R->row : R->t;
+    lx_unc_model *own = NULL, *model = R->model;
+    if (a->unc.spec && !model) { /* column= refers to this file's columns */
+        lx_status ms = lx_unc_model_parse(R->ctx, a->unc.spec, set, &own);
+        if (ms != LX_OK) {
+            fail(R, ms);
+            free(inst);
+            return;
+        }
+        model = own;
+    }
+    if (set->count >= (a->report_dir || a->unc.spec ? 8 : 256)) cli_progress_start(set->count, set->file);
     for (size_t k = 0; k < set->count; k++) {
         cli_progress_update(k);
-        lx_colorimetry r;
+        if (model && lx_unc_model_uses(model, &set->spd[k])) continue; /* a column of uncertainties */
         long line = set->line ? set->line[k] : 0L;
-        lx_status st = lx_spd_colorimetry(R->ctx, &set->spd[k], a->obs, a->method, &r);
-        if (st == LX_OK) st = lx_colorimetry_check(R->ctx, &r, NAN); /* before printing: no blank columns */
-        if (st != LX_OK) {
-            cli_error(a->cmd, "%s:%ld: spectrum '%s': %s", set->file, line, set->spd[k].name ? set->spd[k].name : "",
-                      lx_ctx_errmsg(R->ctx));
-            if (cli_exit_code(st) > R->rc) R->rc = cli_exit_code(st);
-            continue;
+        int ok = plain_row(R, t, &set->spd[k], set->file, line, u, have_vendor ? &vendor : NULL, inst);
+        if (ok && model) {
+            int e2 = cli_unc_row(&a->unc, R->t, t, R->ctx, &set->spd[k], a->obs, a->method, model, set->file, line, a->cmd);
+            if (e2 > R->rc) R->rc = e2;
+            if (cli_table_rows(R->t) % 64 == 0) spd_flush(&R->so); /* a long batch goes out as it comes */
         }
-        if (!r.cct_valid && !cli_quiet) { /* every empty cell says why */
-            char why[LX__ERRMSG_MAX_CLI];
-            cli_cct_reason(R->ctx, &r, a->obs, why, sizeof why);
-            cli_error(a->cmd, "%s:%ld: spectrum '%s': cct_K and duv empty: %s", set->file, line,
-                      set->spd[k].name ? set->spd[k].name : "", why);
-        }
-        cli_table_str(t, set->file);
-        cli_table_str(t, set->spd[k].name ? set->spd[k].name : "");
-        double v[] = {r.X, r.Y, r.Z, r.x, r.y, r.u_prime, r.v_prime, r.cct_K, r.duv, r.ler_lm_per_W,
-                      r.scotopic_Y, r.sp_ratio, r.radiant};
-        for (size_t j = 0; j < sizeof v / sizeof *v; j++) cli_table_num(t, v[j]);
-        cli_table_str(t, method_name(r.method));
-        if (a->msel.any &&
-            cli_metrics_row(t, R->ctx, &a->msel, &set->spd[k], a->method, units[u].name, &r,
-                            have_vendor ? &vendor : NULL, set->file, line, a->cmd) > 0 && R->rc < CLI_INPUT)
-            R->rc = CLI_INPUT;
-        cli_table_json(t, inst);
-        if (a->report_dir) {
+        if (ok && a->report_dir) {
             R->reports.opts.unit = units[u].name;
             int re = cli_spd_report(&R->reports, R->ctx, set->file, k, &set->spd[k]);
             if (re > R->rc) R->rc = re;
         }
     }
     cli_progress_end();
+    lx_unc_model_free(own);
     free(inst);
 }
 
@@ -417,7 +489,17 @@ static void do_file(spd_run *R, const char *arg, double g_start, double g_step, 
     set_unit(R, a->unit);
     R->B.unit = units[a->unit].name;
     lx_spd_set *set = NULL;
-    int streamed = (!a->msel.any || cli_metrics_batchable(&a->msel)) && !a->report_dir && !a->reader_opts
+    if (a->unc.spec && R->model && !a->report_dir && !a->reader_opts) { /* a large rows-layout file: streamed */
+        cli_unc_rows rows = {.plain = stream_plain, .flush = spd_flush, .arg = R, .row = R->row, .dst = R->t, .flush_arg = &R->so};
+        int rc = 0;
+        R->stream_file = arg;
+        if (cli_unc_stream(&a->unc, R->ctx, arg, R->model, a->obs, a->method, &rows, a->cmd, &rc)) {
+            if (rc > R->rc) R->rc = rc;
+            spd_flush(&R->so);
+            return;
+        }
+    }
+    int streamed = (!a->msel.any || cli_metrics_batchable(&a->msel)) && !a->report_dir && !a->reader_opts && !a->unc.spec
                        ? cli_spd_batch_file(&R->B, arg, &set) : 0;
     if (streamed < 0 && -streamed > R->rc) R->rc = -streamed;
     if (streamed) {
@@ -464,6 +546,9 @@ int cmd_spd(int argc, char **argv)
     if (exr && (argc - optind != 1 || a.msel.any || a.report_dir))
         return cli_error(cmd, "a spectral EXR image is processed alone, without --metrics or --report"), CLI_USAGE;
     if (a.png && !exr) return cli_error(cmd, "--png applies to a spectral EXR image input"), CLI_USAGE;
+    if (a.unc.spec && (exr || a.f32))
+        return cli_error(cmd, "--uncertainty applies to spectra read from text (not to %s)", exr ? "a spectral EXR image" : "--input-format f32"),
+               CLI_USAGE;
     lx_ctx *ctx = cli_ctx(cmd);
     if (!ctx) return CLI_RUNTIME;
     lx_backend backend = LX_BACKEND_AUTO;
@@ -472,24 +557,49 @@ int cmd_spd(int argc, char **argv)
         lx_ctx_destroy(ctx);
         return CLI_USAGE;
     }
+    a.unc.o.backend = backend; /* --backend: where the Monte Carlo trials are drawn, too */
     if (exr) {
         int e = cli_spd_exr(ctx, cmd, argv[optind], a.outpath, a.png, a.obs, backend, (cli_format)a.fmt);
         lx_ctx_destroy(ctx);
         return e;
     }
+    lx_unc_model *model = NULL;
+    if (a.unc.spec && !strstr(a.unc.spec, "column=")) { /* the model once, its syntax a usage error */
+        lx_status ms = lx_unc_model_parse(ctx, a.unc.spec, NULL, &model);
+        if (ms != LX_OK) {
+            int e = cli_fail(cmd, ctx, ms);
+            lx_ctx_destroy(ctx);
+            return ms == LX_EINVAL ? CLI_USAGE : e;
+        }
+    }
     if (a.report_dir && cli_make_dir(cmd, "--report", a.report_dir) != 0) {
+        lx_unc_model_free(model);
         lx_ctx_destroy(ctx);
         return CLI_INPUT;
     }
     spd_run *R = calloc(1, sizeof *R);
     if (!R) {
+        lx_unc_model_free(model);
         lx_ctx_destroy(ctx);
         return cli_error(cmd, "out of memory"), CLI_RUNTIME;
     }
-    R->a = &a, R->ctx = ctx;
+    R->a = &a, R->ctx = ctx, R->model = model;
     build_cols(&R->C, &a.msel, a.unit);
-    R->t = cli_table_new(R->C.n, R->C.names, R->C.unit_cols[a.unit]);
-    cli_table_json_only(R->t, R->C.n - 1);
+    if (a.unc.spec) {
+        const char *const *uc[5] = {R->C.unit_cols[0], R->C.unit_cols[1], R->C.unit_cols[2], R->C.unit_cols[3], R->C.unit_cols[4]};
+        if (cli_unc_columns(&a.unc, R->C.names, uc, R->C.n) != 0 || !(R->row = cli_table_new(R->C.n, R->C.names, R->C.unit_cols[a.unit]))) {
+            cli_unc_free(&a.unc);
+            lx_unc_model_free(model);
+            free(R);
+            lx_ctx_destroy(ctx);
+            return cli_error(cmd, "out of memory"), CLI_RUNTIME;
+        }
+        R->t = cli_table_new(a.unc.n, a.unc.names, a.unc.units[a.unit]);
+        cli_unc_table_flags(&a.unc, R->t);
+    } else {
+        R->t = cli_table_new(R->C.n, R->C.names, R->C.unit_cols[a.unit]);
+    }
+    cli_table_json_only(R->t, a.unc.spec ? a.unc.n - 2 : R->C.n - 1); /* "instrument" */
     R->table_unit = a.unit;
     R->so.t = R->t, R->so.fmt = (cli_format)a.fmt, R->so.cmd = cmd, R->so.path = a.outpath;
     cli_spd_batch B = {ctx, cmd, R->t, a.obs, a.method, backend, a.backend_given, spd_flush, &R->so, 0,
@@ -515,6 +625,9 @@ int cmd_spd(int argc, char **argv)
     cli_free_files(files, nfiles);
     cli_reports_free(&R->reports);
     cli_table_free(R->t);
+    cli_table_free(R->row);
+    cli_unc_free(&a.unc);
+    lx_unc_model_free(model);
     free(R);
     lx_ctx_destroy(ctx);
     return rc;

@@ -116,10 +116,11 @@ void cli_print_exact(FILE *out, double v)
 
 /* ---- the result table ---- */
 typedef struct cell {
-    int kind; /* 0 number, 1 string, 2 integer, 3 JSON text */
+    int kind; /* 0 number, 1 string, 2 integer, 3 JSON text, 4 number with its uncertainty */
     double num;
     long long integer;
     char *str;
+    double u, lo, hi; /* kind 4: the table shows "num ± u [lo, hi]", the others num */
 } cell;
 
 struct cli_table {
@@ -132,7 +133,8 @@ struct cli_table {
     size_t emitted;   /* rows already written by cli_table_flush */
     int header_done;  /* csv header / json '[' written */
     int json_array;   /* json: an array was opened */
-    unsigned char json_only[256]; /* columns csv, tsv and table leave out */
+    unsigned char *json_only; /* ncols: columns csv, tsv and table leave out (NULL: none) */
+    unsigned char *not_table; /* ncols: columns the table format leaves out (NULL: none) */
 };
 
 cli_table *cli_table_new(int ncols, const char *const *names, const char *const *units)
@@ -171,6 +173,53 @@ void cli_table_str(cli_table *t, const char *s)
 
 void cli_table_num(cli_table *t, double v) { push(t)->num = v; }
 
+void cli_table_num_pm(cli_table *t, double v, double u, double lo, double hi)
+{
+    cell *c = push(t);
+    c->kind = isfinite(v) && isfinite(u) ? 4 : 0;
+    c->num = v, c->u = u, c->lo = lo, c->hi = hi;
+}
+
+void cli_table_not_in_table(cli_table *t, int col)
+{
+    if (col < 0 || col >= t->ncols) return;
+    if (!t->not_table && !(t->not_table = calloc((size_t)t->ncols, 1))) return;
+    t->not_table[col] = 1;
+}
+
+int cli_table_cell_num(const cli_table *t, int col, double *v)
+{
+    size_t i = t->ncells - t->ncells % (size_t)t->ncols; /* the row being filled */
+    if (t->ncells % (size_t)t->ncols == 0 && t->ncells) i -= (size_t)t->ncols; /* ... or the last complete one */
+    if (col < 0 || col >= t->ncols || i + (size_t)col >= t->ncells) return -1;
+    const cell *c = &t->cells[i + (size_t)col];
+    if (c->kind != 0 && c->kind != 4) return -1;
+    *v = c->num;
+    return 0;
+}
+
+void cli_table_copy_cell(cli_table *dst, const cli_table *src, int col)
+{
+    size_t i = src->ncells - (src->ncells % (size_t)src->ncols ? src->ncells % (size_t)src->ncols : (size_t)src->ncols);
+    const cell *c = col >= 0 && col < src->ncols && i + (size_t)col < src->ncells ? &src->cells[i + (size_t)col] : NULL;
+    cell *d = push(dst);
+    if (!c) {
+        d->num = NAN;
+        return;
+    }
+    *d = *c;
+    if (c->str && !(d->str = strdup(c->str))) {
+        fprintf(stderr, "luxcalc: out of memory\n");
+        exit(CLI_RUNTIME);
+    }
+}
+
+void cli_table_discard(cli_table *t)
+{
+    for (size_t i = 0; i < t->ncells; i++) free(t->cells[i].str);
+    t->ncells = 0;
+}
+
 void cli_table_int(cli_table *t, long long v)
 {
     cell *c = push(t);
@@ -189,7 +238,9 @@ void cli_table_json(cli_table *t, const char *json)
 
 void cli_table_json_only(cli_table *t, int col)
 {
-    if (col >= 0 && col < (int)sizeof t->json_only) t->json_only[col] = 1;
+    if (col < 0 || col >= t->ncols) return;
+    if (!t->json_only && !(t->json_only = calloc((size_t)t->ncols, 1))) return;
+    t->json_only[col] = 1;
 }
 
 void cli_table_set_units(cli_table *t, const char *const *units)
@@ -201,7 +252,8 @@ void cli_table_set_units(cli_table *t, const char *const *units)
 
 static int shown(const cli_table *t, int c, cli_format fmt)
 {
-    return fmt == CLI_FMT_JSON || c >= (int)sizeof t->json_only || !t->json_only[c];
+    if (fmt == CLI_FMT_TABLE && t->not_table && t->not_table[c]) return 0;
+    return fmt == CLI_FMT_JSON || !t->json_only || !t->json_only[c];
 }
 
 void cli_table_free(cli_table *t)
@@ -210,6 +262,8 @@ void cli_table_free(cli_table *t)
     for (size_t i = 0; i < t->ncells; i++) free(t->cells[i].str);
     free(t->cells);
     free(t->col);
+    free(t->not_table);
+    free(t->json_only);
     free(t);
 }
 
@@ -306,6 +360,27 @@ static void write_row(const cli_table *t, const cell *row, cli_format fmt, FILE 
             char buf[512];
             if (!shown(t, c, fmt)) continue;
             cell_text(&row[c], &t->col[c], buf, sizeof buf);
+            if (row[c].kind == 4) { /* "value ± u unit [lo, hi]" */
+                char ub[64], lb[64], hb[64];
+                double sc = t->col[c].scale, u = row[c].u * sc;
+                if (cli_precision || !(u > 0)) {
+                    cli_number_text(ub, sizeof ub, &t->col[c], u);
+                    cli_number_text(lb, sizeof lb, &t->col[c], row[c].lo * sc);
+                    cli_number_text(hb, sizeof hb, &t->col[c], row[c].hi * sc);
+                } else { /* the uncertainty to two significant digits, the value and the interval to its last (GUM 7.2.6) */
+                    int d = 1 - (int)floor(log10(u));
+                    if (u * pow(10.0, d) >= 99.5) d--; /* 9.96 rounds to 10 */
+                    double q = pow(10.0, -d);
+                    int dec = d > 0 ? d : 0;
+                    snprintf(buf, sizeof buf, "%.*f", dec, d >= 0 ? row[c].num * sc : nearbyint(row[c].num * sc / q) * q);
+                    snprintf(ub, sizeof ub, "%.*f", dec, d >= 0 ? u : nearbyint(u / q) * q);
+                    snprintf(lb, sizeof lb, "%.*f", dec, d >= 0 ? row[c].lo * sc : nearbyint(row[c].lo * sc / q) * q);
+                    snprintf(hb, sizeof hb, "%.*f", dec, d >= 0 ? row[c].hi * sc : nearbyint(row[c].hi * sc / q) * q);
+                }
+                const char *un = t->col[c].unit;
+                fprintf(out, "%-*s  %s \xc2\xb1 %s%s%s  [%s, %s]\n", w, t->col[c].name, buf, ub, *un ? " " : "", un, lb, hb);
+                continue;
+            }
             /* the unit follows a number (or a number echoed as text), never a word: "not covered" */
             char *end;
             (void)strtod(buf, &end);

@@ -26,6 +26,18 @@ typedef struct col {
 } col;
 
 static col cols[CLI_METRICS_MAX];
+
+/* ":LINE" after a file name in messages, or "" for a line below 0 (a streamed row: the file name
+ * then says where, "FILE (data row N)") */
+static const char *line_text(long line)
+{
+    static char buf[4][24];
+    static int k;
+    if (line < 0) return "";
+    k = (k + 1) % 4;
+    snprintf(buf[k], sizeof buf[k], ":%ld", line);
+    return buf[k];
+}
 static int ncols;
 
 static void add(const char *name, int group, int kind, int index)
@@ -332,9 +344,9 @@ static void say_binning_empty(const char *cmd, const char *file, long line, cons
         return;
     int both = bin->ansi_K == 0 && bin->flex_K == 0;
     cli_error(cmd,
-              "%s:%ld: spectrum '%s': %s empty: CCT %.1f K, Duv %.5f lies in no %s of ANSI C78.377-2017 "
+              "%s%s: spectrum '%s': %s empty: CCT %.1f K, Duv %.5f lies in no %s of ANSI C78.377-2017 "
               "(nominal 2200-6500 K, flexible 2700-6500 K; Duv within 0.006 of the target)",
-              file, line, label,
+              file, line_text(line), label,
               both ? "binning_ansi_* and binning_flex_*" : bin->ansi_K == 0 ? "binning_ansi_*" : "binning_flex_*",
               cc->cct_K, cc->duv,
               both ? "quadrangle and no flexible-CCT bin" : bin->ansi_K == 0 ? "nominal-CCT quadrangle" : "flexible-CCT bin");
@@ -359,18 +371,18 @@ int cli_metrics_row(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const lx_sp
     double lmes = NAN, mm = NAN;
     if ((need & G_CRI)) {
         have_cri = lx_cri_compute(ctx, spd, &cri) == LX_OK;
-        if (!have_cri && !cli_quiet) cli_error(cmd, "%s:%ld: spectrum '%s': %s", file, line, label, lx_ctx_errmsg(ctx));
+        if (!have_cri && !cli_quiet) cli_error(cmd, "%s%s: spectrum '%s': %s", file, line_text(line), label, lx_ctx_errmsg(ctx));
     }
     if ((need & G_TM30) && (tm = malloc(sizeof *tm)) != NULL) {
         have_tm = lx_tm30_compute(ctx, spd, tm) == LX_OK;
-        if (!have_tm && !cli_quiet) cli_error(cmd, "%s:%ld: spectrum '%s': %s", file, line, label, lx_ctx_errmsg(ctx));
+        if (!have_tm && !cli_quiet) cli_error(cmd, "%s%s: spectrum '%s': %s", file, line_text(line), label, lx_ctx_errmsg(ctx));
     }
     int say = !cli_quiet;
     if ((need & G_AO)) {
         have_ao = lx_alphaopic_compute(ctx, spd, method, &ao) == LX_OK;
-        if (!have_ao && say) cli_error(cmd, "%s:%ld: spectrum '%s': alpha-opic columns empty: %s", file, line, label, lx_ctx_errmsg(ctx));
+        if (!have_ao && say) cli_error(cmd, "%s%s: spectrum '%s': alpha-opic columns empty: %s", file, line_text(line), label, lx_ctx_errmsg(ctx));
         else if (say && !(ao.illuminance != 0) && (sel_kind(m, K_MEL_DER) || sel_kind(m, K_AO_DER)))
-            cli_error(cmd, "%s:%ld: spectrum '%s': the DER columns are empty: the spectrum has no luminous content", file, line,
+            cli_error(cmd, "%s%s: spectrum '%s': the DER columns are empty: the spectrum has no luminous content", file, line_text(line),
                       label);
     }
     if ((need & G_MES)) {
@@ -379,10 +391,10 @@ int cli_metrics_row(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const lx_sp
         if (!strcmp(unit, "W/sr/m2/nm")) {
             have_mes = lx_mesopic_luminance(ctx, c->Y, c->scotopic_Y * (1699.0 / 1700.06), &lmes, &mm) == LX_OK;
             if (!have_mes && say)
-                cli_error(cmd, "%s:%ld: spectrum '%s': mesopic columns empty: %s", file, line, label, lx_ctx_errmsg(ctx));
+                cli_error(cmd, "%s%s: spectrum '%s': mesopic columns empty: %s", file, line_text(line), label, lx_ctx_errmsg(ctx));
         } else if (say) {
-            cli_error(cmd, "%s:%ld: spectrum '%s': mesopic columns empty: they need luminance (--unit W/sr/m2/nm, not %s)",
-                      file, line, label, unit);
+            cli_error(cmd, "%s%s: spectrum '%s': mesopic columns empty: they need luminance (--unit W/sr/m2/nm, not %s)",
+                      file, line_text(line), label, unit);
         }
     }
     if (have_tm && say && isnan(tm->rg)) {
@@ -391,9 +403,9 @@ int cli_metrics_row(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const lx_sp
         size_t off = 0;
         for (int b = 0; b < 16; b++)
             if (isnan(tm->rf_hue[b]) && off < sizeof bins - 4) off += (size_t)snprintf(bins + off, sizeof bins - off, "%s%d", off ? ", " : "", b + 1);
-        cli_error(cmd, "%s:%ld: spectrum '%s': tm30_rg (and those bins' tm30_*_h values) empty: hue bin%s %s hold%s none of "
+        cli_error(cmd, "%s%s: spectrum '%s': tm30_rg (and those bins' tm30_*_h values) empty: hue bin%s %s hold%s none of "
                        "the 99 colour evaluation samples under the reference (%.0f K), so TM-30's gamut polygon is undefined",
-                  file, line, label, strchr(bins, ',') ? "s" : "", bins, strchr(bins, ',') ? "" : "s", tm->cct_K);
+                  file, line_text(line), label, strchr(bins, ',') ? "s" : "", bins, strchr(bins, ',') ? "" : "s", tm->cct_K);
     }
     if ((need & G_PAR)) have_par = lx_par_compute(ctx, spd, method, &par) == LX_OK;
     if ((need & G_HAZ)) {
@@ -444,7 +456,7 @@ int cli_metrics_row(cli_table *t, lx_ctx *ctx, const cli_metrics *m, const lx_sp
         if (have_tm && (k == K_RG || k == K_RF_H || k == K_RCS_H || k == K_RHS_H) && isnan(tm->rg) && isnan(v)) computed = 0;
         if (have_ao && (k == K_MEL_DER || k == K_AO_DER) && !(ao.illuminance != 0)) computed = 0;
         if (computed && !isfinite(v)) {
-            cli_error(cmd, "%s:%ld: spectrum '%s': %s is not finite (%s)", file, line, label, cols[i].name,
+            cli_error(cmd, "%s%s: spectrum '%s': %s is not finite (%s)", file, line_text(line), label, cols[i].name,
                       isnan(v) ? "NaN" : "infinite");
             bad++;
         }

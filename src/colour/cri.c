@@ -1,4 +1,4 @@
-/* cri.c - CIE 13.3-1995 colour rendering index (R1-R14, Ra) with its reference illuminant and
+/* cri.c - CIE 13.3-1995 colour rendering index (R1-R14, Ra; R15 of JIS Z 8726) with its reference illuminant and
  * von Kries adaptation, plus the quadrature shared with tm30.c (lx__qgrid, lx__quality_*): the
  * CIE sums for uniformly sampled data, exact integration of line spectra. */
 #include "colour/colour_private.h"
@@ -11,7 +11,7 @@
 
 #define CRI_START 360.0
 #define CRI_END 830.0
-#define NTCS 14
+#define NTCS LX__CRI_NTCS /* CIE 13.3 TCS01-TCS14, then JIS Z 8726 No. 15 (R15, computed as R9-R14 are) */
 #define DC_LIMIT 5.4e-3       /* CIE 13.3: Ra is not meaningful beyond this uv distance */
 #define DUV_LIMIT 0.05        /* beyond it CCT has no meaning (as lx_spd_colorimetry) */
 #define OUTSIDE_LIMIT 0.01    /* refuse when 1 % of the reference's X, Y or Z is outside the data */
@@ -41,7 +41,7 @@ lx_status lx__qgrid_make(lx_ctx *ctx, const lx_spd *spd, double start_nm, double
     if (!g->exact) {
         double step = cie15_step(spd);
         size_t n = (size_t)lround((end_nm - start_nm) / step) + 1;
-        g->lam = lx__alloc_n(2 * n, sizeof *g->lam);
+        g->lam = lx__alloc(2 * n * sizeof *g->lam);
         if (!g->lam) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
         g->w = g->lam + n;
         for (size_t i = 0; i < n; i++) g->lam[i] = start_nm + (double)i * step, g->w[i] = step;
@@ -50,7 +50,7 @@ lx_status lx__qgrid_make(lx_ctx *ctx, const lx_spd *spd, double start_nm, double
     }
     /* the breakpoints: every whole nm of [start, end] and every sample of the data inside it */
     size_t nw = (size_t)lround(end_nm - start_nm) + 1, nb = 0;
-    double *bp = lx__alloc_n(nw + spd->n, sizeof *bp);
+    double *bp = lx__alloc((nw + spd->n) * sizeof *bp);
     if (!bp) return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
     for (size_t i = 0; i < nw; i++) bp[nb++] = start_nm + (double)i;
     for (size_t i = 0; i < spd->n; i++)
@@ -65,7 +65,7 @@ lx_status lx__qgrid_make(lx_ctx *ctx, const lx_spd *spd, double start_nm, double
     }
     /* Simpson on each interval: nodes at the breakpoints (shared) and the midpoints */
     size_t n = 2 * m - 1;
-    g->lam = lx__alloc_n(2 * n, sizeof *g->lam);
+    g->lam = lx__alloc(2 * n * sizeof *g->lam);
     if (!g->lam) {
         lx__free(bp);
         return lx__error(ctx, LX_ENOMEM, NULL, 0, "out of memory");
@@ -128,7 +128,7 @@ static void cmf2_grid(const lx__qgrid *g, double *xyz)
 double lx__quality_outside(const double *ref, const lx__qgrid *g, double lo_nm, double hi_nm)
 {
     size_t n = g->n;
-    double *cmf = lx__alloc_n(3 * n, sizeof(double));
+    double *cmf = lx__alloc(sizeof(double) * 3 * n);
     if (!cmf) return INFINITY;
     cmf2_grid(g, cmf);
     double worst = 0.0;
@@ -145,19 +145,30 @@ double lx__quality_outside(const double *ref, const lx__qgrid *g, double lo_nm, 
     return worst;
 }
 
-/* CIE 1960 u, v and Y (scaled) of the colour stimulus illum * refl under the grid CMFs. */
-static void stimulus(const double *cmf, const lx__qgrid *g, const double *illum, const double *refl, double k, double *u,
-                     double *v, double *Y)
+/* The integrals of CIE 13.3 under illum: [0 .. 2] the illuminant's X, Y, Z, [3 + 3 s + c] those of
+ * test colour sample s (sums of w illum refl cmf over the grid, as CIE 13.3 sums them). */
+void lx__cri_integrals(const lx__cri_grid *cg, const double *illum, double *L)
 {
-    double X = 0, YY = 0, Z = 0;
+    const lx__qgrid *g = &cg->g;
     size_t n = g->n;
-    for (size_t i = 0; i < n; i++) {
-        double p = g->w[i] * (refl ? illum[i] * refl[i] : illum[i]);
-        X += p * cmf[i];
-        YY += p * cmf[n + i];
-        Z += p * cmf[2 * n + i];
+    const double *cmf = cg->cmf;
+    for (int s = -1; s < NTCS; s++) {
+        const double *refl = s < 0 ? NULL : cg->tcs + (size_t)s * n;
+        double X = 0, YY = 0, Z = 0;
+        for (size_t i = 0; i < n; i++) {
+            double p = g->w[i] * (refl ? illum[i] * refl[i] : illum[i]);
+            X += p * cmf[i];
+            YY += p * cmf[n + i];
+            Z += p * cmf[2 * n + i];
+        }
+        L[3 + 3 * s] = X, L[4 + 3 * s] = YY, L[5 + 3 * s] = Z;
     }
-    X *= k, YY *= k, Z *= k;
+}
+
+/* CIE 1960 u, v and Y of the tristimulus values xyz scaled by k. */
+static void uvY(const double *xyz, double k, double *u, double *v, double *Y)
+{
+    double X = xyz[0] * k, YY = xyz[1] * k, Z = xyz[2] * k;
     double d = X + 15 * YY + 3 * Z;
     *u = 4 * X / d;
     *v = 6 * YY / d;
@@ -168,19 +179,17 @@ static void stimulus(const double *cmf, const lx__qgrid *g, const double *illum,
 static double cterm(double u, double v) { return (4 - u - 10 * v) / v; }
 static double dterm(double u, double v) { return (1.708 * v + 0.404 - 1.481 * u) / v; }
 
-/* U*, V*, W* of the 14 samples under illum (adapted to the reference white ur, vr when the
- * illuminant's white ut, vt differs). */
-static void uvw_samples(const double *cmf, const lx__qgrid *g, const double *illum, const double *tcs, double ut,
-                        double vt, double ur, double vr, int adapt, double uvw[NTCS][3])
+/* U*, V*, W* of the 15 samples from an illuminant's integrals L (adapted to the reference white ur,
+ * vr when the illuminant's white ut, vt differs). */
+static void uvw_samples(const double *L, double ut, double vt, double ur, double vr, int adapt, double uvw[NTCS][3])
 {
     double uw, vw, Yw;
-    size_t n = g->n;
-    stimulus(cmf, g, illum, NULL, 1.0, &uw, &vw, &Yw);
+    uvY(L, 1.0, &uw, &vw, &Yw);
     double k = 100.0 / Yw;
     double cr = cterm(ur, vr), dr = dterm(ur, vr), ct = cterm(ut, vt), dt = dterm(ut, vt);
     for (int s = 0; s < NTCS; s++) {
         double u, v, Y;
-        stimulus(cmf, g, illum, tcs + (size_t)s * n, k, &u, &v, &Y);
+        uvY(L + 3 + 3 * s, k, &u, &v, &Y);
         if (adapt) {
             double ci = cterm(u, v), di = dterm(u, v);
             double den = 16.518 + 1.481 * (cr / ct) * ci - (dr / dt) * di;
@@ -212,69 +221,108 @@ static lx_status cri_cct(lx_ctx *ctx, double ut, double vt, double Yt, double *T
     return LX_OK;
 }
 
-/* The work of lx_cri_compute on a checked spectrum. */
-static lx_status cri_compute_spd(lx_ctx *ctx, const lx_spd *spd, lx_cri *out)
+int lx__cri_ok(double T, double duv) { return isfinite(T) && fabs(duv) <= DUV_LIMIT && T <= 25000.0; }
+
+lx_status lx__cri_reference(lx_ctx *ctx, const lx__cri_grid *cg, double T, double *ref)
 {
-    lx_status st;
-    const lx__table *tt = lx__table_find("cie13_3_tcs");
-    if (!tt) return lx__error(ctx, LX_EINVAL, NULL, 0, "CRI: embedded table cie13_3_tcs missing");
-    lx__qgrid g;
-    if ((st = lx__qgrid_make(ctx, spd, CRI_START, CRI_END, &g)) != LX_OK) return st;
-    size_t n = g.n;
-    double *buf = lx__alloc_n(n * (3 + NTCS + 2), sizeof(double));
-    if (!buf) {
-        lx__qgrid_free(&g);
-        return lx__error(ctx, LX_ENOMEM, NULL, 0, "CRI: out of memory");
-    }
-    double *cmf = buf, *tcs = cmf + 3 * n, *test = tcs + NTCS * n, *ref = test + n, *lam = g.lam;
-    cmf2_grid(&g, cmf);
-    for (int s = 0; s < NTCS; s++) {
-        char name[8];
-        snprintf(name, sizeof name, "TCS%02d", s + 1);
-        lx__quality_table(tt, lx__table_col(tt, name), &g, tcs + (size_t)s * n);
-    }
-    lx__quality_sample(spd, &g, test);
+    if (T >= 5000.0) return lx_daylight(ctx, T, cg->g.n, cg->g.lam, ref);
+    for (size_t i = 0; i < cg->g.n; i++) ref[i] = lx_planck(cg->g.lam[i], T);
+    return LX_OK;
+}
+
+void lx__cri_indices(const double *Lt, const double *Lr, double T, double duv, lx_cri *out)
+{
     lx_cri r;
     memset(&r, 0, sizeof r);
-    double ut, vt, Yt, T, duv;
-    stimulus(cmf, &g, test, NULL, 1.0, &ut, &vt, &Yt);
-    if ((st = cri_cct(ctx, ut, vt, Yt, &T, &duv)) != LX_OK) goto done;
+    double ut, vt, Yt, ur, vr, Yr;
+    uvY(Lt, 1.0, &ut, &vt, &Yt);
+    uvY(Lr, 1.0, &ur, &vr, &Yr);
     r.cct_K = r.ref_cct_K = T;
     r.duv = duv;
     r.ref_daylight = T >= 5000.0;
-    if (r.ref_daylight) {
-        if ((st = lx_daylight(ctx, T, n, lam, ref)) != LX_OK) goto done;
-    } else {
-        for (size_t i = 0; i < n; i++) ref[i] = lx_planck(lam[i], T);
-    }
-    double outside = lx__quality_outside(ref, &g, spd->lambda_nm[0], spd->lambda_nm[spd->n - 1]);
-    if (outside > OUTSIDE_LIMIT) {
-        st = lx__error(ctx, LX_ERANGE, NULL, 0,
-                       "CRI: the spectrum covers %g-%g nm only; %.1f %% of the reference's tristimulus values "
-                       "lie outside it (CIE 13.3 needs 380-780 nm)",
-                       spd->lambda_nm[0], spd->lambda_nm[spd->n - 1], 100 * outside);
-        goto done;
-    }
-    double ur, vr, Yr;
-    stimulus(cmf, &g, ref, NULL, 1.0, &ur, &vr, &Yr);
     r.dc = hypot(ut - ur, vt - vr);
     r.valid = r.dc <= DC_LIMIT;
     double uvw_t[NTCS][3], uvw_r[NTCS][3];
-    uvw_samples(cmf, &g, test, tcs, ut, vt, ur, vr, 1, uvw_t);
-    uvw_samples(cmf, &g, ref, tcs, ur, vr, ur, vr, 0, uvw_r);
+    uvw_samples(Lt, ut, vt, ur, vr, 1, uvw_t);
+    uvw_samples(Lr, ur, vr, ur, vr, 0, uvw_r);
     double sum = 0;
     for (int s = 0; s < NTCS; s++) {
         double dE = sqrt((uvw_t[s][0] - uvw_r[s][0]) * (uvw_t[s][0] - uvw_r[s][0]) +
                          (uvw_t[s][1] - uvw_r[s][1]) * (uvw_t[s][1] - uvw_r[s][1]) +
                          (uvw_t[s][2] - uvw_r[s][2]) * (uvw_t[s][2] - uvw_r[s][2]));
-        r.r[s] = 100.0 - 4.6 * dE;
+        if (s < 14) r.r[s] = 100.0 - 4.6 * dE;
+        else r.r15 = 100.0 - 4.6 * dE;
         if (s < 8) sum += r.r[s];
     }
     r.ra = sum / 8.0;
     *out = r;
-done:
+}
+
+lx_status lx__cri_grid_make(lx_ctx *ctx, const lx_spd *spd, lx__cri_grid *cg)
+{
+    memset(cg, 0, sizeof *cg);
+    const lx__table *tt = lx__table_find("cie13_3_tcs"), *t15 = lx__table_find("jis_z8726_tcs15");
+    if (!tt || !t15) return lx__error(ctx, LX_EINVAL, NULL, 0, "CRI: embedded table cie13_3_tcs or jis_z8726_tcs15 missing");
+    lx_status st = lx__qgrid_make(ctx, spd, CRI_START, CRI_END, &cg->g);
+    if (st != LX_OK) return st;
+    size_t n = cg->g.n;
+    if (!(cg->cmf = lx__alloc(sizeof(double) * n * (3 + NTCS)))) {
+        lx__qgrid_free(&cg->g);
+        return lx__error(ctx, LX_ENOMEM, NULL, 0, "CRI: out of memory");
+    }
+    cg->tcs = cg->cmf + 3 * n;
+    cmf2_grid(&cg->g, cg->cmf);
+    for (int s = 0; s < NTCS; s++) {
+        char name[8];
+        snprintf(name, sizeof name, "TCS%02d", s + 1);
+        const lx__table *t = s < 14 ? tt : t15;
+        lx__quality_table(t, lx__table_col(t, name), &cg->g, cg->tcs + (size_t)s * n);
+    }
+    return LX_OK;
+}
+
+void lx__cri_grid_free(lx__cri_grid *cg)
+{
+    lx__free(cg->cmf);
+    lx__qgrid_free(&cg->g);
+    cg->cmf = cg->tcs = NULL;
+}
+
+lx_status lx__cri_outside(lx_ctx *ctx, const lx__cri_grid *cg, const lx_spd *spd, const double *ref)
+{
+    double outside = lx__quality_outside(ref, &cg->g, spd->lambda_nm[0], spd->lambda_nm[spd->n - 1]);
+    if (outside > OUTSIDE_LIMIT)
+        return lx__error(ctx, LX_ERANGE, NULL, 0,
+                         "CRI: the spectrum covers %g-%g nm only; %.1f %% of the reference's tristimulus values "
+                         "lie outside it (CIE 13.3 needs 380-780 nm)",
+                         spd->lambda_nm[0], spd->lambda_nm[spd->n - 1], 100 * outside);
+    return LX_OK;
+}
+
+/* The work of lx_cri_compute on a checked spectrum. */
+static lx_status cri_compute_spd(lx_ctx *ctx, const lx_spd *spd, lx_cri *out)
+{
+    lx_status st;
+    lx__cri_grid cg;
+    if ((st = lx__cri_grid_make(ctx, spd, &cg)) != LX_OK) return st;
+    size_t n = cg.g.n;
+    double *buf = lx__alloc(sizeof(double) * 2 * n), Lt[LX__CRI_NINT], Lr[LX__CRI_NINT];
+    if (!buf) {
+        lx__cri_grid_free(&cg);
+        return lx__error(ctx, LX_ENOMEM, NULL, 0, "CRI: out of memory");
+    }
+    double *test = buf, *ref = buf + n;
+    lx__quality_sample(spd, &cg.g, test);
+    lx__cri_integrals(&cg, test, Lt);
+    double ut, vt, Yt, T, duv;
+    uvY(Lt, 1.0, &ut, &vt, &Yt);
+    if ((st = cri_cct(ctx, ut, vt, Yt, &T, &duv)) == LX_OK && (st = lx__cri_reference(ctx, &cg, T, ref)) == LX_OK &&
+        (st = lx__cri_outside(ctx, &cg, spd, ref)) == LX_OK) {
+        lx__cri_integrals(&cg, ref, Lr);
+        lx__cri_indices(Lt, Lr, T, duv, out);
+    }
     lx__free(buf);
-    lx__qgrid_free(&g);
+    lx__cri_grid_free(&cg);
     return st;
 }
 

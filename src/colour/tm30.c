@@ -129,108 +129,75 @@ static lx_status reference(lx_ctx *ctx, double T, const lx__qgrid *g, const doub
     return LX_OK;
 }
 
-/* J'a'b' of the 99 samples under illum (10 deg CMFs), and the CAM hue of each; p: 3 n scratch. */
-static void samples_jab(const double *cmf10, const lx__qgrid *g, const double *illum, const double *ces, double *p,
-                        double jab[NCES][3], double hue[NCES])
+lx_status lx__tm30_reference_1nm(lx_ctx *ctx, double T, double ref[401])
 {
-    double w[3] = {0, 0, 0};
+    const lx__table *t2 = lx__table_find("cie1931_2deg_xyz_1nm");
+    if (!t2) return lx__error(ctx, LX_EINVAL, NULL, 0, "TM-30: embedded tables missing");
+    double lam[401], w[401], ybar[401], tmp[401];
+    for (int i = 0; i < 401; i++) lam[i] = 380 + i, w[i] = 1;
+    lx__qgrid g = {401, lam, w, 0};
+    lx__quality_table(t2, lx__table_col(t2, "y_bar"), &g, ybar);
+    return reference(ctx, T, &g, ybar, ref, tmp);
+}
+
+lx_status lx__tm30_reference(lx_ctx *ctx, const lx__tm30_grid *tg, double T, double *ref, double *tmp)
+{
+    return reference(ctx, T, &tg->g, tg->cmf2 + tg->g.n, ref, tmp);
+}
+
+void lx__tm30_integrals(const lx__tm30_grid *tg, const double *illum, double *L, double *p)
+{
+    const lx__qgrid *g = &tg->g;
     size_t n = g->n;
-    for (int c = 0; c < 3; c++)
+    const double *cmf2 = tg->cmf2, *cmf10 = tg->cmf10;
+    double X = 0, Y = 0, Z = 0;
+    for (size_t i = 0; i < n; i++)
+        X += g->w[i] * illum[i] * cmf2[i], Y += g->w[i] * illum[i] * cmf2[n + i], Z += g->w[i] * illum[i] * cmf2[2 * n + i];
+    L[0] = X, L[1] = Y, L[2] = Z;
+    /* the 10 deg white and the samples: the terms w illum cmf10 once, then each sample's weighted sum */
+    for (int c = 0; c < 3; c++) {
+        double w = 0;
         for (size_t i = 0; i < n; i++) {
             p[c * n + i] = g->w[i] * illum[i] * cmf10[c * n + i];
-            w[c] += p[c * n + i];
+            w += p[c * n + i];
         }
-    double k = 100.0 / w[1];
-    double XYZw[3] = {k * w[0], 100.0, k * w[2]};
-    cam cm;
-    cam_init(&cm, XYZw);
+        L[3 + c] = w;
+    }
     for (int s = 0; s < NCES; s++) {
-        const double *r = ces + (size_t)s * n;
-        double XYZ[3];
+        const double *r = tg->ces + (size_t)s * n;
         for (int c = 0; c < 3; c++) {
             const double *pc = p + c * n;
             double acc = 0;
             for (size_t i = 0; i < n; i++) acc += pc[i] * r[i];
-            XYZ[c] = k * acc;
+            L[6 + 3 * s + c] = acc;
         }
+    }
+}
+
+/* J'a'b' of the 99 samples and the CAM hue of each, from an illuminant's integrals (10 deg). */
+static void samples_jab(const double *L, double jab[NCES][3], double hue[NCES])
+{
+    double k = 100.0 / L[4];
+    double XYZw[3] = {k * L[3], 100.0, k * L[5]};
+    cam cm;
+    cam_init(&cm, XYZw);
+    for (int s = 0; s < NCES; s++) {
+        double XYZ[3];
+        for (int c = 0; c < 3; c++) XYZ[c] = k * L[6 + 3 * s + c];
         cam02ucs(&cm, XYZ, jab[s], &hue[s]);
     }
 }
 
-/* The work of lx_tm30_compute on a checked spectrum. */
-static lx_status tm30_compute_spd(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out)
+int lx__tm30_ok(double T, double duv) { return isfinite(T) && fabs(duv) <= DUV_LIMIT && T <= 25000.0; }
+
+void lx__tm30_indices(const double *Lt, const double *Lr, double T, double duv, lx_tm30 *out)
 {
-    lx_status st;
-    const lx__table *tc = lx__table_find("ies_tm30_ces_1nm");
-    const lx__table *t10 = lx__table_find("cie1964_10deg_xyz_1nm");
-    const lx__table *t2 = lx__table_find("cie1931_2deg_xyz_1nm");
-    if (!tc || !t10 || !t2) return lx__error(ctx, LX_EINVAL, NULL, 0, "TM-30: embedded tables missing");
-    lx__qgrid g;
-    if ((st = lx__qgrid_make(ctx, spd, TM_START, TM_END, &g)) != LX_OK) return st;
-    size_t n = g.n;
-    double *buf = lx__alloc_n(n * (NCES + 3 + 3 + 3 + 4), sizeof(double));
-    if (!buf) {
-        lx__qgrid_free(&g);
-        return lx__error(ctx, LX_ENOMEM, NULL, 0, "TM-30: out of memory");
-    }
-    double *ces = buf, *cmf10 = ces + (size_t)NCES * n, *cmf2 = cmf10 + 3 * n, *test = cmf2 + 3 * n;
-    double *ref = test + n, *tmp = ref + n, *scratch = tmp + n;
-    static const char *const c10[3] = {"x_bar_10", "y_bar_10", "z_bar_10"}, *const c2[3] = {"x_bar", "y_bar", "z_bar"};
-    for (int c = 0; c < 3; c++) {
-        lx__quality_table(t10, lx__table_col(t10, c10[c]), &g, cmf10 + c * n);
-        lx__quality_table(t2, lx__table_col(t2, c2[c]), &g, cmf2 + c * n);
-    }
-    for (int s = 0; s < NCES; s++) {
-        char name[8];
-        snprintf(name, sizeof name, "CES%02d", s + 1);
-        lx__quality_table(tc, lx__table_col(tc, name), &g, ces + (size_t)s * n);
-    }
-    lx__quality_sample(spd, &g, test);
-
-    double X = 0, Y = 0, Z = 0;
-    for (size_t i = 0; i < n; i++)
-        X += g.w[i] * test[i] * cmf2[i], Y += g.w[i] * test[i] * cmf2[n + i], Z += g.w[i] * test[i] * cmf2[2 * n + i];
-    double d = X + 15 * Y + 3 * Z, T, duv;
-    const char *why = NULL;
-    char msg[LX__ERRMSG_MAX];
-    if (!(Y > 0) || !(d > 0)) why = "the spectrum has no luminous content in 380-780 nm";
-    else if (lx_cct_from_uv(ctx, LX_OBSERVER_2, 4 * X / d, 6 * Y / d, &T, &duv) != LX_OK) {
-        snprintf(msg, sizeof msg, "no correlated colour temperature: %s", lx_ctx_errmsg(ctx));
-        why = msg;
-    } else if (fabs(duv) > DUV_LIMIT) {
-        snprintf(msg, sizeof msg, "Duv %.4f is beyond 0.05: too far from the Planckian locus for a CCT", duv);
-        why = msg;
-    } else if (T > 25000.0) {
-        snprintf(msg, sizeof msg, "CCT %.0f K is above 25000 K, where CIE daylight is undefined", T);
-        why = msg;
-    }
-    if (!why && (st = reference(ctx, T, &g, cmf2 + n, ref, tmp)) != LX_OK) {
-        lx__free(buf);
-        lx__qgrid_free(&g);
-        return st;
-    }
-    if (!why) {
-        double outside = lx__quality_outside(ref, &g, spd->lambda_nm[0], spd->lambda_nm[spd->n - 1]);
-        if (outside > OUTSIDE_LIMIT) {
-            snprintf(msg, sizeof msg,
-                     "the spectrum covers %g-%g nm only; %.1f %% of the reference's tristimulus values lie "
-                     "outside it (CIE 224 needs 380-780 nm)",
-                     spd->lambda_nm[0], spd->lambda_nm[spd->n - 1], 100 * outside);
-            why = msg;
-        }
-    }
-    if (why) {
-        lx__free(buf);
-        lx__qgrid_free(&g);
-        return lx__error(ctx, LX_ERANGE, NULL, 0, "TM-30: %s", why);
-    }
-
     static lx_tm30 zero;
     lx_tm30 r = zero;
     r.cct_K = T, r.duv = duv;
     double jt[NCES][3], jr[NCES][3], ht[NCES], hr[NCES];
-    samples_jab(cmf10, &g, test, ces, scratch, jt, ht);
-    samples_jab(cmf10, &g, ref, ces, scratch, jr, hr);
+    samples_jab(Lt, jt, ht);
+    samples_jab(Lr, jr, hr);
     double sum = 0, bin_dE[NBIN] = {0}, at[NBIN][2] = {{0}}, ar[NBIN][2] = {{0}};
     int cnt[NBIN] = {0};
     for (int s = 0; s < NCES; s++) {
@@ -273,10 +240,103 @@ static lx_status tm30_compute_spd(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out)
         }
         r.rg = 100.0 * area_t / area_r;
     }
-    lx__free(buf);
-    lx__qgrid_free(&g);
     *out = r;
+}
+
+lx_status lx__tm30_grid_make(lx_ctx *ctx, const lx_spd *spd, lx__tm30_grid *tg)
+{
+    memset(tg, 0, sizeof *tg);
+    const lx__table *tc = lx__table_find("ies_tm30_ces_1nm");
+    const lx__table *t10 = lx__table_find("cie1964_10deg_xyz_1nm");
+    const lx__table *t2 = lx__table_find("cie1931_2deg_xyz_1nm");
+    if (!tc || !t10 || !t2) return lx__error(ctx, LX_EINVAL, NULL, 0, "TM-30: embedded tables missing");
+    lx_status st = lx__qgrid_make(ctx, spd, TM_START, TM_END, &tg->g);
+    if (st != LX_OK) return st;
+    size_t n = tg->g.n;
+    if (!(tg->ces = lx__alloc(sizeof(double) * n * (NCES + 3 + 3 + 3)))) {
+        lx__qgrid_free(&tg->g);
+        return lx__error(ctx, LX_ENOMEM, NULL, 0, "TM-30: out of memory");
+    }
+    tg->cmf10 = tg->ces + (size_t)NCES * n, tg->cmf2 = tg->cmf10 + 3 * n, tg->scratch = tg->cmf2 + 3 * n;
+    static const char *const c10[3] = {"x_bar_10", "y_bar_10", "z_bar_10"}, *const c2[3] = {"x_bar", "y_bar", "z_bar"};
+    for (int c = 0; c < 3; c++) {
+        lx__quality_table(t10, lx__table_col(t10, c10[c]), &tg->g, tg->cmf10 + c * n);
+        lx__quality_table(t2, lx__table_col(t2, c2[c]), &tg->g, tg->cmf2 + c * n);
+    }
+    for (int s = 0; s < NCES; s++) {
+        char name[8];
+        snprintf(name, sizeof name, "CES%02d", s + 1);
+        lx__quality_table(tc, lx__table_col(tc, name), &tg->g, tg->ces + (size_t)s * n);
+    }
     return LX_OK;
+}
+
+void lx__tm30_grid_free(lx__tm30_grid *tg)
+{
+    lx__free(tg->ces);
+    lx__qgrid_free(&tg->g);
+    tg->ces = tg->cmf10 = tg->cmf2 = tg->scratch = NULL;
+}
+
+/* Why the spectrum has no TM-30 (a message in msg), or NULL. */
+static const char *refusal(lx_ctx *ctx, const double *L, double *T, double *duv, char *msg, size_t cap)
+{
+    double X = L[0], Y = L[1], Z = L[2], d = X + 15 * Y + 3 * Z;
+    if (!(Y > 0) || !(d > 0)) return "the spectrum has no luminous content in 380-780 nm";
+    if (lx_cct_from_uv(ctx, LX_OBSERVER_2, 4 * X / d, 6 * Y / d, T, duv) != LX_OK) {
+        snprintf(msg, cap, "no correlated colour temperature: %s", lx_ctx_errmsg(ctx));
+        return msg;
+    }
+    if (fabs(*duv) > DUV_LIMIT) {
+        snprintf(msg, cap, "Duv %.4f is beyond 0.05: too far from the Planckian locus for a CCT", *duv);
+        return msg;
+    }
+    if (*T > 25000.0) {
+        snprintf(msg, cap, "CCT %.0f K is above 25000 K, where CIE daylight is undefined", *T);
+        return msg;
+    }
+    return NULL;
+}
+
+lx_status lx__tm30_outside(lx_ctx *ctx, const lx__tm30_grid *tg, const lx_spd *spd, const double *ref)
+{
+    double outside = lx__quality_outside(ref, &tg->g, spd->lambda_nm[0], spd->lambda_nm[spd->n - 1]);
+    if (outside > OUTSIDE_LIMIT)
+        return lx__error(ctx, LX_ERANGE, NULL, 0,
+                         "TM-30: the spectrum covers %g-%g nm only; %.1f %% of the reference's tristimulus values lie "
+                         "outside it (CIE 224 needs 380-780 nm)",
+                         spd->lambda_nm[0], spd->lambda_nm[spd->n - 1], 100 * outside);
+    return LX_OK;
+}
+
+/* The work of lx_tm30_compute on a checked spectrum. */
+static lx_status tm30_compute_spd(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out)
+{
+    lx_status st;
+    lx__tm30_grid tg;
+    if ((st = lx__tm30_grid_make(ctx, spd, &tg)) != LX_OK) return st;
+    size_t n = tg.g.n;
+    double *buf = lx__alloc(sizeof(double) * (3 * n + 2 * LX__TM30_NINT));
+    if (!buf) {
+        lx__tm30_grid_free(&tg);
+        return lx__error(ctx, LX_ENOMEM, NULL, 0, "TM-30: out of memory");
+    }
+    double *test = buf, *ref = test + n, *tmp = ref + n, *Lt = tmp + n, *Lr = Lt + LX__TM30_NINT;
+    lx__quality_sample(spd, &tg.g, test);
+    lx__tm30_integrals(&tg, test, Lt, tg.scratch);
+    double T = NAN, duv = NAN;
+    char msg[LX__ERRMSG_MAX];
+    const char *why = refusal(ctx, Lt, &T, &duv, msg, sizeof msg);
+    if (why) st = lx__error(ctx, LX_ERANGE, NULL, 0, "TM-30: %s", why);
+    if (st == LX_OK) st = lx__tm30_reference(ctx, &tg, T, ref, tmp);
+    if (st == LX_OK) st = lx__tm30_outside(ctx, &tg, spd, ref);
+    if (st == LX_OK) {
+        lx__tm30_integrals(&tg, ref, Lr, tg.scratch);
+        lx__tm30_indices(Lt, Lr, T, duv, out);
+    }
+    lx__free(buf);
+    lx__tm30_grid_free(&tg);
+    return st;
 }
 
 lx_status lx_tm30_compute(lx_ctx *ctx, const lx_spd *spd, lx_tm30 *out)

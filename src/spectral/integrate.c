@@ -1,6 +1,7 @@
 /* integrate.c - integration of a sampled spectrum against a weighting function: the CIE 015
  * summation, the exact integral of two piecewise-linear functions, and 1 nm resampling; values
- * near the top of the double range are integrated scaled by a power of two (exact). */
+ * near the top of the double range are integrated scaled by a power of two (exact). Every method
+ * is linear in the values: lx__integrate_weights gives the weight of each sample. */
 #include "spectral/spectral_private.h"
 
 #include <limits.h>
@@ -253,5 +254,74 @@ static lx_status trapezoid(lx_ctx *ctx, const lx_spd *spd, const void *arg, doub
         sum = t;
     }
     *out = sum + comp;
+    return LX_OK;
+}
+
+/* The weight of each sample in the exact integral: on every interval between merged breakpoints,
+ * the hat functions of the two samples around it times the linear weight (the terms of
+ * exact_product, split by sample). */
+static void exact_weights(const lx_spd *a, const lx_spd *b, double *out)
+{
+    for (size_t k = 0; k < a->n; k++) out[k] = 0.0;
+    double lo = fmax(a->lambda_nm[0], b->lambda_nm[0]);
+    double hi = fmin(a->lambda_nm[a->n - 1], b->lambda_nm[b->n - 1]);
+    if (!(hi > lo)) return;
+    size_t i = 0, j = 0;
+    while (a->lambda_nm[i + 1] <= lo) i++;
+    while (b->lambda_nm[j + 1] <= lo) j++;
+    double l = lo;
+    while (l < hi) {
+        double r = fmin(fmin(a->lambda_nm[i + 1], b->lambda_nm[j + 1]), hi);
+        double ax0 = a->lambda_nm[i], ax1 = a->lambda_nm[i + 1], bx0 = b->lambda_nm[j], bx1 = b->lambda_nm[j + 1];
+        double tb = b->value[j + 1] - b->value[j];
+        double pl = (ax1 - l) / (ax1 - ax0), pr = r == ax1 ? 0.0 : (ax1 - r) / (ax1 - ax0); /* the hat of sample i */
+        double bl = b->value[j] + tb * ((l - bx0) / (bx1 - bx0));
+        double br = r == bx1 ? b->value[j + 1] : b->value[j] + tb * ((r - bx0) / (bx1 - bx0));
+        double h6 = (r - l) / 6.0;
+        out[i] += h6 * (2.0 * pl * bl + pl * br + pr * bl + 2.0 * pr * br);
+        double ql = 1.0 - pl, qr = 1.0 - pr; /* the hat of sample i + 1 */
+        out[i + 1] += h6 * (2.0 * ql * bl + ql * br + qr * bl + 2.0 * qr * br);
+        l = r;
+        if (l >= a->lambda_nm[i + 1] && i + 2 < a->n) i++;
+        if (l >= b->lambda_nm[j + 1] && j + 2 < b->n) j++;
+    }
+}
+
+lx_status lx__integrate_weights(lx_ctx *ctx, const lx_spd *spd, const lx_spd *w, lx_method method, double *out)
+{
+    method = lx_method_resolve(spd, method);
+    size_t n = spd->n;
+    if (!w) { /* the radiant integral: the trapezoid rule */
+        for (size_t i = 0; i < n; i++) {
+            double l = i > 0 ? spd->lambda_nm[i] - spd->lambda_nm[i - 1] : 0.0;
+            double r = i + 1 < n ? spd->lambda_nm[i + 1] - spd->lambda_nm[i] : 0.0;
+            out[i] = 0.5 * (l + r);
+        }
+        return LX_OK;
+    }
+    if (method == LX_METHOD_EXACT) {
+        exact_weights(spd, w, out);
+    } else if (method == LX_METHOD_CIE15) {
+        double step = uniform_step(spd);
+        if (step <= 0)
+            return lx__error(ctx, LX_EINVAL, NULL, 0, "%s: method cie15 needs uniformly spaced wavelengths",
+                             spd->name ? spd->name : "spectrum");
+        int ug = is_unit_grid(w);
+        for (size_t i = 0; i < n; i++) out[i] = step * weight_at(w, ug, spd->lambda_nm[i]);
+    } else if (method == LX_METHOD_LINEAR1NM) {
+        for (size_t i = 0; i < n; i++) out[i] = 0.0;
+        int ug = is_unit_grid(w);
+        double k0 = fmax(ceil(spd->lambda_nm[0]), ceil(w->lambda_nm[0]));
+        double k1 = fmin(floor(spd->lambda_nm[n - 1]), floor(w->lambda_nm[w->n - 1]));
+        size_t i = 0;
+        for (double k = k0; k <= k1; k += 1.0) {
+            while (i + 2 < n && spd->lambda_nm[i + 1] <= k) i++;
+            double x0 = spd->lambda_nm[i], x1 = spd->lambda_nm[i + 1], t = (k - x0) / (x1 - x0), wk = weight_at(w, ug, k);
+            out[i] += (1.0 - t) * wk;
+            out[i + 1] += t * wk;
+        }
+    } else {
+        return lx__error(ctx, LX_EINVAL, NULL, 0, "unknown integration method %d", (int)method);
+    }
     return LX_OK;
 }

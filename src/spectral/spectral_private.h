@@ -15,6 +15,12 @@ lx_status lx__spd_set_build(lx_ctx *ctx, const char *file, size_t nlam, const do
                             const double *val, size_t ss, size_t ks, char *const *names,
                             const long *lines, lx_spd_set **out);
 
+/* The integral of spd x w by method (lx_spd_integrate; w NULL: the radiant integral,
+ * lx_spd_integrate_radiant) as the weights of its samples: the integral is sum_i out[i] value[i]
+ * (equal to rounding; out: spd->n doubles). spd and w must be valid views. LX_EINVAL as
+ * lx_spd_integrate for a method the spectrum does not allow. */
+lx_status lx__integrate_weights(lx_ctx *ctx, const lx_spd *spd, const lx_spd *w, lx_method method, double *out);
+
 /* The exact integral of the product of two piecewise-linear functions, each zero outside its
  * samples (integrate.c: the exact method). */
 double lx__exact_product(const lx_spd *a, const lx_spd *b);

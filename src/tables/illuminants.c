@@ -43,24 +43,41 @@ lx_status lx_daylight_xy(lx_ctx *ctx, double T, double *x, double *y)
     return LX_OK;
 }
 
-lx_status lx_daylight(lx_ctx *ctx, double T, size_t n, const double *lambda_nm, double *value)
+lx_status lx__daylight_m(lx_ctx *ctx, double T, double *m1, double *m2)
 {
-    LX__NEED_CTX(ctx);
     double xd, yd;
     lx_status st = lx_daylight_xy(ctx, T, &xd, &yd);
     if (st != LX_OK) return st;
-    if (n && (!lambda_nm || !value)) return lx__error(ctx, LX_EINVAL, NULL, 0, "daylight: NULL array");
     double m = 0.0241 + 0.2562 * xd - 0.7341 * yd;
     /* CIE 015:2018 4.1.2: M1 and M2 rounded to three decimals, as the published D-series tables were */
-    double m1 = round((-1.3515 - 1.7703 * xd + 5.9114 * yd) / m * 1000.0) / 1000.0;
-    double m2 = round((0.0300 - 31.4424 * xd + 30.0717 * yd) / m * 1000.0) / 1000.0;
+    *m1 = round((-1.3515 - 1.7703 * xd + 5.9114 * yd) / m * 1000.0) / 1000.0;
+    *m2 = round((0.0300 - 31.4424 * xd + 30.0717 * yd) / m * 1000.0) / 1000.0;
+    return LX_OK;
+}
+
+int lx__daylight_basis(double lambda_nm, double b[3])
+{
     const lx__table *t = lx__table_find("cie_daylight_basis");
-    if (!t) return lx__error(ctx, LX_EINVAL, NULL, 0, "embedded daylight basis missing");
+    if (!t) return -1;
     const double *wl = t->data, *s0 = t->data + t->nrows, *s1 = s0 + t->nrows, *s2 = s1 + t->nrows;
+    b[0] = lx__interp(wl, s0, (size_t)t->nrows, lambda_nm);
+    b[1] = lx__interp(wl, s1, (size_t)t->nrows, lambda_nm);
+    b[2] = lx__interp(wl, s2, (size_t)t->nrows, lambda_nm);
+    return 0;
+}
+
+lx_status lx_daylight(lx_ctx *ctx, double T, size_t n, const double *lambda_nm, double *value)
+{
+    LX__NEED_CTX(ctx);
+    double m1, m2;
+    lx_status st = lx__daylight_m(ctx, T, &m1, &m2);
+    if (st != LX_OK) return st;
+    if (n && (!lambda_nm || !value)) return lx__error(ctx, LX_EINVAL, NULL, 0, "daylight: NULL array");
+    if (!lx__table_find("cie_daylight_basis")) return lx__error(ctx, LX_EINVAL, NULL, 0, "embedded daylight basis missing");
     for (size_t i = 0; i < n; i++) {
-        double l = lambda_nm[i];
-        value[i] = lx__interp(wl, s0, (size_t)t->nrows, l) + m1 * lx__interp(wl, s1, (size_t)t->nrows, l) +
-                   m2 * lx__interp(wl, s2, (size_t)t->nrows, l);
+        double b[3];
+        lx__daylight_basis(lambda_nm[i], b);
+        value[i] = b[0] + m1 * b[1] + m2 * b[2];
     }
     return LX_OK;
 }

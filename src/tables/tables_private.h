@@ -26,4 +26,11 @@ int lx__table_view(const lx__table *t, int col, lx_spd *out);
 /* Linear interpolation of a sampled function at x; 0 outside [xs[0], xs[n-1]]. */
 double lx__interp(const double *xs, const double *ys, size_t n, double x);
 
+/* CIE daylight (illuminants.c): M1 and M2 at T (rounded to three decimals, CIE 015:2018 4.1.2;
+ * LX_ERANGE outside 4000-25000 K, recorded on ctx) and the basis S0, S1, S2 at a wavelength
+ * (linearly interpolated; 0 outside 300-830 nm; -1 when the table is missing): the D-series is
+ * b[0] + M1 b[1] + M2 b[2], as lx_daylight computes it. */
+lx_status lx__daylight_m(lx_ctx *ctx, double T, double *m1, double *m2);
+int lx__daylight_basis(double lambda_nm, double b[3]);
+
 #endif /* LX_TABLES_PRIVATE_H */

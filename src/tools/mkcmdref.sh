@@ -18,6 +18,7 @@ echo
 echo "Generated from the shipped samples (\`sh src/tools/mkcmdref.sh\`); csv where the full output is one row."
 echo
 LINES_MAX=20 ex "spd" spd --metrics cri_ra,cri_r9,tm30_rf,tm30_rg,melanopic_der samples/spd/led_batch.csv
+LINES_MAX=18 ex "spd --uncertainty" spd --uncertainty '1%+scale=2%+shift=0.2nm' --uncertainty-method gum --metrics cri_ra samples/spd/lamp.csv
 ex "blackbody" blackbody --temperature 2856K --range 380:780:100
 ex "daylight" daylight --cct 6504 --range 400:700:100
 ex "point" point --flux 1000lm --distance 2m --angle 30deg
