@@ -24,7 +24,7 @@ CAIRO_LIB := $(or $(shell pkg-config --silence-errors --libs cairo),-lcairo)
 ALL_CPPFLAGS = $(CPPFLAGS) -D_POSIX_C_SOURCE=200809L -Isrc -I$(BUILD)/gen $(EXR_CFLAGS) $(CAIRO_CFLAGS) \
   -DLX_OPENCL=$(LX_OPENCL) -DCL_TARGET_OPENCL_VERSION=120
 LIBS = $(EXR_LIB) -lm -lpthread -ldl
-PKGS := libopenexr-dev libcairo2-dev fonts-dejavu-core libcmocka-dev pkg-config
+PKGS := libopenexr-dev libcairo2-dev fonts-dejavu-core libcmocka-dev pkg-config poppler-utils
 ifeq ($(LX_OPENCL),1)
 LIBS += -lOpenCL
 PKGS += pocl-opencl-icd ocl-icd-opencl-dev opencl-headers

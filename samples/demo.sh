@@ -83,3 +83,10 @@ echo "   (a horizontal receiver: sh9 rings around the sun; fast = brute, the exa
 "$LX" irradiance "$here/envmaps/sky_sun.exr" -o "$out/sky_irradiance.exr" --png "$out/sky_irradiance.png"
 "$LX" luminance-map "$here/envmaps/sky_sun.exr" --png "$out/sky_luminance.png" --format csv
 echo "   wrote $out/sky_irradiance.exr, $out/sky_irradiance.png, $out/sky_luminance.png"
+
+echo
+echo "== The deliverable: a small office checked against its requirements (EN 12464-1, EN 1838), its"
+echo "   energy (EN 15193-1) and the PDF report (samples/deliverable/office.scene)"
+"$LX" scene --check "$here/deliverable/office.scene"
+"$LX" scene --energy "$here/deliverable/office.scene" | tail -n 1
+"$LX" report "$here/deliverable/office.scene" -o "$out/office_report.pdf" --project "Example office, 2nd floor"

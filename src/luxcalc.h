@@ -44,13 +44,13 @@
  * - structs the caller allocates are of three kinds.
  *   Options (lx_batch_opts, lx_grid_opts, lx_irr_opts, lx_exr_write_opts, lx_scene_eval_opts,
  *   lx_lum_model, lx_sky_map_opts, lx_perez_input, lx_sun_input, lx_leni_input, lx_isolux_opts,
- *   lx_receiver_png_opts, lx_unc_opts, lx_unc_component) are only read: zero-initialise them (zero
- *   is every field's default) and leave
+ *   lx_receiver_png_opts, lx_unc_opts, lx_unc_component, lx_pdf_report_opts) are only read: zero-initialise
+ *   them (zero is every field's default) and leave
  *   `reserved` zero, which the library checks (LX_EINVAL otherwise); a later option takes reserved
  *   space, its zero meaning the earlier behaviour.
- *   Results (lx_colorimetry, lx_cri, lx_tm30, lx_alphaopic, lx_source_result, lx_lum_summary,
- *   lx_grid_stats, lx_cl_device_info, lx_counters, lx_sky, lx_sun_position, lx_ugr_table, lx_en12464_grid,
- *   lx_area_stats, lx_leni) are
+ *   Results (lx_colorimetry, lx_cri, lx_tm30, lx_alphaopic, lx_dominant, lx_spd_shape, lx_source_result,
+ *   lx_lum_summary, lx_grid_stats, lx_cl_device_info, lx_counters, lx_sky, lx_sun_position, lx_ugr_table,
+ *   lx_en12464_grid, lx_area_stats, lx_leni) are
  *   written whole by the library, `reserved` set to zero; a later result takes reserved space.
  *   Views and values (lx_spd, lx_batch, lx_placement, lx_plane, lx_plot_point, lx_plot_outline,
  *   lx_plot_mark, lx_unit, lx_sh9)
@@ -568,6 +568,48 @@ LX_API lx_status lx_colorimetry_from_integrals(lx_ctx *ctx, lx_observer observer
  * names the quantity. cct_K and duv are not checked (NaN there means no CCT, cct_valid = 0). */
 LX_API lx_status lx_colorimetry_check(lx_ctx *ctx, const lx_colorimetry *r, double max_abs);
 
+/** Dominant wavelength and purity (CIE 015:2018 section 9.1) of a chromaticity x, y against the
+ * white xw, yw (the achromatic stimulus: for light sources usually illuminant E, 1/3, 1/3; for
+ * surface colours the illuminant). Results only: the library writes it whole (ABI policy). */
+typedef struct lx_dominant {
+    double wavelength_nm;       /* the dominant wavelength: where the ray from the white through the colour
+                                 * meets the spectral locus (linear between its 1 nm points; the shortest
+                                 * wavelength where the locus folds back beyond 700 nm); for a purple (the
+                                 * ray meets the purple line) the complementary wavelength, negative
+                                 * ("-509": lambda_c = 509 nm), as colour-science writes it; NaN at the white */
+    int purple;                 /* 1: complementary wavelength */
+    int outside;                /* 1: the colour lies beyond the locus (excitation purity > 1) */
+    double locus_x, locus_y;    /* where the ray meets the locus or the purple line */
+    double excitation_purity;   /* pe = (y - yw) / (yd - yw) (or with x, whichever difference is larger):
+                                 * 0 at the white, 1 on the locus */
+    double colorimetric_purity; /* pc = pe yd / y (eq. 9.2; yd the point on the purple line for purples) */
+    long long reserved[4];      /* zero: room for later results (ABI policy) */
+} lx_dominant;
+
+/** Dominant (or complementary) wavelength and excitation and colorimetric purity of (x, y) against
+ * (xw, yw) on the spectral locus of observer obs (360-830 nm at 1 nm) closed by the purple line.
+ * Errors: LX_EINVAL (a bad observer, a value not finite, a white point outside the locus). Pure
+ * apart from the context's error; thread-safe. */
+LX_API lx_status lx_dominant_wavelength(lx_ctx *ctx, lx_observer obs, double x, double y, double xw, double yw,
+                                        lx_dominant *out);
+
+/** The shape of a spectrum (the piecewise-linear function through its samples). A result. */
+typedef struct lx_spd_shape {
+    double peak_nm;             /* the wavelength of the largest value (the first of equal ones) */
+    double peak_value;          /* that value, in the spectrum's unit */
+    double half_lo_nm, half_hi_nm; /* the nearest crossings of half the peak value below and above it */
+    double fwhm_nm;             /* full width at half maximum: half_hi_nm - half_lo_nm; NaN when the spectrum
+                                 * does not fall to half the peak on one side within its data */
+    double noise;               /* the median |second difference| of the values over their range: 0 for a
+                                 * constant, about 0.25 for white noise (a dark frame, a detector's raw
+                                 * counts), under 0.02 for a lamp measured at 1-5 nm steps */
+    long long reserved[4];      /* zero: room for later results (ABI policy) */
+} lx_spd_shape;
+
+/** Peak wavelength, FWHM and the noise measure of spd. Errors: those of lx_spd_check; LX_ERANGE
+ * when no value is positive (no peak); LX_ENOMEM. */
+LX_API lx_status lx_spd_shape_compute(lx_ctx *ctx, const lx_spd *spd, lx_spd_shape *out);
+
 /* ============================================================================================ */
 /* 5. Correlated colour temperature; LED binning (src/spectral) */
 /* ============================================================================================ */
@@ -959,10 +1001,12 @@ typedef struct lx_cri {
     int ref_daylight;   /* 0: Planckian reference (CCT < 5000 K), 1: CIE daylight (>= 5000 K) */
     double dc;          /* distance test - reference white in CIE 1960 uv (CIE 13.3 "DC") */
     int valid;          /* 1 when dc <= 5.4e-3; else the CIE says Ra is not meaningful */
-    long long reserved[4]; /* zero: room for later results (ABI policy) */
+    double r15;         /* R15 of JIS Z 8726:1990 (test colour sample No. 15, Japanese complexion),
+                         * computed as R9-R14 are (taken from the reserved space) */
+    long long reserved[3]; /* zero: room for later results (ABI policy) */
 } lx_cri;
 
-/** CIE 13.3-1995 colour rendering index: R1-R14 and Ra with the CIE reference illuminant
+/** CIE 13.3-1995 colour rendering index: R1-R14 and Ra (and R15 of JIS Z 8726) with the CIE reference illuminant
  * (Planckian below 5000 K, CIE D-series from 5000 K), von Kries adaptation in CIE 1960 UCS and
  * CIE 1964 U*V*W*. Sums at 5 nm over 360-830 nm for data sampled every 5 nm on multiples of
  * 5 nm, else at 1 nm (spectrum and test colour samples interpolated linearly; spectrum zero
@@ -2779,6 +2823,7 @@ typedef struct lx_scene_design {
     size_t n_obs_group;
     int check_glare;            /* 1 when a requirement rates UGR (lx_scene_check needs lx_scene_glare_eval's) */
     int check_emergency;        /* 1 when a requirement rates emergency lighting (it needs the emergency results) */
+    int has_energy;             /* 1 with an [energy] section (lx_scene_energy) */
 } lx_scene_design;
 
 /** Statistics of a receiver's points (an area's grid): the mean, minimum and maximum and the
@@ -2908,8 +2953,11 @@ typedef struct lx_falsecolor_opts {
                             * the 1st percentile of the positive values (at most 6 decades below
                             * the top, at least 2) to the decade at or above the largest; linear
                             * from 0 (or a round value below a minimum under -5 % of the largest)
-                            * to the round value above the largest. Values below the range take
-                            * its lowest colour. */
+                            * to the round value above the largest; where a small bright source
+                            * (values over 100 times the 99.9th percentile: the sun disc) would take
+                            * the range, it ends above the rest instead, the source drawn in the top
+                            * colour and a line under the title saying so. Values below the range
+                            * take its lowest colour. */
     const char *quantity;  /* the legend's quantity ("luminance"; NULL: none) */
     const char *unit;      /* its unit ("cd/m²"; NULL: none) */
     const char *title;     /* the heading (NULL: none); a line of min / median / max follows it */
@@ -2954,12 +3002,25 @@ typedef struct lx_report_opts {
  * in lm, lx, cd/m² or cd per the unit, radiant power, x, y, u', v', CCT, Duv, Ra, R9, Rf, Rg,
  * melanopic DER, efficacy); the colour of the light as a normalised sRGB swatch; the CIE 1931 xy
  * or 1976 u'v' diagram (spectral locus, Planckian locus, isotemperature lines labelled where the
- * labels collide with nothing, the point); CIE 13.3 Ra and R1-R14 bars with their values; the
- * TM-30 colour vector graphic with its 16 hue bins. A metric that is undefined for the spectrum
+ * labels collide with nothing, the point); CIE 13.3 Ra and R1-R14 bars and R15 (JIS Z 8726) with their values; the
+ * TM-30 colour vector graphic with its 16 hue bins and an arrow with its head in each (the whole
+ * TM-30 page: lx_tm30_report_write_png). A metric that is undefined for the spectrum
  * (lx_cri_compute or lx_tm30_compute refuse) is shown with its reason instead. Errors: those of
  * lx_spd_check and lx_spd_colorimetry, and the writers' above. */
 LX_API lx_status lx_spd_report_write_png(lx_ctx *ctx, const lx_spd *spd, const lx_report_opts *opts,
                                          const char *path);
+
+/** The ANSI/IES TM-30-20 colour rendition report of one spectrum as a PNG page (1200 x 1080), laid
+ * out as the IES TM-30-20 calculator prints it: the test and reference spectra at equal luminous
+ * flux; the colour vector graphic (the hue bins in the calculator's colours, the +-10 % and +-20 %
+ * chroma circles, the reference circle, the test's shape in red, an arrow with its head from the
+ * reference to the test in each bin) with Rf, Rg, CCT and Duv at its corners; bar charts of the
+ * local chroma shift Rcs,hj (-40..40 %), hue shift Rhs,hj (-0.5..0.5) and fidelity Rf,hj (0..100)
+ * of the 16 bins, each value on its bar; the fidelity of the 99 samples (Rf,CESi, each bar in the
+ * sample's colour under D65); and the numbers (Rf, Rg, CCT, Duv, x, y, u', v', CIE Ra and R9).
+ * opts: only title is used (may be NULL). Errors: those of lx_tm30_compute (LX_ERANGE where TM-30
+ * is undefined: the page would have nothing to show) and the writers' above. */
+LX_API lx_status lx_tm30_report_write_png(lx_ctx *ctx, const lx_spd *spd, const lx_report_opts *opts, const char *path);
 
 /** Writes an sRGB preview PNG of an XYZ image (XYZ -> linear sRGB, exposure from the median
  * luminance, Reinhard tone curve), enlarged to at least 256 pixels wide. */
@@ -3034,6 +3095,27 @@ typedef struct lx_isolux_opts {
 LX_API lx_status lx_grid_write_png(lx_ctx *ctx, const char *path, const lx_plane *plane, const double *E_lx,
                                    const lx_isolux_opts *opts);
 
+/** Options of lx_scene_report_write_pdf (zero-initialise for defaults). */
+typedef struct lx_pdf_report_opts {
+    const char *title;        /* the report's title (NULL: the scene's title, or its file name) */
+    const char *project;      /* a line under it: the project, the client (NULL: none) */
+    const char *author;       /* the designer (NULL: none) */
+    lx_backend backend;       /* where the scene's work runs (AUTO: the size decides) */
+    int imperial;             /* 1: fc and ft in the plots and tables */
+    long long reserved[4];    /* zero: room for later options (ABI policy) */
+} lx_pdf_report_opts;
+
+/** The design report of a scene as a vector PDF (A4, DejaVu Sans; written atomically): a title page
+ * (the values maintained or new, the checks' count), the luminaire schedule (photometry, flux, power,
+ * efficacy, maintenance factor, count), each room's plan (walls, obstructions, areas, luminaires,
+ * observers), the areas' statistics and each grid's isolux plot, the checks against the requirements,
+ * UGR at the observers and the CIE 190 table of each photometric file, emergency lighting (EN 1838),
+ * energy (EN 15193-1) and the method: the planner's effects and reasons, the tolerances and what was
+ * approximated by how much. The scene is planned and evaluated here (and in emergency operation, its
+ * glare and energy, where it has what they need). Errors: those of planning and evaluating the scene,
+ * of the checks, and the plot writers' (LX_EIO, LX_EWRITE: nothing is left at path). opts may be NULL. */
+LX_API lx_status lx_scene_report_write_pdf(lx_ctx *ctx, const lx_scene *scene, const lx_pdf_report_opts *opts,
+                                           const char *path);
 /** A scene's geometry on the plane of a plot, as outlines for lx_isolux_opts: the walls of every room
  * the plane passes through, every obstruction, surface and opening, and the luminous area of every
  * luminaire that has one (disk, rectangle, a photometric file's opening), each projected along the

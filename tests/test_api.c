@@ -713,6 +713,12 @@ static void t_lx_spd_report_write_png(void)
     EXPECT_EINVAL(lx_spd_report_write_png(NULL, &D65, NULL, p));
     assert_absent(p);
 }
+static void t_lx_tm30_report_write_png(void)
+{
+    const char *p = out_path("t.png");
+    EXPECT_EINVAL(lx_tm30_report_write_png(NULL, &D65, NULL, p));
+    assert_absent(p);
+}
 static void t_lx_xyz_image_write_png(void)
 {
     const char *p = out_path("x.png");
@@ -724,6 +730,12 @@ static void t_lx_grid_write_png(void)
     const char *p = out_path("g.png");
     const double E[4] = {1, 2, 3, 4};
     EXPECT_EINVAL(lx_grid_write_png(NULL, p, &PLANE, E, NULL));
+    assert_absent(p);
+}
+static void t_lx_scene_report_write_pdf(void)
+{
+    const char *p = out_path("r.pdf");
+    EXPECT_EINVAL(lx_scene_report_write_pdf(NULL, SCENE, NULL, p));
     assert_absent(p);
 }
 static void t_lx_scene_outlines(void)
@@ -785,6 +797,22 @@ static void t_lx_ugr_table_compute(void)
     EXPECT_EINVAL(lx_ugr_table_compute(NULL, LUM, t));
     assert_memory_equal(t, &ref, sizeof ref);
     free(t);
+}
+static void t_lx_dominant_wavelength(void)
+{
+    lx_dominant d, ref;
+    memset(&d, 0xab, sizeof d);
+    ref = d;
+    EXPECT_EINVAL(lx_dominant_wavelength(NULL, LX_OBSERVER_2, 0.5, 0.4, 1.0 / 3, 1.0 / 3, &d));
+    assert_memory_equal(&d, &ref, sizeof d);
+}
+static void t_lx_spd_shape_compute(void)
+{
+    lx_spd_shape sh, ref;
+    memset(&sh, 0xab, sizeof sh);
+    ref = sh;
+    EXPECT_EINVAL(lx_spd_shape_compute(NULL, &D65, &sh));
+    assert_memory_equal(&sh, &ref, sizeof sh);
 }
 static void t_lx_ugr_table_text(void)
 {
@@ -962,7 +990,7 @@ static const struct api_case {
     void (*run)(void);
 } CASES[] = {
     CASE(lx_ctx_set_input_limit), CASE(lx_ctx_input_limit), CASE(lx_colorimetry_check), CASE(lx_ugr),
-    CASE(lx_ugr_table_compute), CASE(lx_ugr_table_text), CASE(lx_sky_cie), CASE(lx_sky_cie_params), CASE(lx_sky_perez), CASE(lx_sky_illuminance),
+    CASE(lx_ugr_table_compute), CASE(lx_ugr_table_text), CASE(lx_dominant_wavelength), CASE(lx_spd_shape_compute), CASE(lx_sky_cie), CASE(lx_sky_cie_params), CASE(lx_sky_perez), CASE(lx_sky_illuminance),
     CASE(lx_sun_spa), CASE(lx_sky_map), CASE(lx_scene_glare_eval), CASE(lx_warn_cone_flux), CASE(lx_envmap_concentration),
     CASE(lx_ctx_irradiance_method),
     CASE(lx_spd_read_file_opts), CASE(lx_spd_read_mem_opts), CASE(lx_spd_set_vendor), CASE(lx_binning_compute),
@@ -993,9 +1021,9 @@ static const struct api_case {
     CASE(lx_irradiance_dirs), CASE(lx_irradiance_map), CASE(lx_spectral_exr_read_xyz), CASE(lx_xyz_image_write_exr),
     CASE(lx_scene_read_file), CASE(lx_scene_read_mem), CASE(lx_scene_plan_make), CASE(lx_scene_eval),
     CASE(lx_scene_plan_make_mode), CASE(lx_en12464_grid_size), CASE(lx_scene_area_stats), CASE(lx_scene_check),
-    CASE(lx_leni_compute), CASE(lx_scene_energy),
+    CASE(lx_leni_compute), CASE(lx_scene_energy), CASE(lx_scene_report_write_pdf),
     CASE(lx_falsecolor_write_png), CASE(lx_envmap_preview_write_png), CASE(lx_irradiance_write_png),
-    CASE(lx_spd_report_write_png), CASE(lx_xyz_image_write_png), CASE(lx_grid_write_png), CASE(lx_error_time_write_png),
+    CASE(lx_spd_report_write_png), CASE(lx_tm30_report_write_png), CASE(lx_xyz_image_write_png), CASE(lx_grid_write_png), CASE(lx_error_time_write_png),
     CASE(lx_scene_outlines), CASE(lx_scene_receiver_plane), CASE(lx_scene_receiver_write_png),
     CASE(lx_plane_cells), CASE(lx_unc_model_create), CASE(lx_unc_model_add), CASE(lx_unc_model_parse),
     CASE(lx_spd_uncertainty),
@@ -1084,6 +1112,9 @@ static void nonzero_reserved_options_refused(void **state)
     li.reserved[0] = 1;
     lx_leni le;
     EXPECT_EINVAL(lx_leni_compute(ctx, &li, &le));
+    lx_pdf_report_opts pro = {0};
+    pro.reserved[2] = 1;
+    EXPECT_EINVAL(lx_scene_report_write_pdf(ctx, SCENE, &pro, "/nonexistent/r.pdf"));
     lx_par pb[2];
     lx_hazard hb[2];
     lx_binning bb[2];
@@ -1229,6 +1260,14 @@ static void results_write_reserved_as_zero(void **state)
     DIRTY(cri);
     lx_assert_ok(ctx, lx_cri_compute(ctx, &D65, &cri));
     ZERO_RESERVED(cri);
+    lx_dominant dom;
+    DIRTY(dom);
+    lx_assert_ok(ctx, lx_dominant_wavelength(ctx, LX_OBSERVER_2, 0.5, 0.4, 1.0 / 3, 1.0 / 3, &dom));
+    ZERO_RESERVED(dom);
+    lx_spd_shape shp;
+    DIRTY(shp);
+    lx_assert_ok(ctx, lx_spd_shape_compute(ctx, &D65, &shp));
+    ZERO_RESERVED(shp);
     lx_unc_model *um = NULL;
     lx_assert_ok(ctx, lx_unc_model_parse(ctx, "1%", NULL, &um));
     lx_unc_opts uo = {.method = LX_UNC_GUM};

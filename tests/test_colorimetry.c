@@ -1,5 +1,6 @@
 /* test_colorimetry.c - integration methods, XYZ/xy/CCT/Duv/efficacy against CIE 015 published
- * values, closed forms and colour-science 0.4.7; Planck and daylight spectra. */
+ * values, closed forms and colour-science 0.4.7; Planck and daylight spectra; dominant wavelength
+ * and purity (colour-science 0.4.7); peak, FWHM and the noise measure (closed forms). */
 #include "lx_test.h"
 
 #include <string.h>
@@ -371,6 +372,98 @@ static void test_bad_views(void **state)
     assert_int_equal(lx_spd_colorimetry(ctx, NULL, LX_OBSERVER_2, LX_METHOD_AUTO, &c), LX_EINVAL);
 }
 
+/* Dominant wavelength and purity against illuminant E, CIE 015:2018 9.1: colour-science 0.4.7
+ * (colour.dominant_wavelength, excitation_purity, colorimetric_purity on the CIE 1931 2 deg CMFs
+ * 360-830 nm at 1 nm), which gives the whole nm nearest the crossing and the purities at the exact
+ * crossing; the fractional wavelengths are an independent numpy intersection of the same polyline
+ * (the ray from E, the farthest crossing), written out in this comment's test. */
+static void test_dominant(void **state)
+{
+    lx_ctx *ctx = *state;
+    static const struct {
+        double x, y, wl_cs, wl, pe, pc;
+    } ref[] = {
+        {0.6835, 0.3150, 617, 616.9733767463, 0.995998000100234, 0.995765079471147},
+        {0.17, 0.70, 525, 524.9442224412, 0.743686408645106, 0.877945908878622},
+        {0.14, 0.05, 466, 465.6155633729, 0.971242758400854, 0.808285056005692},
+        {0.40, 0.20, -521, -521.1203913014, 0.645291538529675, 0.408819230882792}, /* a purple */
+        {0.56, 0.43, 589, 588.5480638283, 0.971910982280252, 0.978225567659110},
+        {0.34, 0.35, 568, 567.7435129176, 0.070291960856833, 0.114563772244603},
+    };
+    for (size_t i = 0; i < sizeof ref / sizeof *ref; i++) {
+        lx_dominant d;
+        lx_assert_ok(ctx, lx_dominant_wavelength(ctx, LX_OBSERVER_2, ref[i].x, ref[i].y, 1.0 / 3, 1.0 / 3, &d));
+        lx_assert_near(d.wavelength_nm, ref[i].wl, 1e-8, 0);
+        assert_true(fabs(d.wavelength_nm - ref[i].wl_cs) <= 0.5); /* colour-science's nearest whole nm */
+        lx_assert_near(d.excitation_purity, ref[i].pe, 1e-12, 0);
+        lx_assert_near(d.colorimetric_purity, ref[i].pc, 1e-12, 0);
+        assert_int_equal(d.purple, ref[i].wl < 0);
+        assert_int_equal(d.outside, 0);
+    }
+    /* another white: D65 (0.31271, 0.32902): colour-science 584 nm, pe 0.610624772223150 */
+    lx_dominant d;
+    lx_assert_ok(ctx, lx_dominant_wavelength(ctx, LX_OBSERVER_2, 0.45, 0.41, 0.31271, 0.32902, &d));
+    assert_true(fabs(d.wavelength_nm - 584) <= 0.5);
+    lx_assert_near(d.excitation_purity, 0.610624772223150, 1e-12, 0);
+    /* monochromatic light lies on the locus: its own wavelength, purity 1 (a 1 nm point, exact) */
+    lx_spd cmf[3];
+    for (int k = 0; k < 3; k++) lx_assert_ok(ctx, lx_function_get(ctx, (lx_function)(LX_FN_XBAR_2 + k), &cmf[k]));
+    for (int wl = 450; wl <= 650; wl += 50) {
+        size_t i = (size_t)(wl - 360);
+        double X = cmf[0].value[i], Y = cmf[1].value[i], Z = cmf[2].value[i];
+        lx_assert_ok(ctx, lx_dominant_wavelength(ctx, LX_OBSERVER_2, X / (X + Y + Z), Y / (X + Y + Z), 1.0 / 3, 1.0 / 3, &d));
+        lx_assert_near(d.wavelength_nm, wl, 1e-9, 0);
+        lx_assert_near(d.excitation_purity, 1, 1e-12, 0);
+        lx_assert_near(d.colorimetric_purity, 1, 1e-12, 0);
+    }
+    /* the white itself: no wavelength, purity 0; a white outside the locus is an error */
+    lx_assert_ok(ctx, lx_dominant_wavelength(ctx, LX_OBSERVER_2, 1.0 / 3, 1.0 / 3, 1.0 / 3, 1.0 / 3, &d));
+    assert_true(isnan(d.wavelength_nm) && d.excitation_purity == 0);
+    assert_int_equal(lx_dominant_wavelength(ctx, LX_OBSERVER_2, 0.3, 0.3, 0.9, 0.9, &d), LX_EINVAL);
+    assert_int_equal(lx_dominant_wavelength(ctx, LX_OBSERVER_2, NAN, 0.3, 0.3, 0.3, &d), LX_EINVAL);
+    /* beyond the locus (a point no light reaches): flagged */
+    lx_assert_ok(ctx, lx_dominant_wavelength(ctx, LX_OBSERVER_2, 0.05, 0.9, 1.0 / 3, 1.0 / 3, &d));
+    assert_int_equal(d.outside, 1);
+}
+
+/* Peak and FWHM of a triangle and of a Gaussian sampled every 1 nm (FWHM 2 sqrt(2 ln 2) sigma,
+ * within the linear interpolation's error), a one-sided spectrum (no FWHM), the noise measure of
+ * smooth, constant and noisy data. */
+static void test_shape(void **state)
+{
+    lx_ctx *ctx = *state;
+    double wl[401], v[401];
+    for (int i = 0; i < 401; i++) wl[i] = 380 + i, v[i] = fmax(0, 1 - fabs(wl[i] - 555.5) / 20);
+    lx_spd s = {"tri", 401, wl, v};
+    lx_spd_shape sh;
+    lx_assert_ok(ctx, lx_spd_shape_compute(ctx, &s, &sh));
+    /* samples at 555 and 556 are equal (0.975): the first */
+    lx_assert_near(sh.peak_nm, 555, 0, 0);
+    lx_assert_near(sh.peak_value, 0.975, 1e-15, 0);
+    /* half of 0.975 = 0.4875: the triangle crosses it at 555.5 -+ 20 (1 - 0.4875) = 545.25 / 565.75 */
+    lx_assert_near(sh.half_lo_nm, 545.25, 1e-9, 0);
+    lx_assert_near(sh.half_hi_nm, 565.75, 1e-9, 0);
+    lx_assert_near(sh.fwhm_nm, 20.5, 1e-9, 0);
+    assert_true(sh.noise < 0.02);
+    for (int i = 0; i < 401; i++) v[i] = exp(-0.5 * (wl[i] - 530) * (wl[i] - 530) / 100); /* sigma 10 nm */
+    lx_assert_ok(ctx, lx_spd_shape_compute(ctx, &s, &sh));
+    lx_assert_near(sh.peak_nm, 530, 0, 0);
+    lx_assert_near(sh.fwhm_nm, 2 * sqrt(2 * log(2)) * 10, 0.01, 0);
+    for (int i = 0; i < 401; i++) v[i] = 1 + 0.001 * i; /* rising to the last sample: no upper crossing */
+    lx_assert_ok(ctx, lx_spd_shape_compute(ctx, &s, &sh));
+    lx_assert_near(sh.peak_nm, 780, 0, 0);
+    assert_true(isnan(sh.fwhm_nm) && isnan(sh.half_hi_nm) && isnan(sh.half_lo_nm));
+    for (int i = 0; i < 401; i++) v[i] = 5;
+    lx_assert_ok(ctx, lx_spd_shape_compute(ctx, &s, &sh));
+    assert_true(sh.noise == 0);
+    unsigned u = 12345; /* a dark frame: counts around 1000 with noise (an LCG, reproducible) */
+    for (int i = 0; i < 401; i++) u = u * 1103515245u + 12345u, v[i] = 1000 + (double)(u >> 16 & 1023) / 1023 * 20 - 10;
+    lx_assert_ok(ctx, lx_spd_shape_compute(ctx, &s, &sh));
+    assert_true(sh.noise > 0.15);
+    for (int i = 0; i < 401; i++) v[i] = -1;
+    assert_int_equal(lx_spd_shape_compute(ctx, &s, &sh), LX_ERANGE);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -383,6 +476,8 @@ int main(void)
         cmocka_unit_test(test_ler_flat),
         cmocka_unit_test(test_cct_range_ends),
         cmocka_unit_test(test_linear1nm_wide_range),
+        cmocka_unit_test(test_dominant),
+        cmocka_unit_test(test_shape),
     };
     return cmocka_run_group_tests_name("colorimetry", tests, lx_test_ctx_setup, lx_test_ctx_teardown);
 }

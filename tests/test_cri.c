@@ -1,5 +1,5 @@
 /* test_cri.c - CIE 13.3-1995 colour rendering index: the CIE's published Ra of FL1-FL12,
- * colour-science 0.4.7 values, the identity Ra = 100 for a source equal to its reference, a line
+ * colour-science 0.4.7 values, R15 against luxpy 1.12.5, the identity Ra = 100 for a source equal to its reference, a line
  * spectrum integrated exactly against a 0.01 nm reference, and the refusals (far off the locus,
  * beyond CIE daylight, truncated or empty spectra). */
 #include "lx_test.h"
@@ -226,9 +226,34 @@ static void test_line_spectrum(void **state)
     assert_int_equal(lx_cri_compute(ctx, &r1, &e), LX_ERANGE);
 }
 
+/* R15 (JIS Z 8726:1990 sample No. 15, computed as R9-R14 are) of FL1-FL12 against luxpy 1.12.5
+ * (lx.cri.spd_to_cri(lx._CIE_ILLUMINANTS["F1".."F12"], cri_type="ciera-15"): its own 1 nm copies
+ * of the tables, 380-780 nm), and R15 = 100 where the source is its own reference. */
+static void test_r15(void **state)
+{
+    lx_ctx *ctx = *state;
+    static const double luxpy[12] = {59.6718, 46.7876, 39.3265, 34.6256, 52.8241, 39.1674,
+                                     87.7644, 98.4371, 89.8700, 96.7819, 95.6847, 93.5803};
+    for (int i = 0; i < 12; i++) {
+        char name[8];
+        snprintf(name, sizeof name, "FL%d", i + 1);
+        lx_cri c = cri_of(ctx, name);
+        if (i == 7) continue; /* FL8: CCT 4997 K, at the edge where the reference changes (see above) */
+        lx_assert_near(c.r15, luxpy[i], 0.4, 0);
+    }
+    lx_spd p;
+    double lam[471], v[471];
+    for (int i = 0; i < 471; i++) lam[i] = 360 + i, v[i] = lx_planck(lam[i], 3000);
+    p = (lx_spd){.name = "planck", .n = 471, .lambda_nm = lam, .value = v};
+    lx_cri c;
+    lx_assert_ok(ctx, lx_cri_compute(ctx, &p, &c));
+    lx_assert_near(c.r15, 100, 1e-3, 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test_setup_teardown(test_r15, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test(test_fl_ra),         cmocka_unit_test(test_fl2_special),
         cmocka_unit_test(test_a_d65),         cmocka_unit_test(test_narrow_band),
         cmocka_unit_test(test_blackbody_range), cmocka_unit_test(test_off_locus),

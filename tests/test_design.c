@@ -5,6 +5,7 @@
 #include "lx_test.h"
 
 #include <string.h>
+#include <unistd.h>
 
 /* Reads, plans (mode) and evaluates a scene given as text. */
 typedef struct run {
@@ -65,7 +66,8 @@ static void expect_error(lx_ctx *ctx, const char *text, long line, const char *f
     "[luminaire d]\ntype = disk\nposition = 2 m, 0.8 m, 2.4 m\nradius = 0.15 m\nflux = 600 lm\n"                       \
     "[receiver plane]\ntype = grid\nx = 0.25 m, 2.75 m\ny = 0.25 m, 2.25 m\nz = 0.8 m\nspacing = 0.5 m\n"            \
     "[receiver near]\ntype = point\nposition = 1.05 m, 1 m, 2.2 m\n"                                                   \
-    "[receiver wall]\ntype = point\nposition = 2.99 m, 1.2 m, 1.2 m\nnormal = -1, 0, 0\n"
+    "[receiver wall]\ntype = point\nposition = 2.99 m, 1.2 m, 1.2 m\nnormal = -1, 0, 0\n"                            \
+    "[receiver eye]\ntype = point\nposition = 1.6 m, 1.8 m, 1.2 m\ncylindrical = yes\nsemicylindrical = 1, 0, 0\n"
 
 static void test_maintained_is_new_times_mf(void **state)
 {
@@ -85,6 +87,11 @@ static void test_maintained_is_new_times_mf(void **state)
         for (size_t l = 0; l < a.sc->n_lum; l++)
             lx_assert_near(b.res->contrib_lx[g * 4 + l], 0.8 * a.res->contrib_lx[g * 4 + l], 1e-300, 1e-12);
         worst = fmax(worst, fabs(b.res->E_lx[g] / (0.8 * a.res->E_lx[g]) - 1));
+        if (!isnan(a.res->cylindrical_lx[g])) { /* cylinders: direct and interreflected */
+            lx_assert_near(b.res->cylindrical_lx[g], 0.8 * a.res->cylindrical_lx[g], 0, 1e-12);
+            lx_assert_near(b.res->semicylindrical_lx[g], 0.8 * a.res->semicylindrical_lx[g], 0, 1e-12);
+            lx_assert_near(b.res->modelling[g], a.res->modelling[g], 0, 1e-12);
+        }
     }
     for (size_t s = 0; s < a.res->n_surfaces; s++) {
         if (isnan(a.res->surfaces[s].E_lx)) { /* no exposed area (the box's bottom on the floor) */
@@ -437,6 +444,10 @@ static void test_room_areas(void **state)
     lx_assert_near(plane->points[0], 0.5 + 0.3125, 0, 1e-15);
     lx_assert_near(plane->points[1], 0.5 + 0.3, 0, 1e-15);
     static const size_t na[4] = {8, 8, 15, 15}, nb[4] = {6, 6, 7, 7};
+    /* the cabinet stands against x = 6 m and y = 4 m: the wall points it covers are left out (x max:
+     * the 2 columns at y 3.25, 3.75 x the 4 rows up to z 1.63 m: 8; y max: the 3 columns at x 5.0, 5.4,
+     * 5.8 x the 5 rows up to 1.8 m: 15) */
+    static const size_t n_pts[4] = {48, 40, 105, 90};
     static const char *const names[4] = {"w.wall_xmin", "w.wall_xmax", "w.wall_ymin", "w.wall_ymax"};
     for (int k = 0; k < 4; k++) {
         const lx_scene_area *A = &d->area[1 + k];
@@ -445,7 +456,8 @@ static void test_room_areas(void **state)
         assert_int_equal(A->kind, LX_AREA_WALL);
         assert_int_equal(rc->na, na[k]);
         assert_int_equal(rc->nb, nb[k]);
-        assert_int_equal(rc->kind, LX_SREC_GRID);
+        assert_int_equal(rc->n, n_pts[k]);
+        assert_int_equal(rc->kind, n_pts[k] == na[k] * nb[k] ? LX_SREC_GRID : LX_SREC_SET);
         /* on the wall, facing into the room */
         int ax = k / 2;
         lx_assert_near(rc->points[ax], k % 2 ? (ax ? 4 : 6) : 0, 0, 0);
@@ -762,6 +774,42 @@ static void test_leni(void **state)
     lx_scene_free(sc);
 }
 
+/* ---- the PDF report (its content is read back with pdftotext in tests/cli/design.sh) ---- */
+static void test_report_pdf(void **state)
+{
+    lx_ctx *ctx = *state;
+    /* small: the content of a whole report is read back in tests/cli/design.sh */
+    const char *t = "[scene]\ntitle = small\n[room r]\nsize = 3 m, 2 m, 2.5 m\n[effects]\ninterreflection = off\n"
+                    "[luminaire a]\ntype = rect\nposition = 1.5 m, 1 m, 2.49 m\nwidth = 0.6 m\nlength = 0.6 m\nflux = 3000 lm\n"
+                    "power = 30 W\n[luminaire e]\ntype = point\nposition = 1 m, 1 m, 2.4 m\nflux = 100 lm\n"
+                    "emergency = non-maintained\n[area desk]\ntype = task\nx = 1 m, 2 m\ny = 0.5 m, 1.5 m\nz = 0.75 m\n"
+                    "[observer o]\nposition = 1.5 m, 0.2 m, 1.2 m\nview = 0, 1, 0\nbackground_luminance = 20 cd/m2\n"
+                    "[requirement q]\narea = desk\nmaintained_illuminance = 500 lx\n[energy]\nnight_hours = 2000 h\n";
+    lx_scene *sc = NULL;
+    lx_assert_ok(ctx, lx_scene_read_mem(ctx, "small.scene", t, strlen(t), &sc));
+    char path[256];
+    snprintf(path, sizeof path, "%s/lx_report_%d.pdf", getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp", (int)getpid());
+    lx_pdf_report_opts o = {.title = "A title", .backend = LX_BACKEND_CPU};
+    lx_assert_ok(ctx, lx_scene_report_write_pdf(ctx, sc, &o, path));
+    FILE *f = fopen(path, "rb");
+    assert_non_null(f);
+    static char buf[1 << 20];
+    size_t n = fread(buf, 1, sizeof buf, f);
+    fclose(f);
+    assert_true(n > 1000);
+    assert_memory_equal(buf, "%PDF-", 5);
+    assert_non_null(strstr(buf + n - 8, "%%EOF"));
+    size_t pages = 0;
+    for (const char *p = buf; (p = memchr(p, '/', (size_t)(buf + n - p))) && p < buf + n - 12; p++)
+        pages += !strncmp(p, "/Type /Page\n", 12) || !strncmp(p, "/Type /Page ", 12) || !strncmp(p, "/Type /Page/", 12);
+    print_message("report: %zu bytes, %zu page objects\n", n, pages);
+    assert_true(pages >= 5); /* title, schedule, rooms, areas, glare; the rest where they fit */
+    remove(path);
+    /* a failed write leaves nothing behind */
+    assert_int_equal(lx_scene_report_write_pdf(ctx, sc, &o, "/nonexistent_dir/r.pdf"), LX_EIO);
+    lx_scene_free(sc);
+}
+
 /* ---- CIE 97:2005: MF = LLMF x LSF x LMF x RSMF from typed tables ----
  * The publication's tables are the user's to type (luxcalc ships no copy); what is checked here is
  * the method: each factor read off its table at the scheme's time by linear interpolation (at a
@@ -853,6 +901,7 @@ int main(void)
         cmocka_unit_test(test_observer_positions_directions),
         cmocka_unit_test(test_emergency_areas),
         cmocka_unit_test(test_leni),
+        cmocka_unit_test(test_report_pdf),
         cmocka_unit_test(test_errors),
     };
     return cmocka_run_group_tests(tests, lx_test_ctx_setup, lx_test_ctx_teardown);

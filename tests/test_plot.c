@@ -358,6 +358,50 @@ static void daylight_factor_plot(void **state)
 
 /* ---- false colour ---- */
 
+/* A sky with the sun: 128 x 64, the sky 2000-8000 cd/m2 above the horizon, the ground 0, the sun
+ * two pixels of 2e8. The range is the sky's (up to 10000, two decades at least), the sun above it in the top
+ * colour, said in a note; the sky's darkest and brightest pixels then differ by most of the
+ * palette. With the range given, everything is in it and nothing is said. */
+static void falsecolor_sun(void **state)
+{
+    lx_ctx *ctx = *state;
+    enum { W = 128, H = 64 };
+    static double v[W * H];
+    for (int j = 0; j < H; j++)
+        for (int i = 0; i < W; i++) v[j * W + i] = j < H / 2 ? 2000 + 6000 * (double)i / (W - 1) : 0;
+    v[10 * W + 100] = v[10 * W + 101] = 2e8;
+    char path[128];
+    snprintf(path, sizeof path, "%s/sun.png", dir);
+    lx_falsecolor_opts o = {.quantity = "luminance", .unit = "cd/m\u00b2", .title = "sky"};
+    lx__layout L = {0};
+    lx_assert_ok(ctx, lx__falsecolor_png(ctx, path, W, H, v, &o, &L));
+    lx_assert_near(L.scale_hi, 1e4, 1e-9, 0);
+    lx_assert_near(L.scale_lo, 1e2, 1e-9, 0);
+    assert_int_equal(L.above, 2);
+    const lx__label *n = test_find(&L, LX__TEXT_NOTE, "range without a small bright source");
+    assert_non_null(n);
+    assert_non_null(strstr(n->text, "2 pixels"));
+    test_png png;
+    test_png_read(path, &png);
+    test_labels_ok(&png, &L);
+    unsigned char lo[3], hi[3], top[3];
+    test_px(&png, (int)L.area.x0 + 2, (int)L.area.y0 + 40, lo);  /* 2000 cd/m2: 65 % up the palette */
+    test_px(&png, (int)L.area.x1 - 3, (int)L.area.y0 + 40, hi);  /* 8000 cd/m2: 95 % up */
+    test_px(&png, (int)(L.area.x0 + 100.5 * (L.area.x1 - L.area.x0) / W), (int)(L.area.y0 + 10.5 * (L.area.y1 - L.area.y0) / H), top);
+    unsigned char want_lo[3], want_hi[3], want_top[3];
+    lx__falsecolor(log10(2000 / 100.0) / 2, want_lo), lx__falsecolor(log10(8000 / 100.0) / 2, want_hi), lx__falsecolor(1, want_top);
+    for (int c = 0; c < 3; c++)
+        assert_true(abs(lo[c] - want_lo[c]) <= 8 && abs(hi[c] - want_hi[c]) <= 8 && top[c] == want_top[c]);
+    assert_true(abs(lo[0] - hi[0]) + abs(lo[1] - hi[1]) + abs(lo[2] - hi[2]) > 200); /* the sky shows its range */
+    test_png_free(&png);
+    lx__layout_free(&L);
+    o.lo = 1, o.hi = 1e9; /* given: all of it, nothing left out */
+    lx_assert_ok(ctx, lx__falsecolor_png(ctx, path, W, H, v, &o, &L));
+    assert_int_equal(L.above, 0);
+    assert_null(test_find(&L, LX__TEXT_NOTE, "range without"));
+    lx__layout_free(&L);
+}
+
 static void falsecolor(void **state)
 {
     lx_ctx *ctx = *state;
@@ -528,6 +572,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(plan_outlines, setup, teardown),
         cmocka_unit_test_setup_teardown(daylight_factor_plot, setup, teardown),
         cmocka_unit_test_setup_teardown(falsecolor, setup, teardown),
+        cmocka_unit_test_setup_teardown(falsecolor_sun, setup, teardown),
         cmocka_unit_test_setup_teardown(irradiance_preview, setup, teardown),
         cmocka_unit_test_setup_teardown(preview, setup, teardown),
         cmocka_unit_test_setup_teardown(error_time, setup, teardown),

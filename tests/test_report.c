@@ -3,12 +3,14 @@
  * Fichet et al. channel names, and the report PNG read back: its size, labels that hold text and
  * never overlap, the headline numbers against CIE 015 (D65 chromaticity), the unit of Y, the
  * isotherm and bar labels, the u'v' diagram, a laser's undefined CRI with its reason, and atomic
- * failure. */
+ * failure; every isotherm label on its own line; the TM-30 page (bars in their bins' colours under
+ * colour-science's values, arrowheads). */
 #include "plot_test.h"
 
 #include <unistd.h>
 
 #include "radiance/radiance_private.h"
+#include "plot/report.h"
 
 static void spectral_locus(void **state)
 {
@@ -179,6 +181,137 @@ static void report_png(void **state)
     rmdir(dir);
 }
 
+/* the distance from (px, py) to box b (0 inside) */
+static double box_dist(lx__box b, double px, double py)
+{
+    double dx = fmax(fmax(b.x0 - px, 0), px - b.x1), dy = fmax(fmax(b.y0 - py, 0), py - b.y1);
+    return hypot(dx, dy);
+}
+
+/* the distance from box b to the ray from the labelled end of isotherm q (lay.iso: T, then the
+ * other end and the labelled end) on along the line, up to 70 pixels */
+static double ray_dist(const double *q, lx__box b)
+{
+    double dx = q[3] - q[1], dy = q[4] - q[2], n = hypot(dx, dy), best = INFINITY;
+    for (double t = 0; t <= 70; t += 0.25) best = fmin(best, box_dist(b, q[3] + t * dx / n, q[4] + t * dy / n));
+    return best;
+}
+
+/* Every isotherm label sits on its own line's extension beyond its end (within 2.5 pixels),
+ * nearer to it than to any other isotherm's: under its own tick, for both diagrams and the crowded
+ * low temperatures of a warm source. */
+static void isotherm_labels(void **state)
+{
+    lx_ctx *ctx = *state;
+    char dir[] = "/tmp/lxisoXXXXXX", path[256];
+    assert_non_null(mkdtemp(dir));
+    snprintf(path, sizeof path, "%s/r.png", dir);
+    static const char *const names[] = {"FL2", "A", "D65"};
+    for (int k = 0; k < 6; k++) {
+        lx_spd s;
+        lx_assert_ok(ctx, lx_illuminant_get(ctx, names[k % 3], &s));
+        lx_report_opts o = {.diagram = k < 3 ? LX_DIAGRAM_XY : LX_DIAGRAM_UV};
+        lx__layout L = {0};
+        lx_assert_ok(ctx, lx__report_png(ctx, &s, &o, path, &L));
+        assert_int_equal(L.n_iso, 8);
+        int labelled = 0;
+        for (size_t i = 0; i < L.n_label; i++) {
+            const lx__label *l = &L.label[i];
+            if (l->role != LX__TEXT_LABEL || !strstr(l->text, " K")) continue;
+            int own = -1;
+            for (int j = 0; j < L.n_iso; j++)
+                if (L.iso[j][0] == l->value) own = j;
+            assert_true(own >= 0);
+            double d = ray_dist(L.iso[own], l->box);
+            if (!(d <= 2.5)) print_error("%s: label %s is %.1f px off its isotherm's extension\n", names[k % 3], l->text, d), fail();
+            for (int j = 0; j < L.n_iso; j++)
+                if (j != own && !(ray_dist(L.iso[j], l->box) > d)) {
+                    print_error("%s: label %s lies as near the %.0f K isotherm as its own\n", names[k % 3], l->text, L.iso[j][0]);
+                    fail();
+                }
+            labelled++;
+        }
+        assert_true(labelled >= 4); /* most of the eight find room */
+        lx__layout_free(&L);
+    }
+    unlink(path);
+    rmdir(dir);
+}
+
+/* The TM-30 page of FL2: the values of colour-science 0.4.7's TM-30-18 report (Rcs,h1 -25 %, Rhs,h3
+ * 0.24, Rf,h6 88, as its plot_single_sd_colour_rendition_report prints them) on the bars; each bar
+ * in its bin's colour under its value; each arrow's head in its bin's colour, at the test point;
+ * the labels on the page, never overlapping. */
+static void tm30_page(void **state)
+{
+    lx_ctx *ctx = *state;
+    char dir[] = "/tmp/lxtm30XXXXXX", path[256];
+    assert_non_null(mkdtemp(dir));
+    snprintf(path, sizeof path, "%s/fl2_tm30.png", dir);
+    lx_spd fl2;
+    lx_assert_ok(ctx, lx_illuminant_get(ctx, "FL2", &fl2));
+    lx_tm30 tm;
+    lx_assert_ok(ctx, lx_tm30_compute(ctx, &fl2, &tm));
+    lx_report_opts o = {.title = "FL2"};
+    lx__layout L = {0};
+    lx_assert_ok(ctx, lx__tm30_png(ctx, &fl2, &o, path, &L));
+    test_png png;
+    test_png_read(path, &png);
+    assert_int_equal(png.w, 1200), assert_int_equal(png.h, 1080);
+    test_labels_ok(&png, &L);
+    assert_non_null(test_find(&L, LX__TEXT_TITLE, "TM-30-20 colour rendition report"));
+    assert_non_null(test_find(&L, LX__TEXT_TITLE, "local chroma shift Rcs,hj"));
+    assert_non_null(test_find(&L, LX__TEXT_TITLE, "local hue shift Rhs,hj"));
+    assert_non_null(test_find(&L, LX__TEXT_TITLE, "local colour fidelity Rf,hj"));
+    assert_non_null(test_find(&L, LX__TEXT_TITLE, "Rf,CESi"));
+    assert_non_null(test_find(&L, LX__TEXT_LABEL, "-25%"));
+    assert_non_null(test_find(&L, LX__TEXT_LABEL, "0.24"));
+    assert_non_null(test_find(&L, LX__TEXT_LABEL, "88"));
+    /* the bars: each Rf,hj value label stands on its bar, which has its bin's colour just below it */
+    int bars = 0;
+    for (size_t i = 0; i < L.n_label; i++) {
+        const lx__label *l = &L.label[i];
+        if (l->role != LX__TEXT_LABEL || strchr(l->text, '%') || strchr(l->text, '.')) continue;
+        for (int b = 0; b < 16; b++) {
+            char want[16];
+            snprintf(want, sizeof want, "%.0f", tm.rf_hue[b]);
+            if (l->value != tm.rf_hue[b] || strcmp(l->text, want)) continue;
+            unsigned char c[3], bin[3];
+            test_px(&png, (int)(0.5 * (l->box.x0 + l->box.x1)), (int)l->box.y1 + 6, c);
+            lx__tm30_bin_rgb(b, 0, bin);
+            if (abs(c[0] - bin[0]) > 2 || abs(c[1] - bin[1]) > 2 || abs(c[2] - bin[2]) > 2)
+                print_error("bin %d: %d %d %d under its value, not %d %d %d\n", b + 1, c[0], c[1], c[2], bin[0], bin[1], bin[2]), fail();
+            bars++;
+        }
+    }
+    assert_int_equal(bars, 16);
+    /* the arrows: 16, from the reference circle to the test point; a head in the bin's colour
+     * 4 pixels back from the tip */
+    assert_int_equal(L.n_arrows, 16);
+    int heads = 0;
+    for (int a = 0; a < 16; a++) {
+        const double *q = L.arrow[a];
+        double dx = q[2] - q[0], dy = q[3] - q[1], n = hypot(dx, dy);
+        if (n < 12) continue; /* a short one is a dot */
+        unsigned char c[3], bin[3];
+        test_px(&png, (int)lround(q[2] - 4 * dx / n), (int)lround(q[3] - 4 * dy / n), c);
+        lx__tm30_bin_rgb((int)q[4], 1, bin);
+        if (abs(c[0] - bin[0]) > 40 || abs(c[1] - bin[1]) > 40 || abs(c[2] - bin[2]) > 40)
+            print_error("arrow %d: %d %d %d at its head, not %d %d %d\n", a + 1, c[0], c[1], c[2], bin[0], bin[1], bin[2]), fail();
+        heads++;
+    }
+    assert_true(heads >= 12);
+    test_png_free(&png);
+    lx__layout_free(&L);
+    /* undefined TM-30 (a laser line): an error, no file */
+    double wl[3] = {531, 532, 533}, val[3] = {0, 1, 0};
+    lx_spd las = {.lambda_nm = wl, .value = val, .n = 3, .name = "laser"};
+    unlink(path);
+    assert_int_equal(lx_tm30_report_write_png(ctx, &las, NULL, path), LX_ERANGE);
+    assert_int_equal(access(path, F_OK), -1);
+    rmdir(dir);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -188,6 +321,8 @@ int main(void)
         cmocka_unit_test_setup_teardown(srgb, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(channel_names, lx_test_ctx_setup, lx_test_ctx_teardown),
         cmocka_unit_test_setup_teardown(report_png, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(isotherm_labels, lx_test_ctx_setup, lx_test_ctx_teardown),
+        cmocka_unit_test_setup_teardown(tm30_page, lx_test_ctx_setup, lx_test_ctx_teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

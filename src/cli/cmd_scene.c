@@ -11,7 +11,7 @@
 #include <string.h>
 
 static const char help[] =
-    "usage: luxcalc scene FILE [--explain] [--contributions] [--surfaces] [--check] [--energy]\n"
+    "usage: luxcalc scene FILE [--explain] [--contributions] [--surfaces] [--check] [--energy] [--emergency]\n"
     "                     [--format table|csv|json]\n"
     "                     [-o FILE] [--png DIR] [--backend auto|cpu|opencl]\n"
     "\n"
@@ -27,6 +27,8 @@ static const char help[] =
     "                    interreflection the reflected part is indirect_lx)\n"
     "  --glare           UGR (CIE 117) at each [observer]: one row per luminaire that counts with its\n"
     "                    luminance, solid angle, position index and term L^2 w / p^2, and the UGR\n"
+    "  --emergency       emergency operation (EN 1838): the emergency luminaires alone at their\n"
+    "                    emergency flux, direct light only (--explain says why)\n"
     "  --energy          EN 15193-1 LENI from the [energy] section: installed power, hours, factors,\n"
     "                    the lighting and parasitic energy (kWh a year) and LENI (kWh/(m2 a))\n"
     "  --check           the checks against the scene's [requirement] sections: one row per line\n"
@@ -330,6 +332,9 @@ static void explain(FILE *f, const lx_scene *sc, const lx_scene_plan *p, const l
                 p->forced[e] ? "[forced] " : "", p->reason[e]);
     char vt[128];
     fprintf(f, "\nvalues: %s\n", cli_scene_values(sc, vt, sizeof vt));
+    if (p->mode == LX_SCENE_EMERGENCY)
+        fprintf(f, "operation: emergency (EN 1838): the emergency luminaires alone at their emergency flux, direct light "
+                   "only\n");
     cli_scene_maintenance_text(f, sc);
     fprintf(f, "\npairs: %zu luminaire-receiver point pairs, %zu on the near-field path\n", p->n_pairs, p->n_near);
     for (size_t l = 0; l < sc->n_lum; l++)
@@ -663,10 +668,10 @@ int cmd_scene(int argc, char **argv)
                                          {"format", required_argument, 0, 'f'}, {"backend", required_argument, 0, 'b'},
                                          {"png", required_argument, 0, 'p'},     {"glare", no_argument, 0, 'g'},
                                          {"surfaces", no_argument, 0, 's'},      {"check", no_argument, 0, 'k'},
-                                         {"energy", no_argument, 0, 'E'},
+                                         {"energy", no_argument, 0, 'E'},        {"emergency", no_argument, 0, 'M'},
                                          {"help", no_argument, 0, 'h'},         {0, 0, 0, 0}};
     const char *cmd = "scene", *out = NULL, *backend_text = NULL, *png_dir = NULL;
-    int do_explain = 0, contrib = 0, glare = 0, do_surfaces = 0, do_check = 0, do_energy = 0, c;
+    int do_explain = 0, contrib = 0, glare = 0, do_surfaces = 0, do_check = 0, do_energy = 0, emergency = 0, c;
     cli_format fmt = CLI_FMT_TABLE;
     optind = 1;
     opterr = 0;
@@ -678,6 +683,7 @@ int cmd_scene(int argc, char **argv)
         case 's': do_surfaces = 1; break;
         case 'k': do_check = 1; break;
         case 'E': do_energy = 1; break;
+        case 'M': emergency = 1; break;
         case 'o': out = optarg; break;
         case 'b': backend_text = optarg; break;
         case 'p': png_dir = optarg; break;
@@ -722,7 +728,7 @@ int cmd_scene(int argc, char **argv)
         lx_ctx_destroy(ctx);
         return grc;
     }
-    if (st == LX_OK) st = lx_scene_plan_make(ctx, sc, backend, &plan);
+    if (st == LX_OK) st = lx_scene_plan_make_mode(ctx, sc, backend, emergency ? LX_SCENE_EMERGENCY : LX_SCENE_NORMAL, &plan);
     if (st == LX_OK) st = lx_scene_eval(ctx, sc, plan, NULL, &res);
     int rc = CLI_OK;
     if (st == LX_OK && png_dir && cli_make_dir(cmd, "--png", png_dir) != 0) {

@@ -12,6 +12,7 @@ int cmd_grid(int argc, char **argv);
 /* ---- command declarations (one line per command) ---- */
 int cmd_sky(int argc, char **argv);
 int cmd_ugr(int argc, char **argv);
+int cmd_report(int argc, char **argv);
 int cmd_irradiance(int argc, char **argv);
 int cmd_luminance_map(int argc, char **argv);
 int cmd_scene(int argc, char **argv);
@@ -44,6 +45,7 @@ const cli_cmd cli_commands[] = {
     /* ---- command table entries (one line per command) ---- */
     {"sky", cmd_sky, "a CIE standard general or Perez sky with the sun as a lat-long luminance EXR"},
     {"ugr", cmd_ugr, "the CIE 190 tabular UGR table of an IES/EULUMDAT luminaire"},
+    {"report", cmd_report, "the design report of a scene as a PDF: schedule, plans, isolux, checks, UGR, energy"},
     {NULL, NULL, NULL},
 };
 

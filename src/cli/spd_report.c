@@ -1,4 +1,5 @@
-/* spd_report.c - `luxcalc spd --report DIR`: one PNG report per spectrum (lx_spd_report_write_png),
+/* spd_report.c - `luxcalc spd --report DIR`: one PNG report per spectrum (lx_spd_report_write_png)
+ * and its TM-30 page (lx_tm30_report_write_png),
  * named DIR/<file-stem>_<spectrum>.png with the names reduced to portable characters. */
 #include "spd_report.h"
 
@@ -88,6 +89,20 @@ int cli_spd_report(cli_reports *rep, lx_ctx *ctx, const char *file, size_t index
     int rc = CLI_OK;
     if (st != LX_OK) rc = cli_fail(rep->cmd, ctx, st);
     else if (cli_verbose) fprintf(stderr, "luxcalc: %s: wrote %s\n", rep->cmd, path);
+    /* the TM-30 page beside it, where TM-30 is defined (the summary page says why where it is not) */
+    char tm[300];
+    snprintf(tm, sizeof tm, "%s_tm30", unique);
+    if (rc == CLI_OK && !seen(rep, tm)) {
+        char *tpath = malloc(strlen(rep->dir) + strlen(tm) + 8);
+        if (!tpath) rc = (cli_error(rep->cmd, "out of memory"), CLI_RUNTIME);
+        else {
+            sprintf(tpath, "%s/%s.png", rep->dir, tm);
+            st = lx_tm30_report_write_png(ctx, spd, &o, tpath);
+            if (st == LX_OK && cli_verbose) fprintf(stderr, "luxcalc: %s: wrote %s\n", rep->cmd, tpath);
+            else if (st != LX_OK && st != LX_ERANGE) rc = cli_fail(rep->cmd, ctx, st);
+            free(tpath);
+        }
+    }
     free(path);
     return rc;
 }

@@ -28,11 +28,14 @@ void lx__quality_table(const lx__table *t, int col, const lx__qgrid *g, double *
 /* The fraction (max over X, Y, Z with the 2 deg CMFs) of the grid spectrum ref that lies
  * outside [lo_nm, hi_nm]. */
 double lx__quality_outside(const double *ref, const lx__qgrid *g, double lo_nm, double hi_nm);
+/* The reference illuminant of CIE 224 / TM-30 at T (Planckian, CIE daylight, or their Y-normalised
+ * mix between 4000 and 5000 K) at 380, 381, ..., 780 nm (for the report's SPD panel). */
+lx_status lx__tm30_reference_1nm(lx_ctx *ctx, double T, double ref[401]);
 
 /* ---- CIE 13.3 in pieces (cri.c), for lx_cri_compute and the uncertainty engine ---- */
-#define LX__CRI_NTCS 14
+#define LX__CRI_NTCS 15 /* TCS01-TCS14 of CIE 13.3, then No. 15 of JIS Z 8726 (R15) */
 #define LX__CRI_NINT (3 * (LX__CRI_NTCS + 1))
-/* The grid of a spectrum (360-830 nm) with the 2 deg CMFs (3 n) and the 14 samples (14 n) on it. */
+/* The grid of a spectrum (360-830 nm) with the 2 deg CMFs (3 n) and the 15 samples (15 n) on it. */
 typedef struct lx__cri_grid {
     lx__qgrid g;
     double *cmf, *tcs;
@@ -48,7 +51,7 @@ int lx__cri_ok(double T, double duv);
 lx_status lx__cri_reference(lx_ctx *ctx, const lx__cri_grid *cg, double T, double *ref);
 /* LX_ERANGE when more than 1 % of the reference's X, Y or Z lies outside the spectrum's range. */
 lx_status lx__cri_outside(lx_ctx *ctx, const lx__cri_grid *cg, const lx_spd *spd, const double *ref);
-/* R1 .. R14, Ra, dc of the test integrals Lt against the reference's Lr (CCT T, Duv duv). */
+/* R1 .. R14, R15, Ra, dc of the test integrals Lt against the reference's Lr (CCT T, Duv duv). */
 void lx__cri_indices(const double *Lt, const double *Lr, double T, double duv, lx_cri *out);
 
 /* ---- CIE 224 / TM-30 in pieces (tm30.c) ---- */

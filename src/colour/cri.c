@@ -1,4 +1,4 @@
-/* cri.c - CIE 13.3-1995 colour rendering index (R1-R14, Ra) with its reference illuminant and
+/* cri.c - CIE 13.3-1995 colour rendering index (R1-R14, Ra; R15 of JIS Z 8726) with its reference illuminant and
  * von Kries adaptation, plus the quadrature shared with tm30.c (lx__qgrid, lx__quality_*): the
  * CIE sums for uniformly sampled data, exact integration of line spectra. */
 #include "colour/colour_private.h"
@@ -11,7 +11,7 @@
 
 #define CRI_START 360.0
 #define CRI_END 830.0
-#define NTCS 14
+#define NTCS LX__CRI_NTCS /* CIE 13.3 TCS01-TCS14, then JIS Z 8726 No. 15 (R15, computed as R9-R14 are) */
 #define DC_LIMIT 5.4e-3       /* CIE 13.3: Ra is not meaningful beyond this uv distance */
 #define DUV_LIMIT 0.05        /* beyond it CCT has no meaning (as lx_spd_colorimetry) */
 #define OUTSIDE_LIMIT 0.01    /* refuse when 1 % of the reference's X, Y or Z is outside the data */
@@ -179,7 +179,7 @@ static void uvY(const double *xyz, double k, double *u, double *v, double *Y)
 static double cterm(double u, double v) { return (4 - u - 10 * v) / v; }
 static double dterm(double u, double v) { return (1.708 * v + 0.404 - 1.481 * u) / v; }
 
-/* U*, V*, W* of the 14 samples from an illuminant's integrals L (adapted to the reference white ur,
+/* U*, V*, W* of the 15 samples from an illuminant's integrals L (adapted to the reference white ur,
  * vr when the illuminant's white ut, vt differs). */
 static void uvw_samples(const double *L, double ut, double vt, double ur, double vr, int adapt, double uvw[NTCS][3])
 {
@@ -250,7 +250,8 @@ void lx__cri_indices(const double *Lt, const double *Lr, double T, double duv, l
         double dE = sqrt((uvw_t[s][0] - uvw_r[s][0]) * (uvw_t[s][0] - uvw_r[s][0]) +
                          (uvw_t[s][1] - uvw_r[s][1]) * (uvw_t[s][1] - uvw_r[s][1]) +
                          (uvw_t[s][2] - uvw_r[s][2]) * (uvw_t[s][2] - uvw_r[s][2]));
-        r.r[s] = 100.0 - 4.6 * dE;
+        if (s < 14) r.r[s] = 100.0 - 4.6 * dE;
+        else r.r15 = 100.0 - 4.6 * dE;
         if (s < 8) sum += r.r[s];
     }
     r.ra = sum / 8.0;
@@ -260,8 +261,8 @@ void lx__cri_indices(const double *Lt, const double *Lr, double T, double duv, l
 lx_status lx__cri_grid_make(lx_ctx *ctx, const lx_spd *spd, lx__cri_grid *cg)
 {
     memset(cg, 0, sizeof *cg);
-    const lx__table *tt = lx__table_find("cie13_3_tcs");
-    if (!tt) return lx__error(ctx, LX_EINVAL, NULL, 0, "CRI: embedded table cie13_3_tcs missing");
+    const lx__table *tt = lx__table_find("cie13_3_tcs"), *t15 = lx__table_find("jis_z8726_tcs15");
+    if (!tt || !t15) return lx__error(ctx, LX_EINVAL, NULL, 0, "CRI: embedded table cie13_3_tcs or jis_z8726_tcs15 missing");
     lx_status st = lx__qgrid_make(ctx, spd, CRI_START, CRI_END, &cg->g);
     if (st != LX_OK) return st;
     size_t n = cg->g.n;
@@ -274,7 +275,8 @@ lx_status lx__cri_grid_make(lx_ctx *ctx, const lx_spd *spd, lx__cri_grid *cg)
     for (int s = 0; s < NTCS; s++) {
         char name[8];
         snprintf(name, sizeof name, "TCS%02d", s + 1);
-        lx__quality_table(tt, lx__table_col(tt, name), &cg->g, cg->tcs + (size_t)s * n);
+        const lx__table *t = s < 14 ? tt : t15;
+        lx__quality_table(t, lx__table_col(t, name), &cg->g, cg->tcs + (size_t)s * n);
     }
     return LX_OK;
 }

@@ -129,6 +129,17 @@ static lx_status reference(lx_ctx *ctx, double T, const lx__qgrid *g, const doub
     return LX_OK;
 }
 
+lx_status lx__tm30_reference_1nm(lx_ctx *ctx, double T, double ref[401])
+{
+    const lx__table *t2 = lx__table_find("cie1931_2deg_xyz_1nm");
+    if (!t2) return lx__error(ctx, LX_EINVAL, NULL, 0, "TM-30: embedded tables missing");
+    double lam[401], w[401], ybar[401], tmp[401];
+    for (int i = 0; i < 401; i++) lam[i] = 380 + i, w[i] = 1;
+    lx__qgrid g = {401, lam, w, 0};
+    lx__quality_table(t2, lx__table_col(t2, "y_bar"), &g, ybar);
+    return reference(ctx, T, &g, ybar, ref, tmp);
+}
+
 lx_status lx__tm30_reference(lx_ctx *ctx, const lx__tm30_grid *tg, double T, double *ref, double *tmp)
 {
     return reference(ctx, T, &tg->g, tg->cmf2 + tg->g.n, ref, tmp);

@@ -77,6 +77,41 @@ void lx__scale_auto(lx__scale *s, const double *v, size_t n, int log, double lo,
     s->hi = h;
 }
 
+size_t lx__scale_auto_map(lx__scale *s, const double *v, size_t n, int log, double lo, double hi, double *above_max)
+{
+    double cut = INFINITY;
+    *above_max = NAN;
+    if (isnan(hi)) { /* a small bright source: the values more than 100 times the 99.9th percentile */
+        size_t m = 0;
+        double *p = lx__alloc_n(n ? n : 1, sizeof *p);
+        for (size_t i = 0; p && i < n; i++)
+            if (isfinite(v[i]) && v[i] > 0) p[m++] = v[i];
+        if (p && m >= 1000) {
+            qsort(p, m, sizeof *p, cmp_double);
+            double q = p[m - 1 - m / 1000];
+            if (q > 0 && p[m - 1] > 1000 * q) cut = 100 * q;
+        }
+        lx__free(p);
+    }
+    if (isinf(cut)) {
+        lx__scale_auto(s, v, n, log, lo, hi);
+        return 0;
+    }
+    double below = -INFINITY; /* the largest value of the rest */
+    for (size_t i = 0; i < n; i++)
+        if (isfinite(v[i]) && v[i] <= cut) below = fmax(below, v[i]);
+    double top = log ? pow(10, ceil(log10(below) - 1e-9)) : below * (1 + 1e-12);
+    if (!log) {
+        double step = lx__nice_step(below, 5);
+        top = ceil(below / step - 1e-9) * step;
+    }
+    lx__scale_auto(s, v, n, log, lo, top);
+    size_t above = 0;
+    for (size_t i = 0; i < n; i++)
+        if (isfinite(v[i]) && v[i] > s->hi) above++, *above_max = isnan(*above_max) ? v[i] : fmax(*above_max, v[i]);
+    return above;
+}
+
 /* palette stops: dark violet, blue, cyan, green, yellow, orange, red (Radiance falsecolor-like) */
 static const double stops[7][3] = {{0.18, 0.00, 0.35}, {0.00, 0.20, 0.90}, {0.00, 0.75, 0.85}, {0.15, 0.80, 0.15},
                                    {0.95, 0.95, 0.10}, {1.00, 0.55, 0.00}, {0.85, 0.00, 0.05}};

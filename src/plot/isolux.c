@@ -540,10 +540,10 @@ static lx_status setup(lx_ctx *ctx, iso *g, const lx_plane *p, const double *E_l
     return LX_OK;
 }
 
-lx_status lx__isolux_png(lx_ctx *ctx, const char *path, const lx_plane *p, const double *E_lx,
-                         const lx_isolux_opts *opts, lx__layout *out)
+lx_status lx__isolux_page(lx_ctx *ctx, const lx_plane *p, const double *E_lx, const lx_isolux_opts *opts, int vector,
+                          lx__page *pg_out)
 {
-    if (!path || !p || !E_lx || p->na < 1 || p->nb < 1) return lx__error(ctx, LX_EINVAL, NULL, 0, "grid plot: bad arguments");
+    if (!p || !E_lx || p->na < 1 || p->nb < 1) return lx__error(ctx, LX_EINVAL, NULL, 0, "grid plot: bad arguments");
     if (!(p->a1 >= p->a0 && p->b1 >= p->b0)) return lx__error(ctx, LX_EINVAL, NULL, 0, "grid plot: empty area");
     lx_isolux_opts o = {0};
     if (opts) o = *opts;
@@ -573,7 +573,7 @@ lx_status lx__isolux_png(lx_ctx *ctx, const char *path, const lx_plane *p, const
     if (W < 720) W = 720;
     static const unsigned char bg[3] = {255, 255, 255};
     lx__page pg;
-    if ((st = lx__page_init(ctx, &pg, W, H, bg))) goto fail;
+    if ((st = vector ? lx__page_init_vector(ctx, &pg, W, H, bg) : lx__page_init(ctx, &pg, W, H, bg))) goto fail;
     g.area = (lx__box){left, top, left + pw, top + ph};
     g.field = (lx__box){px_x(&g, g.fA0), px_y(&g, g.fB1), px_x(&g, g.fA1), px_y(&g, g.fB0)};
     pg.lay.area = g.area;
@@ -602,13 +602,25 @@ lx_status lx__isolux_png(lx_ctx *ctx, const char *path, const lx_plane *p, const
     snprintf(lt, sizeof lt, "%s (%s)", g.qsym, g.eunit);
     lx__page_legend(&pg, (lx__box){left + pw + gap, top, W - right, top + body}, &g.scale, lt);
     stats_box(&pg, &g, (lx__box){left, top + body + below, left + pw + gap + legend_w, top + body + below + stats_h});
-    st = lx__page_write_png(ctx, &pg, path);
-    if (!st && out) lx__page_take_layout(&pg, out);
 done:
     for (int k = 0; k < LX__MAX_LEVELS; k++) lx__free(segs[k].xy);
-    lx__page_free(&pg);
+    if (st) lx__page_free(&pg);
+    else *pg_out = pg;
 fail:
     lx__free(E);
+    return st;
+}
+
+lx_status lx__isolux_png(lx_ctx *ctx, const char *path, const lx_plane *p, const double *E_lx,
+                         const lx_isolux_opts *opts, lx__layout *out)
+{
+    if (!path) return lx__error(ctx, LX_EINVAL, NULL, 0, "grid plot: bad arguments");
+    lx__page pg;
+    lx_status st = lx__isolux_page(ctx, p, E_lx, opts, 0, &pg);
+    if (st) return st;
+    st = lx__page_write_png(ctx, &pg, path);
+    if (!st && out) lx__page_take_layout(&pg, out);
+    lx__page_free(&pg);
     return st;
 }
 

@@ -56,7 +56,8 @@ lx_status lx__falsecolor_png(lx_ctx *ctx, const char *path, int w, int h, const 
     lx__scale s;
     int log = o.scale != LX_PLOT_SCALE_LINEAR;
     double lo = o.hi > o.lo && (!log || o.lo > 0) ? o.lo : NAN, hi = o.hi > o.lo ? o.hi : NAN;
-    lx__scale_auto(&s, values, (size_t)w * h, log, lo, hi);
+    double above_max;
+    size_t above = lx__scale_auto_map(&s, values, (size_t)w * h, log, lo, hi, &above_max);
     /* the map enlarged by a whole factor to at least 512 pixels wide, reduced beyond 1600 x 1200 */
     double k = w >= 512 ? 1 : ceil(512.0 / w);
     double iw = w * k, ih = h * k;
@@ -64,7 +65,7 @@ lx_status lx__falsecolor_png(lx_ctx *ctx, const char *path, int w, int h, const 
     if (ih > 1200) iw *= 1200 / ih, ih = 1200;
     iw = fmax(1, round(iw)), ih = fmax(1, round(ih));
     const int m = 16, legend_w = 150;
-    int head = o.title ? 56 : 32, body = ih > 280 ? (int)ih : 280;
+    int head = (o.title ? 56 : 32) + (above ? 17 : 0), body = ih > 280 ? (int)ih : 280;
     lx__page pg;
     lx_status st = lx__page_init(ctx, &pg, m + (int)iw + 20 + legend_w + m, head + body + m, WHITE);
     if (st) return st;
@@ -73,7 +74,19 @@ lx_status lx__falsecolor_png(lx_ctx *ctx, const char *path, int w, int h, const 
     double cy = 10;
     if (o.title) cy = lx__page_text_fit(&pg, &ft, m, 10, LX__TEXT_TITLE, o.title, pg.w - 2 * m).y1 + 2;
     if ((st = summary(ctx, values, (size_t)w * h, o.unit, cap, sizeof cap))) goto done;
-    lx__page_text(&pg, &fc, m, cy, 0, 0, LX__TEXT_NOTE, NAN, cap);
+    cy = lx__page_text(&pg, &fc, m, cy, 0, 0, LX__TEXT_NOTE, NAN, cap).y1 + 1;
+    if (above) { /* say what the range leaves out */
+        char top[32], mx[32], note[256];
+        if (s.log) lx__fmt_decade(top, sizeof top, s.hi);
+        else lx__fmt_sig(top, sizeof top, s.hi, 3);
+        lx__fmt_sig(mx, sizeof mx, above_max, 4);
+        snprintf(note, sizeof note, "range without a small bright source (the sun?): %zu pixel%s (%.2g %%) above %s%s%s, up to %s, "
+                 "drawn in the top colour", above, above == 1 ? "" : "s", 100.0 * (double)above / ((double)w * h), top,
+                 o.unit ? " " : "", o.unit ? o.unit : "", mx);
+        const lx__font fn = {12, 0, {150, 30, 20}, 0};
+        lx__page_text_fit(&pg, &fn, m, cy, LX__TEXT_NOTE, note, pg.w - 2 * m);
+    }
+    pg.lay.above = above;
     lx__box map = {m, head, m + iw, head + ih};
     pg.lay.area = map;
     if ((st = lx__page_map(ctx, &pg, map, values, w, h, &s))) goto done;

@@ -23,13 +23,16 @@ void lx__rgb(cairo_t *cr, const unsigned char rgb[3], double a)
     else cairo_set_source_rgba(cr, rgb[0] / 255.0, rgb[1] / 255.0, rgb[2] / 255.0, a);
 }
 
-lx_status lx__page_init(lx_ctx *ctx, lx__page *pg, int w, int h, const unsigned char bg[3])
+/* a page on surface `kind` (0: an RGB image, 1: a recording of the drawing, for vector output) */
+static lx_status page_init(lx_ctx *ctx, lx__page *pg, int w, int h, const unsigned char bg[3], int vector)
 {
     memset(pg, 0, sizeof *pg);
     if (w < 1 || h < 1 || w > 16384 || h > 16384) return lx__error(ctx, LX_EINVAL, NULL, 0, "invalid plot size %dx%d", w, h);
     lx_status st = lx__cairo_load(ctx);
     if (st) return st;
-    pg->surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h);
+    cairo_rectangle_t ext = {0, 0, w, h};
+    pg->surface = vector ? cairo_recording_surface_create(CAIRO_CONTENT_COLOR, &ext)
+                         : cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h);
     if (cairo_surface_status(pg->surface) != CAIRO_STATUS_SUCCESS) {
         cairo_surface_destroy(pg->surface);
         pg->surface = NULL;
@@ -47,6 +50,16 @@ lx_status lx__page_init(lx_ctx *ctx, lx__page *pg, int w, int h, const unsigned 
     cairo_set_line_cap(pg->cr, CAIRO_LINE_CAP_ROUND);
     cairo_set_line_join(pg->cr, CAIRO_LINE_JOIN_ROUND);
     return LX_OK;
+}
+
+lx_status lx__page_init(lx_ctx *ctx, lx__page *pg, int w, int h, const unsigned char bg[3])
+{
+    return page_init(ctx, pg, w, h, bg, 0);
+}
+
+lx_status lx__page_init_vector(lx_ctx *ctx, lx__page *pg, int w, int h, const unsigned char bg[3])
+{
+    return page_init(ctx, pg, w, h, bg, 1);
 }
 
 void lx__page_free(lx__page *pg)

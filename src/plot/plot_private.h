@@ -9,6 +9,7 @@
 #include "tables/tables_private.h"
 
 #include <cairo.h>
+#include <cairo-pdf.h>
 
 /* ---- cairo, loaded on the first plot (cairo_load.c) ----
  * luxcalc links no cairo: libcairo.so.2 and the 20-odd libraries it needs (fontconfig, freetype,
@@ -23,7 +24,8 @@
     F(set_dash) F(set_line_join) F(set_line_width) F(set_source_rgb) F(set_source_rgba) F(set_source_surface) \
     F(show_text) F(status) F(status_to_string) F(stroke) F(stroke_preserve) F(surface_destroy) F(surface_flush) \
     F(surface_mark_dirty) F(surface_status) F(surface_write_to_png_stream) F(text_extents) F(text_path) \
-    F(translate)
+    F(translate) F(pdf_surface_create_for_stream) F(pdf_surface_set_metadata) F(recording_surface_create) \
+    F(show_page) F(surface_finish) F(rel_line_to)
 typedef struct lx__cairo_api {
 #define LX__CAIRO_FIELD(n) __typeof__(cairo_##n) *n;
     LX__CAIRO_FNS(LX__CAIRO_FIELD)
@@ -77,6 +79,12 @@ lx_status lx__cairo_load(lx_ctx *ctx);
 #define cairo_text_extents (lx__cairo.text_extents)
 #define cairo_text_path (lx__cairo.text_path)
 #define cairo_translate (lx__cairo.translate)
+#define cairo_pdf_surface_create_for_stream (lx__cairo.pdf_surface_create_for_stream)
+#define cairo_pdf_surface_set_metadata (lx__cairo.pdf_surface_set_metadata)
+#define cairo_recording_surface_create (lx__cairo.recording_surface_create)
+#define cairo_show_page (lx__cairo.show_page)
+#define cairo_surface_finish (lx__cairo.surface_finish)
+#define cairo_rel_line_to (lx__cairo.rel_line_to)
 
 /* ---- what a plot drew (page.c) ---- */
 
@@ -124,6 +132,11 @@ typedef struct lx__layout {
     int n_marks;                   /* luminaire marks drawn (pixel centres) */
     double mark[64][2];
     size_t outlines[5];            /* outlines drawn, per lx_outline_kind */
+    size_t above;                  /* values above the colour range (a map's small bright source) */
+    int n_iso;                     /* isotherms drawn on a chromaticity diagram: T, then the end away from */
+    double iso[8][5];              /* the label and the labelled end, pixels (x0, y0, x1, y1) */
+    int n_arrows;                  /* arrows of a TM-30 vector graphic: from (x0, y0) to the tip (x1, y1), */
+    double arrow[16][5];           /* and the hue bin (0..15) */
 } lx__layout;
 
 /* Frees what a layout holds and zeroes it. */
@@ -150,6 +163,9 @@ typedef struct lx__font {
 
 /* Creates a w x h page filled with bg. LX_EINVAL for a size out of 1..16384, LX_ENOMEM. */
 lx_status lx__page_init(lx_ctx *ctx, lx__page *pg, int w, int h, const unsigned char bg[3]);
+/* The same page as a recording of the drawing (cairo's recording surface), to be painted as vectors
+ * into another drawing (the PDF report); lx__page_write_png does not apply to it. */
+lx_status lx__page_init_vector(lx_ctx *ctx, lx__page *pg, int w, int h, const unsigned char bg[3]);
 /* Frees the page (its layout too unless it was moved out with lx__page_take_layout). */
 void lx__page_free(lx__page *pg);
 /* Moves the page's layout into *out (the caller frees it with lx__layout_free). */
@@ -214,6 +230,12 @@ double lx__scale_t(const lx__scale *s, double v);
  * at least two decades; linear: 0 (or the round value below a minimum under -5 % of the maximum)
  * to the round value at or above the maximum. lo or hi not NaN are kept as given. */
 void lx__scale_auto(lx__scale *s, const double *v, size_t n, int log, double lo, double hi);
+/* lx__scale_auto for a map, where a small bright source (the sun disc) would take the range from
+ * everything else: with hi not given, values more than 100 times the 99.9th percentile of the
+ * positive ones (at least 1000 of them) are left out of the range, which then ends at the decade
+ * (log) or round value (linear) above the rest. Returns how many values lie above the range
+ * (drawn in its top colour) and their largest in *above_max (NaN when none). */
+size_t lx__scale_auto_map(lx__scale *s, const double *v, size_t n, int log, double lo, double hi, double *above_max);
 /* The false-colour palette at t in [0, 1] (dark violet, blue, cyan, green, yellow, orange, red:
  * the look of Radiance falsecolor). */
 void lx__falsecolor(double t, unsigned char rgb[3]);
@@ -262,6 +284,10 @@ const unsigned char *lx__outline_rgb(lx_outline_kind kind);
 
 /* ---- the plots, with their layout for tests (each public writer is one of these with NULL) ---- */
 
+/* The isolux plot drawn on a new page (an image, or with vector = 1 a recording to paint into another
+ * drawing), into *pg (the caller frees it with lx__page_free); its width and height are pg->w, pg->h. */
+lx_status lx__isolux_page(lx_ctx *ctx, const lx_plane *plane, const double *E, const lx_isolux_opts *opts, int vector,
+                          lx__page *pg);
 lx_status lx__isolux_png(lx_ctx *ctx, const char *path, const lx_plane *plane, const double *E,
                          const lx_isolux_opts *opts, lx__layout *out);
 lx_status lx__scene_receiver_png(lx_ctx *ctx, const char *path, const lx_scene *scene, const lx_scene_result *res,
@@ -272,6 +298,7 @@ lx_status lx__irradiance_png(lx_ctx *ctx, const char *path, const lx_envmap *rad
                              const char *label, lx_plot_scale scale, lx__layout *out);
 lx_status lx__report_png(lx_ctx *ctx, const lx_spd *spd, const lx_report_opts *opts, const char *path,
                          lx__layout *out);
+lx_status lx__tm30_png(lx_ctx *ctx, const lx_spd *spd, const lx_report_opts *opts, const char *path, lx__layout *out);
 lx_status lx__error_time_png(lx_ctx *ctx, const char *path, const char *title, const char *x_title,
                              const char *y_title, size_t n, const lx_plot_point *pts, int n_series,
                              const char *const *series_names, lx__layout *out);
@@ -289,7 +316,10 @@ lx_status lx__isotemp_xy(lx_ctx *ctx, lx_observer obs, double T_K, double duv, d
 /* TM-30 colour vector graphic: a hue bin's test point normalised so the reference lies on the
  * unit circle at its own hue: (test - ref) / |ref| + (cos h_ref, sin h_ref). */
 void lx__cvg_point(const double ref_ab[2], const double test_ab[2], double out[2]);
-/* The colour of CIE 13.3 test colour sample k (0-based, 0..13) under D65 (2 deg, sRGB). */
+/* The colour of CIE 13.3 test colour sample k (0-based, 0..13; 14: JIS Z 8726 No. 15) under D65 (2 deg, sRGB). */
 void lx__tcs_srgb8(lx_ctx *ctx, int k, unsigned char rgb[3]);
+/* The colour under D65 of the reflectance in column col (1-based) of table t (the first column the
+ * wavelength), 2 deg, sRGB; grey when t is NULL. */
+void lx__refl_srgb8(lx_ctx *ctx, const lx__table *t, int col, unsigned char rgb[3]);
 
 #endif /* LX_PLOT_PRIVATE_H */

@@ -25,4 +25,13 @@ lx_status lx__report_diagram(lx_ctx *ctx, lx__page *pg, const lx__report *r, lx_
  * undefined), its title above. */
 void lx__report_cvg(lx__page *pg, const lx__report *r, double cx, double cy, double R);
 
+/* The TM-30 colour vector graphic of tm centred at (cx, cy), reference radius R: the 16 bins'
+ * wedges numbered, the +-10 % and +-20 % circles, the reference circle, the test's shape and the
+ * arrows from reference to test with their heads in the bins' colours (full: the report page's
+ * size, with the +-20 % marks); records each arrow in the layout. 0 when a bin has no sample
+ * (the background is drawn, no shape). (report_tm30.c) */
+int lx__tm30_cvg(lx__page *pg, const lx_tm30 *tm, double cx, double cy, double R, int full);
+/* The colour of hue bin `bin` (0..15) in the IES calculator: its bars (arrow 0) or arrows (1). */
+void lx__tm30_bin_rgb(int bin, int arrow, unsigned char rgb[3]);
+
 #endif /* LX_PLOT_REPORT_H */

@@ -86,7 +86,13 @@ void lx__cvg_point(const double ref_ab[2], const double test_ab[2], double out[2
 /* the colour of test colour sample k (0-based) under D65, for its bar (2 deg CMFs, 5 nm sums) */
 void lx__tcs_srgb8(lx_ctx *ctx, int k, unsigned char rgb[3])
 {
-    const lx__table *t = lx__table_find("cie13_3_tcs");
+    if (k < 14) lx__refl_srgb8(ctx, lx__table_find("cie13_3_tcs"), k + 1, rgb);
+    else lx__refl_srgb8(ctx, lx__table_find("jis_z8726_tcs15"), 1, rgb);
+}
+
+void lx__refl_srgb8(lx_ctx *ctx, const lx__table *t, int col, unsigned char rgb[3])
+{
+    int k = col - 1;
     lx_spd d65, w[3];
     rgb[0] = rgb[1] = rgb[2] = 120;
     if (!t || lx_illuminant_get(ctx, "D65", &d65)) return;

@@ -105,6 +105,18 @@ static lx_status fill_locus(lx_ctx *ctx, lx__page *pg, const frame *f, const dou
     return LX_OK;
 }
 
+/* the distance from box b to the isotherm e (from (x0, y0) to (x1, y1)) carried on 70 pixels
+ * beyond (x1, y1) */
+static double ray_box(const double *e, lx__box b)
+{
+    double dx = e[2] - e[0], dy = e[3] - e[1], n = hypot(dx, dy), best = INFINITY;
+    for (double t = 0; t <= 70; t += 1) {
+        double px = e[2] + t * dx / n, py = e[3] + t * dy / n;
+        best = fmin(best, hypot(fmax(fmax(b.x0 - px, 0), px - b.x1), fmax(fmax(b.y0 - py, 0), py - b.y1)));
+    }
+    return best;
+}
+
 /* a label near (x, y) along direction (dx, dy) (unit, pixels), at the first free distance */
 static void label_out(lx__page *pg, const lx__font *ft, double x, double y, double dx0, double dy0, const char *s,
                       lx__box within)
@@ -183,11 +195,39 @@ static lx_status loci(lx_ctx *ctx, lx__page *pg, const lx__report *r, const fram
         snprintf(buf, sizeof buf, "%d", marks[k]);
         label_out(pg, &fl, fx(f, a) + 2 * dx, fy(f, b) + 2 * dy, dx, dy, buf, within);
     }
+    /* each isotherm's label on its own line carried on beyond its upper end (Duv +0.02, where the
+     * isotherms fan out), at the first distance where it is free and crosses no other isotherm's
+     * way, joined to the end by a fine leader; left out when nothing within 60 pixels is free (a
+     * label never drifts sideways to another line's end) */
+    double up[8][4]; /* each isotherm from its lower to its upper end: the way its label goes */
+    for (int k = 0; k < 8; k++) up[k][0] = ends[k][2], up[k][1] = ends[k][3], up[k][2] = ends[k][0], up[k][3] = ends[k][1];
     for (int k = 0; k < 8; k++) {
         char buf[16];
         snprintf(buf, sizeof buf, "%.0f K", temps[k]);
-        double dx = ends[k][2] - ends[k][0], dy = ends[k][3] - ends[k][1], n = hypot(dx, dy);
-        label_out(pg, &fl, ends[k][2], ends[k][3], dx / n, dy / n, buf, within);
+        double dx = up[k][2] - up[k][0], dy = up[k][3] - up[k][1], n = hypot(dx, dy);
+        dx /= n, dy /= n;
+        double ax = dx < -0.3 ? 1 : dx > 0.3 ? 0 : 0.5, ay = dy < -0.3 ? 1 : dy > 0.3 ? 0 : 0.5;
+        if (pg->lay.n_iso < 8) {
+            double *q = pg->lay.iso[pg->lay.n_iso++];
+            q[0] = temps[k], q[1] = up[k][0], q[2] = up[k][1], q[3] = up[k][2], q[4] = up[k][3];
+        }
+        for (double d = 3; d <= 60; d += 2) {
+            double px = up[k][2] + d * dx, py = up[k][3] + d * dy;
+            lx__box b = lx__text_box(pg, &fl, px, py, ax, ay, buf);
+            if (!lx__page_free_at(pg, b, 1, within)) continue;
+            int across = 0; /* on another isotherm's way: it would read as that one's */
+            for (int j = 0; j < 8 && !across; j++) across = j != k && ray_box(up[j], b) < 2;
+            if (across) continue;
+            if (d > 5) {
+                static const unsigned char lead[3] = {110, 110, 110};
+                lx__rgb(cr, lead, 1);
+                cairo_set_line_width(cr, 0.7);
+                cairo_move_to(cr, up[k][2] + 2 * dx, up[k][3] + 2 * dy), cairo_line_to(cr, px - dx, py - dy);
+                cairo_stroke(cr);
+            }
+            lx__page_text(pg, &fl, px, py, ax, ay, LX__TEXT_LABEL, temps[k], buf);
+            break;
+        }
     }
     return LX_OK;
 }
@@ -225,20 +265,9 @@ lx_status lx__report_diagram(lx_ctx *ctx, lx__page *pg, const lx__report *r, lx_
     return LX_OK;
 }
 
-/* hue colour of a CAM02-UCS hue angle (deg): 0 red, 90 yellow, 180 green, 270 blue */
-static void hue_rgb(double h, unsigned char rgb[3])
-{
-    static const double st[5][3] = {{0.85, 0.2, 0.3}, {0.9, 0.8, 0.1}, {0.2, 0.7, 0.3}, {0.2, 0.4, 0.9}, {0.85, 0.2, 0.3}};
-    h = fmod(h + 360.0, 360.0);
-    int k = (int)(h / 90);
-    double f = h / 90 - k;
-    for (int i = 0; i < 3; i++) rgb[i] = (unsigned char)lround(255 * ((1 - f) * st[k][i] + f * st[k + 1][i]));
-}
-
 void lx__report_cvg(lx__page *pg, const lx__report *r, double cx, double cy, double R)
 {
-    const lx__font fh = {14, 1, {25, 25, 25}, 0}, fn = {11, 0, {25, 25, 25}, 0}, fb = {9, 0, {70, 70, 70}, 0};
-    cairo_t *cr = pg->cr;
+    const lx__font fh = {14, 1, {25, 25, 25}, 0}, fn = {11, 0, {25, 25, 25}, 0};
     char buf[128];
     double lim = 1.45 * R;
     if (!r->tm30_ok) {
@@ -248,51 +277,11 @@ void lx__report_cvg(lx__page *pg, const lx__report *r, double cx, double cy, dou
     }
     snprintf(buf, sizeof buf, "TM-30 colour vector graphic: Rf %.0f, Rg %.0f", r->tm.rf, r->tm.rg);
     lx__page_text(pg, &fh, cx - lim, cy - lim - 40, 0, 0, LX__TEXT_TITLE, NAN, buf);
-    /* the 16 hue bins as wedges in their hues, numbered around the outside */
-    for (int b = 0; b < 16; b++) {
-        unsigned char c[3];
-        hue_rgb(b * 22.5 + 11.25, c);
-        lx__rgb(cr, c, 0.28);
-        cairo_move_to(cr, cx, cy);
-        cairo_arc_negative(cr, cx, cy, lim, -b * 22.5 * LX__PI / 180, -(b + 1) * 22.5 * LX__PI / 180);
-        cairo_close_path(cr);
-        cairo_fill(cr);
-        double a = (b + 0.5) * 22.5 * LX__PI / 180;
-        snprintf(buf, sizeof buf, "%d", b + 1);
-        lx__page_text(pg, &fb, cx + (lim + 9) * cos(a), cy - (lim + 9) * sin(a), 0.5, 0.5, LX__TEXT_LABEL, b + 1, buf);
+    if (!lx__tm30_cvg(pg, &r->tm, cx, cy, R, 0)) {
+        lx__page_text(pg, &fn, cx - R, cy + lim + 16, 0, 0, LX__TEXT_NOTE, NAN, "a hue bin holds no sample");
+        return;
     }
-    lx__rgb(cr, WHITE, 1);
-    cairo_set_line_width(cr, 1);
-    for (int b = 0; b < 16; b++) {
-        double a = b * 22.5 * LX__PI / 180;
-        cairo_move_to(cr, cx, cy), cairo_line_to(cr, cx + lim * cos(a), cy - lim * sin(a));
-    }
-    cairo_stroke(cr);
-    lx__rgb(cr, INK, 1);
-    cairo_set_line_width(cr, 1.6);
-    cairo_arc(cr, cx, cy, R, 0, 2 * LX__PI);
-    cairo_stroke(cr);
-    double pt[16][2];
-    for (int b = 0; b < 16; b++) {
-        if (!isfinite(r->tm.ref_ab[b][0] + r->tm.test_ab[b][0])) {
-            lx__page_text(pg, &fn, cx - R, cy + lim + 16, 0, 0, LX__TEXT_NOTE, NAN, "a hue bin holds no sample");
-            return;
-        }
-        lx__cvg_point(r->tm.ref_ab[b], r->tm.test_ab[b], pt[b]);
-    }
-    cairo_set_line_width(cr, 1.1);
-    for (int b = 0; b < 16; b++) { /* arrows: reference on the circle to the test point */
-        double h = atan2(r->tm.ref_ab[b][1], r->tm.ref_ab[b][0]);
-        cairo_move_to(cr, cx + R * cos(h), cy - R * sin(h)), cairo_line_to(cr, cx + R * pt[b][0], cy - R * pt[b][1]);
-    }
-    cairo_stroke(cr);
-    static const unsigned char red[3] = {200, 30, 30};
-    lx__rgb(cr, red, 1);
-    cairo_set_line_width(cr, 2.2);
-    for (int b = 0; b <= 16; b++) (b ? cairo_line_to : cairo_move_to)(cr, cx + R * pt[b % 16][0], cy - R * pt[b % 16][1]);
-    cairo_stroke(cr);
-    for (int b = 0; b < 16; b++) cairo_arc(cr, cx + R * pt[b][0], cy - R * pt[b][1], 2.6, 0, 2 * LX__PI), cairo_fill(cr);
-    const lx__font fr = {11, 0, {200, 30, 30}, 0};
+    const lx__font fr = {11, 0, {240, 80, 70}, 0};
     lx__page_text(pg, &fn, cx + lim + 24, cy + lim - 16, 0, 1, LX__TEXT_NOTE, NAN, "black: reference");
     lx__page_text(pg, &fr, cx + lim + 24, cy + lim, 0, 1, LX__TEXT_NOTE, NAN, "red: test");
 }

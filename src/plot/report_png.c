@@ -126,6 +126,7 @@ static void panel_cri(lx_ctx *ctx, lx__page *pg, const lx__report *r, lx__box B)
     lx__page_text(pg, &fh, B.x0 - 56, B.y0 - 36, 0, 0, LX__TEXT_TITLE, NAN, buf);
     double lo = 0, hi = 100, H = B.y1 - B.y0;
     for (int k = 0; k < 14; k++) lo = fmin(lo, r->cri.r[k]);
+    lo = fmin(lo, r->cri.r15);
     lo = fmax(-200.0, floor(lo / 50) * 50);
 #define VY(v) (B.y0 + (hi - (v)) / (hi - lo) * H)
     cairo_set_line_width(cr, 1);
@@ -135,9 +136,9 @@ static void panel_cri(lx_ctx *ctx, lx__page *pg, const lx__report *r, lx__box B)
         snprintf(buf, sizeof buf, "%.0f", v);
         lx__page_text(pg, &fk, B.x0 - 8, y, 1, 0.5, LX__TEXT_TICK, v, buf);
     }
-    double slot = (B.x1 - B.x0) / 15, bw = slot * 0.66;
-    for (int k = 0; k < 15; k++) {
-        double v = k == 0 ? r->cri.ra : r->cri.r[k - 1], vc = fmax(lo, fmin(hi, v));
+    double slot = (B.x1 - B.x0) / 16, bw = slot * 0.66;
+    for (int k = 0; k < 16; k++) { /* Ra, R1-R14, R15 (JIS Z 8726) */
+        double v = k == 0 ? r->cri.ra : k == 15 ? r->cri.r15 : r->cri.r[k - 1], vc = fmax(lo, fmin(hi, v));
         unsigned char c[3] = {90, 90, 90};
         if (k) lx__tcs_srgb8(ctx, k - 1, c);
         double x = B.x0 + k * slot + (slot - bw) / 2, y0 = VY(0), y1 = VY(vc);

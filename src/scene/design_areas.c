@@ -278,6 +278,19 @@ static int in_obstruction(const lx_scene *sc, const double q[3])
     return 0;
 }
 
+/* 1 when q on a room's wall or ceiling is covered by an obstruction standing against it (q inside
+ * the obstruction or on its surface: the face there is hidden, not lit) */
+static int covered(const lx_scene *sc, const double q[3])
+{
+    for (size_t i = 0; i < sc->n_obst; i++) {
+        const lx_scene_obstruction *o = &sc->obst[i];
+        int in = 1;
+        for (int k = 0; k < 3; k++) in &= q[k] >= o->min_m[k] - 1e-9 && q[k] <= o->max_m[k] + 1e-9;
+        if (in) return 1;
+    }
+    return 0;
+}
+
 /* Appends a receiver holding points P (GRID when it is the whole na x nb grid, else SET) and its
  * area; the area's outline (nv x 2) and inner edge are copied. */
 static lx_status add_area(lx_ctx *ctx, lx_scene *sc, const lx__area_raw *r, lx_scene_area *A, const char *name, pts *P,
@@ -306,16 +319,18 @@ static lx_status add_area(lx_ctx *ctx, lx_scene *sc, const lx__area_raw *r, lx_s
     if (nr) sc->rec = nr;
     if (ar) sc->design->area = ar;
     A->name = lx__strdup(name);
-    if (!nr || !ar || !A->name) {
+    if (!nr || !ar || !A->name || lx__design_rec_grow_to(sc, sc->n_rec + 1) != LX_OK) {
         lx__free(rc.name);
         lx__free(A->name);
+        A->name = NULL;
         return lx__error(ctx, LX_ENOMEM, r->file, r->line, "out of memory");
     }
-    P->p = NULL, P->n = P->cap = 0; /* the receiver owns them */
+    /* the receiver owns the points and the area its outlines from here */
+    P->p = NULL, P->n = P->cap = 0;
     A->rec = sc->n_rec;
     sc->rec[sc->n_rec++] = rc;
     sc->design->area[sc->design->n_area++] = *A;
-    if (lx__design_rec_grow(sc) != LX_OK) return lx__error(ctx, LX_ENOMEM, r->file, r->line, "out of memory");
+    A->name = NULL, A->outline = A->inner = NULL;
     size_t i = sc->n_rec - 1;
     sc->design->rec_cylinder[i] = cyl_ok ? (unsigned char)r->cyl.cyl : 0;
     double *f = sc->design->rec_facing + 3 * i;
@@ -467,7 +482,7 @@ static lx_status grid_rect(lx_ctx *ctx, const lx_scene *sc, const lx__area_raw *
             double a = a0 + (i + 0.5) * A->grid.cell_m[0], b = b0 + (j + 0.5) * A->grid.cell_m[1], q[3];
             for (int k = 0; k < 3; k++) q[k] = A->origin_m[k] + a * A->u[k] + b * A->v[k];
             if (nv && (!in_poly(a, b, rv, nv) || boundary_dist(a, b, rv, nv) < margin * (1 - 1e-9))) continue;
-            if (in_obstruction(sc, q)) continue;
+            if (A->kind == LX_AREA_WALL || A->kind == LX_AREA_CEILING ? covered(sc, q) : in_obstruction(sc, q)) continue;
             if (pts_add(P, q)) return lx__error(ctx, LX_ENOMEM, r->file, r->line, "out of memory");
         }
     return LX_OK;

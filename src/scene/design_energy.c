@@ -30,6 +30,7 @@ lx_status lx__energy_open(lx_ctx *ctx, lx_scene *sc, const char *file, long line
     lx__design *in = sc->design->internal;
     if (in->energy) return lx__error(ctx, LX_EPARSE, file, line, "section [energy] given twice");
     in->energy = 1;
+    sc->design->has_energy = 1;
     in->energy_file = file;
     in->energy_line = line;
     return LX_OK;

@@ -100,6 +100,8 @@ lx_status lx__area_finish(lx_ctx *ctx, lx_scene *sc);
 void lx__area_free(lx_scene *sc);
 /* Grows the per-receiver arrays of the design to the scene's receivers (a receiver just appended). */
 lx_status lx__design_rec_grow(lx_scene *sc);
+/* The same to n receivers (before one is appended). */
+lx_status lx__design_rec_grow_to(lx_scene *sc, size_t n);
 
 /* ---- cylindrical and semi-cylindrical illuminance (design_cylinder.c) ---- */
 /* E_z (facing NULL) or E_sz (facing: unit horizontal) of luminaire le at q, times the plan's factor;

@@ -208,10 +208,11 @@ int lx__design_rec_key(lx_ctx *ctx, scene__rec_design *d, const char *file, long
     return 1;
 }
 
-lx_status lx__design_rec_grow(lx_scene *sc)
+lx_status lx__design_rec_grow(lx_scene *sc) { return lx__design_rec_grow_to(sc, sc->n_rec); }
+
+lx_status lx__design_rec_grow_to(lx_scene *sc, size_t n)
 {
     lx_scene_design *d = sc->design;
-    size_t n = sc->n_rec;
     unsigned char *c = lx__realloc_n(d->rec_cylinder, n, sizeof *c);
     if (c) d->rec_cylinder = c;
     double *f = c ? lx__realloc_n(d->rec_facing, 3 * n, sizeof *f) : NULL;

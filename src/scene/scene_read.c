@@ -239,6 +239,8 @@ static lx_status open_section(reader *r, const char *file, long line, char *s, c
     if (room_kind) return lx__room_section(r->ctx, &r->mraw, room_kind, name, file, line);
     if (r->sec == SEC_LUM) lx__scene_lum_raw_init(&r->lraw, name, file, line);
     if (r->sec == SEC_REC) lx__scene_rec_raw_init(&r->rraw, name, file, line);
+    if ((r->sec == SEC_LUM && !r->lraw.name) || (r->sec == SEC_REC && !r->rraw.name))
+        return lx__error(r->ctx, LX_ENOMEM, file, line, "out of memory");
     if (r->sec == SEC_SKY) r->sc->sky_line = line, r->sc->sky_file_at = file;
     if (r->sec == SEC_SUN) r->sc->sun_line = line, r->sc->sun_file_at = file, r->sc->has_sun = 1;
     if (r->sec == SEC_OBS) return lx__scene_obs_open(r->ctx, r->sc, name, file, line);

@@ -269,3 +269,22 @@ fi
 run scene samples/scenes/office.scene --png "$T/plans2"
 if [ -f "$T/plans2/office_desk.png" ] && [ ! -e "$T/plans2/office_desk_df.png" ]; then ok "no daylight-factor plot without daylight"
 else notok "no df plot without daylight" "$(ls "$T/plans2")"; fi
+
+# luminance-map of a sky with the sun: the range is the sky's, the sun disc above it in the top
+# colour (red), so the sky spans the palette (green and yellow in it, not all blue); --range
+# puts everything back in
+run sky --type cie --number 12 --zenith-luminance 6000cd/m2 --sun-altitude 40deg --sun-azimuth 180deg \
+  --sun-illuminance 80000lx --size 512x256 -o "$T/sunsky.exr"
+expect_rc 0 "a sky with the sun"
+run luminance-map "$T/sunsky.exr" --png "$T/sunsky.png"
+expect_rc 0 "luminance-map of the sky with the sun"
+if [ -x "$px" ] && [ -f "$T/sunsky.png" ]; then
+  green=$("$px" "$T/sunsky.png" count 26cc26 40 0 0 530 400); red=$("$px" "$T/sunsky.png" count d9000d 10 0 0 530 400)
+  if [ "$green" -gt 3000 ]; then ok "the sky spans the palette ($green green pixels)"; else notok "the sky spans the palette" "$green green pixels"; fi
+  if [ "$red" -ge 1 ] && [ "$red" -le 20 ]; then ok "the sun disc in the top colour ($red pixels)"; else notok "the sun in the top colour" "$red red pixels"; fi
+  run luminance-map "$T/sunsky.exr" --png "$T/sunsky_all.png" --range 1000:1e9
+  green=$("$px" "$T/sunsky_all.png" count 26cc26 40 0 0 530 400)
+  if [ "$green" -lt 3000 ]; then ok "--range 1000:1e9 keeps the sun in the range"; else notok "--range keeps the sun" "$green green pixels"; fi
+else
+  skip "sky false colour pixels" "no $px"
+fi

@@ -50,3 +50,48 @@ expect_field 1 leni_kWh_m2_a 9.0626041667 1e-9 "LENI = W / A"
 run scene tests/data/scenes/point.scene --energy
 expect_rc 2 "--energy without [energy]: input error"
 expect_err_match 'no \[energy\] section' "says what is missing"
+# the PDF report: pages, text and figures read back with poppler-utils (make deps installs it)
+run report tests/data/design/report.scene
+expect_rc 1 "report without -o: usage error"
+run report tests/data/design/report.scene -o "$T/no_such_dir/r.pdf"
+if [ "$rc" -ne 0 ] && [ ! -e "$T/no_such_dir/r.pdf" ]; then ok "report into a missing directory fails and leaves nothing"
+else notok "report into a missing directory" "rc $rc"; fi
+if command -v pdftotext >/dev/null 2>&1 && command -v pdfinfo >/dev/null 2>&1 && command -v pdfimages >/dev/null 2>&1; then
+  run report tests/data/design/report.scene -o "$T/r.pdf" --project "Test project" --author "T. Ester"
+  expect_rc 0 "report writes a PDF"
+  pages=$(pdfinfo "$T/r.pdf" 2>/dev/null | awk '/^Pages:/ {print $2}')
+  if [ "${pages:-0}" -ge 8 ]; then ok "report: $pages pages"; else notok "report pages" "${pages:-none}"; fi
+  if pdfinfo "$T/r.pdf" | grep -q '^Author: *T. Ester'; then ok "report: the PDF's author"; else notok "report: author" "$(pdfinfo "$T/r.pdf")"; fi
+  out=$(pdftotext -layout "$T/r.pdf" - 2>/dev/null)
+  for s in 'Report test room' 'Test project' 'Lighting design report' 'maintained values \(maintenance factor 0\.8\)' \
+           '1 Luminaire schedule and maintenance' 'downlight_lambert_1000lm\.ies' '2 Rooms' 'Room r: 4 m x 3 m x 2\.8 m' \
+           '3 Areas and calculation surfaces' 'Illuminance on desk \(z = 0\.75 m\)' 'desk\.surrounding' \
+           '4 Checks against the requirements' '5 Glare \(UGR\)' 'CIE 190:2010 UGR table: downlight_lambert_1000lm\.ies' \
+           '6 Emergency lighting \(EN 1838\)' 'direct light only' '7 Energy \(EN 15193-1\)' 'LENI' \
+           '8 Method and accuracy' 'near-field tolerance'; do
+    expect_out_match "$s" "report text: $s"
+  done
+  # the check lines carry the values --check computes (4 significant digits in the report)
+  v=$("$LUXCALC" scene tests/data/design/report.scene --check --format csv | awk -F, '$3 == "E_m" {printf "%.4g", $7}')
+  expect_out_match "task +desk +E_m +>= 300\.0 lx +$v lx +FAIL" "report: the E_m check line with --check's value ($v lx)"
+  expect_out_match 'escape +way +E_min \(emergency\) +>= 0\.5000 lx +[0-9.]+ lx +pass' "report: the emergency check"
+  # figures: one false-colour field per grid receiver (the task area, 4 walls, the ceiling)
+  n=$(pdfimages -list "$T/r.pdf" 2>/dev/null | awk 'NR > 2' | wc -l)
+  if [ "$n" -eq 6 ]; then ok "report: 6 isolux plots (pdfimages)"; else notok "report: isolux plots" "$n images"; fi
+else
+  skip "the PDF report's pages, text and figures" "no pdftotext, pdfinfo or pdfimages (Debian poppler-utils; make deps installs it)"
+fi
+# a task area outside its room: file and line, exit 2
+run scene tests/data/design/bad_task.scene
+expect_rc 2 "a task area outside the room: input error"
+expect_err_match "^luxcalc: scene: tests/data/design/bad_task.scene:10: area 'desk': the task area \(x 3 to 4.5 m, y 1 to 2 m, z 0.75 m\) reaches outside room 'r'" "names file and line"
+# emergency operation from the command line: the exit luminaire alone (150 lm, MF 0.8, 2.7 m up at
+# x 2 m on the route's line): at (0.6, 2.5, 0) m, d^2 = 1.4^2 + 2.7^2: E = 0.8 (150 / 4 pi) 2.7 / d^3
+run scene tests/data/design/report.scene --emergency --format csv
+expect_rc 0 "--emergency runs"
+v=$(printf '%s\n' "$out" | awk -F, '$1 == "way" && $2 == "0.6" {print $5}')
+if awk -v a="$v" 'BEGIN { d2 = 1.4 * 1.4 + 2.7 * 2.7; e = 0.8 * 150 / (4 * 3.14159265358979) * 2.7 / (d2 * sqrt(d2)); d = a - e; if (d < 0) d = -d; exit !(a != "" && d < 1e-12) }'
+then ok "--emergency: the route's first point against the closed form"; else notok "--emergency closed form" "got '$v'"; fi
+run scene tests/data/design/report.scene --emergency --explain
+expect_out_match '^  interreflection off \[forced\] emergency lighting \(EN 1838\): direct light only' "--emergency --explain: why interreflection is off"
+expect_out_match '^operation: emergency \(EN 1838\)' "--emergency --explain: the operation"
